@@ -1,0 +1,48 @@
+# All third-party dependencies come from Debian packages (scripts/install-deps.sh); nothing is
+# downloaded at build time.  Each imported target is used only by the modules docs/architecture.md allows.
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+find_package(Threads REQUIRED)
+
+# Spectra (header only, libspectra-dev)
+find_path(SPECTRA_INCLUDE_DIR Spectra/SymEigsShiftSolver.h REQUIRED)
+add_library(seflex::spectra INTERFACE IMPORTED)
+target_include_directories(seflex::spectra INTERFACE ${SPECTRA_INCLUDE_DIR})
+
+# METIS (libmetis-dev)
+find_path(METIS_INCLUDE_DIR metis.h REQUIRED)
+find_library(METIS_LIBRARY metis REQUIRED)
+add_library(seflex::metis INTERFACE IMPORTED)
+target_include_directories(seflex::metis INTERFACE ${METIS_INCLUDE_DIR})
+target_link_libraries(seflex::metis INTERFACE ${METIS_LIBRARY})
+
+# ARPACK (libarpack2-dev)
+find_library(ARPACK_LIBRARY arpack REQUIRED)
+add_library(seflex::arpack INTERFACE IMPORTED)
+target_link_libraries(seflex::arpack INTERFACE ${ARPACK_LIBRARY})
+
+# CHOLMOD (libsuitesparse-dev), supernodal Cholesky on BLAS/LAPACK
+find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
+find_library(CHOLMOD_LIBRARY cholmod REQUIRED)
+find_library(SUITESPARSE_CONFIG_LIBRARY suitesparseconfig REQUIRED)
+find_package(BLAS REQUIRED)
+find_package(LAPACK REQUIRED)
+add_library(seflex::cholmod INTERFACE IMPORTED)
+target_include_directories(seflex::cholmod INTERFACE ${CHOLMOD_INCLUDE_DIR})
+target_link_libraries(seflex::cholmod INTERFACE ${CHOLMOD_LIBRARY} ${SUITESPARSE_CONFIG_LIBRARY} ${LAPACK_LIBRARIES} ${BLAS_LIBRARIES})
+
+# gmsh C++ API (libgmsh-dev)
+find_path(GMSH_INCLUDE_DIR gmsh.h REQUIRED)
+find_library(GMSH_LIBRARY gmsh REQUIRED)
+add_library(seflex::gmsh INTERFACE IMPORTED)
+target_include_directories(seflex::gmsh INTERFACE ${GMSH_INCLUDE_DIR})
+target_link_libraries(seflex::gmsh INTERFACE ${GMSH_LIBRARY})
+
+# VTK 9 (libvtk9-dev): only what the XML writers need
+find_package(VTK 9 REQUIRED COMPONENTS CommonCore CommonDataModel IOXML)
+
+# yaml-cpp (libyaml-cpp-dev): scene files
+find_package(yaml-cpp REQUIRED)
+
+if(SEFLEX_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+endif()

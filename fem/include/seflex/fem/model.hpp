@@ -1,0 +1,336 @@
+#pragma once
+// The FE model as data: what a Nastran bulk-data deck (or a gmsh mesh with its property file)
+// describes, card by card, with the source location of every card for error messages.
+// Readers in io/ fill it; fem/ resolves and consumes it. No parsing and no numerics here.
+//
+// Conventions
+// - Ids are the user's (Nastran) ids. After fem::finalize(model) the maps `*_index` give the
+//   position of an id in its vector, coordinate systems are resolved to the basic system, and every
+//   GRID has its basic position.
+// - Units are whatever the deck uses (seflex does not rescale); PARAM WTMASS multiplies every mass
+//   when matrices are built. Angles on cards (e.g. CQUAD4 THETA) are in degrees as Nastran writes
+//   them; fem converts to radians.
+// - Component lists ("123456", "12 456") are stored as bit masks: bit (c-1) set for component c.
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace seflex::fem {
+
+/// Source of a card: index into Model::files, 1-based line of the card's first line.
+struct CardRef {
+  std::uint32_t file = 0;
+  std::uint32_t line = 0;
+};
+
+using ComponentMask = std::uint8_t;  ///< bit (c-1) for component c = 1..6
+
+// ---------------------------------------------------------------------------------------------
+// Coordinate systems
+enum class CoordType : std::uint8_t { Rectangular, Cylindrical, Spherical };
+
+/// CORD2R/C/S (defined by points A, B, C in system rid) or CORD1R/C/S (by three grids).
+struct CoordSys {
+  int id = 0;
+  CoordType type = CoordType::Rectangular;
+  bool by_grids = false;            ///< CORD1x
+  int rid = 0;                      ///< CORD2x reference system
+  std::array<double, 9> abc{};      ///< CORD2x: A(3), B(3), C(3) in rid
+  std::array<int, 3> grids{};       ///< CORD1x: G1, G2, G3
+  CardRef ref;
+  // Resolved by fem::finalize: origin and axes (columns) in the basic system.
+  bool resolved = false;
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();  ///< columns e1, e2, e3 in basic
+};
+
+// ---------------------------------------------------------------------------------------------
+// Grids and scalar points
+struct Grid {
+  int id = 0;
+  int cp = 0;                       ///< system of x
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();  ///< coordinates in cp (r, theta_deg, z for cylindrical ...)
+  int cd = 0;                       ///< displacement (global) system
+  ComponentMask ps = 0;             ///< permanent single-point constraints
+  CardRef ref;
+  Eigen::Vector3d x_basic = Eigen::Vector3d::Zero();  ///< resolved by finalize
+};
+
+struct ScalarPoint {  ///< SPOINT: one degree of freedom, used by DMIG matrices
+  int id = 0;
+  CardRef ref;
+};
+
+struct GridDefaults {  ///< GRDSET (blank = 0)
+  int cp = 0, cd = 0;
+  ComponentMask ps = 0;
+  bool present = false;
+  CardRef ref;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Materials and properties
+struct Mat1 {
+  int id = 0;
+  double E = 0, G = 0, nu = 0;  ///< completed with Nastran's rule when one is blank
+  double rho = 0, alpha = 0, tref = 0, ge = 0;
+  CardRef ref;
+};
+
+/// Bar/beam section, from PBAR, PBARL, PBEAM (end A) or PBEAML (end A), in element axes.
+struct BarProperty {
+  enum class Source : std::uint8_t { PBAR, PBARL, PBEAM, PBEAML };
+  int id = 0;
+  int mid = 0;
+  Source source = Source::PBAR;
+  double A = 0, I1 = 0, I2 = 0, I12 = 0, J = 0, nsm = 0;
+  double K1 = 0, K2 = 0;            ///< shear factors; 0 (blank) = no transverse shear flexibility
+  std::string section_type;         ///< PBARL/PBEAML TYPE (ROD, TUBE, BAR, BOX, I, ...)
+  std::vector<double> dims;         ///< PBARL/PBEAML DIMi
+  CardRef ref;
+};
+
+struct RodProperty {  ///< PROD (CONROD stores its own inline copy, id = 0)
+  int id = 0, mid = 0;
+  double A = 0, J = 0, C = 0, nsm = 0;
+  CardRef ref;
+};
+
+struct ShellProperty {  ///< PSHELL
+  int id = 0;
+  int mid1 = 0;                     ///< membrane (0 = none)
+  double t = 0;
+  int mid2 = 0;                     ///< bending (0 = none)
+  double bend_ratio = 1.0;          ///< 12I/T^3 (blank = 1)
+  int mid3 = 0;                     ///< transverse shear (0 = none)
+  double ts_t = 0.833333;           ///< TS/T (blank = .833333)
+  double nsm = 0;
+  double z1 = 0, z2 = 0;            ///< fibre distances (stress only)
+  int mid4 = 0;
+  CardRef ref;
+};
+
+struct SpringProperty {  ///< PELAS
+  int id = 0;
+  double k = 0, ge = 0, s = 0;
+  CardRef ref;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Elements
+struct BarDefaults {  ///< BAROR (and BEAMOR for CBEAM)
+  bool present = false;
+  int pid = 0;
+  bool has_g0 = false;
+  int g0 = 0;
+  Eigen::Vector3d v = Eigen::Vector3d::Zero();
+  std::string offt = "GGG";
+  CardRef ref;
+};
+
+/// CBAR or CBEAM (a CBEAM is treated as a prismatic bar with its end-A section).
+struct Bar {
+  int id = 0, pid = 0;
+  int ga = 0, gb = 0;
+  bool has_g0 = false;
+  int g0 = 0;                                   ///< orientation grid (has_g0)
+  Eigen::Vector3d v = Eigen::Vector3d::Zero();  ///< orientation vector (in GA's CD system for OFFT G..)
+  std::string offt = "GGG";
+  ComponentMask pa = 0, pb = 0;                 ///< pin flags (released element dofs)
+  Eigen::Vector3d wa = Eigen::Vector3d::Zero(), wb = Eigen::Vector3d::Zero();  ///< offsets
+  bool is_beam = false;                         ///< came from CBEAM
+  CardRef ref;
+};
+
+struct Rod {  ///< CROD (pid -> PROD) or CONROD (inline property, pid = 0)
+  int id = 0, pid = 0;
+  int ga = 0, gb = 0;
+  bool inline_property = false;
+  int mid = 0;                                  ///< CONROD only
+  double A = 0, J = 0, C = 0, nsm = 0;          ///< CONROD only
+  CardRef ref;
+};
+
+/// CQUAD4 (4 grids) or CTRIA3 (3 grids; g[3] = 0).
+struct Shell {
+  int id = 0, pid = 0;
+  std::array<int, 4> g{};
+  std::uint8_t nnode = 4;
+  bool theta_is_mcid = false;
+  double theta_deg = 0;                         ///< material angle (degrees) or MCID
+  int mcid = -1;
+  double zoffs = 0;
+  int tflag = 0;
+  std::array<double, 4> t{};                    ///< corner thicknesses, 0 = blank (use PSHELL T)
+  CardRef ref;
+};
+
+/// CONM2: concentrated mass with offset and inertia.
+struct Conm2 {
+  int id = 0, grid = 0;
+  int cid = 0;                                  ///< 0 basic, -1 offset in basic from the grid, >0 system
+  double m = 0;
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();  ///< offset (cid >= 0: in cid; cid = -1: absolute basic position)
+  double I11 = 0, I21 = 0, I22 = 0, I31 = 0, I32 = 0, I33 = 0;  ///< about the CG, in cid axes
+  CardRef ref;
+};
+
+/// CELAS1 (pid -> PELAS) or CELAS2 (inline k). g2 = 0 means grounded.
+struct Spring {
+  int id = 0, pid = 0;
+  bool inline_property = false;
+  double k = 0, ge = 0, s = 0;                  ///< CELAS2 only
+  int g1 = 0, c1 = 0, g2 = 0, c2 = 0;           ///< components 0..6 (0 for scalar points)
+  CardRef ref;
+};
+
+/// RBE2: the dependent components cm of every grid in gm follow the independent grid gn rigidly.
+struct Rbe2 {
+  int id = 0, gn = 0;
+  ComponentMask cm = 0;
+  std::vector<int> gm;
+  CardRef ref;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Constraints, sets and loads
+struct SpcEntry {  ///< one SPC/SPC1 grid-component entry (d = enforced value, SPC only)
+  int sid = 0, grid = 0;
+  ComponentMask c = 0;
+  double d = 0;
+  CardRef ref;
+};
+
+struct SpcAdd {
+  int sid = 0;
+  std::vector<int> sets;
+  CardRef ref;
+};
+
+struct DofSetEntry {  ///< ASET/ASET1/BSET/BSET1/SUPORT entries (grid or scalar point + components)
+  int grid = 0;
+  ComponentMask c = 0;
+  CardRef ref;
+};
+
+struct PointLoad {  ///< FORCE or MOMENT: value = scale * (n1, n2, n3) in system cid
+  enum class Kind : std::uint8_t { Force, Moment };
+  Kind kind = Kind::Force;
+  int sid = 0, grid = 0, cid = 0;
+  double scale = 0;
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  CardRef ref;
+};
+
+struct LoadCombination {  ///< LOAD: overall scale s, then (si, li) pairs
+  int sid = 0;
+  double s = 1;
+  std::vector<std::pair<double, int>> terms;
+  CardRef ref;
+};
+
+/// EIGRL (Lanczos) or EIGR (other methods; seflex honours F1, F2, ND and NORM of both).
+struct EigenMethod {
+  int sid = 0;
+  bool is_eigr = false;
+  std::string method = "LAN";
+  std::optional<double> f1, f2;     ///< frequency range (Hz); EIGRL V1/V2
+  std::optional<int> nd;            ///< number of roots
+  std::string norm = "MASS";        ///< MASS, MAX or POINT
+  int norm_grid = 0, norm_component = 0;
+  CardRef ref;
+};
+
+/// DMIG matrix (direct matrix input at grid/scalar-point dofs).
+struct DmigEntry {
+  int gj = 0, cj = 0, gi = 0, ci = 0;
+  double value = 0;
+};
+struct Dmig {
+  std::string name;
+  int form = 6;                     ///< 1 square, 6 symmetric, 9 rectangular
+  int tin = 1, tout = 0;
+  std::vector<DmigEntry> entries;
+  CardRef ref;
+};
+
+struct Param {
+  std::string name;
+  std::vector<std::string> values;  ///< raw field text after the name
+  CardRef ref;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Executive and case control (what seflex keeps of it)
+struct Subcase {
+  int id = 0;                       ///< 0 = the global (above any SUBCASE) selections
+  std::string label;
+  std::optional<int> spc, load, method, mpc;
+  std::vector<std::string> k2gg, m2gg;
+};
+
+struct CaseControl {
+  std::optional<std::string> sol;   ///< e.g. "103", "SEMODES", "3"
+  std::string title, subtitle;
+  Subcase global;
+  std::vector<Subcase> subcases;
+};
+
+/// Cards the reader recognised but seflex does not model, or did not recognise at all.
+struct UnsupportedCard {
+  std::string name;
+  std::size_t count = 0;
+  CardRef first;
+};
+
+// ---------------------------------------------------------------------------------------------
+struct Model {
+  std::vector<std::string> files;   ///< files[CardRef::file]; files[0] is the main deck
+
+  CaseControl case_control;
+
+  std::vector<CoordSys> coords;
+  std::vector<Grid> grids;
+  std::vector<ScalarPoint> spoints;
+  GridDefaults grdset;
+
+  std::vector<Mat1> mat1;
+  std::vector<BarProperty> bar_props;
+  std::vector<RodProperty> rod_props;
+  std::vector<ShellProperty> shell_props;
+  std::vector<SpringProperty> spring_props;
+
+  BarDefaults baror, beamor;
+  std::vector<Bar> bars;
+  std::vector<Rod> rods;
+  std::vector<Shell> shells;
+  std::vector<Conm2> conm2;
+  std::vector<Spring> springs;
+  std::vector<Rbe2> rbe2;
+
+  std::vector<SpcEntry> spcs;
+  std::vector<SpcAdd> spcadds;
+  std::vector<DofSetEntry> aset, bset, suport;
+  std::vector<PointLoad> point_loads;
+  std::vector<LoadCombination> load_combinations;
+  std::vector<EigenMethod> eigen_methods;
+  std::vector<Dmig> dmigs;
+  std::vector<Param> params;
+
+  std::vector<UnsupportedCard> unsupported;  ///< in order of first appearance
+
+  /// Named node sets (from gmsh physical groups of points, or user definitions): name -> grid ids.
+  std::map<std::string, std::vector<int>> node_sets;
+
+  // Lookups, built by fem::finalize (id -> position in the vector above).
+  std::unordered_map<int, std::uint32_t> grid_index, coord_index, mat1_index, bar_prop_index,
+      rod_prop_index, shell_prop_index, spring_prop_index, spoint_index;
+  bool finalized = false;
+};
+
+}  // namespace seflex::fem

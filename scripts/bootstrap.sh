@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# The two set-up commands of the README:
+#   scripts/bootstrap.sh demo   install what is missing, build, run the main job
+#   scripts/bootstrap.sh test   install what is missing, build, run the whole test suite (CTest),
+#                               then the bad-input tests again under ASan + UBSan
+# Build folders: build/ (Release) and build-asan/ (sanitizers). Parallelism: $SEFLEX_JOBS or nproc.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+mode="${1:-}"
+jobs="${SEFLEX_JOBS:-$(nproc)}"
+case "$mode" in
+  demo|test) ;;
+  *) echo "usage: scripts/bootstrap.sh demo|test" >&2; exit 2 ;;
+esac
+
+scripts/install-deps.sh
+
+generator=()
+command -v ninja >/dev/null 2>&1 && generator=(-G Ninja)
+
+configure() {  # build-dir, extra cmake args
+  local dir="$1"; shift
+  if [ ! -f "$dir/CMakeCache.txt" ]; then
+    cmake -S . -B "$dir" "${generator[@]}" "$@"
+  fi
+}
+
+if [ "$mode" = demo ]; then
+  configure build -DCMAKE_BUILD_TYPE=Release -DSEFLEX_BUILD_TESTS=OFF -DSEFLEX_BUILD_BENCH=OFF
+  cmake --build build -j "$jobs" --target seflex
+  exec scripts/main-job.sh build/apps/seflex
+fi
+
+configure build -DCMAKE_BUILD_TYPE=Release
+cmake --build build -j "$jobs"
+(cd build && ctest --output-on-failure -j "$jobs" --timeout 900)
+
+configure build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSEFLEX_SANITIZE=ON -DSEFLEX_BUILD_BENCH=OFF -DSEFLEX_BUILD_EXAMPLES=OFF
+cmake --build build-asan -j "$jobs" --target seflex test_input
+(cd build-asan && ctest --output-on-failure -j "$jobs" -L input --timeout 900)
+echo "bootstrap: all tests passed"

@@ -1,0 +1,75 @@
+#pragma once
+// Helpers shared by the tests: paths, temporary folders, and running the seflex command.
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace seflex::test {
+
+inline std::filesystem::path source_dir() { return SEFLEX_SOURCE_DIR; }
+inline std::filesystem::path data_dir() { return SEFLEX_TEST_DATA; }
+inline std::filesystem::path validation_dir() { return data_dir() / "validation"; }
+inline std::filesystem::path seflex_bin() { return SEFLEX_BIN; }
+
+/// A fresh temporary folder, removed when the object goes out of scope.
+class TempDir {
+ public:
+  TempDir() {
+    std::random_device rd;
+    path_ = std::filesystem::temp_directory_path() / ("seflex-test-" + std::to_string(rd()) + std::to_string(rd()));
+    std::filesystem::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+  /// Write `text` to a file in this folder and return its path.
+  std::filesystem::path write(const std::string& name, const std::string& text) const {
+    auto p = path_ / name;
+    std::filesystem::create_directories(p.parent_path());
+    std::ofstream(p, std::ios::binary) << text;
+    return p;
+  }
+
+ private:
+  std::filesystem::path path_;
+};
+
+inline std::string read_file(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+struct RunResult {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+/// Run `seflex <args>` (args already shell-quoted as needed); captures stdout and stderr.
+inline RunResult run_seflex(const std::string& args, const std::filesystem::path& cwd = {}) {
+  TempDir tmp;
+  const auto out = tmp / "stdout.txt", err = tmp / "stderr.txt";
+  std::string cmd;
+  if (!cwd.empty()) cmd += "cd '" + cwd.string() + "' && ";
+  cmd += "'" + seflex_bin().string() + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
+  const int status = std::system(cmd.c_str());
+  RunResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  r.out = read_file(out);
+  r.err = read_file(err);
+  return r;
+}
+
+}  // namespace seflex::test
