@@ -1,0 +1,50 @@
+#pragma once
+// Global stiffness and mass matrices of a finalized model on all g-set dofs (dof_map.hpp).
+//
+//   K = sum_e L_e^T K_e L_e,  M = WTMASS * sum_e L_e^T M_e L_e
+// where K_e, M_e are the element matrices in basic (element_*.hpp) and L_e gathers the element's
+// dofs and rotates each grid's blocks from basic to its displacement (CD) system.
+//
+// Storage: column-major Eigen::SparseMatrix<double>, compressed, BOTH triangles stored (the
+// matrices are symmetric). The sparsity pattern comes from the element connectivity (every grid
+// couples with every grid it shares an element with, 6 x 6 blocks, plus each node's own block) and
+// values are scattered into it: no triplet list. With `prune_zeros` (default) the entries that are
+// exactly zero are removed afterwards (e.g. membrane-bending coupling of a flat plate in a basic
+// plane, the rotational diagonal of a lumped mass, a dof no element stiffens).
+//
+// Elements: CBAR/CBEAM, CROD/CONROD, CQUAD4, CTRIA3, CONM2, CELAS1/2. RBE2 and SPCs are
+// constraints (constraints.hpp). Cards in Model::unsupported are ignored here.
+#include <Eigen/SparseCore>
+
+#include "seflex/fem/dof_map.hpp"
+#include "seflex/fem/element_common.hpp"
+#include "seflex/fem/model.hpp"
+
+namespace seflex::fem {
+
+struct AssemblyOptions {
+  MassKind mass = MassKind::Lumped;  ///< PARAM COUPMASS > 0 -> Coupled (Nastran default lumped)
+  double wtmass = 1.0;               ///< PARAM WTMASS: multiplies every mass term
+  double k6rot = 100.0;              ///< PARAM K6ROT: drilling stiffness factor of CQUAD4/CTRIA3
+  bool prune_zeros = true;           ///< drop exact zeros from K and M after assembly
+};
+
+/// Options from the model's PARAMs (COUPMASS, WTMASS, K6ROT); defaults as above when absent.
+/// Throws InputError for a non-numeric or non-positive WTMASS, or a negative K6ROT.
+AssemblyOptions assembly_options(const Model& model);
+
+struct GlobalMatrices {
+  DofMap dofs;
+  Eigen::SparseMatrix<double> K;  ///< n x n, n = dofs.size()
+  Eigen::SparseMatrix<double> M;  ///< n x n, WTMASS applied
+};
+
+/// Assemble K and M of a finalized model. Throws InputError (naming the card) for elements with
+/// undefined references or impossible geometry.
+GlobalMatrices assemble(const Model& model, const AssemblyOptions& options);
+
+/// Axes of each grid's displacement system (columns, in basic); empty optional = basic.
+/// Used by assembly, constraints and loads to rotate between basic and CD components.
+std::vector<std::optional<Eigen::Matrix3d>> grid_cd_axes(const Model& model);
+
+}  // namespace seflex::fem

@@ -1,0 +1,61 @@
+#pragma once
+// CBAR / CBEAM: prismatic 3-D beam between two grids, 12 x 12 on (GA, GB) x (T1 T2 T3 R1 R2 R3),
+// in the basic system.
+//
+// Formulation (exact for a prismatic bar, Przemieniecki, Theory of Matrix Structural Analysis,
+// 1968, ch. 5): the flexibility of the bar clamped at end A and loaded at end B,
+//   C = int_0^L B(s)^T S^-1 B(s) ds,   section resultants = B(s) * (tip loads),
+// with the section compliance S^-1 = diag(1/EA, 1/(G K1 A), 1/(G K2 A), 1/GJ) and the bending
+// compliance inv(E [I2 -I12; -I12 I1]); K = Gamma^T C^-1 Gamma with Gamma the deformation of B
+// relative to A's rigid motion. Euler-Bernoulli when K1/K2 are blank, Timoshenko otherwise; I12
+// couples the two bending planes. The six rigid-body modes are in the null space by construction.
+//
+// Element axes (Nastran): x from offset end A to offset end B; y in the plane of x and the
+// orientation vector v; z = x X y. Offsets WA/WB are rigid links from the grid to the bar end.
+// Pin flags release element-axis dofs at an end by static condensation (their rows/columns of the
+// end stiffness become zero); mass is not affected by pin flags.
+//
+// Mass: lumped (Nastran default): (rho A + NSM) L / 2 on the three translations of each bar end,
+// no rotary inertia. Coupled (PARAM COUPMASS > 0): linear axial, cubic-Hermite transverse
+// translational mass (no rotary inertia of bending) and torsional inertia rho (I1 + I2) L/6 [2 1; 1 2]
+// so that the rigid spin about the bar axis has the section's exact polar inertia. With offsets
+// the end masses sit at the bar ends and reach the grids through the rigid links.
+#include <Eigen/Core>
+
+#include "seflex/fem/element_common.hpp"
+#include "seflex/fem/material.hpp"
+#include "seflex/fem/model.hpp"
+#include "seflex/fem/section.hpp"
+
+namespace seflex::fem {
+
+struct BarElement {
+  Eigen::Vector3d x_A = Eigen::Vector3d::Zero(), x_B = Eigen::Vector3d::Zero();  ///< grid positions, basic
+  Eigen::Vector3d w_A = Eigen::Vector3d::Zero(), w_B = Eigen::Vector3d::Zero();  ///< offsets grid -> bar end, basic
+  Eigen::Vector3d v = Eigen::Vector3d::UnitZ();  ///< orientation vector, basic (any length, not along x)
+  BarSection section;
+  IsotropicMaterial material;
+  ComponentMask pin_A = 0, pin_B = 0;  ///< released element-axis dofs (bit c-1 for component c)
+};
+
+/// Element axes as columns in basic (R_BE: x, y, z) and the length between the offset ends.
+/// Precondition: non-zero length and v not parallel to the axis (SEFLEX_DEMAND).
+Eigen::Matrix3d bar_axes(const BarElement& e);
+double bar_length(const BarElement& e);
+
+/// Stiffness in element axes at the bar ends (before pin flags, offsets and rotation), 12 x 12.
+NodeMatrix<2> bar_stiffness_element_axes(const BarElement& e);
+
+/// Stiffness (12 x 12, basic, grid dofs): pins, offsets and rotation applied.
+/// Throws InvariantError if a pin flag releases a dof the bar has no stiffness for.
+NodeMatrix<2> bar_stiffness(const BarElement& e);
+
+/// Mass (12 x 12, basic, grid dofs), before WTMASS.
+NodeMatrix<2> bar_mass(const BarElement& e, MassKind kind);
+
+/// Resolve a CBAR/CBEAM of a finalized model (property, material, orientation, offsets).
+/// Throws InputError naming the card for undefined references, zero length, v along the axis,
+/// or a section with I1 I2 <= I12^2.
+BarElement make_bar_element(const Model& model, const Bar& bar);
+
+}  // namespace seflex::fem

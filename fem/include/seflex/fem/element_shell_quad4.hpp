@@ -1,0 +1,53 @@
+#pragma once
+// CQUAD4: 4-node flat shell facet with warping correction, 24 x 24 on 4 grids x 6 dofs, basic.
+//
+// Formulation, in the element's mean plane (normal e3 = (x3 - x1) x (x4 - x2) normalised, origin
+// at the centroid; the corners are projected onto it):
+// - Membrane: the bilinear quadrilateral with two incompatible modes per direction (QM6), the
+//   incompatible-mode strains evaluated with the centre Jacobian so that it passes the patch test
+//   on any convex quadrilateral: Taylor, Beresford & Wilson, "A non-conforming element for stress
+//   analysis", IJNME 10 (1976) 1211-1219. Exact in-plane pure bending on rectangles.
+// - Bending and transverse shear: the Mindlin plate of the MITC4 element (Bathe & Dvorkin, "A
+//   four-node plate bending element based on Mindlin/Reissner plate theory and a mixed
+//   interpolation", IJNME 21 (1985) 367-383): bilinear rotations, covariant transverse shear
+//   strains tied at the edge midpoints, so the element does not lock in thin plates and passes the
+//   constant-curvature patch test on distorted meshes.
+// - Drilling: the in-plane rotation theta_z is tied to the membrane rotation
+//   omega = (dv/dx - du/dy)/2 by the penalty  (K6ROT * 1e-6) G t int (theta_z - omega)^2 dA
+//   (2 x 2 Gauss), rigid-body invariant; the default K6ROT = 100 gives a drilling diagonal of about
+//   1e-5 G t A per node, the magnitude MSC Nastran uses (MYSTRAN pull request #175).
+// - Warped elements: rigid links from the grids to their projections on the mean plane
+//   (MacNeal, "Finite Elements: Their Design and Performance", 1994, sec. 9.4), which keep the six
+//   rigid-body modes exact.
+// Section: membrane from MID1 with T, bending from MID2 with 12I/T^3, transverse shear from MID3
+// with TS/T (section.hpp). Corner thicknesses T1..T4 are averaged.
+// Mass: lumped (Nastran default) m_i = (rho t + NSM) int N_i dA on the translations of grid i
+// (A/4 on a parallelogram); coupled (COUPMASS > 0) (rho t + NSM) int N_i N_j dA on each
+// translation; no rotary inertia either way.
+#include <Eigen/Core>
+#include <array>
+
+#include "seflex/fem/element_common.hpp"
+#include "seflex/fem/model.hpp"
+#include "seflex/fem/section.hpp"
+
+namespace seflex::fem {
+
+struct Quad4Element {
+  std::array<Eigen::Vector3d, 4> x{};  ///< corner positions G1..G4, basic (consecutive around the edge)
+  ShellSection section;
+};
+
+/// Stiffness (24 x 24, basic). k6rot: PARAM K6ROT.
+NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot);
+/// Mass (24 x 24, basic), before WTMASS.
+NodeMatrix<4> quad4_mass(const Quad4Element& e, MassKind kind);
+/// Lumped translational mass of each corner (int N_i dA (rho t + NSM)), before WTMASS.
+std::array<double, 4> quad4_lumped_masses(const Quad4Element& e);
+
+/// Resolve a CQUAD4 of a finalized model; throws InputError for undefined references, repeated
+/// grids, or a degenerate (zero-area or non-convex) quadrilateral.
+/// `section`, when given, is used instead of resolving the PSHELL again (assembly caches it).
+Quad4Element make_quad4_element(const Model& model, const Shell& shell, const ShellSection* section = nullptr);
+
+}  // namespace seflex::fem

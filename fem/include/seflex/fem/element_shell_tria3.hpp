@@ -1,0 +1,37 @@
+#pragma once
+// CTRIA3: 3-node flat shell, 18 x 18 on 3 grids x 6 dofs, basic.
+//
+// Formulation, in the element plane (e1 along G1->G2, e3 the normal):
+// - Membrane: constant-strain triangle.
+// - Bending and transverse shear: the Mindlin plate of MITC3 (Lee & Bathe, "Development of MITC
+//   isotropic triangular shell finite elements", Computers & Structures 82 (2004) 945-962): linear
+//   rotations and deflection; the transverse shear strain is the field a + b (-y, x) whose
+//   tangential component at each edge midpoint equals the edge's tangential shear strain, which
+//   removes shear locking of the linear triangle in most situations and passes the
+//   constant-curvature patch test.
+// - Drilling: the same K6ROT penalty as CQUAD4 on (theta_z - omega)^2, 3-point rule.
+// Mass: lumped (rho t + NSM) A / 3 on the translations of each grid; coupled
+// (rho t + NSM) A / 12 [2 1 1; 1 2 1; 1 1 2] on each translation; no rotary inertia.
+#include <Eigen/Core>
+#include <array>
+
+#include "seflex/fem/element_common.hpp"
+#include "seflex/fem/model.hpp"
+#include "seflex/fem/section.hpp"
+
+namespace seflex::fem {
+
+struct Tria3Element {
+  std::array<Eigen::Vector3d, 3> x{};  ///< corner positions G1..G3, basic
+  ShellSection section;
+};
+
+NodeMatrix<3> tria3_stiffness(const Tria3Element& e, double k6rot);  ///< 18 x 18, basic
+NodeMatrix<3> tria3_mass(const Tria3Element& e, MassKind kind);      ///< before WTMASS
+
+/// Resolve a CTRIA3 of a finalized model; throws InputError for undefined references, repeated
+/// grids or a zero area.
+/// `section`, when given, is used instead of resolving the PSHELL again (assembly caches it).
+Tria3Element make_tria3_element(const Model& model, const Shell& shell, const ShellSection* section = nullptr);
+
+}  // namespace seflex::fem

@@ -1,0 +1,21 @@
+#pragma once
+// CELAS1 / CELAS2: scalar spring k between two g-set dofs (grid components in the grids'
+// displacement systems, or scalar points); grounded when the second point is blank:
+//   K = k [1 -1; -1 1] on (dof1, dof2), or k on dof1 alone.
+#include <Eigen/Core>
+
+#include "seflex/fem/dof_map.hpp"
+#include "seflex/fem/model.hpp"
+
+namespace seflex::fem {
+
+struct SpringElement {
+  double k = 0;
+  Eigen::Index dof1 = -1, dof2 = -1;  ///< g-set dofs; -1 = grounded end
+};
+
+/// Resolve a CELAS1 (PELAS) or CELAS2; throws InputError for undefined points, bad components,
+/// a spring with both ends grounded, or both ends on the same dof.
+SpringElement make_spring_element(const Model& model, const DofMap& dofs, const Spring& s);
+
+}  // namespace seflex::fem

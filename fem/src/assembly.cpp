@@ -1,0 +1,204 @@
+// Assembly of K and M (see assembly.hpp).
+#include "seflex/fem/assembly.hpp"
+
+#include "block_pattern.hpp"
+#include "model_lookup.hpp"
+#include "seflex/common/error.hpp"
+#include "seflex/fem/element_bar.hpp"
+#include "seflex/fem/element_conm2.hpp"
+#include "seflex/fem/element_rod.hpp"
+#include "seflex/fem/element_shell_quad4.hpp"
+#include "seflex/fem/element_shell_tria3.hpp"
+#include "seflex/fem/element_spring.hpp"
+
+namespace seflex::fem {
+
+AssemblyOptions assembly_options(const Model& model) {
+  AssemblyOptions o;
+  o.mass = detail::param_number(model, "COUPMASS", -1.0) > 0.0 ? MassKind::Coupled : MassKind::Lumped;
+  o.wtmass = detail::param_number(model, "WTMASS", 1.0);
+  o.k6rot = detail::param_number(model, "K6ROT", 100.0);
+  for (const Param& p : model.params) {
+    if (p.name == "WTMASS" && !(o.wtmass > 0.0))
+      throw InputError(detail::source_of(model, p.ref), "PARAM WTMASS: expected a positive number");
+    if (p.name == "K6ROT" && !(o.k6rot >= 0.0))
+      throw InputError(detail::source_of(model, p.ref), "PARAM K6ROT: expected a number >= 0");
+  }
+  return o;
+}
+
+std::vector<std::optional<Eigen::Matrix3d>> grid_cd_axes(const Model& model) {
+  std::vector<std::optional<Eigen::Matrix3d>> axes(model.grids.size());
+  for (std::size_t i = 0; i < model.grids.size(); ++i) {
+    const Grid& g = model.grids[i];
+    if (g.cd != 0) axes[i] = detail::axes_at(model, g.cd, g.x_basic, g.ref, "GRID", g.id, "7 (CD)");
+  }
+  return axes;
+}
+
+namespace {
+
+using Axes = std::vector<std::optional<Eigen::Matrix3d>>;
+
+// Rotate the node blocks of an element matrix from basic to each grid's CD system:
+// block(i, j) <- A_i^T block(i, j) A_j for the translation and rotation 3 x 3 blocks.
+template <int N>
+void to_cd(const std::int32_t* nodes, const Axes& axes, NodeMatrix<N>& K) {
+  bool any = false;
+  for (int n = 0; n < N; ++n) any = any || axes[nodes[n]].has_value();
+  if (!any) return;
+  for (int n = 0; n < N; ++n) {
+    const auto& A = axes[nodes[n]];
+    if (!A) continue;
+    for (int h = 0; h < 2; ++h) {
+      const int o = 6 * n + 3 * h;
+      K.template middleRows<3>(o) = A->transpose() * K.template middleRows<3>(o);
+      K.template middleCols<3>(o) = K.template middleCols<3>(o) * (*A);
+    }
+  }
+}
+
+std::int32_t node_of_grid(const Model& model, int grid_id, const CardRef& ref, const std::string& card, int id,
+                          const std::string& field) {
+  return static_cast<std::int32_t>(detail::grid_index(model, grid_id, ref, card, id, field));
+}
+
+}  // namespace
+
+GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
+  SEFLEX_DEMAND(model.finalized || model.grids.empty() || !model.grid_index.empty(),
+                "assemble needs a finalized model");
+  GlobalMatrices g;
+  g.dofs = make_dof_map(model);
+  const Axes axes = grid_cd_axes(model);
+
+  // Resolve every element once (this also checks every reference) and collect the connectivity.
+  std::vector<BarElement> bars;
+  std::vector<RodElement> rods;
+  std::vector<Quad4Element> quads;
+  std::vector<Tria3Element> trias;
+  std::vector<Conm2Element> masses;
+  std::vector<SpringElement> springs;
+  detail::Connectivity conn;
+  std::vector<std::int32_t> bar_nodes, rod_nodes, quad_nodes, tria_nodes, mass_nodes;
+
+  bars.reserve(model.bars.size());
+  for (const Bar& b : model.bars) {
+    bars.push_back(make_bar_element(model, b));
+    const std::string card = b.is_beam ? "CBEAM" : "CBAR";
+    const std::int32_t n[2] = {node_of_grid(model, b.ga, b.ref, card, b.id, "4 (GA)"),
+                               node_of_grid(model, b.gb, b.ref, card, b.id, "5 (GB)")};
+    conn.add(n, n + 2);
+    bar_nodes.insert(bar_nodes.end(), n, n + 2);
+  }
+  rods.reserve(model.rods.size());
+  for (const Rod& r : model.rods) {
+    rods.push_back(make_rod_element(model, r));
+    const std::string card = r.inline_property ? "CONROD" : "CROD";
+    const std::int32_t n[2] = {node_of_grid(model, r.ga, r.ref, card, r.id, "G1"),
+                               node_of_grid(model, r.gb, r.ref, card, r.id, "G2")};
+    conn.add(n, n + 2);
+    rod_nodes.insert(rod_nodes.end(), n, n + 2);
+  }
+  detail::ShellSectionCache sections;
+  for (const Shell& s : model.shells) {
+    const std::string card = s.nnode == 4 ? "CQUAD4" : "CTRIA3";
+    std::int32_t n[4];
+    for (int k = 0; k < s.nnode; ++k)
+      n[k] = node_of_grid(model, s.g[k], s.ref, card, s.id, std::to_string(k + 4) + " (G" + std::to_string(k + 1) + ")");
+    conn.add(n, n + s.nnode);
+    if (s.nnode == 4) {
+      quads.push_back(make_quad4_element(model, s, &sections.get(model, s)));
+      quad_nodes.insert(quad_nodes.end(), n, n + 4);
+    } else {
+      trias.push_back(make_tria3_element(model, s, &sections.get(model, s)));
+      tria_nodes.insert(tria_nodes.end(), n, n + 3);
+    }
+  }
+  for (const Conm2& c : model.conm2) {
+    masses.push_back(make_conm2_element(model, c));
+    mass_nodes.push_back(node_of_grid(model, c.grid, c.ref, "CONM2", c.id, "3 (G)"));
+  }
+  for (const Spring& s : model.springs) {
+    springs.push_back(make_spring_element(model, g.dofs, s));
+    const SpringElement& e = springs.back();
+    if (e.dof2 < 0)
+      conn.add({static_cast<std::int32_t>(g.dofs.node_of_dof(e.dof1))});
+    else
+      conn.add({static_cast<std::int32_t>(g.dofs.node_of_dof(e.dof1)),
+                static_cast<std::int32_t>(g.dofs.node_of_dof(e.dof2))});
+  }
+
+  // Stiffness.
+  {
+    const detail::BlockPattern pattern(g.dofs, conn, false);
+    g.K = pattern.make_matrix();
+    for (std::size_t i = 0; i < bars.size(); ++i) {
+      NodeMatrix<2> K = bar_stiffness(bars[i]);
+      to_cd<2>(&bar_nodes[2 * i], axes, K);
+      pattern.scatter<2>(&bar_nodes[2 * i], K, g.K);
+    }
+    for (std::size_t i = 0; i < rods.size(); ++i) {
+      NodeMatrix<2> K = rod_stiffness(rods[i]);
+      to_cd<2>(&rod_nodes[2 * i], axes, K);
+      pattern.scatter<2>(&rod_nodes[2 * i], K, g.K);
+    }
+    for (std::size_t i = 0; i < quads.size(); ++i) {
+      NodeMatrix<4> K = quad4_stiffness(quads[i], options.k6rot);
+      to_cd<4>(&quad_nodes[4 * i], axes, K);
+      pattern.scatter<4>(&quad_nodes[4 * i], K, g.K);
+    }
+    for (std::size_t i = 0; i < trias.size(); ++i) {
+      NodeMatrix<3> K = tria3_stiffness(trias[i], options.k6rot);
+      to_cd<3>(&tria_nodes[3 * i], axes, K);
+      pattern.scatter<3>(&tria_nodes[3 * i], K, g.K);
+    }
+    for (const SpringElement& s : springs) {
+      detail::add_entry(g.K, s.dof1, s.dof1, s.k);
+      if (s.dof2 >= 0) {
+        detail::add_entry(g.K, s.dof2, s.dof2, s.k);
+        detail::add_entry(g.K, s.dof1, s.dof2, -s.k);
+        detail::add_entry(g.K, s.dof2, s.dof1, -s.k);
+      }
+    }
+  }
+
+  // Mass: lumped mass only couples dofs of the same node.
+  {
+    const detail::BlockPattern pattern(g.dofs, conn, options.mass == MassKind::Lumped);
+    g.M = pattern.make_matrix();
+    const double w = options.wtmass;
+    for (std::size_t i = 0; i < bars.size(); ++i) {
+      NodeMatrix<2> M = w * bar_mass(bars[i], options.mass);
+      to_cd<2>(&bar_nodes[2 * i], axes, M);
+      pattern.scatter<2>(&bar_nodes[2 * i], M, g.M);
+    }
+    for (std::size_t i = 0; i < rods.size(); ++i) {
+      NodeMatrix<2> M = w * rod_mass(rods[i], options.mass);
+      to_cd<2>(&rod_nodes[2 * i], axes, M);
+      pattern.scatter<2>(&rod_nodes[2 * i], M, g.M);
+    }
+    for (std::size_t i = 0; i < quads.size(); ++i) {
+      NodeMatrix<4> M = w * quad4_mass(quads[i], options.mass);
+      to_cd<4>(&quad_nodes[4 * i], axes, M);
+      pattern.scatter<4>(&quad_nodes[4 * i], M, g.M);
+    }
+    for (std::size_t i = 0; i < trias.size(); ++i) {
+      NodeMatrix<3> M = w * tria3_mass(trias[i], options.mass);
+      to_cd<3>(&tria_nodes[3 * i], axes, M);
+      pattern.scatter<3>(&tria_nodes[3 * i], M, g.M);
+    }
+    for (std::size_t i = 0; i < masses.size(); ++i) {
+      NodeMatrix<1> M = w * conm2_mass(masses[i]);
+      to_cd<1>(&mass_nodes[i], axes, M);
+      pattern.scatter<1>(&mass_nodes[i], M, g.M);
+    }
+  }
+  if (options.prune_zeros) {
+    g.K.prune(0.0, 0.0);
+    g.M.prune(0.0, 0.0);
+  }
+  return g;
+}
+
+}  // namespace seflex::fem

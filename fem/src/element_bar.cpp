@@ -1,0 +1,272 @@
+// CBAR / CBEAM element (see element_bar.hpp for the formulation and conventions).
+#include "seflex/fem/element_bar.hpp"
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+#include <cmath>
+#include <vector>
+
+#include "model_lookup.hpp"
+#include "seflex/common/error.hpp"
+#include "seflex/fem/components.hpp"
+
+namespace seflex::fem {
+namespace {
+
+using Matrix12 = NodeMatrix<2>;
+
+// Indices of the element-axis dofs of one end: u v w (0..2), theta_x theta_y theta_z (3..5).
+constexpr int kU = 0, kV = 1, kW = 2, kRx = 3, kRy = 4, kRz = 5;
+
+// Add Gamma^T Kd Gamma for a block of tip loads whose tip deformations are rows `gamma` (n x 12).
+template <int n>
+void add_flexibility_block(const Eigen::Matrix<double, n, n>& C, const Eigen::Matrix<double, n, 12>& gamma,
+                           Matrix12& K) {
+  const Eigen::Matrix<double, n, n> Kd = C.inverse();
+  K += gamma.transpose() * Kd * gamma;
+}
+
+// Deformation of end B relative to the rigid motion of end A, per element-axis component:
+// translations d = u_B - u_A + (L e_x) x theta_A ... written out for each component.
+Eigen::Matrix<double, 1, 12> deformation_row(int comp, double L) {
+  Eigen::Matrix<double, 1, 12> g = Eigen::Matrix<double, 1, 12>::Zero();
+  g(6 + comp) = 1.0;
+  g(comp) = -1.0;
+  if (comp == kV) g(kRz) = -L;  // v_B - v_A - L theta_z,A
+  if (comp == kW) g(kRy) = L;   // w_B - w_A + L theta_y,A
+  return g;
+}
+
+}  // namespace
+
+Eigen::Matrix3d bar_axes(const BarElement& e) {
+  const Eigen::Vector3d d = (e.x_B + e.w_B) - (e.x_A + e.w_A);
+  const double L = d.norm();
+  SEFLEX_DEMAND(L > 0.0, "bar of zero length");
+  const Eigen::Vector3d ex = d / L;
+  const Eigen::Vector3d zz = ex.cross(e.v);
+  SEFLEX_DEMAND(zz.norm() > 1e-9 * e.v.norm(), "bar orientation vector parallel to the bar axis");
+  const Eigen::Vector3d ez = zz.normalized();
+  Eigen::Matrix3d R;
+  R.col(0) = ex;
+  R.col(1) = ez.cross(ex);
+  R.col(2) = ez;
+  return R;
+}
+
+double bar_length(const BarElement& e) { return ((e.x_B + e.w_B) - (e.x_A + e.w_A)).norm(); }
+
+NodeMatrix<2> bar_stiffness_element_axes(const BarElement& e) {
+  const double L = bar_length(e);
+  SEFLEX_DEMAND(L > 0.0, "bar of zero length");
+  const BarSection& s = e.section;
+  const double E = e.material.E, G = e.material.G;
+  Matrix12 K = Matrix12::Zero();
+
+  // Axial and torsion: decoupled from bending (section at the centroid and shear centre).
+  if (s.A > 0.0 && E > 0.0) {
+    const Eigen::Matrix<double, 1, 12> g = deformation_row(kU, L);
+    K += (E * s.A / L) * g.transpose() * g;
+  }
+  if (s.J > 0.0 && G > 0.0) {
+    const Eigen::Matrix<double, 1, 12> g = deformation_row(kRx, L);
+    K += (G * s.J / L) * g.transpose() * g;
+  }
+  // Transverse shear compliance per length (0 = rigid in shear).
+  const double fy = (s.K1 > 0.0 && s.A > 0.0 && G > 0.0) ? 1.0 / (G * s.K1 * s.A) : 0.0;
+  const double fz = (s.K2 > 0.0 && s.A > 0.0 && G > 0.0) ? 1.0 / (G * s.K2 * s.A) : 0.0;
+
+  if (s.I12 == 0.0) {
+    // Plane 1 (x-y): tip loads (Vy, Mz) -> (v_B, theta_z,B); resultants Vy, Mz + (L - s) Vy.
+    if (s.I1 > 0.0 && E > 0.0) {
+      const double EI = E * s.I1;
+      Eigen::Matrix2d C;
+      C << fy * L + L * L * L / (3 * EI), L * L / (2 * EI), L * L / (2 * EI), L / EI;
+      Eigen::Matrix<double, 2, 12> g;
+      g.row(0) = deformation_row(kV, L);
+      g.row(1) = deformation_row(kRz, L);
+      add_flexibility_block<2>(C, g, K);
+    }
+    // Plane 2 (x-z): tip loads (Vz, My) -> (w_B, theta_y,B); resultants Vz, My - (L - s) Vz.
+    if (s.I2 > 0.0 && E > 0.0) {
+      const double EI = E * s.I2;
+      Eigen::Matrix2d C;
+      C << fz * L + L * L * L / (3 * EI), -L * L / (2 * EI), -L * L / (2 * EI), L / EI;
+      Eigen::Matrix<double, 2, 12> g;
+      g.row(0) = deformation_row(kW, L);
+      g.row(1) = deformation_row(kRy, L);
+      add_flexibility_block<2>(C, g, K);
+    }
+  } else {
+    // Coupled bending: tip loads P = (Vy, Vz, My, Mz); resultants B(s) P =
+    // (Vy, Vz, My - (L-s) Vz, Mz + (L-s) Vy); curvature (ky, kz) = inv(E [I2 -I12; -I12 I1]) (My, Mz).
+    const double det = s.I1 * s.I2 - s.I12 * s.I12;
+    SEFLEX_DEMAND(det > 0.0 && E > 0.0, "bar section needs I1 I2 > I12^2");
+    Eigen::Matrix2d Cb;  // inverse of E [I2 -I12; -I12 I1]
+    Cb << s.I1, s.I12, s.I12, s.I2;
+    Cb /= E * det;
+    Eigen::Matrix4d Sinv = Eigen::Matrix4d::Zero();
+    Sinv(0, 0) = fy;
+    Sinv(1, 1) = fz;
+    Sinv.block<2, 2>(2, 2) = Cb;
+    Eigen::Matrix4d C = Eigen::Matrix4d::Zero();
+    const double gp = 1.0 / std::sqrt(3.0);  // 2-point Gauss: exact, the integrand is quadratic in s
+    for (double xi : {-gp, gp}) {
+      const double a = L - 0.5 * L * (1.0 + xi);  // L - s
+      Eigen::Matrix4d B = Eigen::Matrix4d::Identity();
+      B(2, 1) = -a;
+      B(3, 0) = a;
+      C += (0.5 * L) * B.transpose() * Sinv * B;
+    }
+    Eigen::Matrix<double, 4, 12> g;
+    g.row(0) = deformation_row(kV, L);
+    g.row(1) = deformation_row(kW, L);
+    g.row(2) = deformation_row(kRy, L);
+    g.row(3) = deformation_row(kRz, L);
+    add_flexibility_block<4>(C, g, K);
+  }
+  return K;
+}
+
+namespace {
+
+// Statically condense the released dofs of K (element axes); returns false if K restricted to the
+// released dofs is not positive definite (a release without stiffness, or a mechanism).
+bool condense_pins(ComponentMask pin_A, ComponentMask pin_B, Matrix12& K) {
+  std::vector<int> p, r;
+  for (int i = 0; i < 12; ++i) {
+    const ComponentMask m = i < 6 ? pin_A : pin_B;
+    (has_component(m, i % 6 + 1) ? p : r).push_back(i);
+  }
+  if (p.empty()) return true;
+  const int np = static_cast<int>(p.size()), nr = static_cast<int>(r.size());
+  Eigen::MatrixXd Kpp(np, np), Kpr(np, nr), Krr(nr, nr);
+  for (int i = 0; i < np; ++i) {
+    for (int j = 0; j < np; ++j) Kpp(i, j) = K(p[i], p[j]);
+    for (int j = 0; j < nr; ++j) Kpr(i, j) = K(p[i], r[j]);
+  }
+  for (int i = 0; i < nr; ++i)
+    for (int j = 0; j < nr; ++j) Krr(i, j) = K(r[i], r[j]);
+  Eigen::LLT<Eigen::MatrixXd> llt(Kpp);
+  if (llt.info() != Eigen::Success) return false;
+  const double scale = Kpp.diagonal().maxCoeff();
+  const Eigen::VectorXd d = llt.matrixL().toDenseMatrix().diagonal();
+  if (!(d.minCoeff() * d.minCoeff() > 1e-10 * scale)) return false;
+  const Eigen::MatrixXd Kc = Krr - Kpr.transpose() * llt.solve(Kpr);
+  K.setZero();
+  for (int i = 0; i < nr; ++i)
+    for (int j = 0; j < nr; ++j) K(r[i], r[j]) = 0.5 * (Kc(i, j) + Kc(j, i));
+  return true;
+}
+
+void to_grids(const BarElement& e, const Eigen::Matrix3d& R_BE, Matrix12& K) {
+  rotate_local_to_basic<2>(R_BE, K);
+  apply_node_offsets<2>({e.w_A, e.w_B}, K);
+}
+
+}  // namespace
+
+NodeMatrix<2> bar_stiffness(const BarElement& e) {
+  Matrix12 K = bar_stiffness_element_axes(e);
+  SEFLEX_DEMAND(condense_pins(e.pin_A, e.pin_B, K), "bar pin flags release dofs without stiffness");
+  to_grids(e, bar_axes(e), K);
+  return K;
+}
+
+NodeMatrix<2> bar_mass(const BarElement& e, MassKind kind) {
+  const double L = bar_length(e);
+  const BarSection& s = e.section;
+  const double m = (e.material.rho * s.A + s.nsm) * L;  // total translational mass
+  Matrix12 M = Matrix12::Zero();
+  if (kind == MassKind::Lumped) {
+    for (int i : {0, 1, 2, 6, 7, 8}) M(i, i) = 0.5 * m;
+    apply_node_offsets<2>({e.w_A, e.w_B}, M);  // isotropic: no rotation needed
+    return M;
+  }
+  // Coupled mass in element axes.
+  const double a = m / 6.0;  // linear axial (and torsion pattern [2 1; 1 2])
+  M(kU, kU) = M(6 + kU, 6 + kU) = 2 * a;
+  M(kU, 6 + kU) = M(6 + kU, kU) = a;
+  const double jt = e.material.rho * (s.I1 + s.I2) * L / 6.0;
+  M(kRx, kRx) = M(6 + kRx, 6 + kRx) = 2 * jt;
+  M(kRx, 6 + kRx) = M(6 + kRx, kRx) = jt;
+  // Cubic Hermite, plane 1 dofs (v_A, tz_A, v_B, tz_B); plane 2 (w_A, ty_A, w_B, ty_B) with
+  // theta_y = -w' (coupling terms change sign).
+  Eigen::Matrix4d H;
+  H << 156, 22 * L, 54, -13 * L, 22 * L, 4 * L * L, 13 * L, -3 * L * L, 54, 13 * L, 156, -22 * L, -13 * L,
+      -3 * L * L, -22 * L, 4 * L * L;
+  H *= m / 420.0;
+  const int p1[4] = {kV, kRz, 6 + kV, 6 + kRz};
+  const int p2[4] = {kW, kRy, 6 + kW, 6 + kRy};
+  const double sgn[4] = {1, -1, 1, -1};
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      M(p1[i], p1[j]) = H(i, j);
+      M(p2[i], p2[j]) = sgn[i] * sgn[j] * H(i, j);
+    }
+  to_grids(e, bar_axes(e), M);
+  return M;
+}
+
+BarElement make_bar_element(const Model& model, const Bar& bar) {
+  const std::string card = bar.is_beam ? "CBEAM" : "CBAR";
+  BarElement e;
+  const Grid& ga = model.grids[detail::grid_index(model, bar.ga, bar.ref, card, bar.id, "4 (GA)")];
+  const Grid& gb = model.grids[detail::grid_index(model, bar.gb, bar.ref, card, bar.id, "5 (GB)")];
+  e.x_A = ga.x_basic;
+  e.x_B = gb.x_basic;
+  const Eigen::Matrix3d A_A = detail::axes_at(model, ga.cd, ga.x_basic, ga.ref, "GRID", ga.id, "7 (CD)");
+  const Eigen::Matrix3d A_B = detail::axes_at(model, gb.cd, gb.x_basic, gb.ref, "GRID", gb.id, "7 (CD)");
+
+  const auto pit = model.bar_prop_index.find(bar.pid);
+  if (pit == model.bar_prop_index.end())
+    detail::fail(model, bar.ref, card, bar.id, "3 (PID)",
+                 "references " + std::string(bar.is_beam ? "PBEAM" : "PBAR") + " " + std::to_string(bar.pid) +
+                     ", which is not defined");
+  const BarProperty& p = model.bar_props[pit->second];
+  static const char* kSourceName[] = {"PBAR", "PBARL", "PBEAM", "PBEAML"};
+  const std::string pcard = kSourceName[static_cast<int>(p.source)];
+  e.section = {p.A, p.I1, p.I2, p.I12, p.J, p.K1, p.K2, p.nsm};
+  e.material = detail::material(model, p.mid, p.ref, pcard, p.id, "3 (MID)");
+  if (p.I12 != 0.0 && !(p.I1 * p.I2 > p.I12 * p.I12))
+    detail::fail(model, p.ref, pcard, p.id, "I12", "I1 * I2 must exceed I12^2 (I1 = " + std::to_string(p.I1) +
+                                                       ", I2 = " + std::to_string(p.I2) +
+                                                       ", I12 = " + std::to_string(p.I12) + ")");
+
+  const std::string offt = bar.offt.size() == 3 ? bar.offt : std::string("GGG");
+  if (bar.has_g0) {
+    const Grid& g0 = model.grids[detail::grid_index(model, bar.g0, bar.ref, card, bar.id, "6 (G0)")];
+    e.v = g0.x_basic - ga.x_basic;
+  } else {
+    e.v = offt[0] == 'B' ? bar.v : Eigen::Vector3d(A_A * bar.v);
+  }
+  // Offsets in GA/GB's displacement system ('G'), basic ('B') or element axes ('O'); element axes
+  // for 'O' offsets are taken from the grid-to-grid line.
+  Eigen::Matrix3d R0 = Eigen::Matrix3d::Identity();
+  if (offt[1] == 'O' || offt[2] == 'O') {
+    BarElement g = e;
+    if ((g.x_B - g.x_A).norm() == 0.0 || (g.x_B - g.x_A).cross(g.v).norm() <= 1e-9 * g.v.norm() * (g.x_B - g.x_A).norm())
+      detail::fail(model, bar.ref, card, bar.id, "9 (OFFT)", "element axes undefined for offsets in element axes");
+    R0 = bar_axes(g);
+  }
+  e.w_A = offt[1] == 'G' ? Eigen::Vector3d(A_A * bar.wa) : offt[1] == 'B' ? bar.wa : Eigen::Vector3d(R0 * bar.wa);
+  e.w_B = offt[2] == 'G' ? Eigen::Vector3d(A_B * bar.wb) : offt[2] == 'B' ? bar.wb : Eigen::Vector3d(R0 * bar.wb);
+  e.pin_A = bar.pa;
+  e.pin_B = bar.pb;
+
+  const Eigen::Vector3d d = (e.x_B + e.w_B) - (e.x_A + e.w_A);
+  if (!(d.norm() > 0.0)) detail::fail(model, bar.ref, card, bar.id, "", "has zero length between its (offset) ends");
+  if (!(d.cross(e.v).norm() > 1e-9 * e.v.norm() * d.norm()))
+    detail::fail(model, bar.ref, card, bar.id, bar.has_g0 ? "6 (G0)" : "6-8 (X1-X3)",
+                 "orientation vector is zero or parallel to the bar axis");
+  if (e.pin_A || e.pin_B) {
+    Matrix12 K = bar_stiffness_element_axes(e);
+    if (!condense_pins(e.pin_A, e.pin_B, K))
+      detail::fail(model, bar.ref, card, bar.id, "PA/PB",
+                   "pin flags PA = '" + component_string(e.pin_A) + "', PB = '" + component_string(e.pin_B) +
+                       "' release degrees of freedom the bar has no stiffness for (or leave a mechanism)");
+  }
+  return e;
+}
+
+}  // namespace seflex::fem

@@ -1,0 +1,240 @@
+// CQUAD4: QM6 membrane + MITC4 plate + drilling penalty on the mean plane, with rigid-link warping
+// correction (see element_shell_quad4.hpp for the formulation and references).
+#include "seflex/fem/element_shell_quad4.hpp"
+
+#include <Eigen/LU>
+#include <cmath>
+
+#include "model_lookup.hpp"
+#include "seflex/common/error.hpp"
+
+namespace seflex::fem {
+namespace {
+
+using Matrix24 = NodeMatrix<4>;
+using Row24 = Eigen::Matrix<double, 1, 24>;
+
+constexpr double kXi[4] = {-1, 1, 1, -1};
+constexpr double kEta[4] = {-1, -1, 1, 1};
+constexpr int kU = 0, kV = 1, kW = 2, kRx = 3, kRy = 4, kRz = 5;
+
+// Mean-plane frame (columns e1 e2 e3 in basic), projected corner coordinates and corner heights.
+struct Geometry {
+  Eigen::Matrix3d R_BL;
+  std::array<Eigen::Vector2d, 4> p;
+  std::array<double, 4> h;
+};
+
+Geometry geometry(const Quad4Element& e) {
+  const auto& x = e.x;
+  const Eigen::Vector3d c = 0.25 * (x[0] + x[1] + x[2] + x[3]);
+  const Eigen::Vector3d n = (x[2] - x[0]).cross(x[3] - x[1]);
+  SEFLEX_DEMAND(n.norm() > 0.0, "CQUAD4 with zero area");
+  const Eigen::Vector3d e3 = n.normalized();
+  const Eigen::Vector3d a = (x[1] - x[0]) - (x[1] - x[0]).dot(e3) * e3;
+  SEFLEX_DEMAND(a.norm() > 0.0, "CQUAD4 with a degenerate edge");
+  const Eigen::Vector3d e1 = a.normalized();
+  Geometry g;
+  g.R_BL.col(0) = e1;
+  g.R_BL.col(1) = e3.cross(e1);
+  g.R_BL.col(2) = e3;
+  for (int i = 0; i < 4; ++i) {
+    const Eigen::Vector3d r = g.R_BL.transpose() * (x[i] - c);
+    g.p[i] = r.head<2>();
+    g.h[i] = r.z();
+  }
+  return g;
+}
+
+// Shape functions and their natural derivatives at (xi, eta).
+struct Shape {
+  Eigen::Vector4d N, dxi, deta;
+};
+Shape shape(double xi, double eta) {
+  Shape s;
+  for (int i = 0; i < 4; ++i) {
+    s.N[i] = 0.25 * (1 + xi * kXi[i]) * (1 + eta * kEta[i]);
+    s.dxi[i] = 0.25 * kXi[i] * (1 + eta * kEta[i]);
+    s.deta[i] = 0.25 * kEta[i] * (1 + xi * kXi[i]);
+  }
+  return s;
+}
+
+// J = [x_xi y_xi; x_eta y_eta]
+Eigen::Matrix2d jacobian(const Geometry& g, const Shape& s) {
+  Eigen::Matrix2d J = Eigen::Matrix2d::Zero();
+  for (int i = 0; i < 4; ++i) {
+    J(0, 0) += s.dxi[i] * g.p[i].x();
+    J(0, 1) += s.dxi[i] * g.p[i].y();
+    J(1, 0) += s.deta[i] * g.p[i].x();
+    J(1, 1) += s.deta[i] * g.p[i].y();
+  }
+  return J;
+}
+
+// Covariant transverse shear strain along xi (dir = 0) or eta (dir = 1) at (xi, eta):
+// gamma_dir = dw/d(dir) + beta . g_dir, beta = (theta_y, -theta_x).
+Row24 covariant_shear(const Geometry& g, double xi, double eta, int dir) {
+  const Shape s = shape(xi, eta);
+  const Eigen::Matrix2d J = jacobian(g, s);
+  const Eigen::Vector4d& dN = dir == 0 ? s.dxi : s.deta;
+  const double gx = J(dir, 0), gy = J(dir, 1);
+  Row24 r = Row24::Zero();
+  for (int i = 0; i < 4; ++i) {
+    r(6 * i + kW) = dN[i];
+    r(6 * i + kRy) = s.N[i] * gx;
+    r(6 * i + kRx) = -s.N[i] * gy;
+  }
+  return r;
+}
+
+const double kGauss = 1.0 / std::sqrt(3.0);
+
+}  // namespace
+
+NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot) {
+  const Geometry g = geometry(e);
+  const ShellSection& sec = e.section;
+  const Eigen::Matrix3d Am = sec.membrane_matrix();
+  const Eigen::Matrix3d Db = sec.bending_matrix();
+  const double ks = sec.shear_stiffness();
+  const double kd = sec.has_membrane ? k6rot * 1e-6 * sec.membrane.G * sec.t : 0.0;
+
+  // MITC4 tying points: gamma_xi at A (0,-1), C (0,1); gamma_eta at D (-1,0), B (1,0).
+  const Row24 gA = covariant_shear(g, 0, -1, 0), gC = covariant_shear(g, 0, 1, 0);
+  const Row24 gD = covariant_shear(g, -1, 0, 1), gB = covariant_shear(g, 1, 0, 1);
+
+  const Shape s0 = shape(0, 0);
+  const Eigen::Matrix2d J0 = jacobian(g, s0);
+  const Eigen::Matrix2d J0inv = J0.inverse();
+  const double det0 = J0.determinant();
+
+  Matrix24 K = Matrix24::Zero();
+  Eigen::Matrix<double, 24, 4> Kua = Eigen::Matrix<double, 24, 4>::Zero();
+  Eigen::Matrix4d Kaa = Eigen::Matrix4d::Zero();
+  for (double xi : {-kGauss, kGauss})
+    for (double eta : {-kGauss, kGauss}) {
+      const Shape s = shape(xi, eta);
+      const Eigen::Matrix2d J = jacobian(g, s);
+      const double det = J.determinant();
+      SEFLEX_DEMAND(det > 0.0, "CQUAD4 with a non-positive Jacobian (non-convex or misordered corners)");
+      const Eigen::Matrix2d Jinv = J.inverse();
+      Eigen::Matrix<double, 2, 4> dN;  // rows d/dx, d/dy
+      dN.row(0) = s.dxi.transpose();
+      dN.row(1) = s.deta.transpose();
+      dN = Jinv * dN;
+      const double w = det;  // Gauss weights are 1
+
+      // Membrane, compatible part and QM6 incompatible modes (1 - xi^2, 1 - eta^2 per direction).
+      Eigen::Matrix<double, 3, 24> Bm = Eigen::Matrix<double, 3, 24>::Zero();
+      for (int i = 0; i < 4; ++i) {
+        Bm(0, 6 * i + kU) = dN(0, i);
+        Bm(1, 6 * i + kV) = dN(1, i);
+        Bm(2, 6 * i + kU) = dN(1, i);
+        Bm(2, 6 * i + kV) = dN(0, i);
+      }
+      const Eigen::Vector2d P1 = (det0 / det) * (J0inv * Eigen::Vector2d(-2 * xi, 0));
+      const Eigen::Vector2d P2 = (det0 / det) * (J0inv * Eigen::Vector2d(0, -2 * eta));
+      Eigen::Matrix<double, 3, 4> Gm;
+      Gm << P1.x(), P2.x(), 0, 0, 0, 0, P1.y(), P2.y(), P1.y(), P2.y(), P1.x(), P2.x();
+      K.noalias() += w * Bm.transpose() * Am * Bm;
+      Kua.noalias() += w * Bm.transpose() * Am * Gm;
+      Kaa.noalias() += w * Gm.transpose() * Am * Gm;
+
+      // Bending: kappa = (theta_y,x, -theta_x,y, theta_y,y - theta_x,x).
+      Eigen::Matrix<double, 3, 24> Bb = Eigen::Matrix<double, 3, 24>::Zero();
+      for (int i = 0; i < 4; ++i) {
+        Bb(0, 6 * i + kRy) = dN(0, i);
+        Bb(1, 6 * i + kRx) = -dN(1, i);
+        Bb(2, 6 * i + kRy) = dN(1, i);
+        Bb(2, 6 * i + kRx) = -dN(0, i);
+      }
+      K.noalias() += w * Bb.transpose() * Db * Bb;
+
+      // MITC4 transverse shear: assumed covariant strains, then Cartesian (gxz, gyz) = J^-1 (g_xi, g_eta).
+      Eigen::Matrix<double, 2, 24> Gcov;
+      Gcov.row(0) = 0.5 * (1 - eta) * gA + 0.5 * (1 + eta) * gC;
+      Gcov.row(1) = 0.5 * (1 - xi) * gD + 0.5 * (1 + xi) * gB;
+      const Eigen::Matrix<double, 2, 24> Bs = Jinv * Gcov;
+      K.noalias() += (w * ks) * Bs.transpose() * Bs;
+
+      // Drilling penalty on theta_z - (v,x - u,y)/2.
+      if (kd > 0.0) {
+        Row24 d = Row24::Zero();
+        for (int i = 0; i < 4; ++i) {
+          d(6 * i + kRz) = s.N[i];
+          d(6 * i + kV) = -0.5 * dN(0, i);
+          d(6 * i + kU) = 0.5 * dN(1, i);
+        }
+        K.noalias() += (w * kd) * d.transpose() * d;
+      }
+    }
+  if (Kaa.trace() > 0.0) K.noalias() -= Kua * Kaa.inverse() * Kua.transpose();
+  K = 0.5 * (K + K.transpose()).eval();
+
+  // Warping: the flat element sits on the projections p_i = x_i - h_i e3 (local offset (0, 0, -h_i)).
+  std::array<Eigen::Vector3d, 4> d;
+  for (int i = 0; i < 4; ++i) d[i] = Eigen::Vector3d(0, 0, -g.h[i]);
+  apply_node_offsets<4>(d, K);
+  rotate_local_to_basic<4>(g.R_BL, K);
+  return K;
+}
+
+std::array<double, 4> quad4_lumped_masses(const Quad4Element& e) {
+  const Geometry g = geometry(e);
+  const double mpa = e.section.mass_per_area();
+  std::array<double, 4> m{};
+  for (double xi : {-kGauss, kGauss})
+    for (double eta : {-kGauss, kGauss}) {
+      const Shape s = shape(xi, eta);
+      const double det = jacobian(g, s).determinant();
+      for (int i = 0; i < 4; ++i) m[i] += mpa * s.N[i] * det;
+    }
+  return m;
+}
+
+NodeMatrix<4> quad4_mass(const Quad4Element& e, MassKind kind) {
+  Matrix24 M = Matrix24::Zero();
+  if (kind == MassKind::Lumped) {
+    const auto m = quad4_lumped_masses(e);
+    for (int i = 0; i < 4; ++i)
+      for (int k = 0; k < 3; ++k) M(6 * i + k, 6 * i + k) = m[i];
+    return M;
+  }
+  const Geometry g = geometry(e);
+  const double mpa = e.section.mass_per_area();
+  Eigen::Matrix4d Mn = Eigen::Matrix4d::Zero();
+  for (double xi : {-kGauss, kGauss})
+    for (double eta : {-kGauss, kGauss}) {
+      const Shape s = shape(xi, eta);
+      Mn.noalias() += (mpa * jacobian(g, s).determinant()) * s.N * s.N.transpose();
+    }
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      for (int k = 0; k < 3; ++k) M(6 * i + k, 6 * j + k) = Mn(i, j);
+  return M;
+}
+
+Quad4Element make_quad4_element(const Model& model, const Shell& shell, const ShellSection* section) {
+  Quad4Element e;
+  for (int k = 0; k < 4; ++k) {
+    const std::string field = std::to_string(k + 4) + " (G" + std::to_string(k + 1) + ")";
+    e.x[k] = model.grids[detail::grid_index(model, shell.g[k], shell.ref, "CQUAD4", shell.id, field)].x_basic;
+    for (int j = 0; j < k; ++j)
+      if (shell.g[j] == shell.g[k])
+        detail::fail(model, shell.ref, "CQUAD4", shell.id, field, "repeats GRID " + std::to_string(shell.g[k]));
+  }
+  const Eigen::Vector3d n = (e.x[2] - e.x[0]).cross(e.x[3] - e.x[1]);
+  bool convex = n.norm() > 0.0;
+  for (int k = 0; k < 4 && convex; ++k) {
+    const Eigen::Vector3d a = e.x[(k + 1) % 4] - e.x[k], b = e.x[(k + 3) % 4] - e.x[k];
+    convex = a.cross(b).dot(n) > 1e-12 * a.norm() * b.norm() * n.norm();
+  }
+  if (!convex)
+    detail::fail(model, shell.ref, "CQUAD4", shell.id, "4-7 (G1-G4)",
+                 "corners must form a convex quadrilateral, ordered around its edge (interior angles < 180 deg)");
+  e.section = section ? *section : make_shell_section(model, shell);
+  return e;
+}
+
+}  // namespace seflex::fem

@@ -1,0 +1,138 @@
+// CTRIA3: CST membrane + MITC3 plate + drilling penalty (see element_shell_tria3.hpp).
+#include "seflex/fem/element_shell_tria3.hpp"
+
+#include <Eigen/LU>
+
+#include "model_lookup.hpp"
+#include "seflex/common/error.hpp"
+
+namespace seflex::fem {
+namespace {
+
+using Matrix18 = NodeMatrix<3>;
+using Row18 = Eigen::Matrix<double, 1, 18>;
+constexpr int kU = 0, kV = 1, kW = 2, kRx = 3, kRy = 4, kRz = 5;
+
+struct Geometry {
+  Eigen::Matrix3d R_BL;                // columns e1 e2 e3 in basic
+  std::array<Eigen::Vector2d, 3> p;    // corners relative to the centroid, local axes
+  double area = 0;
+  Eigen::Vector3d b, c;                // dN_i/dx = b_i, dN_i/dy = c_i
+};
+
+Geometry geometry(const Tria3Element& e) {
+  const auto& x = e.x;
+  const Eigen::Vector3d n = (x[1] - x[0]).cross(x[2] - x[0]);
+  SEFLEX_DEMAND(n.norm() > 0.0, "CTRIA3 with zero area");
+  Geometry g;
+  g.R_BL.col(0) = (x[1] - x[0]).normalized();
+  g.R_BL.col(2) = n.normalized();
+  g.R_BL.col(1) = g.R_BL.col(2).cross(g.R_BL.col(0));
+  const Eigen::Vector3d cen = (x[0] + x[1] + x[2]) / 3.0;
+  for (int i = 0; i < 3; ++i) g.p[i] = (g.R_BL.transpose() * (x[i] - cen)).head<2>();
+  g.area = 0.5 * n.norm();
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    g.b[i] = (g.p[j].y() - g.p[k].y()) / (2 * g.area);
+    g.c[i] = (g.p[k].x() - g.p[j].x()) / (2 * g.area);
+  }
+  return g;
+}
+
+}  // namespace
+
+NodeMatrix<3> tria3_stiffness(const Tria3Element& e, double k6rot) {
+  const Geometry g = geometry(e);
+  const ShellSection& sec = e.section;
+  const double A = g.area;
+  Matrix18 K = Matrix18::Zero();
+
+  // Membrane (CST) and bending (linear rotations): constant strains and curvatures.
+  Eigen::Matrix<double, 3, 18> Bm = Eigen::Matrix<double, 3, 18>::Zero(), Bb = Eigen::Matrix<double, 3, 18>::Zero();
+  for (int i = 0; i < 3; ++i) {
+    Bm(0, 6 * i + kU) = g.b[i];
+    Bm(1, 6 * i + kV) = g.c[i];
+    Bm(2, 6 * i + kU) = g.c[i];
+    Bm(2, 6 * i + kV) = g.b[i];
+    Bb(0, 6 * i + kRy) = g.b[i];
+    Bb(1, 6 * i + kRx) = -g.c[i];
+    Bb(2, 6 * i + kRy) = g.c[i];
+    Bb(2, 6 * i + kRx) = -g.b[i];
+  }
+  K.noalias() += A * Bm.transpose() * sec.membrane_matrix() * Bm;
+  K.noalias() += A * Bb.transpose() * sec.bending_matrix() * Bb;
+
+  // MITC3 shear: gamma(x, y) = (a_x - b y, a_y + b x), tangential component at each edge midpoint
+  // tied to the edge's (w_j - w_i)/L + (beta_i + beta_j)/2 . t, beta = (theta_y, -theta_x).
+  Eigen::Matrix3d G;
+  Eigen::Matrix<double, 3, 18> R = Eigen::Matrix<double, 3, 18>::Zero();
+  std::array<Eigen::Vector2d, 3> mid;
+  for (int k = 0; k < 3; ++k) {
+    const int i = k, j = (k + 1) % 3;
+    const Eigen::Vector2d d = g.p[j] - g.p[i];
+    const double L = d.norm();
+    const Eigen::Vector2d t = d / L;
+    mid[k] = 0.5 * (g.p[i] + g.p[j]);
+    G.row(k) << t.x(), t.y(), -mid[k].y() * t.x() + mid[k].x() * t.y();
+    R(k, 6 * j + kW) += 1.0 / L;
+    R(k, 6 * i + kW) -= 1.0 / L;
+    for (int n : {i, j}) {
+      R(k, 6 * n + kRy) += 0.5 * t.x();
+      R(k, 6 * n + kRx) -= 0.5 * t.y();
+    }
+  }
+  const Eigen::Matrix<double, 3, 18> C = G.inverse() * R;  // (a_x, a_y, b) from the dofs
+  const double ks = sec.shear_stiffness();
+  const double kd = sec.has_membrane ? k6rot * 1e-6 * sec.membrane.G * sec.t : 0.0;
+  const double omega_row_scale = 0.5;
+  for (int q = 0; q < 3; ++q) {  // edge-midpoint rule, exact for quadratics
+    const Eigen::Vector2d& x = mid[q];
+    Eigen::Matrix<double, 2, 3> P;
+    P << 1, 0, -x.y(), 0, 1, x.x();
+    const Eigen::Matrix<double, 2, 18> Bs = P * C;
+    K.noalias() += (ks * A / 3.0) * Bs.transpose() * Bs;
+    if (kd > 0.0) {
+      // Linear shape functions at the midpoint of edge (q, q+1): 1/2, 1/2, 0.
+      Row18 d = Row18::Zero();
+      d(6 * q + kRz) = 0.5;
+      d(6 * ((q + 1) % 3) + kRz) = 0.5;
+      for (int i = 0; i < 3; ++i) {
+        d(6 * i + kV) -= omega_row_scale * g.b[i];
+        d(6 * i + kU) += omega_row_scale * g.c[i];
+      }
+      K.noalias() += (kd * A / 3.0) * d.transpose() * d;
+    }
+  }
+  K = 0.5 * (K + K.transpose()).eval();
+  rotate_local_to_basic<3>(g.R_BL, K);
+  return K;
+}
+
+NodeMatrix<3> tria3_mass(const Tria3Element& e, MassKind kind) {
+  const double m = e.section.mass_per_area() * 0.5 * (e.x[1] - e.x[0]).cross(e.x[2] - e.x[0]).norm();
+  Matrix18 M = Matrix18::Zero();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const double mij = kind == MassKind::Lumped ? (i == j ? m / 3.0 : 0.0) : (i == j ? m / 6.0 : m / 12.0);
+      for (int k = 0; k < 3; ++k) M(6 * i + k, 6 * j + k) = mij;
+    }
+  return M;
+}
+
+Tria3Element make_tria3_element(const Model& model, const Shell& shell, const ShellSection* section) {
+  Tria3Element e;
+  for (int k = 0; k < 3; ++k) {
+    const std::string field = std::to_string(k + 4) + " (G" + std::to_string(k + 1) + ")";
+    e.x[k] = model.grids[detail::grid_index(model, shell.g[k], shell.ref, "CTRIA3", shell.id, field)].x_basic;
+    for (int j = 0; j < k; ++j)
+      if (shell.g[j] == shell.g[k])
+        detail::fail(model, shell.ref, "CTRIA3", shell.id, field, "repeats GRID " + std::to_string(shell.g[k]));
+  }
+  const Eigen::Vector3d a = e.x[1] - e.x[0], b = e.x[2] - e.x[0];
+  if (!(a.cross(b).norm() > 1e-12 * a.norm() * b.norm()))
+    detail::fail(model, shell.ref, "CTRIA3", shell.id, "4-6 (G1-G3)", "corners are collinear (zero area)");
+  e.section = section ? *section : make_shell_section(model, shell);
+  return e;
+}
+
+}  // namespace seflex::fem

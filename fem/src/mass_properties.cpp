@@ -1,0 +1,107 @@
+// Grid point weight generator (see mass_properties.hpp).
+#include "seflex/fem/mass_properties.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <array>
+
+#include "model_lookup.hpp"
+#include "seflex/fem/assembly.hpp"
+#include "seflex/fem/element_bar.hpp"
+#include "seflex/fem/element_conm2.hpp"
+#include "seflex/fem/element_rod.hpp"
+#include "seflex/fem/element_shell_quad4.hpp"
+#include "seflex/fem/element_shell_tria3.hpp"
+
+namespace seflex::fem {
+namespace {
+
+using Matrix6 = Eigen::Matrix<double, 6, 6>;
+
+// M0 += D^T M D for an element matrix on N nodes in basic.
+template <int N>
+void add_element(const std::array<Eigen::Vector3d, N>& x, const Eigen::Vector3d& ref, const NodeMatrix<N>& M,
+                 Matrix6& M0) {
+  const Eigen::Matrix<double, 6 * N, 6> D = rigid_body_modes<N>(x, ref);
+  M0.noalias() += D.transpose() * M * D;
+}
+
+// M0 += rigid mass of a point mass m at r (relative to the reference point): [m I, -m S; m S, -m S^2].
+void add_point_mass(double m, const Eigen::Vector3d& r, Matrix6& M0) {
+  const Eigen::Matrix3d S = so3::skew(r);
+  M0.topLeftCorner<3, 3>().diagonal().array() += m;
+  M0.topRightCorner<3, 3>() -= m * S;
+  M0.bottomLeftCorner<3, 3>() += m * S;
+  M0.bottomRightCorner<3, 3>() -= m * S * S;
+}
+
+const Eigen::Vector3d& grid_x(const Model& model, int id, const CardRef& ref, const std::string& card, int eid) {
+  return model.grids[detail::grid_index(model, id, ref, card, eid, "G")].x_basic;
+}
+
+}  // namespace
+
+MassProperties mass_properties(const Model& model, std::optional<int> reference_grid) {
+  MassProperties mp;
+  const AssemblyOptions opt = assembly_options(model);
+  mp.wtmass = opt.wtmass;
+  const int grdpnt = reference_grid ? *reference_grid : static_cast<int>(detail::param_number(model, "GRDPNT", -1.0));
+  if (grdpnt > 0) {
+    if (const auto it = model.grid_index.find(grdpnt); it != model.grid_index.end()) {
+      mp.reference_grid = grdpnt;
+      mp.reference = model.grids[it->second].x_basic;
+    }
+  }
+  const Eigen::Vector3d& ref = mp.reference;
+  const MassKind kind = opt.mass;
+  Matrix6 M0 = Matrix6::Zero();
+
+  for (const Bar& b : model.bars) {
+    const BarElement e = make_bar_element(model, b);
+    add_element<2>({e.x_A, e.x_B}, ref, bar_mass(e, kind), M0);
+  }
+  for (const Rod& r : model.rods) {
+    const RodElement e = make_rod_element(model, r);
+    add_element<2>({e.x_A, e.x_B}, ref, rod_mass(e, kind), M0);
+  }
+  detail::ShellSectionCache sections;
+  for (const Shell& s : model.shells) {
+    const ShellSection& sec = sections.get(model, s);
+    if (s.nnode == 4) {
+      if (kind == MassKind::Lumped) {
+        // Fast path: four point masses (no element object needed beyond the corner positions).
+        Quad4Element e;
+        e.section = sec;
+        for (int k = 0; k < 4; ++k) e.x[k] = grid_x(model, s.g[k], s.ref, "CQUAD4", s.id);
+        const auto m = quad4_lumped_masses(e);
+        for (int k = 0; k < 4; ++k) add_point_mass(m[k], e.x[k] - ref, M0);
+      } else {
+        const Quad4Element e = make_quad4_element(model, s, &sec);
+        add_element<4>(e.x, ref, quad4_mass(e, kind), M0);
+      }
+    } else {
+      const Tria3Element e = make_tria3_element(model, s, &sec);
+      add_element<3>(e.x, ref, tria3_mass(e, kind), M0);
+    }
+  }
+  for (const Conm2& c : model.conm2) {
+    const Conm2Element e = make_conm2_element(model, c);
+    add_element<1>({e.x_grid}, ref, conm2_mass(e), M0);
+  }
+  M0 = 0.5 * (M0 + M0.transpose()).eval();
+  mp.M0 = M0;
+
+  // GPWG summary: M0 = [m I, -m skew(c); m skew(c), J_ref], c = CG - reference.
+  mp.mass = M0.topLeftCorner<3, 3>().trace() / 3.0;
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  if (mp.mass > 0.0) c = Eigen::Vector3d(M0(1, 5), M0(2, 3), M0(0, 4)) / mp.mass;
+  mp.cg = ref + c;
+  mp.I_cg = M0.bottomRightCorner<3, 3>() - mp.mass * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
+  mp.I_cg = 0.5 * (mp.I_cg + mp.I_cg.transpose()).eval();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(mp.I_cg);
+  mp.principal_moments = es.eigenvalues();
+  mp.principal_axes = es.eigenvectors();
+  if (mp.principal_axes.determinant() < 0.0) mp.principal_axes.col(2) *= -1.0;
+  return mp;
+}
+
+}  // namespace seflex::fem
