@@ -1,0 +1,101 @@
+#pragma once
+// Sparse symmetric factorisation behind one small interface, one file per backend:
+//   - Cholmod:   CHOLMOD supernodal Cholesky L L^T (METIS ordering, BLAS-3 on OpenBLAS);
+//                positive definite matrices only. The default (docs/benchmarks.md, docs/solvers.md).
+//   - EigenLdlt: Eigen's SimplicialLDLT with METIS fill-reducing ordering (Eigen/MetisSupport);
+//                handles symmetric indefinite matrices without a zero pivot and reports the inertia
+//                (number of negative pivots), i.e. the Sturm count of K - sigma M.
+//
+// Contract
+// - A is square and symmetric; only its lower triangle is read (full or lower storage both work).
+// - factorize() reuses the symbolic analysis (ordering, elimination tree) when A has exactly the
+//   sparsity pattern of the previous call, so refactorising K - sigma M for a new sigma is cheap.
+// - solve() solves A X = B in place for a block of right-hand sides (n x k, any k >= 0); blocks are
+//   solved together (BLAS-3 in the supernodal backend), so pass many columns at once.
+// - A non-positive pivot in a Cholesky backend, or a zero pivot in LDL^T, throws FactorizationError
+//   naming the column of A (original numbering) where elimination broke down; a caller that knows
+//   what the columns mean (a DofMap) turns it into an InputError naming the grid and component.
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "seflex/common/error.hpp"
+
+namespace seflex::reduction {
+
+using SparseMatrixd = Eigen::SparseMatrix<double>;  ///< column-major, int indices
+
+enum class FactorizationBackend : std::uint8_t { Cholmod, EigenLdlt };
+
+/// "cholmod" or "ldlt".
+std::string_view to_string(FactorizationBackend backend);
+/// Parse "cholmod" / "ldlt"; nullopt for anything else.
+std::optional<FactorizationBackend> parse_factorization_backend(std::string_view name);
+/// The backend chosen by measurement on the 10k/100k/1M-dof plates (docs/benchmarks.md): Cholmod.
+constexpr FactorizationBackend kDefaultFactorization = FactorizationBackend::Cholmod;
+
+/// Elimination broke down: a non-positive pivot (Cholesky) or a zero pivot (LDL^T) at `column`.
+class FactorizationError : public InvariantError {
+ public:
+  enum class Kind : std::uint8_t { NotPositiveDefinite, Singular };
+  FactorizationError(Kind kind, Eigen::Index column, const std::string& message)
+      : InvariantError(message), kind_(kind), column_(column) {}
+  Kind kind() const { return kind_; }
+  /// Column (= dof) of A, in A's own numbering, where elimination failed.
+  Eigen::Index column() const { return column_; }
+
+ private:
+  Kind kind_;
+  Eigen::Index column_;
+};
+
+/// Figures of the last factorisation (for benchmarks and the solution summaries).
+struct FactorizationStats {
+  Eigen::Index rows = 0;
+  double factor_nonzeros = 0;     ///< entries of L (including the diagonal)
+  double flops = 0;               ///< floating-point operations of the numeric factorisation (0 if unknown)
+  int symbolic_analyses = 0;      ///< how many times the pattern was (re)analysed
+  int numeric_factorizations = 0;
+};
+
+/// A factorisation object owns the factor and the solve workspace (it is state, not a function):
+/// one object per matrix, not shared between threads.
+class SparseFactorization {
+ public:
+  virtual ~SparseFactorization() = default;
+  SparseFactorization() = default;
+  SparseFactorization(const SparseFactorization&) = delete;
+  SparseFactorization& operator=(const SparseFactorization&) = delete;
+
+  virtual FactorizationBackend backend() const = 0;
+  /// True if the backend factorises only positive definite matrices (Cholesky).
+  virtual bool positive_definite_only() const = 0;
+
+  /// Factorise A (n x n, lower triangle read). Throws FactorizationError on breakdown.
+  virtual void factorize(const SparseMatrixd& A) = 0;
+
+  /// Solve A X = B in place; B is n x k. Precondition: factorize() succeeded.
+  virtual void solve_in_place(Eigen::Ref<Eigen::MatrixXd> B) = 0;
+
+  /// Number of negative pivots of the last factorisation (= eigenvalues of the pencil (K, M) below
+  /// sigma when A = K - sigma M, K positive definite on the null space of M). LDL^T backends only.
+  virtual std::optional<Eigen::Index> negative_pivots() const = 0;
+
+  virtual const FactorizationStats& stats() const = 0;
+
+  /// X = A^-1 B.
+  Eigen::MatrixXd solve(const Eigen::Ref<const Eigen::MatrixXd>& B) {
+    Eigen::MatrixXd X = B;
+    solve_in_place(X);
+    return X;
+  }
+};
+
+/// A new, empty factorisation of the given backend.
+std::unique_ptr<SparseFactorization> make_factorization(FactorizationBackend backend = kDefaultFactorization);
+
+}  // namespace seflex::reduction

@@ -1,0 +1,31 @@
+// Factory and names of the sparse factorisation backends.
+#include "seflex/reduction/sparse_factorization.hpp"
+
+#include "backends.hpp"
+
+namespace seflex::reduction {
+
+std::string_view to_string(FactorizationBackend backend) {
+  switch (backend) {
+    case FactorizationBackend::Cholmod: return "cholmod";
+    case FactorizationBackend::EigenLdlt: return "ldlt";
+  }
+  return "?";
+}
+
+std::optional<FactorizationBackend> parse_factorization_backend(std::string_view name) {
+  if (name == "cholmod") return FactorizationBackend::Cholmod;
+  if (name == "ldlt") return FactorizationBackend::EigenLdlt;
+  return std::nullopt;
+}
+
+std::unique_ptr<SparseFactorization> make_factorization(FactorizationBackend backend) {
+  switch (backend) {
+    case FactorizationBackend::Cholmod: return make_cholmod_factorization();
+    case FactorizationBackend::EigenLdlt: return make_ldlt_factorization();
+  }
+  SEFLEX_DEMAND(false, "unknown factorization backend");
+  return nullptr;
+}
+
+}  // namespace seflex::reduction
