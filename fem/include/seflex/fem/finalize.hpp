@@ -1,5 +1,7 @@
 #pragma once
 // Turn a freshly read Model into a consistent one (owner: the Nastran/gmsh readers' author).
+// Blank-field defaults that depend on other cards (GRDSET, BAROR, BEAMOR, PID = EID) and the MAT1
+// rule for a blank E, G or NU are applied by the reader, which alone knows which fields were blank.
 #include <string>
 
 #include "seflex/common/error.hpp"
@@ -8,26 +10,35 @@
 namespace seflex::fem {
 
 /// Resolve and check a model read from user files:
-/// - apply GRDSET and BAROR/BEAMOR defaults; complete MAT1 (E, G, nu) by Nastran's rule;
-/// - build the id -> index maps and reject duplicate ids;
+/// - build the id -> index maps and reject duplicate ids (grids and scalar points share one id
+///   space, so do all elements incl. CONM2 and RBE2, and all properties);
 /// - resolve every coordinate system (CORD2x chains through RID, CORD1x through grids) and every
 ///   GRID's basic position;
-/// - check every reference: grids, properties, materials, coordinate systems, SPC/LOAD/SPCADD
-///   sets named by the case control.
+/// - check every reference: grids, scalar points, properties (of the right kind), materials,
+///   coordinate systems, SPC/SPCADD/LOAD sets, EIGR/EIGRL methods and DMIG matrices named by the
+///   case control, PARAM values seflex uses (WTMASS > 0, GRDPNT a grid, COUPMASS, K6ROT);
+/// - check components: 1-6 on grids, 0 on scalar points.
 /// Throws InputError naming file:line, card, id, field and what was expected. Idempotent.
 void finalize(Model& model);
+
+/// Resolve coordinate systems and grid basic positions (part of finalize; needs grid_index and
+/// coord_index). Throws InputError for undefined or circular references and degenerate systems.
+void resolve_coordinates(Model& model);
 
 /// The source location of a card, for messages ("deck.bdf:57").
 SourceRef where(const Model& model, const CardRef& ref);
 
 /// Axes (columns, in basic) of the displacement coordinate system `cd` at basic point x
-/// (cylindrical and spherical axes depend on the point). cd = 0 gives the identity.
+/// (cylindrical and spherical axes depend on the point: radial, tangential, axial / radial, polar,
+/// azimuthal; on the axis the angle 0 is used). cd = 0 gives the identity.
 Eigen::Matrix3d displacement_axes(const Model& model, int cd, const Eigen::Vector3d& x_basic);
 
-/// Transform a point given in system `cid` to basic.
+/// Transform a point given in system `cid` to basic (cylindrical: R, THETA deg, Z; spherical: R,
+/// THETA deg from the z axis, PHI deg).
 Eigen::Vector3d to_basic(const Model& model, int cid, const Eigen::Vector3d& x);
 
-/// Value of PARAM name (first field) as a number, or `fallback` if absent.
+/// Value of PARAM name (first value) as a number, or `fallback` if absent. The first PARAM of a
+/// name counts (finalize rejects two with different values). Throws InputError if not a number.
 double param_number(const Model& model, const std::string& name, double fallback);
 
 }  // namespace seflex::fem

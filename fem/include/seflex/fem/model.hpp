@@ -323,6 +323,8 @@ struct Model {
   std::vector<Param> params;
 
   std::vector<UnsupportedCard> unsupported;  ///< in order of first appearance
+  /// Number of cards of each name the reader accepted (e.g. "GRID" -> 18), for reports.
+  std::map<std::string, std::size_t> card_counts;
 
   /// Named node sets (from gmsh physical groups of points, or user definitions): name -> grid ids.
   std::map<std::string, std::vector<int>> node_sets;

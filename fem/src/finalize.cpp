@@ -1,0 +1,369 @@
+// fem::finalize: id maps, duplicate ids, coordinate systems, references, PARAM values.
+#include "seflex/fem/finalize.hpp"
+
+#include "seflex/fem/components.hpp"
+
+#include <charconv>
+#include <set>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace seflex::fem {
+namespace {
+
+const char* bar_prop_name(const BarProperty& p) {
+  switch (p.source) {
+    case BarProperty::Source::PBAR: return "PBAR";
+    case BarProperty::Source::PBARL: return "PBARL";
+    case BarProperty::Source::PBEAM: return "PBEAM";
+    case BarProperty::Source::PBEAML: return "PBEAML";
+  }
+  return "PBAR";
+}
+
+class Finalizer {
+ public:
+  explicit Finalizer(Model& m) : m_(m) {}
+
+  void run() {
+    m_.finalized = false;
+    index_grids();
+    index_coords();
+    index_materials_and_properties();
+    index_elements();
+    resolve_coordinates(m_);
+    check_elements();
+    check_constraints_and_loads();
+    check_solution_control();
+    m_.finalized = true;
+  }
+
+ private:
+  [[noreturn]] void fail(const CardRef& ref, const std::string& card, int id, const std::string& field,
+                         const std::string& problem) const {
+    std::string msg = card + " " + std::to_string(id);
+    if (!field.empty()) msg += ", " + field;
+    throw InputError(where(m_, ref), msg + ": " + problem);
+  }
+
+  std::string at(const CardRef& ref) const { return where(m_, ref).str(); }
+
+  template <class Vec>
+  void index(const Vec& items, std::unordered_map<int, std::uint32_t>& map, const char* card, const char* what) {
+    map.clear();
+    map.reserve(items.size());
+    for (std::size_t i = 0; i < items.size(); ++i) {
+      const auto [it, inserted] = map.emplace(items[i].id, static_cast<std::uint32_t>(i));
+      if (!inserted)
+        fail(items[i].ref, card, items[i].id, "field 2 (ID)",
+             std::string("duplicate ") + what + " id, first defined at " + at(items[it->second].ref) +
+                 "; expected unique ids");
+    }
+  }
+
+  void index_grids() {
+    index(m_.grids, m_.grid_index, "GRID", "grid");
+    index(m_.spoints, m_.spoint_index, "SPOINT", "scalar point");
+    for (const auto& s : m_.spoints)
+      if (const auto it = m_.grid_index.find(s.id); it != m_.grid_index.end())
+        fail(s.ref, "SPOINT", s.id, "", "the id is also a GRID (at " + at(m_.grids[it->second].ref) +
+                                            "); expected grid and scalar point ids to be distinct");
+  }
+
+  void index_coords() {
+    for (const auto& c : m_.coords)
+      if (c.id <= 0) fail(c.ref, "CORD", c.id, "field 2 (CID)", "expected a coordinate system id > 0 (0 is basic)");
+    index(m_.coords, m_.coord_index, "CORD", "coordinate system");
+  }
+
+  void index_materials_and_properties() {
+    index(m_.mat1, m_.mat1_index, "MAT1", "material");
+    index(m_.bar_props, m_.bar_prop_index, "PBAR", "property");
+    index(m_.rod_props, m_.rod_prop_index, "PROD", "property");
+    index(m_.shell_props, m_.shell_prop_index, "PSHELL", "property");
+    index(m_.spring_props, m_.spring_prop_index, "PELAS", "property");
+    // one id space for all properties
+    std::unordered_map<int, CardRef> seen;
+    auto add = [&](int id, const CardRef& ref, const char* card) {
+      const auto [it, inserted] = seen.emplace(id, ref);
+      if (!inserted)
+        fail(ref, card, id, "field 2 (PID)", "duplicate property id, first defined at " + at(it->second) +
+                                                 "; expected unique property ids across PBAR, PBARL, PBEAM, PBEAML, PROD, PSHELL, PELAS");
+    };
+    for (const auto& p : m_.bar_props) add(p.id, p.ref, bar_prop_name(p));
+    for (const auto& p : m_.rod_props) add(p.id, p.ref, "PROD");
+    for (const auto& p : m_.shell_props) add(p.id, p.ref, "PSHELL");
+    for (const auto& p : m_.spring_props) add(p.id, p.ref, "PELAS");
+    for (const auto& p : m_.bar_props) need_material(p.mid, p.ref, bar_prop_name(p), p.id, "field 3 (MID)");
+    for (const auto& p : m_.rod_props) need_material(p.mid, p.ref, "PROD", p.id, "field 3 (MID)");
+    for (const auto& p : m_.shell_props) {
+      if (p.mid1) need_material(p.mid1, p.ref, "PSHELL", p.id, "field 3 (MID1)");
+      if (p.mid2) need_material(p.mid2, p.ref, "PSHELL", p.id, "field 5 (MID2)");
+      if (p.mid3) need_material(p.mid3, p.ref, "PSHELL", p.id, "field 7 (MID3)");
+      if (p.mid4) need_material(p.mid4, p.ref, "PSHELL", p.id, "field 4 of continuation 1 (MID4)");
+    }
+  }
+
+  /// All elements share one id space: CBAR, CBEAM, CROD, CONROD, CQUAD4, CTRIA3, CONM2, CELAS1/2, RBE2.
+  void index_elements() {
+    const std::size_t total = m_.bars.size() + m_.rods.size() + m_.shells.size() + m_.conm2.size() +
+                              m_.springs.size() + m_.rbe2.size();
+    std::unordered_map<int, CardRef> seen;
+    seen.reserve(total);
+    auto add = [&](int id, const CardRef& ref, const char* card) {
+      const auto [it, inserted] = seen.emplace(id, ref);
+      if (!inserted)
+        fail(ref, card, id, "field 2 (EID)", "duplicate element id, first defined at " + at(it->second) +
+                                                 "; expected unique ids across all elements (incl. CONM2, CELASi, RBE2)");
+    };
+    for (const auto& e : m_.bars) add(e.id, e.ref, e.is_beam ? "CBEAM" : "CBAR");
+    for (const auto& e : m_.rods) add(e.id, e.ref, e.inline_property ? "CONROD" : "CROD");
+    for (const auto& e : m_.shells) add(e.id, e.ref, e.nnode == 4 ? "CQUAD4" : "CTRIA3");
+    for (const auto& e : m_.conm2) add(e.id, e.ref, "CONM2");
+    for (const auto& e : m_.springs) add(e.id, e.ref, e.inline_property ? "CELAS2" : "CELAS1");
+    for (const auto& e : m_.rbe2) add(e.id, e.ref, "RBE2");
+  }
+
+  void need_material(int mid, const CardRef& ref, const char* card, int id, const char* field) {
+    if (!m_.mat1_index.count(mid))
+      fail(ref, card, id, field, "references MAT1 " + std::to_string(mid) + ", which is not defined; expected the id of a MAT1 card");
+  }
+
+  void need_grid(int g, const CardRef& ref, const char* card, int id, const std::string& field) {
+    if (!m_.grid_index.count(g))
+      fail(ref, card, id, field, "references grid " + std::to_string(g) + ", which is not defined; expected the id of a GRID" +
+                                     (m_.spoint_index.count(g) ? " (it is a scalar point)" : ""));
+  }
+
+  void need_coord(int cid, const CardRef& ref, const char* card, int id, const std::string& field) {
+    if (cid != 0 && !m_.coord_index.count(cid))
+      fail(ref, card, id, field, "references coordinate system " + std::to_string(cid) +
+                                     ", which is not defined; expected the id of a CORD1x or CORD2x card (or 0)");
+  }
+
+  /// A grid with components 1-6 or a scalar point with component 0.
+  void need_dof(int g, int mask_or_component, bool is_mask, const CardRef& ref, const char* card, int id,
+                const std::string& field) {
+    const bool grid = m_.grid_index.count(g) > 0, spoint = m_.spoint_index.count(g) > 0;
+    if (!grid && !spoint)
+      fail(ref, card, id, field, "references point " + std::to_string(g) +
+                                     ", which is not defined; expected the id of a GRID or SPOINT");
+    if (grid && mask_or_component == 0)
+      fail(ref, card, id, field, "grid " + std::to_string(g) + " with component 0 or blank; expected components 1-6 for a grid");
+    if (spoint && mask_or_component != 0)
+      fail(ref, card, id, field, "scalar point " + std::to_string(g) + " with component " +
+                                     (is_mask ? component_string(static_cast<ComponentMask>(mask_or_component))
+                                              : std::to_string(mask_or_component)) +
+                                     "; expected 0 or blank for a scalar point");
+  }
+
+  void check_elements() {
+    for (const auto& b : m_.bars) {
+      const char* card = b.is_beam ? "CBEAM" : "CBAR";
+      need_grid(b.ga, b.ref, card, b.id, "field 4 (GA)");
+      need_grid(b.gb, b.ref, card, b.id, "field 5 (GB)");
+      if (b.has_g0) {
+        need_grid(b.g0, b.ref, card, b.id, "field 6 (G0)");
+        if (b.g0 == b.ga || b.g0 == b.gb)
+          fail(b.ref, card, b.id, "field 6 (G0)", "orientation grid " + std::to_string(b.g0) +
+                                                      " is an end of the element; expected a third grid");
+      } else if (b.v.squaredNorm() == 0.0) {
+        fail(b.ref, card, b.id, "field 6 (X1/G0)", std::string("blank and no ") + (b.is_beam ? "BEAMOR" : "BAROR") +
+                                                       " gives a default; expected an orientation vector X1 X2 X3 or a grid G0");
+      }
+      const auto it = m_.bar_prop_index.find(b.pid);
+      if (it == m_.bar_prop_index.end())
+        fail(b.ref, card, b.id, "field 3 (PID)", "references property " + std::to_string(b.pid) + ", which is not defined; expected the id of a " +
+                                                     (b.is_beam ? "PBEAM or PBEAML" : "PBAR or PBARL") + " card");
+      const BarProperty& p = m_.bar_props[it->second];
+      const bool beam_prop = p.source == BarProperty::Source::PBEAM || p.source == BarProperty::Source::PBEAML;
+      if (beam_prop != b.is_beam)
+        fail(b.ref, card, b.id, "field 3 (PID)", "references " + std::string(bar_prop_name(p)) + " " + std::to_string(p.id) +
+                                                     "; expected a " + (b.is_beam ? "PBEAM or PBEAML" : "PBAR or PBARL"));
+    }
+    for (const auto& r : m_.rods) {
+      const char* card = r.inline_property ? "CONROD" : "CROD";
+      need_grid(r.ga, r.ref, card, r.id, r.inline_property ? "field 3 (G1)" : "field 4 (G1)");
+      need_grid(r.gb, r.ref, card, r.id, r.inline_property ? "field 4 (G2)" : "field 5 (G2)");
+      if (r.inline_property)
+        need_material(r.mid, r.ref, card, r.id, "field 5 (MID)");
+      else if (!m_.rod_prop_index.count(r.pid))
+        fail(r.ref, card, r.id, "field 3 (PID)", "references property " + std::to_string(r.pid) + ", which is not defined; expected the id of a PROD card");
+    }
+    for (const auto& s : m_.shells) {
+      const char* card = s.nnode == 4 ? "CQUAD4" : "CTRIA3";
+      static const char* gfields[4] = {"field 4 (G1)", "field 5 (G2)", "field 6 (G3)", "field 7 (G4)"};
+      for (int k = 0; k < s.nnode; ++k) need_grid(s.g[k], s.ref, card, s.id, gfields[k]);
+      if (!m_.shell_prop_index.count(s.pid))
+        fail(s.ref, card, s.id, "field 3 (PID)", "references property " + std::to_string(s.pid) + ", which is not defined; expected the id of a PSHELL card");
+      if (s.theta_is_mcid) need_coord(s.mcid, s.ref, card, s.id, s.nnode == 4 ? "field 8 (MCID)" : "field 7 (MCID)");
+    }
+    for (const auto& c : m_.conm2) {
+      need_grid(c.grid, c.ref, "CONM2", c.id, "field 3 (G)");
+      if (c.cid > 0) need_coord(c.cid, c.ref, "CONM2", c.id, "field 4 (CID)");
+    }
+    for (const auto& s : m_.springs) {
+      const char* card = s.inline_property ? "CELAS2" : "CELAS1";
+      if (s.g1 != 0) need_dof(s.g1, s.c1, false, s.ref, card, s.id, "field 4 (G1)");
+      if (s.g2 != 0) need_dof(s.g2, s.c2, false, s.ref, card, s.id, "field 6 (G2)");
+      if (!s.inline_property && !m_.spring_prop_index.count(s.pid))
+        fail(s.ref, card, s.id, "field 3 (PID)", "references property " + std::to_string(s.pid) + ", which is not defined; expected the id of a PELAS card");
+    }
+    for (const auto& r : m_.rbe2) {
+      need_grid(r.gn, r.ref, "RBE2", r.id, "field 3 (GN)");
+      for (const int g : r.gm) need_grid(g, r.ref, "RBE2", r.id, "GM " + std::to_string(g));
+    }
+  }
+
+  void check_constraints_and_loads() {
+    std::set<int> spc_sets, load_sets;
+    for (const auto& s : m_.spcs) {
+      need_dof(s.grid, s.c, true, s.ref, "SPC/SPC1", s.sid, "grid " + std::to_string(s.grid));
+      spc_sets.insert(s.sid);
+    }
+    std::unordered_map<int, CardRef> spcadd_ids;
+    for (const auto& a : m_.spcadds) {
+      if (const auto [it, inserted] = spcadd_ids.emplace(a.sid, a.ref); !inserted)
+        fail(a.ref, "SPCADD", a.sid, "field 2 (SID)", "duplicate SPCADD id, first defined at " + at(it->second) + "; expected unique ids");
+      if (spc_sets.count(a.sid))
+        fail(a.ref, "SPCADD", a.sid, "field 2 (SID)", "the id is also an SPC/SPC1 set; expected an SPCADD id different from SPC set ids");
+      for (const int s : a.sets)
+        if (!spc_sets.count(s))
+          fail(a.ref, "SPCADD", a.sid, "S " + std::to_string(s), "references SPC set " + std::to_string(s) +
+                                                                   ", which has no SPC or SPC1 card; expected an SPC set id");
+    }
+    for (const auto& e : m_.aset) need_dof(e.grid, e.c, true, e.ref, "ASET/ASET1", e.grid, "");
+    for (const auto& e : m_.bset) need_dof(e.grid, e.c, true, e.ref, "BSET/BSET1", e.grid, "");
+    for (const auto& e : m_.suport) need_dof(e.grid, e.c, true, e.ref, "SUPORT", e.grid, "");
+    for (const auto& l : m_.point_loads) {
+      const char* card = l.kind == PointLoad::Kind::Force ? "FORCE" : "MOMENT";
+      need_grid(l.grid, l.ref, card, l.sid, "field 3 (G)");
+      need_coord(l.cid, l.ref, card, l.sid, "field 4 (CID)");
+      load_sets.insert(l.sid);
+    }
+    std::unordered_map<int, CardRef> load_ids;
+    for (const auto& l : m_.load_combinations) {
+      if (const auto [it, inserted] = load_ids.emplace(l.sid, l.ref); !inserted)
+        fail(l.ref, "LOAD", l.sid, "field 2 (SID)", "duplicate LOAD id, first defined at " + at(it->second) + "; expected unique ids");
+      if (load_sets.count(l.sid))
+        fail(l.ref, "LOAD", l.sid, "field 2 (SID)", "the id is also a FORCE/MOMENT set; expected a LOAD id different from load set ids");
+      for (const auto& [s, set] : l.terms)
+        if (!load_sets.count(set))
+          fail(l.ref, "LOAD", l.sid, "L " + std::to_string(set), "references load set " + std::to_string(set) + ", which has no FORCE or MOMENT card" +
+                                                                   unsupported_hint() + "; expected a FORCE/MOMENT set id");
+    }
+  }
+
+  std::string unsupported_hint() const {
+    if (m_.unsupported.empty()) return "";
+    std::string s = " (cards seflex does not support in this deck: ";
+    for (std::size_t i = 0; i < m_.unsupported.size() && i < 8; ++i) s += (i ? ", " : "") + m_.unsupported[i].name;
+    return s + ")";
+  }
+
+  void check_solution_control() {
+    std::unordered_map<int, CardRef> methods;
+    for (const auto& e : m_.eigen_methods) {
+      const char* card = e.is_eigr ? "EIGR" : "EIGRL";
+      if (const auto [it, inserted] = methods.emplace(e.sid, e.ref); !inserted)
+        fail(e.ref, card, e.sid, "field 2 (SID)", "duplicate method id, first defined at " + at(it->second) + "; expected unique EIGR/EIGRL ids");
+      if (e.norm == "POINT") need_dof(e.norm_grid, e.norm_component, false, e.ref, card, e.sid, "field 3 of continuation 1 (G)");
+    }
+    for (const auto& d : m_.dmigs)
+      for (const auto& t : d.entries) {
+        need_dof(t.gj, t.cj, false, d.ref, "DMIG", 0, "column " + std::to_string(t.gj));
+        need_dof(t.gi, t.ci, false, d.ref, "DMIG", 0, "row " + std::to_string(t.gi));
+      }
+    check_params();
+    // case control selections
+    std::set<int> spc_sets, load_sets;
+    for (const auto& s : m_.spcs) spc_sets.insert(s.sid);
+    for (const auto& a : m_.spcadds) spc_sets.insert(a.sid);
+    for (const auto& l : m_.point_loads) load_sets.insert(l.sid);
+    for (const auto& l : m_.load_combinations) load_sets.insert(l.sid);
+    auto check = [&](const Subcase& sc) {
+      const std::string in = sc.id == 0 ? "case control" : "case control SUBCASE " + std::to_string(sc.id);
+      const std::string file = m_.files.empty() ? std::string() : m_.files[0];
+      if (sc.spc && !spc_sets.count(*sc.spc))
+        throw InputError(file + ": " + in + ": SPC = " + std::to_string(*sc.spc) +
+                         " selects no SPC, SPC1 or SPCADD card; expected the id of an SPC set in the bulk data");
+      if (sc.load && !load_sets.count(*sc.load))
+        throw InputError(file + ": " + in + ": LOAD = " + std::to_string(*sc.load) + " selects no FORCE, MOMENT or LOAD card" +
+                         unsupported_hint() + "; expected the id of a load set in the bulk data");
+      if (sc.method && !methods.count(*sc.method))
+        throw InputError(file + ": " + in + ": METHOD = " + std::to_string(*sc.method) +
+                         " selects no EIGRL or EIGR card; expected the id of an eigenvalue method in the bulk data");
+      for (const auto* names : {&sc.k2gg, &sc.m2gg})
+        for (const auto& name : *names) {
+          bool found = false;
+          for (const auto& d : m_.dmigs) found = found || d.name == name;
+          if (!found)
+            throw InputError(file + ": " + in + ": " + (names == &sc.k2gg ? "K2GG" : "M2GG") + " = " + name +
+                             " names no DMIG matrix; expected the name of a DMIG in the bulk data");
+        }
+    };
+    check(m_.case_control.global);
+    for (const auto& sc : m_.case_control.subcases) check(sc);
+  }
+
+  void check_params() {
+    std::unordered_map<std::string, const Param*> first;
+    for (const auto& p : m_.params) {
+      const auto [it, inserted] = first.emplace(p.name, &p);
+      if (!inserted && it->second->values != p.values)
+        throw InputError(where(m_, p.ref), "PARAM " + p.name + ": a second value (the first, at " + at(it->second->ref) +
+                                               ", differs); expected one value per parameter");
+    }
+    auto number = [&](const char* name, double fallback, bool integer) {
+      const double v = param_number(m_, name, fallback);
+      if (integer && v != static_cast<double>(static_cast<long long>(v))) {
+        const Param* p = first.at(name);
+        throw InputError(where(m_, p->ref), std::string("PARAM ") + name + ", field 3 (V1): got " + p->values[0] + "; expected an integer");
+      }
+      return v;
+    };
+    auto bad = [&](const char* name, const std::string& expected) {
+      const Param* p = first.at(name);
+      throw InputError(where(m_, p->ref), std::string("PARAM ") + name + ", field 3 (V1): got " + p->values[0] + "; expected " + expected);
+    };
+    if (first.count("WTMASS") && !(number("WTMASS", 1.0, false) > 0.0)) bad("WTMASS", "a mass factor > 0");
+    if (first.count("K6ROT") && !(number("K6ROT", 0.0, false) >= 0.0)) bad("K6ROT", "a stiffness factor >= 0");
+    if (first.count("COUPMASS")) number("COUPMASS", -1.0, true);
+    if (first.count("GRDPNT")) {
+      const int g = static_cast<int>(number("GRDPNT", -1.0, true));
+      if (g < -1) bad("GRDPNT", "-1 (off), 0 (basic origin) or a grid id");
+      if (g > 0 && !m_.grid_index.count(g)) bad("GRDPNT", "-1, 0 or the id of a GRID (grid " + std::to_string(g) + " is not defined)");
+    }
+  }
+
+  Model& m_;
+};
+
+}  // namespace
+
+SourceRef where(const Model& model, const CardRef& ref) {
+  SourceRef s;
+  s.file = ref.file < model.files.size() ? model.files[ref.file] : std::string("<model>");
+  s.line = static_cast<int>(ref.line);
+  return s;
+}
+
+double param_number(const Model& model, const std::string& name, double fallback) {
+  for (const auto& p : model.params) {
+    if (p.name != name) continue;
+    if (p.values.empty() || p.values[0].empty())
+      throw InputError(where(model, p.ref), "PARAM " + name + ", field 3 (V1): blank; expected a number");
+    const std::string& v = p.values[0];
+    double x = 0;
+    const auto [ptr, ec] = std::from_chars(v.data(), v.data() + v.size(), x);
+    if (ec != std::errc() || ptr != v.data() + v.size())
+      throw InputError(where(model, p.ref), "PARAM " + name + ", field 3 (V1): got '" + v + "'; expected a number");
+    return x;
+  }
+  return fallback;
+}
+
+void finalize(Model& model) { Finalizer(model).run(); }
+
+}  // namespace seflex::fem

@@ -1,0 +1,94 @@
+#pragma once
+// Parsers of the bulk-data cards seflex supports, one function per card (grouped by kind in
+// io/src/nastran_cards_*.cpp), and what they share while a deck is read.
+// Field layouts follow the MSC Nastran Quick Reference Guide; docs/nastran-support.md lists them.
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "seflex/fem/model.hpp"
+#include "seflex/io/nastran_card.hpp"
+
+namespace seflex::io::nastran {
+
+/// What the card parsers share while one deck is read.
+struct ReaderState {
+  explicit ReaderState(fem::Model& m) : model(m) {}
+  fem::Model& model;
+  /// Per GRID (same order as model.grids): which of CP (1), CD (2), PS (4) were blank, for GRDSET.
+  std::vector<std::uint8_t> grid_blank;
+  /// DMIG name -> index in model.dmigs; whether its header card has been read.
+  std::unordered_map<std::string, std::size_t> dmig_index;
+  std::vector<bool> dmig_has_header;
+  /// Name -> index in model.unsupported.
+  std::unordered_map<std::string, std::size_t> unsupported_index;
+
+  /// Record a card (or a feature of a card) seflex reads but does not use: counted, first location kept.
+  void note_unsupported(std::string_view name, const fem::CardRef& ref);
+};
+
+using CardParser = void (*)(const Card&, ReaderState&);
+
+/// The parser of a bulk-data card name (upper case), or nullptr if seflex does not support it.
+CardParser find_card_parser(std::string_view name);
+
+// Geometry (nastran_cards_geometry.cpp)
+void parse_grid(const Card&, ReaderState&);
+void parse_grdset(const Card&, ReaderState&);
+void parse_cord2(const Card&, ReaderState&);
+void parse_cord1(const Card&, ReaderState&);
+void parse_spoint(const Card&, ReaderState&);
+// Elements (nastran_cards_elements.cpp)
+void parse_cbar(const Card&, ReaderState&);
+void parse_cbeam(const Card&, ReaderState&);
+void parse_baror(const Card&, ReaderState&);
+void parse_beamor(const Card&, ReaderState&);
+void parse_crod(const Card&, ReaderState&);
+void parse_conrod(const Card&, ReaderState&);
+void parse_cquad4(const Card&, ReaderState&);
+void parse_ctria3(const Card&, ReaderState&);
+void parse_conm2(const Card&, ReaderState&);
+void parse_celas1(const Card&, ReaderState&);
+void parse_celas2(const Card&, ReaderState&);
+void parse_rbe2(const Card&, ReaderState&);
+// Materials and properties (nastran_cards_properties.cpp)
+void parse_mat1(const Card&, ReaderState&);
+void parse_pbar(const Card&, ReaderState&);
+void parse_pbarl(const Card&, ReaderState&);
+void parse_pbeam(const Card&, ReaderState&);
+void parse_pbeaml(const Card&, ReaderState&);
+void parse_prod(const Card&, ReaderState&);
+void parse_pshell(const Card&, ReaderState&);
+void parse_pelas(const Card&, ReaderState&);
+// Constraints, sets and loads (nastran_cards_constraints.cpp)
+void parse_spc(const Card&, ReaderState&);
+void parse_spc1(const Card&, ReaderState&);
+void parse_spcadd(const Card&, ReaderState&);
+void parse_aset(const Card&, ReaderState&);
+void parse_aset1(const Card&, ReaderState&);
+void parse_bset(const Card&, ReaderState&);
+void parse_bset1(const Card&, ReaderState&);
+void parse_suport(const Card&, ReaderState&);
+void parse_force(const Card&, ReaderState&);
+void parse_moment(const Card&, ReaderState&);
+void parse_load(const Card&, ReaderState&);
+// Solution control and matrices (nastran_cards_solution.cpp)
+void parse_eigrl(const Card&, ReaderState&);
+void parse_eigr(const Card&, ReaderState&);
+void parse_param(const Card&, ReaderState&);
+void parse_dmig(const Card&, ReaderState&);
+
+/// A PARAM value as stored in fem::Param::values: text upper-cased; numbers rewritten in a form
+/// std::from_chars reads (Nastran's "2.59-3" becomes "0.00259"), reals always with '.' or an exponent.
+std::string param_value(std::string_view field);
+
+/// Ids of a list field run starting at data field `first`: integers and "ID1 THRU ID2" ranges, blanks
+/// skipped (SPC1, ASET1, BSET1, SPOINT, RBE2). Stops at the end of the card or, when stop_at_real, at
+/// the first real. Ranges larger than kMaxThru ids are an error.
+inline constexpr int kMaxThru = 10'000'000;
+std::vector<int> id_list(const Card& card, std::size_t first, const char* what, bool stop_at_real = false,
+                         std::size_t* stopped_at = nullptr);
+
+}  // namespace seflex::io::nastran

@@ -1,0 +1,257 @@
+// CBAR, CBEAM, BAROR, BEAMOR, CROD, CONROD, CQUAD4, CTRIA3, CONM2, CELAS1, CELAS2, RBE2.
+#include <string>
+
+#include "seflex/io/nastran_cards.hpp"
+
+namespace seflex::io::nastran {
+namespace {
+
+/// OFFT: three letters, B or G for the orientation vector, then G or O for each end's offset.
+std::string offt(const Card& card, std::size_t i) {
+  std::string s = card.text_or(i, "OFFT", "");
+  if (s.empty()) return s;
+  if (s.size() != 3 || (s[0] != 'G' && s[0] != 'B') || (s[1] != 'G' && s[1] != 'O') || (s[2] != 'G' && s[2] != 'O'))
+    card.fail(i, "OFFT", card.got(i) + "; expected one of GGG, BGG, GGO, BGO, GOG, BOG, GOO, BOO");
+  return s;
+}
+
+/// Orientation in fields i..i+2: G0 (integer) or the vector X1 X2 X3 (reals). Returns false if all blank.
+bool orientation(const Card& card, std::size_t i, bool& has_g0, int& g0, Eigen::Vector3d& v) {
+  switch (card.kind(i)) {
+    case FieldKind::Integer:
+      g0 = card.id(i, "G0");
+      has_g0 = true;
+      if (!card.blank(i + 1) || !card.blank(i + 2))
+        card.fail(i + 1, "X2", card.got(i + 1) + " after G0 in field " + std::to_string(i % 8 + 2) +
+                                   "; expected blank fields after an orientation grid");
+      return true;
+    case FieldKind::Blank:
+      if (card.blank(i + 1) && card.blank(i + 2)) return false;
+      [[fallthrough]];
+    case FieldKind::Real:
+      has_g0 = false;
+      v = {card.real_or(i, "X1", 0.0), card.real_or(i + 1, "X2", 0.0), card.real_or(i + 2, "X3", 0.0)};
+      if (v.squaredNorm() == 0.0)
+        card.fail(i, "X1", "the orientation vector (X1, X2, X3) is zero; expected a non-zero vector or a grid G0");
+      return true;
+    default:
+      card.fail(i, "X1/G0", card.got(i) + "; expected an orientation grid id (integer) or X1 (real)");
+  }
+}
+
+void check_distinct(const Card& card, const int* g, std::size_t n, std::size_t first, const char* const* names) {
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = a + 1; b < n; ++b)
+      if (g[a] == g[b])
+        card.fail(first + b, names[b], "grid " + std::to_string(g[b]) + " repeats " + names[a] +
+                                           "; expected distinct grids");
+}
+
+void parse_bar_like(const Card& card, ReaderState& st, bool beam) {
+  fem::Bar b;
+  b.is_beam = beam;
+  b.id = card.id(0, "EID");
+  b.pid = card.id_or(1, "PID", 0);  // blank: BAROR/BEAMOR PID, else EID (applied after reading)
+  b.ga = card.id(2, "GA");
+  b.gb = card.id(3, "GB");
+  static const char* names[2] = {"GA", "GB"};
+  const int ends[2] = {b.ga, b.gb};
+  check_distinct(card, ends, 2, 2, names);
+  orientation(card, 4, b.has_g0, b.g0, b.v);
+  if (beam && card.kind(7) == FieldKind::Real)
+    st.note_unsupported("CBEAM BIT (built-in twist ignored)", card.ref());
+  else
+    b.offt = offt(card, 7);
+  b.pa = card.components(8, "PA", true);
+  b.pb = card.components(9, "PB", true);
+  b.wa = {card.real_or(10, "W1A", 0.0), card.real_or(11, "W2A", 0.0), card.real_or(12, "W3A", 0.0)};
+  b.wb = {card.real_or(13, "W1B", 0.0), card.real_or(14, "W2B", 0.0), card.real_or(15, "W3B", 0.0)};
+  if (beam && (card.integer_or(16, "SA", 0) != 0 || card.integer_or(17, "SB", 0) != 0))
+    st.note_unsupported("CBEAM SA/SB (warping scalar points ignored)", card.ref());
+  b.ref = card.ref();
+  st.model.bars.push_back(b);
+}
+
+void parse_bar_defaults(const Card& card, ReaderState& st, fem::BarDefaults& d) {
+  if (d.present) {
+    const auto& first = st.model.files[d.ref.file];
+    card.fail_card("a second " + std::string(card.name()) + " (the first is at " + location(first, d.ref.line) +
+                   "); expected at most one");
+  }
+  d.present = true;
+  d.ref = card.ref();
+  d.pid = card.id_or(1, "PID", 0);
+  orientation(card, 4, d.has_g0, d.g0, d.v);
+  if (card.name() == "BEAMOR" && card.kind(7) == FieldKind::Real)
+    st.note_unsupported("BEAMOR BIT (built-in twist ignored)", card.ref());
+  else
+    d.offt = offt(card, 7);
+  if (d.offt.empty()) d.offt = "GGG";
+}
+
+/// THETA (real, degrees) or MCID (integer >= 0) in field i.
+void theta_mcid(const Card& card, std::size_t i, fem::Shell& s) {
+  switch (card.kind(i)) {
+    case FieldKind::Blank: return;
+    case FieldKind::Real: s.theta_deg = card.real(i, "THETA"); return;
+    case FieldKind::Integer:
+      s.mcid = card.integer(i, "MCID");
+      if (s.mcid < 0) card.fail(i, "MCID", card.got(i) + "; expected a coordinate system id >= 0");
+      s.theta_is_mcid = true;
+      return;
+    default: card.fail(i, "THETA/MCID", card.got(i) + "; expected THETA (real, degrees) or MCID (integer)");
+  }
+}
+
+void parse_shell(const Card& card, ReaderState& st, std::uint8_t nnode) {
+  static const char* gnames[4] = {"G1", "G2", "G3", "G4"};
+  static const char* tnames[4] = {"T1", "T2", "T3", "T4"};
+  fem::Shell s;
+  s.nnode = nnode;
+  s.id = card.id(0, "EID");
+  s.pid = card.id_or(1, "PID", s.id);
+  for (std::size_t k = 0; k < nnode; ++k) s.g[k] = card.id(2 + k, gnames[k]);
+  check_distinct(card, s.g.data(), nnode, 2, gnames);
+  theta_mcid(card, 2 + nnode, s);
+  s.zoffs = card.real_or(3 + nnode, "ZOFFS", 0.0);
+  if (card.size() > 8) {
+    s.tflag = card.integer_or(10, "TFLAG", 0);
+    if (s.tflag != 0 && s.tflag != 1) card.fail(10, "TFLAG", card.got(10) + "; expected 0, 1 or blank");
+    for (std::size_t k = 0; k < nnode; ++k) {
+      s.t[k] = card.real_or(11 + k, tnames[k], 0.0);
+      if (s.t[k] < 0.0) card.fail(11 + k, tnames[k], card.got(11 + k) + "; expected a thickness >= 0 or blank");
+    }
+  }
+  s.ref = card.ref();
+  st.model.shells.push_back(s);
+}
+
+/// A spring's grid or scalar point and its component (0..6; 0 or blank for a scalar point).
+void spring_end(const Card& card, std::size_t i, const char* gname, const char* cname, int& g, int& c) {
+  g = card.integer_or(i, gname, 0);
+  if (g < 0) card.fail(i, gname, card.got(i) + "; expected a grid or scalar point id, or blank (grounded)");
+  c = card.integer_or(i + 1, cname, 0);
+  if (c < 0 || c > 6) card.fail(i + 1, cname, card.got(i + 1) + "; expected one component 1-6 (0 or blank for a scalar point)");
+}
+
+}  // namespace
+
+// CBAR EID PID GA GB X1/G0 X2 X3 OFFT / PA PB W1A W2A W3A W1B W2B W3B
+void parse_cbar(const Card& card, ReaderState& st) { parse_bar_like(card, st, false); }
+// CBEAM EID PID GA GB X1/G0 X2 X3 OFFT/BIT / PA PB W1A W2A W3A W1B W2B W3B / SA SB
+void parse_cbeam(const Card& card, ReaderState& st) { parse_bar_like(card, st, true); }
+// BAROR - PID - - X1/G0 X2 X3 OFFT
+void parse_baror(const Card& card, ReaderState& st) { parse_bar_defaults(card, st, st.model.baror); }
+void parse_beamor(const Card& card, ReaderState& st) { parse_bar_defaults(card, st, st.model.beamor); }
+
+// CROD EID PID G1 G2
+void parse_crod(const Card& card, ReaderState& st) {
+  fem::Rod r;
+  r.id = card.id(0, "EID");
+  r.pid = card.id_or(1, "PID", r.id);
+  r.ga = card.id(2, "G1");
+  r.gb = card.id(3, "G2");
+  static const char* names[2] = {"G1", "G2"};
+  const int ends[2] = {r.ga, r.gb};
+  check_distinct(card, ends, 2, 2, names);
+  r.ref = card.ref();
+  st.model.rods.push_back(r);
+}
+
+// CONROD EID G1 G2 MID A J C NSM
+void parse_conrod(const Card& card, ReaderState& st) {
+  fem::Rod r;
+  r.id = card.id(0, "EID");
+  r.ga = card.id(1, "G1");
+  r.gb = card.id(2, "G2");
+  static const char* names[2] = {"G1", "G2"};
+  const int ends[2] = {r.ga, r.gb};
+  check_distinct(card, ends, 2, 1, names);
+  r.inline_property = true;
+  r.mid = card.id(3, "MID");
+  r.A = card.real(4, "A");
+  r.J = card.real_or(5, "J", 0.0);
+  r.C = card.real_or(6, "C", 0.0);
+  r.nsm = card.real_or(7, "NSM", 0.0);
+  if (r.A < 0.0) card.fail(4, "A", card.got(4) + "; expected an area >= 0");
+  r.ref = card.ref();
+  st.model.rods.push_back(r);
+}
+
+// CQUAD4 EID PID G1 G2 G3 G4 THETA/MCID ZOFFS / - - TFLAG T1 T2 T3 T4
+void parse_cquad4(const Card& card, ReaderState& st) { parse_shell(card, st, 4); }
+// CTRIA3 EID PID G1 G2 G3 THETA/MCID ZOFFS - / - - TFLAG T1 T2 T3
+void parse_ctria3(const Card& card, ReaderState& st) { parse_shell(card, st, 3); }
+
+// CONM2 EID G CID M X1 X2 X3 - / I11 I21 I22 I31 I32 I33
+void parse_conm2(const Card& card, ReaderState& st) {
+  fem::Conm2 m;
+  m.id = card.id(0, "EID");
+  m.grid = card.id(1, "G");
+  m.cid = card.integer_or(2, "CID", 0);
+  if (m.cid < -1) card.fail(2, "CID", card.got(2) + "; expected -1, 0, a coordinate system id or blank");
+  m.m = card.real_or(3, "M", 0.0);
+  m.x = {card.real_or(4, "X1", 0.0), card.real_or(5, "X2", 0.0), card.real_or(6, "X3", 0.0)};
+  m.I11 = card.real_or(8, "I11", 0.0);
+  m.I21 = card.real_or(9, "I21", 0.0);
+  m.I22 = card.real_or(10, "I22", 0.0);
+  m.I31 = card.real_or(11, "I31", 0.0);
+  m.I32 = card.real_or(12, "I32", 0.0);
+  m.I33 = card.real_or(13, "I33", 0.0);
+  if (m.I11 < 0.0) card.fail(8, "I11", card.got(8) + "; expected a moment of inertia >= 0");
+  if (m.I22 < 0.0) card.fail(10, "I22", card.got(10) + "; expected a moment of inertia >= 0");
+  if (m.I33 < 0.0) card.fail(13, "I33", card.got(13) + "; expected a moment of inertia >= 0");
+  m.ref = card.ref();
+  st.model.conm2.push_back(m);
+}
+
+// CELAS1 EID PID G1 C1 G2 C2
+void parse_celas1(const Card& card, ReaderState& st) {
+  fem::Spring s;
+  s.id = card.id(0, "EID");
+  s.pid = card.id_or(1, "PID", s.id);
+  spring_end(card, 2, "G1", "C1", s.g1, s.c1);
+  spring_end(card, 4, "G2", "C2", s.g2, s.c2);
+  if (s.g1 == 0 && s.g2 == 0) card.fail(2, "G1", "G1 and G2 are both blank; expected at least one grid or scalar point");
+  if (s.g1 == s.g2 && s.c1 == s.c2) card.fail(4, "G2", "both ends are the same degree of freedom; expected two different ones");
+  s.ref = card.ref();
+  st.model.springs.push_back(s);
+}
+
+// CELAS2 EID K G1 C1 G2 C2 GE S
+void parse_celas2(const Card& card, ReaderState& st) {
+  fem::Spring s;
+  s.id = card.id(0, "EID");
+  s.inline_property = true;
+  s.k = card.real(1, "K");
+  spring_end(card, 2, "G1", "C1", s.g1, s.c1);
+  spring_end(card, 4, "G2", "C2", s.g2, s.c2);
+  s.ge = card.real_or(6, "GE", 0.0);
+  s.s = card.real_or(7, "S", 0.0);
+  if (s.g1 == 0 && s.g2 == 0) card.fail(2, "G1", "G1 and G2 are both blank; expected at least one grid or scalar point");
+  if (s.g1 == s.g2 && s.c1 == s.c2) card.fail(4, "G2", "both ends are the same degree of freedom; expected two different ones");
+  s.ref = card.ref();
+  st.model.springs.push_back(s);
+}
+
+// RBE2 EID GN CM GM1 GM2 ... [ALPHA]
+void parse_rbe2(const Card& card, ReaderState& st) {
+  fem::Rbe2 r;
+  r.id = card.id(0, "EID");
+  r.gn = card.id(1, "GN");
+  r.cm = card.components(2, "CM", false);
+  std::size_t stop = 0;
+  r.gm = id_list(card, 3, "GM", true, &stop);
+  if (stop < card.size()) {
+    card.real(stop, "ALPHA");  // thermal expansion coefficient: checked, not used
+    for (std::size_t i = stop + 1; i < card.size(); ++i)
+      if (!card.blank(i)) card.fail(i, "GM", card.got(i) + " after ALPHA; expected nothing after ALPHA");
+  }
+  if (r.gm.empty()) card.fail(3, "GM1", "blank; expected at least one dependent grid");
+  for (const int g : r.gm)
+    if (g == r.gn) card.fail(3, "GM", "the independent grid " + std::to_string(g) + " is also dependent; expected GMi different from GN");
+  r.ref = card.ref();
+  st.model.rbe2.push_back(std::move(r));
+}
+
+}  // namespace seflex::io::nastran

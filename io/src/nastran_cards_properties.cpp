@@ -1,0 +1,283 @@
+// MAT1, PBAR, PBARL, PBEAM, PBEAML, PROD, PSHELL, PELAS.
+#include <cmath>
+#include <string>
+
+#include "seflex/common/error.hpp"
+#include "seflex/fem/beam_section.hpp"
+#include "seflex/io/nastran_cards.hpp"
+#include "seflex/io/nastran_lines.hpp"
+
+namespace seflex::io::nastran {
+namespace {
+
+bool is_station_flag(std::string_view f) { return f == "YES" || f == "YESA" || f == "NO"; }
+
+void check_inertia(const Card& card, const fem::BarProperty& p, std::size_t i1, std::size_t i2, std::size_t i12) {
+  if (p.A < 0.0) card.fail(2, "A", card.got(2) + "; expected an area >= 0");
+  if (p.I1 < 0.0) card.fail(i1, "I1", card.got(i1) + "; expected I1 >= 0");
+  if (p.I2 < 0.0) card.fail(i2, "I2", card.got(i2) + "; expected I2 >= 0");
+  if (p.I12 != 0.0 && !(p.I1 * p.I2 > p.I12 * p.I12))
+    card.fail(i12, "I12", card.got(i12) + "; expected I1 * I2 > I12^2");
+}
+
+/// DIMs of a PBARL/PBEAML section starting at data field `first`; sets A, I1, I2, J, K1, K2.
+void section_from_dims(const Card& card, fem::BarProperty& p, std::size_t first) {
+  const int ndim = fem::section_dimension_count(p.section_type);
+  if (ndim == 0)
+    card.fail(3, "TYPE", card.got(3) + "; expected one of the section types seflex computes: " +
+                             fem::supported_section_types());
+  p.dims.clear();
+  for (int k = 0; k < ndim; ++k) {
+    const std::string name = "DIM" + std::to_string(k + 1);
+    p.dims.push_back(card.real(first + static_cast<std::size_t>(k), name.c_str()));
+  }
+  fem::BeamSection s;
+  try {
+    s = fem::beam_section(p.section_type, p.dims);
+  } catch (const InputError& e) {
+    card.fail(first, "DIM1", std::string(e.what()));
+  }
+  p.A = s.A;
+  p.I1 = s.I1;
+  p.I2 = s.I2;
+  p.I12 = s.I12;
+  p.J = s.J;
+  p.K1 = s.K1;
+  p.K2 = s.K2;
+}
+
+std::string group_and_type(const Card& card, fem::BarProperty& p) {
+  const std::string group = card.text_or(2, "GROUP", "MSCBML0");
+  if (group != "MSCBML0")
+    card.fail(2, "GROUP", card.got(2) + "; expected MSCBML0 or blank (user section libraries are not supported)");
+  p.section_type = card.text_or(3, "TYPE", "");
+  if (p.section_type.empty()) card.fail(3, "TYPE", "blank; expected a section type (" + fem::supported_section_types() + ")");
+  return group;
+}
+
+}  // namespace
+
+// MAT1 MID E G NU RHO A TREF GE / ST SC SS MCSID
+void parse_mat1(const Card& card, ReaderState& st) {
+  fem::Mat1 m;
+  m.id = card.id(0, "MID");
+  const bool has_e = !card.blank(1), has_g = !card.blank(2), has_nu = !card.blank(3);
+  m.E = card.real_or(1, "E", 0.0);
+  m.G = card.real_or(2, "G", 0.0);
+  m.nu = card.real_or(3, "NU", 0.0);
+  if (m.E < 0.0) card.fail(1, "E", card.got(1) + "; expected E >= 0");
+  if (m.G < 0.0) card.fail(2, "G", card.got(2) + "; expected G >= 0");
+  if (has_nu && !(m.nu > -1.0 && m.nu <= 0.5)) card.fail(3, "NU", card.got(3) + "; expected -1 < NU <= 0.5");
+  const int given = int(has_e) + int(has_g) + int(has_nu);
+  if (given < 2) {
+    const std::size_t first_blank = !has_e ? 1 : !has_g ? 2 : 3;
+    const char* names[4] = {"", "E", "G", "NU"};
+    card.fail(first_blank, names[first_blank],
+              std::string("blank, and only ") + std::to_string(given) +
+                  " of E, G, NU given; expected at least two of them (the third follows from G = E / (2 (1 + NU)))");
+  }
+  // Nastran's rule (QRG MAT1, remark on E, G, NU): a blank one follows from the other two.
+  if (!has_g) m.G = m.E / (2.0 * (1.0 + m.nu));
+  if (!has_nu) {
+    if (m.G == 0.0) card.fail(2, "G", "G = 0 with NU blank; expected G > 0 to compute NU = E / (2 G) - 1");
+    m.nu = m.E / (2.0 * m.G) - 1.0;
+  }
+  if (!has_e) m.E = 2.0 * (1.0 + m.nu) * m.G;
+  m.rho = card.real_or(4, "RHO", 0.0);
+  m.alpha = card.real_or(5, "A", 0.0);
+  m.tref = card.real_or(6, "TREF", 0.0);
+  m.ge = card.real_or(7, "GE", 0.0);
+  // ST, SC, SS (stress limits) and MCSID are read for their types only.
+  card.real_or(8, "ST", 0.0);
+  card.real_or(9, "SC", 0.0);
+  card.real_or(10, "SS", 0.0);
+  card.integer_or(11, "MCSID", 0);
+  m.ref = card.ref();
+  st.model.mat1.push_back(m);
+}
+
+// PBAR PID MID A I1 I2 J NSM - / C1 C2 D1 D2 E1 E2 F1 F2 / K1 K2 I12
+void parse_pbar(const Card& card, ReaderState& st) {
+  fem::BarProperty p;
+  p.source = fem::BarProperty::Source::PBAR;
+  p.id = card.id(0, "PID");
+  p.mid = card.id(1, "MID");
+  p.A = card.real_or(2, "A", 0.0);
+  p.I1 = card.real_or(3, "I1", 0.0);
+  p.I2 = card.real_or(4, "I2", 0.0);
+  p.J = card.real_or(5, "J", 0.0);
+  p.nsm = card.real_or(6, "NSM", 0.0);
+  static const char* stress[8] = {"C1", "C2", "D1", "D2", "E1", "E2", "F1", "F2"};
+  for (std::size_t k = 0; k < 8; ++k) card.real_or(8 + k, stress[k], 0.0);
+  p.K1 = card.real_or(16, "K1", 0.0);
+  p.K2 = card.real_or(17, "K2", 0.0);
+  p.I12 = card.real_or(18, "I12", 0.0);
+  if (p.K1 < 0.0) card.fail(16, "K1", card.got(16) + "; expected K1 >= 0 or blank");
+  if (p.K2 < 0.0) card.fail(17, "K2", card.got(17) + "; expected K2 >= 0 or blank");
+  check_inertia(card, p, 3, 4, 18);
+  p.ref = card.ref();
+  st.model.bar_props.push_back(std::move(p));
+}
+
+// PBARL PID MID GROUP TYPE / DIM1 DIM2 ... DIMn NSM
+void parse_pbarl(const Card& card, ReaderState& st) {
+  fem::BarProperty p;
+  p.source = fem::BarProperty::Source::PBARL;
+  p.id = card.id(0, "PID");
+  p.mid = card.id(1, "MID");
+  group_and_type(card, p);
+  section_from_dims(card, p, 8);
+  const std::size_t nsm_at = 8 + p.dims.size();
+  p.nsm = card.real_or(nsm_at, "NSM", 0.0);
+  for (std::size_t i = nsm_at + 1; i < card.size(); ++i)
+    if (!card.blank(i)) card.fail(i, "NSM", card.got(i) + " after NSM; expected " + std::to_string(p.dims.size()) + " dimensions then NSM");
+  p.ref = card.ref();
+  st.model.bar_props.push_back(std::move(p));
+}
+
+// PBEAM PID MID A(A) I1(A) I2(A) I12(A) J(A) NSM(A) / C1(A) .. F2(A) / [SO X/XB A I1 I2 I12 J NSM /
+//   C1 .. F2]... / K1 K2 S1 S2 NSI(A) NSI(B) CW(A) CW(B) / M1(A) M2(A) M1(B) M2(B) N1(A) N2(A) N1(B) N2(B)
+// seflex models a PBEAM as a prismatic beam with the end-A section; a taper is reported.
+void parse_pbeam(const Card& card, ReaderState& st) {
+  fem::BarProperty p;
+  p.source = fem::BarProperty::Source::PBEAM;
+  p.id = card.id(0, "PID");
+  p.mid = card.id(1, "MID");
+  p.A = card.real_or(2, "A", 0.0);
+  p.I1 = card.real_or(3, "I1", 0.0);
+  p.I2 = card.real_or(4, "I2", 0.0);
+  p.I12 = card.real_or(5, "I12", 0.0);
+  p.J = card.real_or(6, "J", 0.0);
+  p.nsm = card.real_or(7, "NSM", 0.0);
+  check_inertia(card, p, 3, 4, 5);
+  const std::size_t nlines = (card.used() + 7) / 8;
+  std::size_t line = 1;
+  // stress recovery points of end A (optional when a station follows directly)
+  if (line < nlines && !is_station_flag(upper(card.raw(8)))) ++line;
+  bool tapered = false;
+  static const char* names[6] = {"A", "I1", "I2", "I12", "J", "NSM"};
+  const double end_a[6] = {p.A, p.I1, p.I2, p.I12, p.J, p.nsm};
+  while (line < nlines && is_station_flag(upper(card.raw(8 * line)))) {
+    const std::size_t b = 8 * line;
+    const double x = card.real(b + 1, "X/XB");
+    if (x < 0.0 || x > 1.0) card.fail(b + 1, "X/XB", card.got(b + 1) + "; expected 0 <= X/XB <= 1");
+    for (std::size_t k = 0; k < 6; ++k) {
+      const double v = card.real_or(b + 2 + k, names[k], end_a[k]);
+      if (std::abs(v - end_a[k]) > 1e-9 * std::max(std::abs(end_a[k]), std::abs(v))) tapered = true;
+    }
+    const bool has_stress_line = upper(card.raw(b)) == "YES";
+    line += has_stress_line ? 2 : 1;
+  }
+  if (line < nlines) {  // K1 K2 S1 S2 NSI(A) NSI(B) CW(A) CW(B)
+    const std::size_t b = 8 * line;
+    p.K1 = card.real_or(b, "K1", 1.0);
+    p.K2 = card.real_or(b + 1, "K2", 1.0);
+    if (p.K1 < 0.0) card.fail(b, "K1", card.got(b) + "; expected K1 >= 0 or blank");
+    if (p.K2 < 0.0) card.fail(b + 1, "K2", card.got(b + 1) + "; expected K2 >= 0 or blank");
+    for (std::size_t k = 2; k < 8; ++k)
+      if (!card.blank(b + k) && card.real(b + k, "S1/S2/NSI/CW") != 0.0)
+        st.note_unsupported("PBEAM S1/S2/NSI/CW (shear relief, NSM inertia, warping ignored)", card.ref());
+    ++line;
+  } else {
+    p.K1 = p.K2 = 1.0;  // QRG PBEAM: K1, K2 default to 1.0
+  }
+  if (line < nlines) {  // M1(A) .. N2(B): offsets of the NSM CG and the neutral axis
+    for (std::size_t k = 0; k < 8; ++k)
+      if (!card.blank(8 * line + k) && card.real(8 * line + k, "M/N") != 0.0)
+        st.note_unsupported("PBEAM M/N (NSM and neutral-axis offsets ignored)", card.ref());
+    ++line;
+  }
+  if (line < nlines)
+    card.fail(8 * line, "SO", card.got(8 * line) + "; expected YES, YESA or NO starting a station, or the K1 line and the M1 line at the end");
+  if (tapered) st.note_unsupported("PBEAM (tapered: end-A section used)", card.ref());
+  p.ref = card.ref();
+  st.model.bar_props.push_back(std::move(p));
+}
+
+// PBEAML PID MID GROUP TYPE / DIM1(A) .. DIMn(A) NSM(A) SO(1) X(1)/XB DIM1(1) .. DIMn(1) NSM(1) ...
+void parse_pbeaml(const Card& card, ReaderState& st) {
+  fem::BarProperty p;
+  p.source = fem::BarProperty::Source::PBEAML;
+  p.id = card.id(0, "PID");
+  p.mid = card.id(1, "MID");
+  group_and_type(card, p);
+  section_from_dims(card, p, 8);
+  const std::size_t n = p.dims.size();
+  p.nsm = card.real_or(8 + n, "NSM", 0.0);
+  bool tapered = false;
+  std::size_t i = 9 + n;
+  const std::size_t used = card.used();
+  while (i < used) {
+    const std::string so = card.text_or(i, "SO", "YES");
+    if (!is_station_flag(so)) card.fail(i, "SO", card.got(i) + "; expected YES, YESA or NO");
+    const double x = card.real(i + 1, "X/XB");
+    if (x < 0.0 || x > 1.0) card.fail(i + 1, "X/XB", card.got(i + 1) + "; expected 0 <= X/XB <= 1");
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::string name = "DIM" + std::to_string(k + 1);
+      const double v = card.real_or(i + 2 + k, name.c_str(), p.dims[k]);
+      if (std::abs(v - p.dims[k]) > 1e-9 * std::max(std::abs(p.dims[k]), std::abs(v))) tapered = true;
+    }
+    if (card.real_or(i + 2 + n, "NSM", p.nsm) != p.nsm) tapered = true;
+    i += n + 3;
+  }
+  if (tapered) st.note_unsupported("PBEAML (tapered: end-A section used)", card.ref());
+  p.ref = card.ref();
+  st.model.bar_props.push_back(std::move(p));
+}
+
+// PROD PID MID A J C NSM
+void parse_prod(const Card& card, ReaderState& st) {
+  fem::RodProperty p;
+  p.id = card.id(0, "PID");
+  p.mid = card.id(1, "MID");
+  p.A = card.real(2, "A");
+  if (p.A < 0.0) card.fail(2, "A", card.got(2) + "; expected an area >= 0");
+  p.J = card.real_or(3, "J", 0.0);
+  p.C = card.real_or(4, "C", 0.0);
+  p.nsm = card.real_or(5, "NSM", 0.0);
+  p.ref = card.ref();
+  st.model.rod_props.push_back(p);
+}
+
+// PSHELL PID MID1 T MID2 12I/T**3 MID3 TS/T NSM / Z1 Z2 MID4
+void parse_pshell(const Card& card, ReaderState& st) {
+  fem::ShellProperty p;
+  p.id = card.id(0, "PID");
+  p.mid1 = card.id_or(1, "MID1", 0);
+  p.t = card.real_or(2, "T", 0.0);
+  if (p.t < 0.0) card.fail(2, "T", card.got(2) + "; expected a thickness >= 0 or blank");
+  p.mid2 = card.integer_or(3, "MID2", 0);
+  if (p.mid2 < 0) card.fail(3, "MID2", card.got(3) + "; expected a material id or blank (MID2 = -1, plane strain, is not supported)");
+  p.bend_ratio = card.real_or(4, "12I/T**3", 1.0);
+  if (p.bend_ratio < 0.0) card.fail(4, "12I/T**3", card.got(4) + "; expected a ratio >= 0 or blank");
+  p.mid3 = card.id_or(5, "MID3", 0);
+  p.ts_t = card.real_or(6, "TS/T", 0.833333);
+  if (p.ts_t < 0.0) card.fail(6, "TS/T", card.got(6) + "; expected a ratio >= 0 or blank");
+  p.nsm = card.real_or(7, "NSM", 0.0);
+  p.z1 = card.real_or(8, "Z1", -0.5 * p.t);
+  p.z2 = card.real_or(9, "Z2", 0.5 * p.t);
+  p.mid4 = card.id_or(10, "MID4", 0);
+  if (p.mid4 != 0) st.note_unsupported("PSHELL MID4 (membrane-bending coupling ignored)", card.ref());
+  if (p.mid1 == 0 && p.mid2 == 0 && p.mid3 == 0)
+    card.fail(1, "MID1", "MID1, MID2 and MID3 are all blank; expected at least one material");
+  p.ref = card.ref();
+  st.model.shell_props.push_back(p);
+}
+
+// PELAS PID1 K1 GE1 S1 PID2 K2 GE2 S2
+void parse_pelas(const Card& card, ReaderState& st) {
+  static const char* names[2][4] = {{"PID1", "K1", "GE1", "S1"}, {"PID2", "K2", "GE2", "S2"}};
+  for (std::size_t s = 0; s < 2; ++s) {
+    const std::size_t b = 4 * s;
+    if (s == 1 && card.blank(4) && card.blank(5) && card.blank(6) && card.blank(7)) break;
+    fem::SpringProperty p;
+    p.id = card.id(b, names[s][0]);
+    p.k = card.real(b + 1, names[s][1]);
+    p.ge = card.real_or(b + 2, names[s][2], 0.0);
+    p.s = card.real_or(b + 3, names[s][3], 0.0);
+    p.ref = card.ref();
+    st.model.spring_props.push_back(p);
+  }
+}
+
+}  // namespace seflex::io::nastran

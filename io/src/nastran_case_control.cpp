@@ -1,0 +1,155 @@
+#include "seflex/io/nastran_case_control.hpp"
+
+#include <charconv>
+
+#include "seflex/common/error.hpp"
+#include "seflex/io/nastran_card.hpp"
+#include "seflex/io/nastran_cards.hpp"
+#include "seflex/io/nastran_number.hpp"
+
+namespace seflex::io::nastran {
+namespace {
+
+/// `key` names `command` if equal or an abbreviation of at least four letters (Nastran's rule).
+bool is_command(std::string_view key, std::string_view command) {
+  if (key == command) return true;
+  return key.size() >= 4 && key.size() < command.size() && command.substr(0, key.size()) == key;
+}
+
+std::string_view first_word(std::string_view s) {
+  std::size_t e = 0;
+  while (e < s.size() && s[e] != ' ' && s[e] != ',' && s[e] != '=' && s[e] != '(') ++e;
+  return s.substr(0, e);
+}
+
+}  // namespace
+
+bool CaseControlReader::executive_line(const Line& line, const std::string&, std::uint32_t) {
+  const std::string t = upper(trim(line.text));
+  if (t == "CEND") return true;
+  const std::string_view word = first_word(t);
+  if (word == "SOL") {
+    std::string_view rest = trim(std::string_view(t).substr(3));
+    if (!rest.empty() && rest[0] == ',') rest = trim(rest.substr(1));
+    model_.case_control.sol = std::string(first_word(rest));
+  }
+  return false;
+}
+
+void CaseControlReader::case_line(const Line& line, const std::string& file, std::uint32_t file_index) {
+  const std::string_view t = trim(line.text);
+  if (t.empty()) return;
+  if (pending_.empty()) {
+    pending_line_ = line.number;
+    pending_file_ = file;
+    pending_file_index_ = file_index;
+  }
+  pending_ += std::string(t);
+  const std::string key = upper(first_word(trim(pending_)));
+  const bool text_command = is_command(key, "TITLE") || is_command(key, "SUBTITLE") || is_command(key, "LABEL");
+  if (!text_command && pending_.back() == ',') return;  // continued on the next line
+  std::string text;
+  text.swap(pending_);
+  command(text, pending_file_, pending_file_index_, pending_line_);
+}
+
+void CaseControlReader::command(const std::string& text, const std::string& file, std::uint32_t file_index,
+                                std::uint32_t line) {
+  const std::string where = location(file, line);
+  const std::string u = upper(text);
+  const std::string key(first_word(u));
+  if (key == "SUBCASE") {
+    const std::string_view rest = trim(std::string_view(u).substr(7));
+    int id = 0;
+    const auto [p, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), id);
+    if (ec != std::errc() || p != rest.data() + rest.size() || id <= 0)
+      throw InputError(where + ": case control SUBCASE: got " + quote_field(rest) + "; expected a subcase id (integer > 0)");
+    for (const auto& s : model_.case_control.subcases)
+      if (s.id == id) throw InputError(where + ": case control SUBCASE " + std::to_string(id) + " appears twice; expected unique subcase ids");
+    fem::Subcase s;
+    s.id = id;
+    model_.case_control.subcases.push_back(s);
+    in_subcase_ = true;
+    return;
+  }
+  if (key == "PARAM") {
+    fem::Param p;
+    std::string_view rest = trim(std::string_view(text).substr(5));
+    std::vector<std::string> words;
+    std::size_t start = 0;
+    for (std::size_t i = 0; i <= rest.size(); ++i) {
+      if (i == rest.size() || rest[i] == ',' || rest[i] == ' ') {
+        const std::string_view w = trim(rest.substr(start, i - start));
+        if (!w.empty()) words.push_back(param_value(w));
+        start = i + 1;
+      }
+    }
+    if (words.size() < 2 || classify(words[0]) != FieldKind::Text)
+      throw InputError(where + ": case control PARAM: got " + quote_field(rest) + "; expected PARAM,NAME,VALUE");
+    p.name = words[0];
+    p.values.assign(words.begin() + 1, words.end());
+    p.ref = {file_index, line};
+    model_.params.push_back(std::move(p));
+    return;
+  }
+  const std::size_t eq = text.find('=');
+  if (eq == std::string::npos) return;  // ECHOON, OUTPUT(PLOT), BEGIN ... : nothing seflex keeps
+  const std::string value(trim(std::string_view(text).substr(eq + 1)));
+  fem::Subcase& sc = current();
+  if (is_command(key, "TITLE") || is_command(key, "SUBTITLE") || is_command(key, "LABEL")) {
+    if (is_command(key, "LABEL")) {
+      sc.label = value;
+    } else if (!in_subcase_) {
+      (is_command(key, "TITLE") ? model_.case_control.title : model_.case_control.subtitle) = value;
+    }
+    return;
+  }
+  auto set_id = [&](std::optional<int>& target, const char* name) {
+    int id = 0;
+    const auto [p, ec] = std::from_chars(value.data(), value.data() + value.size(), id);
+    if (ec != std::errc() || p != value.data() + value.size() || id <= 0)
+      throw InputError(where + ": case control " + name + ": got " + quote_field(value) + "; expected a set id (integer > 0)");
+    target = id;
+  };
+  if (key == "SPC") return set_id(sc.spc, "SPC");
+  if (key == "MPC") return set_id(sc.mpc, "MPC");
+  if (is_command(key, "LOAD")) return set_id(sc.load, "LOAD");
+  if (is_command(key, "METHOD")) return set_id(sc.method, "METHOD");
+  if (key == "K2GG" || key == "M2GG") {
+    auto& names = key == "K2GG" ? sc.k2gg : sc.m2gg;
+    names.clear();
+    std::size_t start = 0;
+    const std::string uv = upper(value);
+    for (std::size_t i = 0; i <= uv.size(); ++i) {
+      if (i != uv.size() && uv[i] != ',') continue;
+      const std::string_view term = trim(std::string_view(uv).substr(start, i - start));
+      start = i + 1;
+      if (term.empty()) continue;
+      if (term.find('*') != std::string_view::npos || classify(term) != FieldKind::Text)
+        throw InputError(where + ": case control " + key + ": got " + quote_field(term) +
+                         "; expected DMIG matrix names (scale factors are not supported)");
+      names.emplace_back(term);
+    }
+  }
+}
+
+void CaseControlReader::finish() {
+  if (!pending_.empty()) {  // a trailing comma on the last command: read it as it stands
+    std::string text;
+    text.swap(pending_);
+    text.pop_back();
+    command(text, pending_file_, pending_file_index_, pending_line_);
+  }
+  auto& cc = model_.case_control;
+  for (auto& s : cc.subcases) {
+    if (!s.spc) s.spc = cc.global.spc;
+    if (!s.load) s.load = cc.global.load;
+    if (!s.method) s.method = cc.global.method;
+    if (!s.mpc) s.mpc = cc.global.mpc;
+    if (s.k2gg.empty()) s.k2gg = cc.global.k2gg;
+    if (s.m2gg.empty()) s.m2gg = cc.global.m2gg;
+    if (s.label.empty()) s.label = cc.global.label;
+  }
+}
+
+}  // namespace seflex::io::nastran

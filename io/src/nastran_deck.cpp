@@ -1,0 +1,404 @@
+// Reading a Nastran deck: files and INCLUDE, the executive / case control / bulk sections, assembling
+// cards from their lines (small, large and free field; continuations), dispatching them to the card
+// parsers, and the defaults that need the whole deck (GRDSET, BAROR, BEAMOR).
+#include <algorithm>
+#include <array>
+#include <memory>
+#include <unordered_map>
+
+#include "seflex/common/error.hpp"
+#include "seflex/fem/finalize.hpp"
+#include "seflex/io/nastran.hpp"
+#include "seflex/io/nastran_card.hpp"
+#include "seflex/io/nastran_cards.hpp"
+#include "seflex/io/nastran_case_control.hpp"
+#include "seflex/io/nastran_lines.hpp"
+
+namespace seflex::io {
+namespace nastran {
+
+void ReaderState::note_unsupported(std::string_view name, const fem::CardRef& ref) {
+  auto [it, inserted] = unsupported_index.try_emplace(std::string(name), model.unsupported.size());
+  if (inserted) model.unsupported.push_back({std::string(name), 0, ref});
+  ++model.unsupported[it->second].count;
+}
+
+namespace {
+
+struct CardType {
+  std::string_view name;
+  CardParser parse;
+};
+
+constexpr CardType kCardTypes[] = {
+    {"GRID", parse_grid},       {"GRDSET", parse_grdset},   {"CORD2R", parse_cord2},   {"CORD2C", parse_cord2},
+    {"CORD2S", parse_cord2},    {"CORD1R", parse_cord1},    {"CORD1C", parse_cord1},   {"CORD1S", parse_cord1},
+    {"SPOINT", parse_spoint},   {"CBAR", parse_cbar},       {"CBEAM", parse_cbeam},    {"BAROR", parse_baror},
+    {"BEAMOR", parse_beamor},   {"CROD", parse_crod},       {"CONROD", parse_conrod},  {"CQUAD4", parse_cquad4},
+    {"CTRIA3", parse_ctria3},   {"CONM2", parse_conm2},     {"CELAS1", parse_celas1},  {"CELAS2", parse_celas2},
+    {"RBE2", parse_rbe2},       {"MAT1", parse_mat1},       {"PBAR", parse_pbar},      {"PBARL", parse_pbarl},
+    {"PBEAM", parse_pbeam},     {"PBEAML", parse_pbeaml},   {"PROD", parse_prod},      {"PSHELL", parse_pshell},
+    {"PELAS", parse_pelas},     {"SPC", parse_spc},         {"SPC1", parse_spc1},      {"SPCADD", parse_spcadd},
+    {"ASET", parse_aset},       {"ASET1", parse_aset1},     {"BSET", parse_bset},      {"BSET1", parse_bset1},
+    {"SUPORT", parse_suport},   {"FORCE", parse_force},     {"MOMENT", parse_moment},  {"LOAD", parse_load},
+    {"EIGRL", parse_eigrl},     {"EIGR", parse_eigr},       {"PARAM", parse_param},    {"DMIG", parse_dmig},
+};
+constexpr std::size_t kNumCardTypes = sizeof(kCardTypes) / sizeof(kCardTypes[0]);
+
+int find_card_type(std::string_view name) {
+  static const std::unordered_map<std::string_view, int> index = [] {
+    std::unordered_map<std::string_view, int> m;
+    for (std::size_t i = 0; i < kNumCardTypes; ++i) m.emplace(kCardTypes[i].name, static_cast<int>(i));
+    return m;
+  }();
+  const auto it = index.find(name);
+  return it == index.end() ? -1 : it->second;
+}
+
+bool starts_with_word(std::string_view text, std::string_view word) {
+  if (text.size() < word.size()) return false;
+  for (std::size_t i = 0; i < word.size(); ++i)
+    if (std::toupper(static_cast<unsigned char>(text[i])) != word[i]) return false;
+  return text.size() == word.size() || text[word.size()] == ' ' || text[word.size()] == '\'' ||
+         text[word.size()] == '"' || text[word.size()] == ',' || text[word.size()] == '=';
+}
+
+/// "BEGIN BULK" (any case, blanks between) on a line of its own.
+bool is_begin_bulk(std::string_view text) {
+  const std::string_view t = trim(text);
+  if (!starts_with_word(t, "BEGIN")) return false;
+  return upper(trim(t.substr(5))) == "BULK";
+}
+
+/// Does the text have a BEGIN BULK line? Decides whether it starts with executive control.
+bool has_begin_bulk(std::string_view text) {
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    std::size_t end = text.find('\n', pos);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view line = text.substr(pos, end - pos);
+    const std::size_t first = line.find_first_not_of(' ');
+    if (first != std::string_view::npos && (line[first] == 'B' || line[first] == 'b')) {
+      const std::size_t dollar = line.find('$');
+      if (dollar != std::string_view::npos) line = line.substr(0, dollar);
+      if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+      if (is_begin_bulk(line)) return true;
+    }
+    pos = end + 1;
+  }
+  return false;
+}
+
+bool valid_card_name(std::string_view n) {
+  if (n.empty() || n.size() > 8 || !(n[0] >= 'A' && n[0] <= 'Z')) return false;
+  for (const char c : n)
+    if (!((c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_')) return false;
+  return true;
+}
+
+/// Continuation marker without its leading '+' or '*', upper case, for comparing.
+std::string marker_key(std::string_view m) {
+  if (!m.empty() && (m[0] == '+' || m[0] == '*')) m.remove_prefix(1);
+  return upper(trim(m));
+}
+
+class DeckReader {
+ public:
+  DeckReader(fem::Model& model) : model_(model), state_(model), case_control_(model) {}
+
+  void read_main(std::string text, const std::string& name, const std::filesystem::path& dir,
+                 const std::filesystem::path& canonical) {
+    section_ = has_begin_bulk(text) ? Section::Executive : Section::Bulk;
+    Source& src = add_source(std::move(text), name, dir);
+    std::vector<std::filesystem::path> stack{canonical};
+    read_source(src, stack);
+    if (section_ != Section::Bulk)
+      throw InputError(name + ": no BEGIN BULK reached" +
+                       (section_ == Section::Executive ? std::string(" (and no CEND)") : std::string()) +
+                       "; expected the bulk data after BEGIN BULK");
+    case_control_.finish();
+    apply_defaults();
+    for (std::size_t i = 0; i < kNumCardTypes; ++i)
+      if (counts_[i] > 0) model_.card_counts[std::string(kCardTypes[i].name)] += counts_[i];
+  }
+
+ private:
+  enum class Section { Executive, CaseControl, Bulk };
+  struct Source {
+    std::string name;
+    std::filesystem::path dir;
+    std::string text;
+    std::uint32_t index = 0;
+  };
+
+  Source& add_source(std::string text, const std::string& name, const std::filesystem::path& dir) {
+    auto src = std::make_unique<Source>();
+    src->name = name;
+    src->dir = dir;
+    src->text = std::move(text);
+    src->index = static_cast<std::uint32_t>(model_.files.size());
+    model_.files.push_back(name);
+    sources_.push_back(std::move(src));
+    return *sources_.back();
+  }
+
+  void read_source(Source& src, std::vector<std::filesystem::path>& stack) {
+    LineCursor cursor(src.text, &src.name);
+    Line line;
+    while (!done_ && cursor.next(line)) {
+      if (line.blank()) continue;
+      if (starts_with_word(line.text, "INCLUDE")) {
+        include(src, cursor, line, stack);
+        continue;
+      }
+      switch (section_) {
+        case Section::Executive:
+          if (is_begin_bulk(line.text)) {
+            if (executive_statements_)
+              throw InputError(location(src.name, line.number) +
+                               ": BEGIN BULK before CEND; expected CEND to end the executive control");
+            section_ = Section::Bulk;
+          } else if (case_control_.executive_line(line, src.name, src.index)) {
+            section_ = Section::CaseControl;
+          } else {
+            executive_statements_ = true;
+          }
+          break;
+        case Section::CaseControl:
+          if (is_begin_bulk(line.text))
+            section_ = Section::Bulk;
+          else
+            case_control_.case_line(line, src.name, src.index);
+          break;
+        case Section::Bulk: bulk_card(src, cursor, line); break;
+      }
+    }
+  }
+
+  /// INCLUDE 'file' (quotes optional; a quoted name may continue over lines).
+  void include(const Source& src, LineCursor& cursor, const Line& line, std::vector<std::filesystem::path>& stack) {
+    const std::string where = location(src.name, line.number);
+    std::string_view rest = trim(line.text.substr(7));
+    std::string name;
+    if (!rest.empty() && (rest[0] == '\'' || rest[0] == '"')) {
+      const char quote = rest[0];
+      rest.remove_prefix(1);
+      Line more;
+      while (true) {
+        const std::size_t close = rest.find(quote);
+        name += std::string(trim(rest.substr(0, close)));
+        if (close != std::string_view::npos) {
+          if (!trim(rest.substr(close + 1)).empty())
+            throw InputError(where + ": INCLUDE: text " + quote_field(trim(rest.substr(close + 1))) +
+                             " after the file name; expected nothing after the closing quote");
+          break;
+        }
+        if (!cursor.next(more))
+          throw InputError(where + ": INCLUDE: the file name has no closing quote; expected " + std::string(1, quote) +
+                           "name" + std::string(1, quote));
+        rest = more.text;
+      }
+    } else {
+      name = std::string(rest);
+      if (name.find(' ') != std::string::npos)
+        throw InputError(where + ": INCLUDE: got " + quote_field(name) + "; expected one file name (quote names with blanks)");
+    }
+    if (name.empty()) throw InputError(where + ": INCLUDE: blank; expected a file name");
+    if (stack.size() >= kMaxIncludeDepth)
+      throw InputError(where + ": INCLUDE " + quote_field(name) + ": includes nested more than " +
+                       std::to_string(kMaxIncludeDepth) + " deep; expected fewer levels (a cycle?)");
+    std::filesystem::path path(name);
+    if (path.is_relative()) path = src.dir / path;
+    std::error_code ec;
+    std::filesystem::path canonical = std::filesystem::weakly_canonical(path, ec);
+    if (ec) canonical = path.lexically_normal();
+    for (const auto& p : stack)
+      if (p == canonical) {
+        std::string chain;
+        for (const auto& q : stack) chain += q.filename().string() + " -> ";
+        throw InputError(where + ": INCLUDE " + quote_field(name) + " is an include cycle (" + chain +
+                         canonical.filename().string() + "); expected each file to be included at most once per chain");
+      }
+    if (!std::filesystem::exists(path, ec))
+      throw InputError(where + ": INCLUDE " + quote_field(name) + ": file " + path.string() +
+                       " does not exist; expected a path relative to the including file's folder, or absolute");
+    std::string text = load_text(path, where + ": INCLUDE " + quote_field(name));
+    Source& inc = add_source(std::move(text), path.lexically_normal().string(), path.parent_path());
+    stack.push_back(canonical);
+    read_source(inc, stack);
+    stack.pop_back();
+  }
+
+  /// Field 1 of a line is blank, '+...' or '*...': it continues the card before it.
+  static bool is_continuation(const Line& line) {
+    const char c = line.text[0];
+    if (c == '+' || c == '*') return true;
+    if (line.free) return trim(line.text.substr(0, line.text.find(','))).empty();
+    return trim(line.text.substr(0, std::min<std::size_t>(8, line.text.size()))).empty();
+  }
+
+  /// Split one physical line of a card: data fields into fields_/nfields, field 1 and the
+  /// continuation marker (field 10) returned.
+  void split_line(const Source& src, const Line& line, bool first, std::string_view& field1, std::string_view& marker,
+                  std::size_t& n) {
+    if (line.free) {
+      std::array<std::string_view, 12> f;
+      const std::size_t count = split_free(line.text, f.data(), f.size());
+      field1 = f[0];
+      // large field: "GRID*," on the first line, "*...," on a continuation
+      const bool large = first ? (!field1.empty() && field1.back() == '*') : (!field1.empty() && field1[0] == '*');
+      n = large ? 4 : 8;
+      if (count > n + 2)
+        throw InputError(location(src.name, line.number) + ": free-field line has " + std::to_string(count) +
+                         " fields; expected at most " + std::to_string(n + 2) + " (field 1, " + std::to_string(n) +
+                         " data fields, a continuation marker); continue on a new line starting with '+' or ','");
+      for (std::size_t k = 0; k < n; ++k) fields_[k] = k + 1 < count ? f[k + 1] : std::string_view();
+      marker = count == n + 2 ? f[n + 1] : std::string_view();
+    } else {
+      const std::string_view f1 = trim(line.text.substr(0, std::min<std::size_t>(8, line.text.size())));
+      const bool large = first ? (!f1.empty() && f1.back() == '*') : line.text[0] == '*';
+      n = large ? 4 : 8;
+      split_fixed(line.text, n, field1, fields_.data(), marker);
+    }
+  }
+
+  void bulk_card(const Source& src, LineCursor& cursor, const Line& line) {
+    if (is_continuation(line))
+      throw InputError(location(src.name, line.number) + ": continuation line " +
+                       quote_field(trim(line.text).substr(0, 16)) +
+                       " without a card before it; expected continuation lines directly after their card");
+    std::string_view field1, marker;
+    std::size_t n = 0;
+    split_line(src, line, true, field1, marker, n);
+    std::string_view name = field1;
+    if (!name.empty() && name.back() == '*') name.remove_suffix(1);
+    char buf[16];
+    const std::size_t len = std::min(name.size(), sizeof buf);
+    for (std::size_t i = 0; i < len; ++i) buf[i] = static_cast<char>(std::toupper(static_cast<unsigned char>(name[i])));
+    const std::string_view uname(buf, len);
+    if (uname == "ENDDATA") {
+      done_ = true;
+      return;
+    }
+    if (!valid_card_name(uname) || name.size() > 8) {
+      if (starts_with_word(trim(line.text), "BEGIN"))
+        throw InputError(location(src.name, line.number) + ": " + quote_field(trim(line.text)) +
+                         " inside the bulk data; expected one BEGIN BULK (part superelements are not supported)");
+      throw InputError(location(src.name, line.number) + ": got " + quote_field(field1) +
+                       " where a card name belongs; expected a name of up to 8 letters and digits in columns 1-8"
+                       " (or before the first comma)");
+    }
+    card_.reset(uname, &src.name, src.index, line.number);
+    card_.append(fields_.data(), n, line.number);
+    Line next;
+    while (cursor.next(next)) {
+      if (next.blank()) continue;
+      if (starts_with_word(next.text, "INCLUDE") || !is_continuation(next)) {
+        cursor.push_back(next);
+        break;
+      }
+      std::string_view cont1, cont_marker;
+      split_line(src, next, false, cont1, cont_marker, n);
+      const std::string a = marker_key(marker), b = marker_key(cont1);
+      if (!a.empty() && !b.empty() && a != b)
+        throw InputError(location(src.name, next.number) + ": continuation " + quote_field(cont1) + " does not match " +
+                         quote_field(marker) + " in field 10 of the line before (" + card_.label() +
+                         "); expected matching continuation markers, or blank ones");
+      card_.append(fields_.data(), n, next.number);
+      marker = cont_marker;
+    }
+    dispatch();
+  }
+
+  void dispatch() {
+    const std::string_view name = card_.name();
+    int type = -1;
+    if (name == last_name_) {
+      type = last_type_;
+    } else {
+      type = find_card_type(name);
+      last_name_.assign(name);
+      last_type_ = type;
+    }
+    if (type < 0) {
+      state_.note_unsupported(name, card_.ref());
+      return;
+    }
+    kCardTypes[type].parse(card_, state_);
+    ++counts_[type];
+  }
+
+  /// GRDSET for blank GRID fields; BAROR/BEAMOR for blank CBAR/CBEAM fields; PID = EID last.
+  void apply_defaults() {
+    const auto& gs = model_.grdset;
+    if (gs.present) {
+      for (std::size_t i = 0; i < model_.grids.size(); ++i) {
+        const std::uint8_t blank = state_.grid_blank[i];
+        auto& g = model_.grids[i];
+        if (blank & 1) g.cp = gs.cp;
+        if (blank & 2) g.cd = gs.cd;
+        if (blank & 4) g.ps = gs.ps;
+      }
+    }
+    for (auto& b : model_.bars) {
+      const fem::BarDefaults& d = b.is_beam ? model_.beamor : model_.baror;
+      if (b.pid == 0) b.pid = d.present && d.pid > 0 ? d.pid : b.id;
+      if (!b.has_g0 && b.v.squaredNorm() == 0.0 && d.present) {
+        b.has_g0 = d.has_g0;
+        b.g0 = d.g0;
+        b.v = d.v;
+      }
+      if (b.offt.empty()) b.offt = d.present ? d.offt : "GGG";
+    }
+  }
+
+  static constexpr std::size_t kMaxIncludeDepth = 64;
+  fem::Model& model_;
+  nastran::ReaderState state_;
+  CaseControlReader case_control_;
+  std::vector<std::unique_ptr<Source>> sources_;
+  Section section_ = Section::Bulk;
+  bool done_ = false;
+  bool executive_statements_ = false;
+  Card card_;
+  std::array<std::string_view, 8> fields_{};
+  std::array<std::size_t, kNumCardTypes> counts_{};
+  std::string last_name_;
+  int last_type_ = -1;
+};
+
+}  // namespace
+
+CardParser find_card_parser(std::string_view name) {
+  const int type = find_card_type(name);
+  return type < 0 ? nullptr : kCardTypes[type].parse;
+}
+
+}  // namespace nastran
+
+fem::Model read_nastran(const std::filesystem::path& path, const NastranReadOptions& options) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec))
+    throw InputError(path.string() + ": no such file; expected a Nastran deck");
+  std::string text = nastran::load_text(path, "");
+  std::filesystem::path canonical = std::filesystem::weakly_canonical(path, ec);
+  if (ec) canonical = path.lexically_normal();
+  fem::Model model;
+  nastran::DeckReader reader(model);
+  reader.read_main(std::move(text), path.string(), path.parent_path(), canonical);
+  if (options.finalize) fem::finalize(model);
+  return model;
+}
+
+fem::Model read_nastran_text(std::string_view text, const std::string& name, const std::filesystem::path& dir,
+                             const NastranReadOptions& options) {
+  std::string copy(text);
+  if (copy.find('\t') != std::string::npos) nastran::expand_tabs(copy);
+  fem::Model model;
+  nastran::DeckReader reader(model);
+  reader.read_main(std::move(copy), name, dir, dir / name);
+  if (options.finalize) fem::finalize(model);
+  return model;
+}
+
+}  // namespace seflex::io

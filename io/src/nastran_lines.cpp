@@ -1,0 +1,140 @@
+#include "seflex/io/nastran_lines.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+
+#include "seflex/common/error.hpp"
+#include "seflex/io/nastran_card.hpp"
+#include "seflex/io/nastran_number.hpp"
+
+namespace seflex::io::nastran {
+
+std::string load_text(const std::filesystem::path& path, const std::string& from) {
+  auto fail = [&](const std::string& why) {
+    throw InputError((from.empty() ? std::string() : from + ": ") + "cannot read " + path.string() + " (" + why + ")");
+  };
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) fail("it is a directory; expected a file");
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!f) fail(std::strerror(errno));
+  std::string text;
+  char buf[1 << 16];
+  std::size_t n = 0;
+  if (std::fseek(f.get(), 0, SEEK_END) == 0) {
+    const long size = std::ftell(f.get());
+    if (size > 0) text.reserve(static_cast<std::size_t>(size));
+    std::rewind(f.get());
+  }
+  while ((n = std::fread(buf, 1, sizeof buf, f.get())) > 0) text.append(buf, n);
+  if (std::ferror(f.get())) fail(std::strerror(errno));
+  if (text.find('\t') != std::string::npos) expand_tabs(text);
+  return text;
+}
+
+void expand_tabs(std::string& text) {
+  std::string out;
+  out.reserve(text.size() + text.size() / 8);
+  std::size_t col = 0;
+  for (const char c : text) {
+    if (c == '\t') {
+      const std::size_t next = (col / 8 + 1) * 8;
+      out.append(next - col, ' ');
+      col = next;
+    } else {
+      out += c;
+      col = (c == '\n') ? 0 : col + 1;
+    }
+  }
+  text.swap(out);
+}
+
+bool LineCursor::next(Line& line) {
+  if (has_pushed_) {
+    has_pushed_ = false;
+    line = pushed_;
+    return true;
+  }
+  if (pos_ >= text_.size()) return false;
+  const char* begin = text_.data() + pos_;
+  const std::size_t rest = text_.size() - pos_;
+  const void* nl = std::memchr(begin, '\n', rest);
+  std::size_t len = nl ? static_cast<std::size_t>(static_cast<const char*>(nl) - begin) : rest;
+  pos_ += len + (nl ? 1 : 0);
+  ++number_;
+  if (len > 0 && begin[len - 1] == '\r') --len;
+  last_raw_ = std::string_view(begin, len);
+  if (len > kMaxLineLength)
+    throw InputError(location(*file_name_, number_) + ": line is " + std::to_string(len) +
+                     " characters long; expected at most " + std::to_string(kMaxLineLength) +
+                     " (Nastran lines have 80 columns; is this a text file?)");
+  bool comma = false;
+  std::size_t end = len;
+  for (std::size_t i = 0; i < len; ++i) {
+    const auto c = static_cast<unsigned char>(begin[i]);
+    if (c == '$') {
+      end = i;
+      break;
+    }
+    if (c == ',') {
+      comma = true;
+    } else if (c < 0x20 || c == 0x7f) {
+      const char* what = c == 0 ? "a NUL byte" : c == '\r' ? "a carriage return" : "a control character";
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "0x%02X", c);
+      throw InputError(location(*file_name_, number_) + ", column " + std::to_string(i + 1) + ": " + what + " (" +
+                       hex + "); expected text (is this a binary file?)");
+    }
+  }
+  while (end > 0 && begin[end - 1] == ' ') --end;
+  line.text = std::string_view(begin, end);
+  line.number = number_;
+  line.free = comma;
+  return true;
+}
+
+std::string_view trim(std::string_view s) {
+  std::size_t b = 0, e = s.size();
+  while (b < e && s[b] == ' ') ++b;
+  while (e > b && s[e - 1] == ' ') --e;
+  return s.substr(b, e - b);
+}
+
+std::string upper(std::string_view s) {
+  std::string u(s);
+  for (char& c : u)
+    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+  return u;
+}
+
+namespace {
+inline std::string_view column_field(std::string_view line, std::size_t begin, std::size_t width) {
+  if (begin >= line.size()) return {};
+  return trim(line.substr(begin, width));
+}
+}  // namespace
+
+void split_fixed(std::string_view line, std::size_t n, std::string_view& field1, std::string_view* data,
+                 std::string_view& field10) {
+  if (line.size() > 80) line = line.substr(0, 80);
+  field1 = column_field(line, 0, 8);
+  const std::size_t width = 64 / n;
+  for (std::size_t k = 0; k < n; ++k) data[k] = column_field(line, 8 + k * width, width);
+  field10 = column_field(line, 72, 8);
+}
+
+std::size_t split_free(std::string_view line, std::string_view* out, std::size_t cap) {
+  std::size_t count = 0, start = 0;
+  while (true) {
+    const std::size_t comma = line.find(',', start);
+    const std::string_view f = trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
+    if (count < cap) out[count] = f;
+    ++count;
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  return count;
+}
+
+}  // namespace seflex::io::nastran
