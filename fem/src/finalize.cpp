@@ -6,6 +6,7 @@
 #include <charconv>
 #include <set>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -21,6 +22,17 @@ const char* bar_prop_name(const BarProperty& p) {
   }
   return "PBAR";
 }
+
+/// One id space shared by several card types; a duplicate is reported on the card read later.
+struct IdSpace {
+  struct Entry {
+    CardRef ref;
+    const char* card;
+  };
+  std::unordered_map<int, Entry> map;
+  const Model* model = nullptr;
+  void add(int id, const CardRef& ref, const char* card, const char* field, const char* what, const char* expected);
+};
 
 class Finalizer {
  public:
@@ -84,12 +96,11 @@ class Finalizer {
     index(m_.shell_props, m_.shell_prop_index, "PSHELL", "property");
     index(m_.spring_props, m_.spring_prop_index, "PELAS", "property");
     // one id space for all properties
-    std::unordered_map<int, CardRef> seen;
+    IdSpace seen;
+    seen.model = &m_;
     auto add = [&](int id, const CardRef& ref, const char* card) {
-      const auto [it, inserted] = seen.emplace(id, ref);
-      if (!inserted)
-        fail(ref, card, id, "field 2 (PID)", "duplicate property id, first defined at " + at(it->second) +
-                                                 "; expected unique property ids across PBAR, PBARL, PBEAM, PBEAML, PROD, PSHELL, PELAS");
+      seen.add(id, ref, card, "field 2 (PID)", "property",
+               "expected unique property ids across PBAR, PBARL, PBEAM, PBEAML, PROD, PSHELL, PELAS");
     };
     for (const auto& p : m_.bar_props) add(p.id, p.ref, bar_prop_name(p));
     for (const auto& p : m_.rod_props) add(p.id, p.ref, "PROD");
@@ -109,13 +120,11 @@ class Finalizer {
   void index_elements() {
     const std::size_t total = m_.bars.size() + m_.rods.size() + m_.shells.size() + m_.conm2.size() +
                               m_.springs.size() + m_.rbe2.size();
-    std::unordered_map<int, CardRef> seen;
-    seen.reserve(total);
+    IdSpace seen;
+    seen.model = &m_;
+    seen.map.reserve(total);
     auto add = [&](int id, const CardRef& ref, const char* card) {
-      const auto [it, inserted] = seen.emplace(id, ref);
-      if (!inserted)
-        fail(ref, card, id, "field 2 (EID)", "duplicate element id, first defined at " + at(it->second) +
-                                                 "; expected unique ids across all elements (incl. CONM2, CELASi, RBE2)");
+      seen.add(id, ref, card, "field 2 (EID)", "element", "expected unique ids across all elements (incl. CONM2, CELASi, RBE2)");
     };
     for (const auto& e : m_.bars) add(e.id, e.ref, e.is_beam ? "CBEAM" : "CBAR");
     for (const auto& e : m_.rods) add(e.id, e.ref, e.inline_property ? "CONROD" : "CROD");
@@ -339,6 +348,17 @@ class Finalizer {
 
   Model& m_;
 };
+
+void IdSpace::add(int id, const CardRef& ref, const char* card, const char* field, const char* what,
+                  const char* expected) {
+  const auto [it, inserted] = map.emplace(id, Entry{ref, card});
+  if (inserted) return;
+  Entry first = it->second, later{ref, card};
+  if (std::tie(later.ref.file, later.ref.line) < std::tie(first.ref.file, first.ref.line)) std::swap(first, later);
+  throw InputError(where(*model, later.ref), std::string(later.card) + " " + std::to_string(id) + ", " + field +
+                                                 ": duplicate " + what + " id, first defined at " +
+                                                 where(*model, first.ref).str() + " (" + first.card + "); " + expected);
+}
 
 }  // namespace
 

@@ -70,19 +70,19 @@ bool is_begin_bulk(std::string_view text) {
   return upper(trim(t.substr(5))) == "BULK";
 }
 
-/// Does the text have a BEGIN BULK line? Decides whether it starts with executive control.
-bool has_begin_bulk(std::string_view text) {
+/// Does the text have a BEGIN BULK or a CEND line? Decides whether it starts with executive control.
+bool has_control_sections(std::string_view text) {
   std::size_t pos = 0;
   while (pos < text.size()) {
     std::size_t end = text.find('\n', pos);
     if (end == std::string_view::npos) end = text.size();
     std::string_view line = text.substr(pos, end - pos);
     const std::size_t first = line.find_first_not_of(' ');
-    if (first != std::string_view::npos && (line[first] == 'B' || line[first] == 'b')) {
+    if (first != std::string_view::npos && (line[first] == 'B' || line[first] == 'b' || line[first] == 'C' || line[first] == 'c')) {
       const std::size_t dollar = line.find('$');
       if (dollar != std::string_view::npos) line = line.substr(0, dollar);
       if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-      if (is_begin_bulk(line)) return true;
+      if (is_begin_bulk(line) || upper(trim(line)) == "CEND") return true;
     }
     pos = end + 1;
   }
@@ -108,7 +108,7 @@ class DeckReader {
 
   void read_main(std::string text, const std::string& name, const std::filesystem::path& dir,
                  const std::filesystem::path& canonical) {
-    section_ = has_begin_bulk(text) ? Section::Executive : Section::Bulk;
+    section_ = has_control_sections(text) ? Section::Executive : Section::Bulk;
     Source& src = add_source(std::move(text), name, dir);
     std::vector<std::filesystem::path> stack{canonical};
     read_source(src, stack);
@@ -116,6 +116,12 @@ class DeckReader {
       throw InputError(name + ": no BEGIN BULK reached" +
                        (section_ == Section::Executive ? std::string(" (and no CEND)") : std::string()) +
                        "; expected the bulk data after BEGIN BULK");
+    std::size_t cards = 0;
+    for (const std::size_t c : counts_) cards += c;
+    for (const auto& u : model_.unsupported) cards += u.count;
+    if (cards == 0)
+      throw InputError(name + ": no bulk data cards" + (model_.files.size() > 1 ? " in it or its includes" : "") +
+                       "; expected GRID, element and property cards (is this a Nastran deck?)");
     case_control_.finish();
     apply_defaults();
     for (std::size_t i = 0; i < kNumCardTypes; ++i)

@@ -1,0 +1,184 @@
+// Bad Nastran input: every case must throw InputError whose message names the file, line, card,
+// field and what was expected - and the seflex command must exit with status 3 without crashing.
+// These tests also run under AddressSanitizer + UndefinedBehaviorSanitizer in CI.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "nastran_test_util.hpp"
+#include "test_support.hpp"
+
+using namespace seflex;
+using seflex::test::base_deck;
+using seflex::test::fixed_line;
+using seflex::test::mentions;
+using seflex::test::read_deck;
+using seflex::test::read_error;
+
+namespace {
+
+/// Write `text` to a deck, run `seflex info` on it: exit 3, one "error:" line naming `parts`.
+void expect_cli_input_error(const std::string& text, std::initializer_list<std::string> parts) {
+  test::TempDir dir;
+  const auto deck = dir.write("bad.bdf", text);
+  const auto r = test::run_seflex("info '" + deck.string() + "'");
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << r.err;
+  EXPECT_TRUE(mentions(r.err, parts));
+}
+
+}  // namespace
+
+TEST(NastranBadInput, TruncatedCard) {
+  EXPECT_TRUE(mentions(read_error(base_deck() + "CQUAD4,1,1,1,2,3\n"),
+                       {"deck.bdf:7: CQUAD4 1, field 7 (G4): blank; expected an integer > 0"}));
+  EXPECT_TRUE(mentions(read_error(base_deck() + "CBAR    1       1       1\n"), {"deck.bdf:7: CBAR 1, field 5 (GB): blank"}));
+  EXPECT_TRUE(mentions(read_error("GRID\n"), {"deck.bdf:1: GRID, field 2 (ID): blank; expected an integer > 0"}));
+}
+
+TEST(NastranBadInput, WrongFieldTypes) {
+  EXPECT_TRUE(mentions(read_error(base_deck() + fixed_line({"CQUAD4", "1", "1.", "1", "2", "3", "4"})),
+                       {"deck.bdf:7: CQUAD4 1, field 3 (PID): got real '1.'", "expected an integer"}));
+  EXPECT_TRUE(mentions(read_error("GRID,1,,abc,0.,0.\n"), {"deck.bdf:1: GRID 1, field 4 (X1): got text 'abc'", "expected a real"}));
+  EXPECT_TRUE(mentions(read_error("GRID,1,,1,0.,0.\n"), {"field 4 (X1): got integer '1'", "decimal point"}));
+  EXPECT_TRUE(mentions(read_error("GRID,1,,1.2.3,0.,0.\n"), {"field 4 (X1): got '1.2.3', which is not a number"}));
+  EXPECT_TRUE(mentions(read_error("GRID,1,,0.,0.,0.,,1237\n"), {"field 8 (PS): got integer '1237'", "component numbers 1-6"}));
+  EXPECT_TRUE(mentions(read_error("GRID,1,,0.,0.,0.,,1123\n"), {"component 1 repeated"}));
+  EXPECT_TRUE(mentions(read_error("GRID,-4,,0.,0.,0.\n"), {"GRID -4, field 2 (ID): got integer '-4'; expected an integer > 0"}));
+  EXPECT_TRUE(mentions(read_error("GRID,1,,0.,0.,0.\nGRID,99999999999,,0.,0.,0.\n"), {"deck.bdf:2", "99999999999", "not a number"}));
+  // a field on a continuation line: the message names that line
+  EXPECT_TRUE(mentions(read_error(base_deck() + "CONM2,5,1,,1.\n,1.,,x\n"), {"deck.bdf:8: CONM2 5, field 4 (I22): got text 'x'"}));
+}
+
+TEST(NastranBadInput, MissingReferences) {
+  const std::string d = base_deck();
+  EXPECT_TRUE(mentions(read_error(d + "CQUAD4,9,1,1,2,3,77\n"),
+                       {"deck.bdf:7: CQUAD4 9, field 7 (G4): references grid 77, which is not defined"}));
+  EXPECT_TRUE(mentions(read_error(d + "CQUAD4,9,5,1,2,3,4\n"), {"CQUAD4 9, field 3 (PID): references property 5", "PSHELL"}));
+  EXPECT_TRUE(mentions(read_error(d + "PSHELL,2,8,.1\n"), {"deck.bdf:7: PSHELL 2, field 3 (MID1): references MAT1 8"}));
+  EXPECT_TRUE(mentions(read_error(d + "GRID,9,3,0.,0.,0.\n"), {"GRID 9, field 3 (CP): references coordinate system 3"}));
+  EXPECT_TRUE(mentions(read_error(d + "CONM2,9,1,4,1.\n"), {"CONM2 9, field 4 (CID): references coordinate system 4"}));
+  EXPECT_TRUE(mentions(read_error(d + "CBAR,9,1,1,2,0.,0.,1.\n"), {"CBAR 9, field 3 (PID): references property 1", "PBAR or PBARL"}));
+  EXPECT_TRUE(mentions(read_error(d + "CORD2R,3,7,0.,0.,0.,0.,0.,1.\n,1.,0.,0.\n"), {"CORD2R 3, field 3 (RID): references coordinate system 7"}));
+  EXPECT_TRUE(mentions(read_error(d + "CORD1R,3,1,2,44\n"), {"CORD1R 3, G3: references grid 44"}));
+  EXPECT_TRUE(mentions(read_error(d + "SPCADD,3,1\n"), {"SPCADD 3", "references SPC set 1"}));
+  EXPECT_TRUE(mentions(read_error(d + "LOAD,3,1.,1.,9\nPLOAD4,9,1,1.\n"), {"LOAD 3", "load set 9", "PLOAD4"}));
+  EXPECT_TRUE(mentions(read_error("SOL 103\nCEND\nSPC = 4\nBEGIN BULK\n" + d), {"case control: SPC = 4 selects no SPC"}));
+  EXPECT_TRUE(mentions(read_error("SOL 103\nCEND\nMETHOD = 4\nBEGIN BULK\n" + d), {"METHOD = 4 selects no EIGRL or EIGR"}));
+  EXPECT_TRUE(mentions(read_error(d + "PARAM,GRDPNT,12\n"), {"PARAM GRDPNT", "grid 12 is not defined"}));
+  EXPECT_TRUE(mentions(read_error(d + "CBAR,9,9,1,2\nPBAR,9,1,1.\n"), {"CBAR 9, field 6 (X1/G0): blank and no BAROR"}));
+  EXPECT_TRUE(mentions(read_error(d + "CBEAM,9,9,1,2,0.,0.,1.\nPBAR,9,1,1.\n"), {"CBEAM 9, field 3 (PID): references PBAR 9", "PBEAM"}));
+}
+
+TEST(NastranBadInput, DuplicateIds) {
+  const std::string d = base_deck();
+  EXPECT_TRUE(mentions(read_error(d + "GRID,3,,5.,5.,5.\n"),
+                       {"deck.bdf:7: GRID 3, field 2 (ID): duplicate grid id, first defined at deck.bdf:5"}));
+  EXPECT_TRUE(mentions(read_error(d + "CQUAD4,5,1,1,2,3,4\nCONM2,5,1,,1.\n"), {"deck.bdf:8: CONM2 5", "duplicate element id", "deck.bdf:7"}));
+  EXPECT_TRUE(mentions(read_error(d + "PROD,1,1,1.\n"), {"PROD 1", "duplicate property id", "deck.bdf:2"}));
+  EXPECT_TRUE(mentions(read_error(d + "MAT1,1,1.,,.3\n"), {"MAT1 1", "duplicate material id"}));
+  EXPECT_TRUE(mentions(read_error(d + "SPOINT,3\n"), {"SPOINT 3", "also a GRID"}));
+  EXPECT_TRUE(mentions(read_error(d + "EIGRL,1,,,3\nEIGR,1,LAN\n"), {"EIGR 1", "duplicate method id"}));
+  EXPECT_TRUE(mentions(read_error(d + "PARAM,WTMASS,1.\nPARAM,WTMASS,2.\n"), {"deck.bdf:8: PARAM WTMASS", "a second value"}));
+  EXPECT_TRUE(mentions(read_error(d + "GRDSET,,1\nGRDSET,,2\n"), {"deck.bdf:8: GRDSET", "a second GRDSET", "deck.bdf:7"}));
+}
+
+TEST(NastranBadInput, IncludeCycleAndMissingInclude) {
+  test::TempDir dir;
+  dir.write("a.bdf", "GRID,1,,0.,0.,0.\nINCLUDE 'b.bdf'\n");
+  dir.write("b.bdf", "$ b\nINCLUDE 'a.bdf'\n");
+  EXPECT_TRUE(mentions([&] {
+    try {
+      io::read_nastran(dir / "a.bdf");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  }(), {"b.bdf:2: INCLUDE 'a.bdf' is an include cycle (a.bdf -> b.bdf -> a.bdf)"}));
+  dir.write("c.bdf", "GRID,1,,0.,0.,0.\nINCLUDE 'missing.bdf'\n");
+  dir.write("d.bdf", "GRID,1,,0.,0.,0.\nINCLUDE 'unterminated.bdf\n");
+  dir.write("e.bdf", "GRID,1,,0.,0.,0.\nINCLUDE sub\n");
+  std::filesystem::create_directories(dir / "sub");
+  auto error_of = [&](const char* name) {
+    try {
+      io::read_nastran(dir / name);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_TRUE(mentions(error_of("c.bdf"), {"c.bdf:2: INCLUDE 'missing.bdf'", "does not exist"}));
+  EXPECT_TRUE(mentions(error_of("d.bdf"), {"d.bdf:2: INCLUDE", "no closing quote"}));
+  EXPECT_TRUE(mentions(error_of("e.bdf"), {"e.bdf:2: INCLUDE 'sub'", "directory"}));
+  EXPECT_TRUE(mentions(error_of("nonexistent.bdf"), {"nonexistent.bdf: no such file"}));
+  expect_cli_input_error("INCLUDE 'bad.bdf'\n", {"bad.bdf:1: INCLUDE 'bad.bdf' is an include cycle"});
+}
+
+TEST(NastranBadInput, BinaryGarbageNulBytesHugeLinesEmptyFiles) {
+  EXPECT_TRUE(mentions(read_error(std::string("GRID,1,,0.,0.,0.\nGRID,2\0,,0.,0.,0.\n", 34)),
+                       {"deck.bdf:2, column 7: a NUL byte (0x00); expected text"}));
+  std::string garbage;
+  for (int i = 0; i < 4096; ++i) garbage += static_cast<char>((i * 7919 + 13) % 256);
+  EXPECT_TRUE(mentions(read_error(garbage), {"deck.bdf:", "expected text"}));
+  const std::string huge = "GRID,1,,0.,0.,0.\n" + std::string(10 * 1024 * 1024, 'x') + "\n";
+  EXPECT_TRUE(mentions(read_error(huge), {"deck.bdf:2: line is 10485760 characters long; expected at most 65536"}));
+  EXPECT_TRUE(mentions(read_error(""), {"deck.bdf: no bulk data cards"}));
+  EXPECT_TRUE(mentions(read_error("$ only a comment\n\n   \n"), {"no bulk data cards"}));
+  EXPECT_TRUE(mentions(read_error("SOL 103\nCEND\nTITLE = x\n"), {"no BEGIN BULK reached"}));
+  EXPECT_TRUE(mentions(read_error("SOL 103\nBEGIN BULK\nGRID,1,,0.,0.,0.\n"), {"deck.bdf:2: BEGIN BULK before CEND"}));
+  expect_cli_input_error(garbage, {"bad.bdf:", "expected text"});
+  expect_cli_input_error(huge, {"bad.bdf:2: line is 10485760 characters long"});
+  expect_cli_input_error("", {"no bulk data cards"});
+}
+
+TEST(NastranBadInput, MalformedLines) {
+  EXPECT_TRUE(mentions(read_error("GRID,1,,0.,0.,0.\n=,*1,,*1.\n"), {"deck.bdf:2: got '='", "card name"}));
+  EXPECT_TRUE(mentions(read_error("GRID,1,,0.,0.,0.,,,,,,,,,1\n"), {"deck.bdf:1: free-field line has 15 fields; expected at most 10"}));
+  EXPECT_TRUE(mentions(read_error("SOL 1\nCEND\nBEGIN BULK\nGRID,1,,0.,0.,0.\nBEGIN SUPER=1\n"), {"deck.bdf:5", "BEGIN SUPER=1", "inside the bulk data"}));
+  EXPECT_TRUE(mentions(read_error(base_deck() + "SPC1,1,123,4,THRU,2\n"), {"SPC1 1, field 6 (G): got integer '2' after THRU; expected an id greater than 4"}));
+  EXPECT_TRUE(mentions(read_error(base_deck() + "SPC1,1,123,1,THRU,2000000000\n"), {"SPC1 1", "more than 10000000 ids"}));
+  EXPECT_TRUE(mentions(read_error("SOL 103\nCEND\nSPC = ALL\nBEGIN BULK\n" + base_deck()), {"deck.bdf:3: case control SPC: got 'ALL'; expected a set id"}));
+}
+
+TEST(NastranBadInput, InconsistentCards) {
+  const std::string d = base_deck();
+  EXPECT_TRUE(mentions(read_error("MAT1,7,2.1+11\n"), {"MAT1 7, field 4 (G): blank, and only 1 of E, G, NU given"}));
+  EXPECT_TRUE(mentions(read_error("MAT1,7,2.1+11,,0.7\n"), {"MAT1 7, field 5 (NU): got real '0.7'; expected -1 < NU <= 0.5"}));
+  EXPECT_TRUE(mentions(read_error(d + "PBARL,5,1,,CHAN\n,1.,1.,.1,.1\n"), {"PBARL 5, field 5 (TYPE): got text 'CHAN'", "ROD, TUBE, BAR, BOX, I"}));
+  EXPECT_TRUE(mentions(read_error(d + "PBARL,5,1,,BOX\n,1.,1.,.6,.1\n"), {"deck.bdf:8: PBARL 5, field 2 (DIM1): BOX section", "DIM3 = 0.6"}));
+  EXPECT_TRUE(mentions(read_error(d + "PBARL,5,1,,TUBE\n,1.,1.\n"), {"TUBE section: DIM2 (inner radius 1)"}));
+  EXPECT_TRUE(mentions(read_error(d + "CBAR,9,9,1,2,0.,0.,0.\nPBAR,9,1,1.\n"), {"CBAR 9, field 6 (X1): the orientation vector (X1, X2, X3) is zero"}));
+  EXPECT_TRUE(mentions(read_error(d + "CBAR,9,9,1,2,1\nPBAR,9,1,1.\n"), {"CBAR 9, field 6 (G0): orientation grid 1 is an end of the element"}));
+  EXPECT_TRUE(mentions(read_error(d + "CBAR,9,9,1,1,3\n"), {"CBAR 9, field 5 (GB): grid 1 repeats GA"}));
+  EXPECT_TRUE(mentions(read_error(d + "CBAR,9,9,1,2,0.,0.,1.,GXG\n"), {"CBAR 9, field 9 (OFFT): got text 'GXG'"}));
+  EXPECT_TRUE(mentions(read_error(d + "CORD2R,3,,0.,0.,0.,0.,0.,0.\n,1.,0.,0.\n"), {"CORD2R 3: points A and B coincide"}));
+  EXPECT_TRUE(mentions(read_error(d + "CORD2R,3,,0.,0.,0.,0.,0.,1.\n,0.,0.,5.\n"), {"CORD2R 3: point C lies on the z axis"}));
+  EXPECT_TRUE(mentions(read_error(d + "CORD1R,3,1,2,2\n"), {"CORD1R 3, field 3 (G1A): the three grids 1, 2, 2 are not distinct"}));
+  EXPECT_TRUE(mentions(read_error(d + "CELAS2,9,1.,1,7\n"), {"CELAS2 9, field 5 (C1): got integer '7'"}));
+  EXPECT_TRUE(mentions(read_error(d + "SPOINT,20\nCELAS2,9,1.,20,3\n"), {"CELAS2 9, field 4 (G1): scalar point 20 with component 3"}));
+  EXPECT_TRUE(mentions(read_error(d + "SPC1,1,0,3\n"), {"SPC/SPC1 1, grid 3: grid 3 with component 0 or blank"}));
+  EXPECT_TRUE(mentions(read_error(d + "PARAM,WTMASS,-1.\n"), {"PARAM WTMASS, field 3 (V1): got -1.; expected a mass factor > 0"}));
+  EXPECT_TRUE(mentions(read_error(d + "RBE2,9,1,123456,2,1\n"), {"RBE2 9", "the independent grid 1 is also dependent"}));
+  EXPECT_TRUE(mentions(read_error(d + "EIGRL,1,10.,5.\n"), {"EIGRL 1, field 4 (V2): got real '5.'; expected V2 >= V1"}));
+  EXPECT_TRUE(mentions(read_error(d + "DMIG,K,0,6,3,0\n"), {"DMIG K, field 5 (TIN): got integer '3'", "complex matrices are not supported"}));
+  EXPECT_TRUE(mentions(read_error(d + "CQUAD4,9,1,1,2,3,4,,,\n,,,2\n"), {"CQUAD4 9, field 4 (TFLAG): got integer '2'"}));
+}
+
+TEST(NastranBadInput, DeepCoordinateChainDoesNotOverflowTheStack) {
+  // 20000 CORD2R each defined in the previous one, listed deepest first: resolved without recursion.
+  // Each is the previous one shifted by 1 along its x axis, so the last origin is at x = 20000.
+  std::string deck = "GRID,1,20000,0.,0.,0.\n";
+  for (int i = 20000; i >= 1; --i)
+    deck += "CORD2R," + std::to_string(i) + "," + std::to_string(i - 1) + ",1.,0.,0.,1.,0.,1.\n,2.,0.,0.\n";
+  const fem::Model m = read_deck(deck);
+  EXPECT_DOUBLE_EQ(m.grids[0].x_basic.x(), 20000.0);
+  EXPECT_DOUBLE_EQ(m.grids[0].x_basic.y(), 0.0);
+}
+
+TEST(NastranBadInput, CommandLineReportsFileLineCardAndField) {
+  expect_cli_input_error(base_deck() + "CQUAD4,9,1,1,2,3,77\n",
+                         {"bad.bdf:7: CQUAD4 9, field 7 (G4): references grid 77, which is not defined"});
+  const auto r = test::run_seflex("info /nonexistent/deck.bdf");
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_TRUE(mentions(r.err, {"/nonexistent/deck.bdf: no such file"}));
+}

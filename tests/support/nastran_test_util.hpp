@@ -1,0 +1,68 @@
+#pragma once
+// Helpers for the Nastran reader tests: writing fixed-format lines column by column, reading decks
+// from text, and checking error messages.
+#include <gtest/gtest.h>
+
+#include <initializer_list>
+#include <string>
+
+#include "seflex/common/error.hpp"
+#include "seflex/io/nastran.hpp"
+
+namespace seflex::test {
+
+/// A fixed-format line: field 1 and the data fields padded to `width` columns (8 small, 16 large);
+/// `field10` lands in columns 73-80.
+inline std::string fixed_line(std::initializer_list<std::string> fields, std::size_t width = 8,
+                              const std::string& field10 = "") {
+  std::string line;
+  bool first = true;
+  for (const auto& f : fields) {
+    const std::size_t w = first ? 8 : width;
+    std::string s = f.substr(0, w);
+    s.resize(w, ' ');
+    line += s;
+    first = false;
+  }
+  if (!field10.empty()) {
+    line.resize(72, ' ');
+    line += field10;
+  }
+  while (!line.empty() && line.back() == ' ') line.pop_back();
+  return line + "\n";
+}
+
+inline fem::Model read_deck(const std::string& text, const std::string& name = "deck.bdf") {
+  return io::read_nastran_text(text, name);
+}
+
+/// The InputError message reading `text` gives ("" and a test failure if it reads).
+inline std::string read_error(const std::string& text, const std::string& name = "deck.bdf") {
+  try {
+    io::read_nastran_text(text, name);
+  } catch (const InputError& e) {
+    return e.what();
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << "not an InputError: " << e.what();
+    return e.what();
+  }
+  ADD_FAILURE() << "read without error:\n" << text;
+  return "";
+}
+
+/// Every part appears in the message.
+inline ::testing::AssertionResult mentions(const std::string& message, std::initializer_list<std::string> parts) {
+  for (const auto& p : parts)
+    if (message.find(p) == std::string::npos)
+      return ::testing::AssertionFailure() << "message lacks \"" << p << "\": " << message;
+  return ::testing::AssertionSuccess();
+}
+
+/// Minimal valid bulk data around a card under test (material, shell property, four grids).
+inline std::string base_deck() {
+  return "MAT1,1,2.1+11,,0.3,7800.\n"
+         "PSHELL,1,1,0.002,1\n"
+         "GRID,1,,0.,0.,0.\nGRID,2,,1.,0.,0.\nGRID,3,,1.,1.,0.\nGRID,4,,0.,1.,0.\n";
+}
+
+}  // namespace seflex::test
