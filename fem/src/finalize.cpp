@@ -3,6 +3,7 @@
 
 #include "seflex/fem/components.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <set>
 #include <string>
@@ -52,10 +53,13 @@ class Finalizer {
   }
 
  private:
-  [[noreturn]] void fail(const CardRef& ref, const std::string& card, int id, const std::string& field,
+  [[noreturn]] void fail(const CardRef& ref, const std::string& card, int id, std::string_view field,
                          const std::string& problem) const {
     std::string msg = card + " " + std::to_string(id);
-    if (!field.empty()) msg += ", " + field;
+    if (!field.empty()) {
+      msg += ", ";
+      msg += field;
+    }
     throw InputError(where(m_, ref), msg + ": " + problem);
   }
 
@@ -76,6 +80,15 @@ class Finalizer {
 
   void index_grids() {
     index(m_.grids, m_.grid_index, "GRID", "grid");
+    // Grid ids are usually dense: then a bitmap answers the many "is this a grid" questions of the
+    // element checks faster than the hash map.
+    int max_id = 0;
+    for (const auto& g : m_.grids) max_id = std::max(max_id, g.id);
+    dense_grids_.clear();
+    if (static_cast<std::size_t>(max_id) <= 4 * m_.grids.size() + 1024) {
+      dense_grids_.assign(static_cast<std::size_t>(max_id) + 1, false);
+      for (const auto& g : m_.grids) dense_grids_[static_cast<std::size_t>(g.id)] = true;
+    }
     index(m_.spoints, m_.spoint_index, "SPOINT", "scalar point");
     for (const auto& s : m_.spoints)
       if (const auto it = m_.grid_index.find(s.id); it != m_.grid_index.end())
@@ -139,13 +152,18 @@ class Finalizer {
       fail(ref, card, id, field, "references MAT1 " + std::to_string(mid) + ", which is not defined; expected the id of a MAT1 card");
   }
 
-  void need_grid(int g, const CardRef& ref, const char* card, int id, const std::string& field) {
-    if (!m_.grid_index.count(g))
+  bool is_grid(int g) const {
+    if (!dense_grids_.empty()) return g > 0 && static_cast<std::size_t>(g) < dense_grids_.size() && dense_grids_[static_cast<std::size_t>(g)];
+    return m_.grid_index.count(g) > 0;
+  }
+
+  void need_grid(int g, const CardRef& ref, const char* card, int id, std::string_view field) {
+    if (!is_grid(g))
       fail(ref, card, id, field, "references grid " + std::to_string(g) + ", which is not defined; expected the id of a GRID" +
                                      (m_.spoint_index.count(g) ? " (it is a scalar point)" : ""));
   }
 
-  void need_coord(int cid, const CardRef& ref, const char* card, int id, const std::string& field) {
+  void need_coord(int cid, const CardRef& ref, const char* card, int id, std::string_view field) {
     if (cid != 0 && !m_.coord_index.count(cid))
       fail(ref, card, id, field, "references coordinate system " + std::to_string(cid) +
                                      ", which is not defined; expected the id of a CORD1x or CORD2x card (or 0)");
@@ -153,8 +171,8 @@ class Finalizer {
 
   /// A grid with components 1-6 or a scalar point with component 0.
   void need_dof(int g, int mask_or_component, bool is_mask, const CardRef& ref, const char* card, int id,
-                const std::string& field) {
-    const bool grid = m_.grid_index.count(g) > 0, spoint = m_.spoint_index.count(g) > 0;
+                std::string_view field) {
+    const bool grid = is_grid(g), spoint = m_.spoint_index.count(g) > 0;
     if (!grid && !spoint)
       fail(ref, card, id, field, "references point " + std::to_string(g) +
                                      ", which is not defined; expected the id of a GRID or SPOINT");
@@ -347,6 +365,7 @@ class Finalizer {
   }
 
   Model& m_;
+  std::vector<bool> dense_grids_;  ///< by grid id, when the ids are dense enough
 };
 
 void IdSpace::add(int id, const CardRef& ref, const char* card, const char* field, const char* what,

@@ -55,10 +55,20 @@ int find_card_type(std::string_view name) {
   return it == index.end() ? -1 : it->second;
 }
 
+inline char ascii_upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c; }
+
+/// text == word, ignoring the case of text (word is upper case).
+bool equals_upper(std::string_view text, std::string_view word) {
+  if (text.size() != word.size()) return false;
+  for (std::size_t i = 0; i < word.size(); ++i)
+    if (ascii_upper(text[i]) != word[i]) return false;
+  return true;
+}
+
 bool starts_with_word(std::string_view text, std::string_view word) {
   if (text.size() < word.size()) return false;
   for (std::size_t i = 0; i < word.size(); ++i)
-    if (std::toupper(static_cast<unsigned char>(text[i])) != word[i]) return false;
+    if (ascii_upper(text[i]) != word[i]) return false;
   return text.size() == word.size() || text[word.size()] == ' ' || text[word.size()] == '\'' ||
          text[word.size()] == '"' || text[word.size()] == ',' || text[word.size()] == '=';
 }
@@ -67,7 +77,7 @@ bool starts_with_word(std::string_view text, std::string_view word) {
 bool is_begin_bulk(std::string_view text) {
   const std::string_view t = trim(text);
   if (!starts_with_word(t, "BEGIN")) return false;
-  return upper(trim(t.substr(5))) == "BULK";
+  return equals_upper(trim(t.substr(5)), "BULK");
 }
 
 /// Does the text have a BEGIN BULK or a CEND line? Decides whether it starts with executive control.
@@ -82,7 +92,7 @@ bool has_control_sections(std::string_view text) {
       const std::size_t dollar = line.find('$');
       if (dollar != std::string_view::npos) line = line.substr(0, dollar);
       if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-      if (is_begin_bulk(line) || upper(trim(line)) == "CEND") return true;
+      if (is_begin_bulk(line) || equals_upper(trim(line), "CEND")) return true;
     }
     pos = end + 1;
   }
@@ -280,7 +290,7 @@ class DeckReader {
     if (!name.empty() && name.back() == '*') name.remove_suffix(1);
     char buf[16];
     const std::size_t len = std::min(name.size(), sizeof buf);
-    for (std::size_t i = 0; i < len; ++i) buf[i] = static_cast<char>(std::toupper(static_cast<unsigned char>(name[i])));
+    for (std::size_t i = 0; i < len; ++i) buf[i] = ascii_upper(name[i]);
     const std::string_view uname(buf, len);
     if (uname == "ENDDATA") {
       done_ = true;

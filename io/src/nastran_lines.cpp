@@ -1,5 +1,6 @@
 #include "seflex/io/nastran_lines.hpp"
 
+#include <array>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -50,6 +51,18 @@ void expand_tabs(std::string& text) {
   text.swap(out);
 }
 
+namespace {
+enum class ByteClass : std::uint8_t { Text, Dollar, Comma, Control };
+constexpr auto kByteClass = [] {
+  std::array<ByteClass, 256> t{};
+  for (int c = 0; c < 0x20; ++c) t[c] = ByteClass::Control;
+  t[0x7f] = ByteClass::Control;
+  t['$'] = ByteClass::Dollar;
+  t[','] = ByteClass::Comma;
+  return t;
+}();
+}  // namespace
+
 bool LineCursor::next(Line& line) {
   if (has_pushed_) {
     has_pushed_ = false;
@@ -73,13 +86,15 @@ bool LineCursor::next(Line& line) {
   std::size_t end = len;
   for (std::size_t i = 0; i < len; ++i) {
     const auto c = static_cast<unsigned char>(begin[i]);
-    if (c == '$') {
+    const ByteClass k = kByteClass[c];
+    if (k == ByteClass::Text) continue;
+    if (k == ByteClass::Dollar) {
       end = i;
       break;
     }
-    if (c == ',') {
+    if (k == ByteClass::Comma) {
       comma = true;
-    } else if (c < 0x20 || c == 0x7f) {
+    } else {
       const char* what = c == 0 ? "a NUL byte" : c == '\r' ? "a carriage return" : "a control character";
       char hex[8];
       std::snprintf(hex, sizeof hex, "0x%02X", c);
