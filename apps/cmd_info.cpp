@@ -1,11 +1,14 @@
 // seflex info DECK: what a Nastran deck holds - files read, counts of grids, elements and cards,
-// unsupported cards with their first location.
+// unsupported cards with their first location, and the rigid-body mass properties the way Nastran's
+// grid point weight generator reports them.
 #include <cstdio>
-#include <iostream>
+#include <limits>
+#include <optional>
 #include <string>
 
 #include "command.hpp"
 #include "seflex/fem/finalize.hpp"
+#include "seflex/fem/mass_properties.hpp"
 #include "seflex/fem/model.hpp"
 #include "seflex/io/nastran.hpp"
 
@@ -52,8 +55,44 @@ void print_model(const seflex::fem::Model& m) {
   }
 }
 
+void print_matrix(const Eigen::MatrixXd& a, int indent) {
+  for (Eigen::Index i = 0; i < a.rows(); ++i) {
+    std::printf("%*s", indent, "");
+    for (Eigen::Index j = 0; j < a.cols(); ++j) std::printf(" %14.6E", a(i, j));
+    std::printf("\n");
+  }
+}
+
+void print_mass_properties(const seflex::fem::Model& m, std::optional<int> reference_grid) {
+  const seflex::fem::MassProperties mp = seflex::fem::mass_properties(m, reference_grid);
+  std::printf("\nmass properties (grid point weight generator)\n");
+  if (mp.reference_grid > 0)
+    std::printf("  reference point           grid %d at (%g, %g, %g)\n", mp.reference_grid, mp.reference.x(),
+                mp.reference.y(), mp.reference.z());
+  else
+    std::printf("  reference point           basic origin\n");
+  std::printf("  PARAM WTMASS              %g (not applied here: masses in the deck's units, as Nastran's GPWG prints them)\n",
+              mp.wtmass);
+  std::printf("  rigid-body mass matrix M0 about the reference point, basic axes\n");
+  print_matrix(mp.M0, 3);
+  if (!(mp.mass > 0.0)) {
+    std::printf("  total mass                0 (the model has no mass)\n");
+    return;
+  }
+  std::printf("  total mass                %.6E\n", mp.mass);
+  std::printf("  centre of gravity         %.6E %.6E %.6E (basic)\n", mp.cg.x(), mp.cg.y(), mp.cg.z());
+  std::printf("  inertia about the CG, basic axes (I11 = sum m (y^2 + z^2), products with a minus sign)\n");
+  print_matrix(mp.I_cg, 3);
+  std::printf("  principal moments         %.6E %.6E %.6E\n", mp.principal_moments.x(), mp.principal_moments.y(),
+              mp.principal_moments.z());
+  std::printf("  principal axes (columns, basic)\n");
+  print_matrix(mp.principal_axes, 3);
+}
+
 int run_info(seflex::app::Args& args) {
   const std::string deck = args.positional("DECK");
+  constexpr int kUnset = std::numeric_limits<int>::min();
+  const int grdpnt = args.integer("grdpnt", kUnset);
   args.finish();
   const seflex::fem::Model m = seflex::io::read_nastran(deck);
   std::printf("deck        %s\n", deck.c_str());
@@ -65,10 +104,20 @@ int run_info(seflex::app::Args& args) {
   if (!cc.subtitle.empty()) std::printf("subtitle    %s\n", cc.subtitle.c_str());
   print_model(m);
   std::fflush(stdout);
+  std::optional<int> reference;
+  if (grdpnt != kUnset) {
+    if (grdpnt < 0 || (grdpnt > 0 && !m.grid_index.count(grdpnt)))
+      throw seflex::app::UsageError("--grdpnt " + std::to_string(grdpnt) + ": expected 0 (basic origin) or a GRID id of the deck");
+    reference = grdpnt;
+  }
+  print_mass_properties(m, reference);
+  std::fflush(stdout);
   return seflex::app::kOk;
 }
 
 }  // namespace
 
-SEFLEX_COMMAND(info, "DECK", "counts of grids, elements and cards, unsupported cards, mass properties of a Nastran deck",
+SEFLEX_COMMAND(info, "DECK [--grdpnt G]",
+               "counts of grids, elements and cards, unsupported cards, and mass properties (like Nastran's GPWG; "
+               "reference point PARAM GRDPNT or --grdpnt) of a Nastran deck",
                run_info);
