@@ -250,16 +250,8 @@ class Finalizer {
       spc_sets.insert(s.sid);
     }
     std::unordered_map<int, CardRef> spcadd_ids;
-    for (const auto& a : m_.spcadds) {
-      if (const auto [it, inserted] = spcadd_ids.emplace(a.sid, a.ref); !inserted)
-        fail(a.ref, "SPCADD", a.sid, "field 2 (SID)", "duplicate SPCADD id, first defined at " + at(it->second) + "; expected unique ids");
-      if (spc_sets.count(a.sid))
-        fail(a.ref, "SPCADD", a.sid, "field 2 (SID)", "the id is also an SPC/SPC1 set; expected an SPCADD id different from SPC set ids");
-      for (const int s : a.sets)
-        if (!spc_sets.count(s))
-          fail(a.ref, "SPCADD", a.sid, "S " + std::to_string(s), "references SPC set " + std::to_string(s) +
-                                                                   ", which has no SPC or SPC1 card; expected an SPC set id");
-    }
+    for (const auto& a : m_.spcadds)
+      check_combination(spcadd_ids, spc_sets, "SPCADD", a.sid, a.ref, a.sets, "SPC set", "SPC or SPC1", "");
     for (const auto& e : m_.aset) need_dof(e.grid, e.c, true, e.ref, "ASET/ASET1", e.grid, "");
     for (const auto& e : m_.bset) need_dof(e.grid, e.c, true, e.ref, "BSET/BSET1", e.grid, "");
     for (const auto& e : m_.suport) need_dof(e.grid, e.c, true, e.ref, "SUPORT", e.grid, "");
@@ -271,15 +263,26 @@ class Finalizer {
     }
     std::unordered_map<int, CardRef> load_ids;
     for (const auto& l : m_.load_combinations) {
-      if (const auto [it, inserted] = load_ids.emplace(l.sid, l.ref); !inserted)
-        fail(l.ref, "LOAD", l.sid, "field 2 (SID)", "duplicate LOAD id, first defined at " + at(it->second) + "; expected unique ids");
-      if (load_sets.count(l.sid))
-        fail(l.ref, "LOAD", l.sid, "field 2 (SID)", "the id is also a FORCE/MOMENT set; expected a LOAD id different from load set ids");
-      for (const auto& [s, set] : l.terms)
-        if (!load_sets.count(set))
-          fail(l.ref, "LOAD", l.sid, "L " + std::to_string(set), "references load set " + std::to_string(set) + ", which has no FORCE or MOMENT card" +
-                                                                   unsupported_hint() + "; expected a FORCE/MOMENT set id");
+      std::vector<int> sets;
+      for (const auto& term : l.terms) sets.push_back(term.second);
+      check_combination(load_ids, load_sets, "LOAD", l.sid, l.ref, sets, "load set", "FORCE or MOMENT", unsupported_hint());
     }
+  }
+
+  /// SPCADD / LOAD: a unique id, not also a set of the cards it combines, combining only sets that exist.
+  void check_combination(std::unordered_map<int, CardRef>& ids, const std::set<int>& sets, const char* card, int sid,
+                         const CardRef& ref, const std::vector<int>& combined, const char* set_kind, const char* set_cards,
+                         const std::string& hint) {
+    if (const auto [it, inserted] = ids.emplace(sid, ref); !inserted)
+      fail(ref, card, sid, "field 2 (SID)", std::string("duplicate ") + card + " id, first defined at " + at(it->second) + "; expected unique ids");
+    if (sets.count(sid))
+      fail(ref, card, sid, "field 2 (SID)", std::string("the id is also used by ") + set_cards + " cards; expected a " + card +
+                                                " id different from every " + set_kind + " id");
+    for (const int s : combined)
+      if (!sets.count(s))
+        fail(ref, card, sid, std::string(set_kind) + " " + std::to_string(s),
+             "references " + std::string(set_kind) + " " + std::to_string(s) + ", which has no " + set_cards + " card" + hint +
+                 "; expected the id of an existing " + set_kind);
   }
 
   std::string unsupported_hint() const {

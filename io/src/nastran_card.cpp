@@ -75,43 +75,31 @@ std::string Card::got(std::size_t i) const {
   return "got " + quote_field(f) + ", which is not a number";
 }
 
-int Card::integer(std::size_t i, const char* what) const {
+int Card::checked_integer(std::size_t i, const char* what, bool positive, bool blank_ok) const {
   int v = 0;
-  if (!parse_int(raw(i), v)) fail(i, what, got(i) + "; expected an integer");
+  if (!parse_int(raw(i), v) || (positive && v <= 0))
+    fail(i, what, got(i) + (positive ? "; expected an integer > 0" : "; expected an integer") + (blank_ok ? " or blank" : ""));
   return v;
 }
 
+double Card::checked_real(std::size_t i, const char* what, bool blank_ok) const {
+  double v = 0;
+  if (!parse_real(raw(i), v))
+    fail(i, what, got(i) + "; expected a real number (with a decimal point)" + (blank_ok ? " or blank" : ""));
+  return v;
+}
+
+int Card::integer(std::size_t i, const char* what) const { return checked_integer(i, what, false, false); }
 int Card::integer_or(std::size_t i, const char* what, int fallback) const {
-  if (blank(i)) return fallback;
-  int v = 0;
-  if (!parse_int(raw(i), v)) fail(i, what, got(i) + "; expected an integer or blank");
-  return v;
+  return blank(i) ? fallback : checked_integer(i, what, false, true);
 }
-
-int Card::id(std::size_t i, const char* what) const {
-  int v = 0;
-  if (!parse_int(raw(i), v) || v <= 0) fail(i, what, got(i) + "; expected an integer > 0");
-  return v;
-}
-
+int Card::id(std::size_t i, const char* what) const { return checked_integer(i, what, true, false); }
 int Card::id_or(std::size_t i, const char* what, int fallback) const {
-  if (blank(i)) return fallback;
-  int v = 0;
-  if (!parse_int(raw(i), v) || v <= 0) fail(i, what, got(i) + "; expected an integer > 0 or blank");
-  return v;
+  return blank(i) ? fallback : checked_integer(i, what, true, true);
 }
-
-double Card::real(std::size_t i, const char* what) const {
-  double v = 0;
-  if (!parse_real(raw(i), v)) fail(i, what, got(i) + "; expected a real number (with a decimal point)");
-  return v;
-}
-
+double Card::real(std::size_t i, const char* what) const { return checked_real(i, what, false); }
 double Card::real_or(std::size_t i, const char* what, double fallback) const {
-  if (blank(i)) return fallback;
-  double v = 0;
-  if (!parse_real(raw(i), v)) fail(i, what, got(i) + "; expected a real number (with a decimal point) or blank");
-  return v;
+  return blank(i) ? fallback : checked_real(i, what, true);
 }
 
 std::string Card::text_or(std::size_t i, const char* what, std::string_view fallback) const {

@@ -134,6 +134,15 @@ void spring_end(const Card& card, std::size_t i, const char* gname, const char* 
   if (c < 0 || c > 6) card.fail(i + 1, cname, card.got(i + 1) + "; expected one component 1-6 (0 or blank for a scalar point)");
 }
 
+/// G1 C1 G2 C2 in fields 4-7 of CELAS1/CELAS2, and the card's location.
+void spring_ends(const Card& card, fem::Spring& s) {
+  spring_end(card, 2, "G1", "C1", s.g1, s.c1);
+  spring_end(card, 4, "G2", "C2", s.g2, s.c2);
+  if (s.g1 == 0 && s.g2 == 0) card.fail(2, "G1", "G1 and G2 are both blank; expected at least one grid or scalar point");
+  if (s.g1 == s.g2 && s.c1 == s.c2) card.fail(4, "G2", "both ends are the same degree of freedom; expected two different ones");
+  s.ref = card.ref();
+}
+
 }  // namespace
 
 // CBAR EID PID GA GB X1/G0 X2 X3 OFFT / PA PB W1A W2A W3A W1B W2B W3B
@@ -210,11 +219,7 @@ void parse_celas1(const Card& card, ReaderState& st) {
   fem::Spring s;
   s.id = card.id(0, "EID");
   s.pid = card.id_or(1, "PID", s.id);
-  spring_end(card, 2, "G1", "C1", s.g1, s.c1);
-  spring_end(card, 4, "G2", "C2", s.g2, s.c2);
-  if (s.g1 == 0 && s.g2 == 0) card.fail(2, "G1", "G1 and G2 are both blank; expected at least one grid or scalar point");
-  if (s.g1 == s.g2 && s.c1 == s.c2) card.fail(4, "G2", "both ends are the same degree of freedom; expected two different ones");
-  s.ref = card.ref();
+  spring_ends(card, s);
   st.model.springs.push_back(s);
 }
 
@@ -224,13 +229,9 @@ void parse_celas2(const Card& card, ReaderState& st) {
   s.id = card.id(0, "EID");
   s.inline_property = true;
   s.k = card.real(1, "K");
-  spring_end(card, 2, "G1", "C1", s.g1, s.c1);
-  spring_end(card, 4, "G2", "C2", s.g2, s.c2);
+  spring_ends(card, s);
   s.ge = card.real_or(6, "GE", 0.0);
   s.s = card.real_or(7, "S", 0.0);
-  if (s.g1 == 0 && s.g2 == 0) card.fail(2, "G1", "G1 and G2 are both blank; expected at least one grid or scalar point");
-  if (s.g1 == s.g2 && s.c1 == s.c2) card.fail(4, "G2", "both ends are the same degree of freedom; expected two different ones");
-  s.ref = card.ref();
   st.model.springs.push_back(s);
 }
 

@@ -46,13 +46,19 @@ void section_from_dims(const Card& card, fem::BarProperty& p, std::size_t first)
   p.K2 = s.K2;
 }
 
-std::string group_and_type(const Card& card, fem::BarProperty& p) {
+/// PID MID GROUP TYPE / DIM1.. of PBARL and PBEAML (end A): the section computed from its dimensions.
+fem::BarProperty section_property(const Card& card, fem::BarProperty::Source source) {
+  fem::BarProperty p;
+  p.source = source;
+  p.id = card.id(0, "PID");
+  p.mid = card.id(1, "MID");
   const std::string group = card.text_or(2, "GROUP", "MSCBML0");
   if (group != "MSCBML0")
     card.fail(2, "GROUP", card.got(2) + "; expected MSCBML0 or blank (user section libraries are not supported)");
   p.section_type = card.text_or(3, "TYPE", "");
   if (p.section_type.empty()) card.fail(3, "TYPE", "blank; expected a section type (" + fem::supported_section_types() + ")");
-  return group;
+  section_from_dims(card, p, 8);
+  return p;
 }
 
 }  // namespace
@@ -121,12 +127,7 @@ void parse_pbar(const Card& card, ReaderState& st) {
 
 // PBARL PID MID GROUP TYPE / DIM1 DIM2 ... DIMn NSM
 void parse_pbarl(const Card& card, ReaderState& st) {
-  fem::BarProperty p;
-  p.source = fem::BarProperty::Source::PBARL;
-  p.id = card.id(0, "PID");
-  p.mid = card.id(1, "MID");
-  group_and_type(card, p);
-  section_from_dims(card, p, 8);
+  fem::BarProperty p = section_property(card, fem::BarProperty::Source::PBARL);
   const std::size_t nsm_at = 8 + p.dims.size();
   p.nsm = card.real_or(nsm_at, "NSM", 0.0);
   for (std::size_t i = nsm_at + 1; i < card.size(); ++i)
@@ -196,12 +197,7 @@ void parse_pbeam(const Card& card, ReaderState& st) {
 
 // PBEAML PID MID GROUP TYPE / DIM1(A) .. DIMn(A) NSM(A) SO(1) X(1)/XB DIM1(1) .. DIMn(1) NSM(1) ...
 void parse_pbeaml(const Card& card, ReaderState& st) {
-  fem::BarProperty p;
-  p.source = fem::BarProperty::Source::PBEAML;
-  p.id = card.id(0, "PID");
-  p.mid = card.id(1, "MID");
-  group_and_type(card, p);
-  section_from_dims(card, p, 8);
+  fem::BarProperty p = section_property(card, fem::BarProperty::Source::PBEAML);
   const std::size_t n = p.dims.size();
   p.nsm = card.real_or(8 + n, "NSM", 0.0);
   bool tapered = false;

@@ -61,6 +61,9 @@ class Card {
   std::string label() const;
 
  private:
+  int checked_integer(std::size_t i, const char* what, bool positive, bool blank_ok) const;
+  double checked_real(std::size_t i, const char* what, bool blank_ok) const;
+
   char name_[16] = {};
   std::size_t name_len_ = 0;
   const std::string* file_name_ = nullptr;
