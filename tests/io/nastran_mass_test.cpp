@@ -167,3 +167,25 @@ TEST(NastranMassProperties, InfoPrintsTheGpwgSummary) {
   EXPECT_NE(g.out.find("reference point           grid 5 at (100, 0, 0)"), std::string::npos) << g.out;
   EXPECT_EQ(test::run_seflex("info '" + p.string() + "' --grdpnt 77").exit_code, 2);
 }
+
+TEST(NastranMassProperties, Conm2InOtherSystems) {
+  // QRG CONM2: CID -1 -> X is the CG position in basic; CID > 0 -> X is the offset from the grid and
+  // the inertia matrix [I11 -I21 -I31; -I21 I22 -I32; -I31 -I32 I33] is given in that system's axes.
+  // CORD2R 9: z along basic x, x along basic z, so R = [e1 e2 e3] = [[0,0,1],[0,-1,0],[1,0,0]].
+  const std::string deck =
+      "GRID,1,,1.,2.,3.\n"
+      "CORD2R,9,,5.,5.,5.,6.,5.,5.\n,5.,5.,6.\n"
+      "CONM2,1,1,9,2.,.1,.2,.3\n,1.,.1,2.,.2,.3,3.\n"
+      "CONM2,2,1,-1,3.,10.,20.,30.\n,4.,,5.,,,6.\n";
+  const fem::Model m = test::read_deck(deck);
+  Eigen::Matrix3d R;
+  R << 0, 0, 1, 0, -1, 0, 1, 0, 0;
+  Eigen::Matrix3d T;
+  T << 1, -.1, -.2, -.1, 2, -.3, -.2, -.3, 3;
+  PointMasses pm;
+  pm.add(2., Eigen::Vector3d(1, 2, 3) + R * Eigen::Vector3d(.1, .2, .3));  // (1.3, 1.8, 3.1)
+  pm.add(3., Eigen::Vector3d(10, 20, 30));
+  pm.extra_inertia = R * T * R.transpose() + Eigen::Vector3d(4, 5, 6).asDiagonal().toDenseMatrix();
+  EXPECT_LT((pm.points[0].second - Eigen::Vector3d(1.3, 1.8, 3.1)).norm(), 1e-15);
+  expect_matches(fem::mass_properties(m), pm, Eigen::Vector3d::Zero());
+}
