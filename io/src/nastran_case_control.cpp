@@ -58,8 +58,8 @@ void CaseControlReader::command(const std::string& text, const std::string& file
   const std::string where = location(file, line);
   const std::string u = upper(text);
   const std::string key(first_word(u));
-  if (key == "SUBCASE") {
-    const std::string_view rest = trim(std::string_view(u).substr(7));
+  if (is_command(key, "SUBCASE")) {
+    const std::string_view rest = trim(std::string_view(u).substr(u.find(key) + key.size()));
     int id = 0;
     const auto [p, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), id);
     if (ec != std::errc() || p != rest.data() + rest.size() || id <= 0)

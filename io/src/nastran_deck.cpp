@@ -220,6 +220,7 @@ class DeckReader {
         throw InputError(where + ": INCLUDE: got " + quote_field(name) + "; expected one file name (quote names with blanks)");
     }
     if (name.empty()) throw InputError(where + ": INCLUDE: blank; expected a file name");
+    std::replace(name.begin(), name.end(), '\\', '/');  // decks written on Windows
     if (stack.size() >= kMaxIncludeDepth)
       throw InputError(where + ": INCLUDE " + quote_field(name) + ": includes nested more than " +
                        std::to_string(kMaxIncludeDepth) + " deep; expected fewer levels (a cycle?)");

@@ -18,6 +18,8 @@ std::string load_text(const std::filesystem::path& path, const std::string& from
   };
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) fail("it is a directory; expected a file");
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    fail("not a regular file (a device or pipe?); expected a file");
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!f) fail(std::strerror(errno));
   std::string text;

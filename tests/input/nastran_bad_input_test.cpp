@@ -111,6 +111,8 @@ TEST(NastranBadInput, IncludeCycleAndMissingInclude) {
   EXPECT_TRUE(mentions(error_of("d.bdf"), {"d.bdf:2: INCLUDE", "no closing quote"}));
   EXPECT_TRUE(mentions(error_of("e.bdf"), {"e.bdf:2: INCLUDE 'sub'", "directory"}));
   EXPECT_TRUE(mentions(error_of("nonexistent.bdf"), {"nonexistent.bdf: no such file"}));
+  dir.write("f.bdf", "GRID,1,,0.,0.,0.\nINCLUDE '/dev/zero'\n");  // never read an endless device
+  EXPECT_TRUE(mentions(error_of("f.bdf"), {"f.bdf:2: INCLUDE '/dev/zero'", "not a regular file"}));
   expect_cli_input_error("INCLUDE 'bad.bdf'\n", {"bad.bdf:1: INCLUDE 'bad.bdf' is an include cycle"});
 }
 
@@ -181,4 +183,21 @@ TEST(NastranBadInput, CommandLineReportsFileLineCardAndField) {
   const auto r = test::run_seflex("info /nonexistent/deck.bdf");
   EXPECT_EQ(r.exit_code, 3);
   EXPECT_TRUE(mentions(r.err, {"/nonexistent/deck.bdf: no such file"}));
+}
+
+TEST(NastranBadInput, CommandLineExitsThreeForEveryKindOfBadDeck) {
+  const std::string d = base_deck();
+  expect_cli_input_error(d + "CQUAD4,1,1,1,2,3\n", {"bad.bdf:7: CQUAD4 1, field 7 (G4): blank"});
+  expect_cli_input_error(d + "CQUAD4,1,1.,1,2,3,4\n", {"bad.bdf:7: CQUAD4 1, field 3 (PID): got real '1.'"});
+  expect_cli_input_error(d + "GRID,2,,9.,9.,9.\n", {"bad.bdf:7: GRID 2, field 2 (ID): duplicate grid id"});
+  expect_cli_input_error(std::string("GRID,1,,0.,0.,0.\nGRID,2,,\0,0.,0.\n", 33), {"bad.bdf:2, column 9: a NUL byte"});
+  expect_cli_input_error(d + "INCLUDE 'nowhere.bdf'\n", {"bad.bdf:7: INCLUDE 'nowhere.bdf'", "does not exist"});
+  expect_cli_input_error(d + "CBAR,9,9,1,2,0.,0.,1.\n", {"bad.bdf:7: CBAR 9, field 3 (PID): references property 9"});
+  // CRLF line ends are no error
+  test::TempDir dir;
+  std::string crlf;
+  for (const char c : d + "CQUAD4,1,1,1,2,3,4\n") crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  const auto deck = dir.write("crlf.bdf", crlf);
+  const auto r = test::run_seflex("info '" + deck.string() + "'");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
 }

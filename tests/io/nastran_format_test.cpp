@@ -160,7 +160,7 @@ TEST(NastranFormat, ExecutiveAndCaseControl) {
       "K2GG = KAAX\n"
       "PARAM,WTMASS,2.59-3\n"
       "SUBCASE 10\n  LOAD = 5\n  LABEL = first\n"
-      "SUBCASE 20\n  SPC = 2\n  METHOD = 7\n"
+      "SUBC 20\n  SPC = 2\n  METHOD = 7\n"
       "BEGIN BULK\n" +
       base_deck() + "SPC1,1,123,1\nSPC1,2,123,2\nFORCE,5,3,,1.,0.,0.,1.\nEIGRL,7,,,4\n"
       "DMIG,KAAX,0,6,1,0\nDMIG,KAAX,1,1,,1,1,5.\nENDDATA\nGRID,99,,1.,1.,1.\n";
@@ -217,7 +217,7 @@ TEST(NastranFormat, IncludeRelativeQuotedAndSplit) {
   dir.write("long name/props.bdf", "MAT1,1,2.1+11,,0.3\n");
   const auto main = dir.write("main.bdf",
                               "SOL 103\nCEND\nBEGIN BULK\n"
-                              "INCLUDE sub/grids.bdf\n"
+                              "INCLUDE sub\\grids.bdf\n"  // a Windows path separator
                               "INCLUDE 'long name/\n"
                               "   props.bdf'\n"
                               "CROD,1,1,1,2\nPROD,1,1,1.\nENDDATA\n");
