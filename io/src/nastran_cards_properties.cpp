@@ -74,21 +74,25 @@ void parse_mat1(const Card& card, ReaderState& st) {
   if (m.E < 0.0) card.fail(1, "E", card.got(1) + "; expected E >= 0");
   if (m.G < 0.0) card.fail(2, "G", card.got(2) + "; expected G >= 0");
   if (has_nu && !(m.nu > -1.0 && m.nu <= 0.5)) card.fail(3, "NU", card.got(3) + "; expected -1 < NU <= 0.5");
-  const int given = int(has_e) + int(has_g) + int(has_nu);
-  if (given < 2) {
-    const std::size_t first_blank = !has_e ? 1 : !has_g ? 2 : 3;
-    const char* names[4] = {"", "E", "G", "NU"};
-    card.fail(first_blank, names[first_blank],
-              std::string("blank, and only ") + std::to_string(given) +
-                  " of E, G, NU given; expected at least two of them (the third follows from G = E / (2 (1 + NU)))");
+  // Nastran's rules (QRG MAT1, remarks 2-4): E or G must be given; if E and NU, or G and NU, are
+  // both blank they are both 0 (e.g. an E-only truss material); otherwise a single blank one follows
+  // from E = 2 (1 + NU) G.
+  if (!has_e && !has_g)
+    card.fail(1, "E", "blank, and G is blank too; expected E or G (or both)");
+  if (has_e && !has_g && !has_nu) {
+    m.G = 0.0;
+    m.nu = 0.0;
+  } else if (!has_e && has_g && !has_nu) {
+    m.E = 0.0;
+    m.nu = 0.0;
+  } else {
+    if (!has_g) m.G = m.E / (2.0 * (1.0 + m.nu));
+    if (!has_nu) {
+      if (m.G == 0.0) card.fail(2, "G", "G = 0 with NU blank; expected G > 0 to compute NU = E / (2 G) - 1");
+      m.nu = m.E / (2.0 * m.G) - 1.0;
+    }
+    if (!has_e) m.E = 2.0 * (1.0 + m.nu) * m.G;
   }
-  // Nastran's rule (QRG MAT1, remark on E, G, NU): a blank one follows from the other two.
-  if (!has_g) m.G = m.E / (2.0 * (1.0 + m.nu));
-  if (!has_nu) {
-    if (m.G == 0.0) card.fail(2, "G", "G = 0 with NU blank; expected G > 0 to compute NU = E / (2 G) - 1");
-    m.nu = m.E / (2.0 * m.G) - 1.0;
-  }
-  if (!has_e) m.E = 2.0 * (1.0 + m.nu) * m.G;
   m.rho = card.real_or(4, "RHO", 0.0);
   m.alpha = card.real_or(5, "A", 0.0);
   m.tref = card.real_or(6, "TREF", 0.0);

@@ -215,6 +215,17 @@ TEST(NastranCards, ShellPidDefaultMustExist) {
   EXPECT_TRUE(mentions(test::read_error(base_deck() + "CQUAD4,8,,1,2,3,4\n"), {"CQUAD4 8, field 3 (PID): references property 8"}));
 }
 
+TEST(NastranCards, Mat1WithTwoBlankConstantsSetsBothToZero) {
+  // QRG MAT1 remark 4: if E and NU, or G and NU, are both blank, both are 0 (an E-only truss material).
+  const fem::Model m = read_deck("MAT1,1,7.1+10\nMAT1,2,,2.7+10\n");
+  EXPECT_DOUBLE_EQ(m.mat1[0].E, 7.1e10);
+  EXPECT_EQ(m.mat1[0].G, 0.0);
+  EXPECT_EQ(m.mat1[0].nu, 0.0);
+  EXPECT_EQ(m.mat1[1].E, 0.0);
+  EXPECT_DOUBLE_EQ(m.mat1[1].G, 2.7e10);
+  EXPECT_EQ(m.mat1[1].nu, 0.0);
+}
+
 TEST(NastranCards, Mat1CompletesTheBlankConstant) {
   // QRG MAT1 remarks: G = E / (2 (1 + NU)); NU = E / (2 G) - 1; E = 2 (1 + NU) G.
   const fem::Model m = read_deck("MAT1,1,2.6,,.3\nMAT1,2,2.6,1.,\nMAT1,3,,1.,.3,7.8,1.2-5,20.,.02\nMAT1,4,1.,2.,3.-1\n");

@@ -61,10 +61,10 @@ struct RunResult {
 inline RunResult run_seflex(const std::string& args, const std::filesystem::path& cwd = {}) {
   TempDir tmp;
   const auto out = tmp / "stdout.txt", err = tmp / "stderr.txt";
-  std::string cmd;
-  if (!cwd.empty()) cmd += "cd '" + cwd.string() + "' && ";
-  cmd += "'" + seflex_bin().string() + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
-  const int status = std::system(cmd.c_str());
+  std::ostringstream cmd;
+  if (!cwd.empty()) cmd << "cd '" << cwd.string() << "' && ";
+  cmd << "'" << seflex_bin().string() << "' " << args << " >'" << out.string() << "' 2>'" << err.string() << "'";
+  const int status = std::system(cmd.str().c_str());
   RunResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
   r.out = read_file(out);
