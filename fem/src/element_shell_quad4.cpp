@@ -158,7 +158,8 @@ NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot) {
       const Eigen::Matrix<double, 2, 24> Bs = Jinv * Gcov;
       K.noalias() += (w * ks) * Bs.transpose() * Bs;
 
-      // Drilling penalty on theta_z - (v,x - u,y)/2.
+      // Drilling penalty on theta_z - omega, omega = (v,x - u,y)/2 of the membrane field including
+      // its incompatible modes (so that the exact in-plane bending of QM6 is not penalised).
       if (kd > 0.0) {
         Row24 d = Row24::Zero();
         for (int i = 0; i < 4; ++i) {
@@ -166,9 +167,27 @@ NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot) {
           d(6 * i + kV) = -0.5 * dN(0, i);
           d(6 * i + kU) = 0.5 * dN(1, i);
         }
+        const Eigen::RowVector4d da(0.5 * P1.y(), 0.5 * P2.y(), -0.5 * P1.x(), -0.5 * P2.x());
         K.noalias() += (w * kd) * d.transpose() * d;
+        Kua.noalias() += (w * kd) * d.transpose() * da;
+        Kaa.noalias() += (w * kd) * da.transpose() * da;
       }
     }
+  // Drilling coupling at the centre (Hughes & Brezzi): G t A (theta_z - omega)^2 at xi = eta = 0,
+  // where the incompatible modes do not rotate.
+  if (sec.has_membrane) {
+    Eigen::Matrix<double, 2, 4> dN;
+    dN.row(0) = s0.dxi.transpose();
+    dN.row(1) = s0.deta.transpose();
+    dN = J0inv * dN;
+    Row24 d = Row24::Zero();
+    for (int i = 0; i < 4; ++i) {
+      d(6 * i + kRz) = s0.N[i];
+      d(6 * i + kV) = -0.5 * dN(0, i);
+      d(6 * i + kU) = 0.5 * dN(1, i);
+    }
+    K.noalias() += (4.0 * det0 * sec.membrane.G * sec.t) * d.transpose() * d;
+  }
   if (Kaa.trace() > 0.0) K.noalias() -= Kua * Kaa.inverse() * Kua.transpose();
   K = 0.5 * (K + K.transpose()).eval();
 

@@ -2,6 +2,7 @@
 #include "seflex/fem/element_shell_tria3.hpp"
 
 #include <Eigen/LU>
+#include <algorithm>
 
 #include "model_lookup.hpp"
 #include "seflex/common/error.hpp"
@@ -82,7 +83,13 @@ NodeMatrix<3> tria3_stiffness(const Tria3Element& e, double k6rot) {
     }
   }
   const Eigen::Matrix<double, 3, 18> C = G.inverse() * R;  // (a_x, a_y, b) from the dofs
-  const double ks = sec.shear_stiffness();
+  // Shear stabilisation of Lyly, Stenberg & Vihinen (Computational Mechanics 13 (1993) 371-387):
+  // ks t^2 / (t^2 + alpha h^2), h the longest edge; it removes the residual shear locking of the
+  // linear triangle in thin plates and vanishes under refinement (h -> 0).
+  double h2 = 0.0;
+  for (int k = 0; k < 3; ++k) h2 = std::max(h2, (g.p[(k + 1) % 3] - g.p[k]).squaredNorm());
+  const double alpha = 0.1;
+  const double ks = sec.shear_stiffness() * sec.t * sec.t / (sec.t * sec.t + alpha * h2);
   const double kd = sec.has_membrane ? k6rot * 1e-6 * sec.membrane.G * sec.t : 0.0;
   const double omega_row_scale = 0.5;
   for (int q = 0; q < 3; ++q) {  // edge-midpoint rule, exact for quadratics
@@ -102,6 +109,16 @@ NodeMatrix<3> tria3_stiffness(const Tria3Element& e, double k6rot) {
       }
       K.noalias() += (kd * A / 3.0) * d.transpose() * d;
     }
+  }
+  // Hughes-Brezzi drilling coupling at the centroid (see element_shell_quad4.hpp).
+  if (sec.has_membrane) {
+    Row18 d = Row18::Zero();
+    for (int i = 0; i < 3; ++i) {
+      d(6 * i + kRz) = 1.0 / 3.0;
+      d(6 * i + kV) = -omega_row_scale * g.b[i];
+      d(6 * i + kU) = omega_row_scale * g.c[i];
+    }
+    K.noalias() += (A * sec.membrane.G * sec.t) * d.transpose() * d;
   }
   K = 0.5 * (K + K.transpose()).eval();
   rotate_local_to_basic<3>(g.R_BL, K);

@@ -12,10 +12,16 @@
 //   interpolation", IJNME 21 (1985) 367-383): bilinear rotations, covariant transverse shear
 //   strains tied at the edge midpoints, so the element does not lock in thin plates and passes the
 //   constant-curvature patch test on distorted meshes.
-// - Drilling: the in-plane rotation theta_z is tied to the membrane rotation
-//   omega = (dv/dx - du/dy)/2 by the penalty  (K6ROT * 1e-6) G t int (theta_z - omega)^2 dA
-//   (2 x 2 Gauss), rigid-body invariant; the default K6ROT = 100 gives a drilling diagonal of about
-//   1e-5 G t A per node, the magnitude MSC Nastran uses (MYSTRAN pull request #175).
+// - Drilling: the rotation about the normal theta_z is tied to the membrane rotation
+//   omega = (dv/dx - du/dy)/2 (incompatible modes included) by
+//     G t A (theta_z - omega)^2 at the centre  +  (K6ROT * 1e-6) G t int (theta_z - omega)^2 dA,
+//   both rigid-body invariant. The first is the Hughes-Brezzi drilling term with gamma = G
+//   (Hughes & Brezzi, "On drilling degrees of freedom", CMAME 72 (1989) 105-121) in one-point form,
+//   so that it cannot lock; it couples the membrane rotation to the bending rotation of neighbouring
+//   non-coplanar facets, without which twisted and warped meshes are far too flexible (MacNeal-Harder
+//   twisted beam). The second, scaled by PARAM K6ROT (default 100: a drilling diagonal of about
+//   1e-5 G t A per corner, the magnitude of MSC Nastran's K6ROT, MYSTRAN pull request #175), gives
+//   every corner's drilling rotation stiffness.
 // - Warped elements: rigid links from the grids to their projections on the mean plane
 //   (MacNeal, "Finite Elements: Their Design and Performance", 1994, sec. 9.4), which keep the six
 //   rigid-body modes exact.

@@ -7,9 +7,12 @@
 //   isotropic triangular shell finite elements", Computers & Structures 82 (2004) 945-962): linear
 //   rotations and deflection; the transverse shear strain is the field a + b (-y, x) whose
 //   tangential component at each edge midpoint equals the edge's tangential shear strain, which
-//   removes shear locking of the linear triangle in most situations and passes the
-//   constant-curvature patch test.
-// - Drilling: the same K6ROT penalty as CQUAD4 on (theta_z - omega)^2, 3-point rule.
+//   passes the constant-curvature patch test; the shear stiffness is scaled by t^2 / (t^2 + 0.1 h^2)
+//   (h the longest edge; Lyly, Stenberg & Vihinen, Computational Mechanics 13 (1993) 371-387), which
+//   removes the residual shear locking of the linear triangle in thin plates and tends to 1 under
+//   refinement.
+// - Drilling: as CQUAD4, G t A (theta_z - omega)^2 at the centroid plus the K6ROT penalty on
+//   (theta_z - omega)^2 with the 3-point rule.
 // Mass: lumped (rho t + NSM) A / 3 on the translations of each grid; coupled
 // (rho t + NSM) A / 12 [2 1 1; 1 2 1; 1 1 2] on each translation; no rotary inertia.
 #include <Eigen/Core>
