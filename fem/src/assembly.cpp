@@ -3,6 +3,7 @@
 
 #include "block_pattern.hpp"
 #include "model_lookup.hpp"
+#include "seflex/fem/finalize.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/fem/element_bar.hpp"
 #include "seflex/fem/element_conm2.hpp"
@@ -15,14 +16,14 @@ namespace seflex::fem {
 
 AssemblyOptions assembly_options(const Model& model) {
   AssemblyOptions o;
-  o.mass = detail::param_number(model, "COUPMASS", -1.0) > 0.0 ? MassKind::Coupled : MassKind::Lumped;
-  o.wtmass = detail::param_number(model, "WTMASS", 1.0);
-  o.k6rot = detail::param_number(model, "K6ROT", 100.0);
+  o.mass = param_number(model, "COUPMASS", -1.0) > 0.0 ? MassKind::Coupled : MassKind::Lumped;
+  o.wtmass = param_number(model, "WTMASS", 1.0);
+  o.k6rot = param_number(model, "K6ROT", 100.0);
   for (const Param& p : model.params) {
     if (p.name == "WTMASS" && !(o.wtmass > 0.0))
-      throw InputError(detail::source_of(model, p.ref), "PARAM WTMASS: expected a positive number");
+      throw InputError(where(model, p.ref), "PARAM WTMASS: expected a positive number");
     if (p.name == "K6ROT" && !(o.k6rot >= 0.0))
-      throw InputError(detail::source_of(model, p.ref), "PARAM K6ROT: expected a number >= 0");
+      throw InputError(where(model, p.ref), "PARAM K6ROT: expected a number >= 0");
   }
   return o;
 }

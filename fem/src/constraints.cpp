@@ -6,6 +6,7 @@
 #include <set>
 
 #include "model_lookup.hpp"
+#include "seflex/fem/finalize.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/fem/components.hpp"
 
@@ -83,10 +84,10 @@ std::vector<std::pair<Eigen::Index, double>> spc_set_dofs(const Model& model, co
     }
     const auto it = model.grid_index.find(e.grid);
     if (it == model.grid_index.end())
-      throw InputError(detail::source_of(model, e.ref), "SPC/SPC1 set " + std::to_string(e.sid) + ": references GRID " +
+      throw InputError(where(model, e.ref), "SPC/SPC1 set " + std::to_string(e.sid) + ": references GRID " +
                                                             std::to_string(e.grid) + ", which is not defined");
     if (e.c == 0)
-      throw InputError(detail::source_of(model, e.ref), "SPC/SPC1 set " + std::to_string(e.sid) + ", GRID " +
+      throw InputError(where(model, e.ref), "SPC/SPC1 set " + std::to_string(e.sid) + ", GRID " +
                                                             std::to_string(e.grid) +
                                                             ": expected components (digits 1-6)");
     for (int c = 1; c <= 6; ++c)

@@ -2,6 +2,7 @@
 #include "seflex/fem/loads.hpp"
 
 #include "model_lookup.hpp"
+#include "seflex/fem/finalize.hpp"
 #include "seflex/common/error.hpp"
 
 namespace seflex::fem {
@@ -33,7 +34,7 @@ Eigen::VectorXd load_vector(const Model& model, const DofMap& dofs, int sid) {
     if (lc.sid != sid) continue;
     for (const auto& [si, li] : lc.terms)
       if (!add_point_loads(model, dofs, li, lc.s * si, p))
-        throw InputError(detail::source_of(model, lc.ref), "LOAD " + std::to_string(lc.sid) + ": references load set " +
+        throw InputError(where(model, lc.ref), "LOAD " + std::to_string(lc.sid) + ": references load set " +
                                                                std::to_string(li) +
                                                                ", but no FORCE or MOMENT card has that SID");
     return p;

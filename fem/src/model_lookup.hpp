@@ -1,10 +1,6 @@
 #pragma once
 // Internal helpers of the fem library: look up the cards an element references, with InputError
 // messages that name the file:line, card, id and field. Not a public header.
-//
-// The coordinate-system and PARAM helpers here stand in for the public ones declared in
-// finalize.hpp until those are implemented; they read only what fem::finalize resolves
-// (CoordSys::origin/axes/type, Grid::x_basic).
 #include <Eigen/Core>
 #include <string>
 
@@ -13,9 +9,6 @@
 #include "seflex/fem/model.hpp"
 
 namespace seflex::fem::detail {
-
-/// Source location of a card ("deck.bdf:57").
-SourceRef source_of(const Model& model, const CardRef& ref);
 
 /// Throw InputError "<file:line>: <card> <id>, field <field>: <what>".
 [[noreturn]] void fail(const Model& model, const CardRef& ref, const std::string& card, int id,
@@ -29,13 +22,10 @@ std::uint32_t grid_index(const Model& model, int grid_id, const CardRef& ref, co
 IsotropicMaterial material(const Model& model, int mid, const CardRef& ref, const std::string& card, int id,
                            const std::string& field);
 
-/// Axes (columns, in basic) of coordinate system `cid` at basic point x; cid = 0 gives identity.
-/// Throws InputError naming the referring card if cid is not defined.
+/// fem::displacement_axes of system `cid` at basic point x, throwing InputError naming the referring
+/// card if cid is not defined (finalize checks this for read decks; models built in code may not).
 Eigen::Matrix3d axes_at(const Model& model, int cid, const Eigen::Vector3d& x_basic, const CardRef& ref,
                         const std::string& card, int id, const std::string& field);
-
-/// First value of PARAM `name` as a number, or `fallback` if absent; throws InputError if not a number.
-double param_number(const Model& model, const std::string& name, double fallback);
 
 }  // namespace seflex::fem::detail
 

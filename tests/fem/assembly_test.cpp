@@ -92,19 +92,15 @@ TEST(Assembly, WtmassScalesEveryMass) {
 TEST(Assembly, RotatesGridBlocksToDisplacementSystem) {
   Model m = frame_model();
   const GlobalMatrices gb = assemble(m, AssemblyOptions{});
-  CoordSys cs;
-  cs.id = 4;
-  cs.resolved = true;
-  cs.origin = {5, 6, 7};
-  cs.axes = so3::exp(Eigen::Vector3d(0.3, -0.5, 0.8));
-  m.coords.push_back(cs);
+  const Eigen::Matrix3d R4 = so3::exp(Eigen::Vector3d(0.3, -0.5, 0.8));
+  test::add_rect_coord(m, 4, {5, 6, 7}, R4);
   m.grids[1].cd = 4;
   m.bars[1].offt = "BGG";  // keep bar 2's orientation vector in basic (it is in GA's CD by default)
   test::finalize_for_test(m);
   const GlobalMatrices gc = assemble(m, AssemblyOptions{});
   Eigen::MatrixXd T = Eigen::MatrixXd::Identity(18, 18);
-  T.block<3, 3>(6, 6) = cs.axes;
-  T.block<3, 3>(9, 9) = cs.axes;
+  T.block<3, 3>(6, 6) = R4;
+  T.block<3, 3>(9, 9) = R4;
   EXPECT_LE((test::dense(gc.K) - T.transpose() * test::dense(gb.K) * T).norm(), 1e-12 * test::dense(gb.K).norm());
   EXPECT_LE((test::dense(gc.M) - T.transpose() * test::dense(gb.M) * T).norm(), 1e-12 * test::dense(gb.M).norm());
 }
@@ -163,14 +159,9 @@ TEST(Assembly, ScalarSpringsBetweenComponentsAndToGround) {
 // p_cd = A_cd^T A_cid (F N); MOMENT likewise on R1-R3; LOAD combines with scale factors.
 TEST(Loads, ForceAndMomentRotatedAndCombined) {
   Model m = frame_model();
-  CoordSys a, b;
-  a.id = 2;
-  a.resolved = true;
-  a.axes = so3::exp(Eigen::Vector3d(0.1, 0.2, 0.3));
-  b.id = 3;
-  b.resolved = true;
-  b.axes = so3::exp(Eigen::Vector3d(-0.4, 0.0, 0.9));
-  m.coords = {a, b};
+  const Eigen::Matrix3d Ra = so3::exp(Eigen::Vector3d(0.1, 0.2, 0.3)), Rb = so3::exp(Eigen::Vector3d(-0.4, 0.0, 0.9));
+  test::add_rect_coord(m, 2, {1, 1, 1}, Ra);
+  test::add_rect_coord(m, 3, {0, -2, 0}, Rb);
   m.grids[2].cd = 3;
   PointLoad f;
   f.sid = 11;
@@ -192,8 +183,8 @@ TEST(Loads, ForceAndMomentRotatedAndCombined) {
   test::finalize_for_test(m);
   const DofMap dofs = make_dof_map(m);
   const Eigen::VectorXd p = load_vector(m, dofs, 11);
-  const Eigen::Vector3d fcd = b.axes.transpose() * a.axes * Eigen::Vector3d(10, 20, -10);
-  const Eigen::Vector3d mcd = b.axes.transpose() * Eigen::Vector3d(0, 0, 3);
+  const Eigen::Vector3d fcd = Rb.transpose() * Ra * Eigen::Vector3d(10, 20, -10);
+  const Eigen::Vector3d mcd = Rb.transpose() * Eigen::Vector3d(0, 0, 3);
   EXPECT_LE((p.segment<3>(12) - fcd).norm(), 1e-13);
   EXPECT_LE((p.segment<3>(15) - mcd).norm(), 1e-13);
   EXPECT_EQ(p.head<12>().norm(), 0.0);

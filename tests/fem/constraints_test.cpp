@@ -70,11 +70,8 @@ TEST(Constraints, Rbe2ChainIsRigid) {
   Model m = cantilever(2, 1.0);
   test::add_grid(m, 50, 1.2, 0.3, 0.1);
   test::add_grid(m, 60, 1.5, -0.2, 0.4, 7);
-  CoordSys cs;
-  cs.id = 7;
-  cs.resolved = true;
-  cs.axes = so3::exp(Eigen::Vector3d(0.2, 0.7, -0.3));
-  m.coords.push_back(cs);
+  const Eigen::Matrix3d R7 = so3::exp(Eigen::Vector3d(0.2, 0.7, -0.3));
+  test::add_rect_coord(m, 7, {0.5, 0.5, 0.5}, R7);
   Rbe2 r1, r2;
   r1.id = 1;
   r1.gn = 3;
@@ -98,7 +95,7 @@ TEST(Constraints, Rbe2ChainIsRigid) {
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(c.K_ff);
   const Eigen::VectorXd u = expand(c, ldlt.solve(pf));
   const Eigen::Vector3d u3 = u.segment<3>(12), th3 = u.segment<3>(15);
-  const Eigen::Vector3d u60 = cs.axes * u.segment<3>(24), th60 = cs.axes * u.segment<3>(27);
+  const Eigen::Vector3d u60 = R7 * u.segment<3>(24), th60 = R7 * u.segment<3>(27);
   const Eigen::Vector3d d = Eigen::Vector3d(1.5, -0.2, 0.4) - Eigen::Vector3d(1.0, 0, 0);
   EXPECT_LE((u60 - (u3 + th3.cross(d))).norm(), 1e-12 * u3.norm());
   EXPECT_LE((th60 - th3).norm(), 1e-12 * th3.norm());

@@ -12,35 +12,29 @@
 #include <string>
 #include <vector>
 
+#include "seflex/fem/finalize.hpp"
 #include "seflex/fem/model.hpp"
 
 namespace seflex::fem::test {
 
-/// Fill the lookups that fem::finalize builds, for models written in code with CP = 0 grids and
-/// coordinate systems given with resolved origin/axes. Applies GRDSET PS to grids without PS.
+/// Finalize a model written in code: GRDSET PS applied to grids without PS (the reader's job for
+/// decks), then fem::finalize (lookups, coordinate systems, reference checks).
 inline void finalize_for_test(Model& m) {
   if (m.files.empty()) m.files.push_back("test.bdf");
-  m.grid_index.clear();
-  m.coord_index.clear();
-  m.mat1_index.clear();
-  m.bar_prop_index.clear();
-  m.rod_prop_index.clear();
-  m.shell_prop_index.clear();
-  m.spring_prop_index.clear();
-  m.spoint_index.clear();
-  for (std::uint32_t i = 0; i < m.grids.size(); ++i) {
-    m.grid_index[m.grids[i].id] = i;
-    m.grids[i].x_basic = m.grids[i].x;
-    if (m.grids[i].ps == 0 && m.grdset.present) m.grids[i].ps = m.grdset.ps;
-  }
-  for (std::uint32_t i = 0; i < m.coords.size(); ++i) m.coord_index[m.coords[i].id] = i;
-  for (std::uint32_t i = 0; i < m.mat1.size(); ++i) m.mat1_index[m.mat1[i].id] = i;
-  for (std::uint32_t i = 0; i < m.bar_props.size(); ++i) m.bar_prop_index[m.bar_props[i].id] = i;
-  for (std::uint32_t i = 0; i < m.rod_props.size(); ++i) m.rod_prop_index[m.rod_props[i].id] = i;
-  for (std::uint32_t i = 0; i < m.shell_props.size(); ++i) m.shell_prop_index[m.shell_props[i].id] = i;
-  for (std::uint32_t i = 0; i < m.spring_props.size(); ++i) m.spring_prop_index[m.spring_props[i].id] = i;
-  for (std::uint32_t i = 0; i < m.spoints.size(); ++i) m.spoint_index[m.spoints[i].id] = i;
-  m.finalized = true;
+  for (Grid& g : m.grids)
+    if (g.ps == 0 && m.grdset.present) g.ps = m.grdset.ps;
+  finalize(m);
+}
+
+/// CORD2R `id` with the given origin and axes (columns, in basic).
+inline CoordSys& add_rect_coord(Model& m, int id, const Eigen::Vector3d& origin, const Eigen::Matrix3d& axes) {
+  CoordSys c;
+  c.id = id;
+  c.type = CoordType::Rectangular;
+  const Eigen::Vector3d a = origin, b = origin + axes.col(2), cc = origin + axes.col(0);
+  c.abc = {a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), cc.x(), cc.y(), cc.z()};
+  m.coords.push_back(c);
+  return m.coords.back();
 }
 
 inline Grid& add_grid(Model& m, int id, double x, double y, double z, int cd = 0, ComponentMask ps = 0) {
