@@ -3,6 +3,7 @@
 // then CHOLMOD's weighted postordering; supernodal L L^T with BLAS-3 (OpenBLAS) for factorisation and multi-column solves.
 #include <cholmod.h>
 
+#include <cmath>
 #include <cstring>
 #include <vector>
 
@@ -64,6 +65,7 @@ class CholmodFactorization final : public SparseFactorization {
                                    std::to_string(column) + ")");
     }
     check_status("cholmod_l_factorize");
+    check_pivots();
     factorized_ = true;
   }
 
@@ -114,6 +116,38 @@ class CholmodFactorization final : public SparseFactorization {
       rowind_ = std::move(i);
     }
     return same;
+  }
+
+  /// A pivot L_jj^2 that is round-off relative to the diagonal A_jj it came from means A is
+  /// singular to working precision (e.g. an unsupported model in statics): the factorisation
+  /// "succeeded" by luck of signs and its solutions would be garbage.
+  void check_pivots() {
+    const auto n = static_cast<SuiteSparse_long>(factor_->n);
+    const auto* perm = static_cast<const SuiteSparse_long*>(factor_->Perm);
+    const auto* super = static_cast<const SuiteSparse_long*>(factor_->super);
+    const auto* pi = static_cast<const SuiteSparse_long*>(factor_->pi);
+    const auto* px = static_cast<const SuiteSparse_long*>(factor_->px);
+    const auto* x = static_cast<const double*>(factor_->x);
+    for (SuiteSparse_long s = 0; s < static_cast<SuiteSparse_long>(factor_->nsuper); ++s) {
+      const SuiteSparse_long k1 = super[s], k2 = super[s + 1], nrows = pi[s + 1] - pi[s];
+      for (SuiteSparse_long k = k1; k < k2; ++k) {
+        const double l = x[px[s] + (k - k1) * nrows + (k - k1)];
+        const SuiteSparse_long column = perm != nullptr ? perm[k] : k;
+        const double a = diagonal(column);
+        if (!(l * l > kPivotTolerance * std::abs(a)))
+          throw FactorizationError(FactorizationError::Kind::Singular, column,
+                                   "Cholesky factorisation: matrix is singular to working precision (pivot " +
+                                       std::to_string(l * l) + " of diagonal " + std::to_string(a) + " at column " +
+                                       std::to_string(column) + ")");
+      }
+    }
+    (void)n;
+  }
+
+  /// A_jj from the stored lower triangle (the first entry of column j when present).
+  double diagonal(SuiteSparse_long j) const {
+    const auto k = static_cast<size_t>(colptr_[static_cast<size_t>(j)]);
+    return k < rowind_.size() && k < static_cast<size_t>(colptr_[static_cast<size_t>(j) + 1]) && rowind_[k] == j ? values_[k] : 0.0;
   }
 
   cholmod_sparse view() {

@@ -54,12 +54,11 @@ class LdltFactorization final : public SparseFactorization {
     const Eigen::VectorXd& D = ldlt_.vectorD();
     const auto& pinv = ldlt_.permutationPinv().indices();
     Eigen::VectorXd diag = A.diagonal().cwiseAbs();
-    const double eps = std::numeric_limits<double>::epsilon();
     negative_ = 0;
     for (Eigen::Index k = 0; k < D.size(); ++k) {
       const Eigen::Index column = pinv(k);
       const double scale = diag(column) > 0 ? diag(column) : 1.0;
-      if (!(std::abs(D(k)) > 1e3 * eps * scale)) throw singular(column);
+      if (!(std::abs(D(k)) > kPivotTolerance * scale)) throw singular(column);
       if (D(k) < 0) ++negative_;
     }
     if (ldlt_.info() != Eigen::Success) throw singular(-1);

@@ -109,6 +109,16 @@ TEST(Factorization, NamesTheColumnOfASingularMatrix) {
   }
 }
 
+// The stiffness of a free-floating chain is positive semi-definite with the rigid translation in its
+// null space: whatever the sign of round-off in the last pivot, both backends refuse it.
+TEST(Factorization, RefusesASingularSemidefiniteStiffness) {
+  const Pencil p = test::spring_chain(200, 4.0e5, 1.0, false);
+  for (auto backend : {FactorizationBackend::Cholmod, FactorizationBackend::EigenLdlt}) {
+    auto f = make_factorization(backend);
+    EXPECT_THROW(f->factorize(p.K), FactorizationError) << to_string(backend);
+  }
+}
+
 TEST(Factorization, ParsesBackendNames) {
   EXPECT_EQ(parse_factorization_backend("cholmod"), FactorizationBackend::Cholmod);
   EXPECT_EQ(parse_factorization_backend("ldlt"), FactorizationBackend::EigenLdlt);

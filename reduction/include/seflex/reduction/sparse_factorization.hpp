@@ -12,9 +12,11 @@
 //   sparsity pattern of the previous call, so refactorising K - sigma M for a new sigma is cheap.
 // - solve() solves A X = B in place for a block of right-hand sides (n x k, any k >= 0); blocks are
 //   solved together (BLAS-3 in the supernodal backend), so pass many columns at once.
-// - A non-positive pivot in a Cholesky backend, or a zero pivot in LDL^T, throws FactorizationError
-//   naming the column of A (original numbering) where elimination broke down; a caller that knows
-//   what the columns mean (a DofMap) turns it into an InputError naming the grid and component.
+// - A non-positive pivot in a Cholesky backend, or a pivot that is round-off relative to the
+//   diagonal it came from (|d_j| <= kPivotTolerance |A_jj|: A singular to working precision) in
+//   either backend, throws FactorizationError naming the column of A (original numbering) where
+//   elimination broke down; a caller that knows what the columns mean (a DofMap) turns it into an
+//   InputError naming the grid and component.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <cstdint>
@@ -37,6 +39,9 @@ std::string_view to_string(FactorizationBackend backend);
 std::optional<FactorizationBackend> parse_factorization_backend(std::string_view name);
 /// The backend chosen by measurement on the 10k/100k/1M-dof plates (docs/benchmarks.md): Cholmod.
 constexpr FactorizationBackend kDefaultFactorization = FactorizationBackend::Cholmod;
+
+/// Pivots smaller than this fraction of their original diagonal are treated as zero (singular A).
+constexpr double kPivotTolerance = 1e3 * 2.220446049250313e-16;
 
 /// Elimination broke down: a non-positive pivot (Cholesky) or a zero pivot (LDL^T) at `column`.
 class FactorizationError : public InvariantError {

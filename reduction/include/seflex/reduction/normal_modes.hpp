@@ -1,0 +1,56 @@
+#pragma once
+// Normal modes (Nastran SOL 103): K_ff phi = lambda M_ff phi on the free set, with the SPCs and
+// the EIGRL/EIGR the case control selects (METHOD), recovered to the g-set and normalised.
+//
+// EIGRL/EIGR fields honoured: ND (number of roots; `count` overrides it), F1/F2 (frequency range
+// in Hz, lambda = (2 pi f)^2), NORM = MASS (phi^T M phi = 1, the default), MAX (largest f-set
+// component = +1) or POINT (component C of grid G = +1; MAX if that component is ~0). Mass-normalised
+// modes are signed so that their largest f-set component is positive.
+//
+// Generalised mass and stiffness are phi^T M phi and phi^T K phi of the normalised modes, as
+// Nastran's REAL EIGENVALUES table prints them.
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "seflex/fem/dof_map.hpp"
+#include "seflex/fem/model.hpp"
+#include "seflex/reduction/case_selection.hpp"
+#include "seflex/reduction/eigensolver.hpp"
+
+namespace seflex::reduction {
+
+struct ModesOptions {
+  std::optional<int> subcase;                 ///< default: the first subcase, else the global selections
+  std::optional<int> count;                   ///< overrides ND (and lifts the need for a METHOD)
+  EigenBackend backend = EigenBackend::Spectra;
+  FactorizationBackend factorization = kDefaultFactorization;
+  std::vector<Eigen::Index> fixed_dofs;       ///< extra g-set dofs held at zero (fixed-interface modes)
+  bool check_completeness = true;
+};
+
+enum class ModeNormalization : unsigned char { Mass, Max, Point };
+
+struct NormalModes {
+  CaseSelection selection;
+  fem::DofMap dofs;
+  Eigen::Index n_free = 0;
+  ModeNormalization normalization = ModeNormalization::Mass;
+  Eigen::VectorXd eigenvalues;           ///< m, ascending, (rad/s)^2 (in the deck's units)
+  Eigen::MatrixXd shapes_g;              ///< g-set x m, each grid's CD system, normalised as above
+  Eigen::VectorXd generalized_mass;      ///< phi^T M phi
+  Eigen::VectorXd generalized_stiffness; ///< phi^T K phi
+  EigenStats stats;
+
+  Eigen::VectorXd radians() const;       ///< sqrt(|lambda|)
+  Eigen::VectorXd cycles() const;        ///< sqrt(|lambda|) / (2 pi), Hz
+};
+
+/// Normal modes of a finalized model. Throws InputError for a missing or undefined METHOD (unless
+/// `count` is given), an EIGRL that bounds nothing (no ND, no F2), undefined sets, and for a dof
+/// with neither stiffness nor mass (named by grid and component); ConvergenceError if the
+/// eigensolver does not converge.
+NormalModes solve_normal_modes(const fem::Model& model, const ModesOptions& options = {});
+
+}  // namespace seflex::reduction
