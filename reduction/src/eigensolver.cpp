@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "matrix_norms.hpp"
 #include "shift_invert.hpp"
 
 namespace seflex::reduction {
@@ -41,7 +42,8 @@ constexpr int kProbeIterations = 3;
 constexpr double kZeroModeGap = 1e-7;          // probe eigenvalues this far below the probe's top are "zero"
 constexpr double kShiftFraction = 1e-3;        // calibrated sigma = -kShiftFraction * lowest nonzero eigenvalue
 constexpr int kCheckModes = 3;                 // modes sought by each completeness check
-constexpr int kRangeBatch = 20;                // modes per run when only a frequency range bounds the count
+constexpr int kRangeBatch = 20;
+constexpr Eigen::Index kDenseLimit = 1000;       // largest model solved densely without being asked                // modes per run when only a frequency range bounds the count
 
 /// sigma below the spectrum, scaled by the typical stiffness-to-mass ratio of the model.
 double default_shift(const SparseMatrixd& K, const SparseMatrixd& M) {
@@ -71,18 +73,6 @@ Eigen::Index mass_rank_bound(const SparseMatrixd& M) {
     for (SparseMatrixd::InnerIterator it(M, j); it; ++it)
       if (it.row() >= j && it.value() != 0) nonzero[static_cast<std::size_t>(j)] = nonzero[static_cast<std::size_t>(it.row())] = 1;
   return std::count(nonzero.begin(), nonzero.end(), 1);
-}
-
-/// ||A||_1 of the symmetric matrix whose lower triangle is stored.
-double norm1_symmetric(const SparseMatrixd& A) {
-  Eigen::VectorXd colsum = Eigen::VectorXd::Zero(A.cols());
-  for (Eigen::Index j = 0; j < A.outerSize(); ++j)
-    for (SparseMatrixd::InnerIterator it(A, j); it; ++it) {
-      if (it.row() < j) continue;
-      colsum(j) += std::abs(it.value());
-      if (it.row() != j) colsum(it.row()) += std::abs(it.value());
-    }
-  return colsum.size() ? colsum.maxCoeff() : 0.0;
 }
 
 /// Factorise K - sigma M, moving sigma down if the matrix is not positive definite numerically.
@@ -245,9 +235,11 @@ EigenSolution solve_eigenproblem(const SparseMatrixd& K, const SparseMatrixd& M,
   stats.shift = sigma;
   auto factor = make_factorization(options.factorization);
   factorize_shifted(*factor, K, M, sigma, !options.shift, stats);
+  // Dense when asked, when small, or when (nearly) all finite eigenpairs are wanted of a model
+  // small enough for O(n^3): a Krylov space needs room beyond the wanted pairs.
   const bool dense = options.backend == EigenBackend::Dense || n <= options.dense_below ||
-                     (wanted + 1 >= finite && n <= 4000);
-  if (!dense && !options.shift) {
+                     (options.count && wanted + 1 >= finite && n <= kDenseLimit);
+  if (!options.shift) {
     if (const auto better = calibrated_shift(*factor, K, M, finite, 4242u, stats); better && *better < sigma) {
       sigma = *better;
       factorize_shifted(*factor, K, M, sigma, true, stats);

@@ -5,6 +5,7 @@
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/constraints.hpp"
 #include "seflex/fem/loads.hpp"
+#include "matrix_norms.hpp"
 #include "solution_errors.hpp"
 
 namespace seflex::reduction {
@@ -35,7 +36,8 @@ StaticSolution solve_static(const fem::Model& model, const StaticOptions& option
     }
     const Eigen::VectorXd p_f = u_f;
     factor->solve_in_place(u_f);
-    s.relative_residual = p_norm > 0 ? (c.K_ff * u_f - p_f).norm() / p_norm : 0.0;
+    const double scale = norm1_symmetric(c.K_ff) * u_f.norm() + p_norm;
+    s.backward_error = scale > 0 ? (c.K_ff * u_f - p_f).norm() / scale : 0.0;
   }
   s.u_g = fem::expand(c, u_f);
   // Forces of single-point constraint: K u - p on the constrained dofs.

@@ -28,7 +28,7 @@ struct StaticSolution {
   Eigen::VectorXd p_g;  ///< applied loads (g-set)
   Eigen::VectorXd q_g;  ///< forces of single-point constraint (zero on unconstrained dofs)
   Eigen::Index n_free = 0;
-  double relative_residual = 0;  ///< ||K_ff u_f - p_f|| / ||p_f|| (0 if p_f = 0)
+  double backward_error = 0;  ///< ||K_ff u_f - p_f|| / (||K_ff||_1 ||u_f|| + ||p_f||): ~1e-16 for a stable solve
 };
 
 /// Solve the statics of a finalized model. Throws InputError when the case control selects no
