@@ -31,7 +31,8 @@ class Args {
   /// Next positional argument; throws UsageError naming `what` if absent.
   std::string positional(const std::string& what);
   std::optional<std::string> optional_positional();
-  /// --name VALUE (also --name=VALUE); nullopt if absent.
+  /// --name VALUE (also --name=VALUE); a name starting with '-' ("-o") is matched as given.
+  /// nullopt if absent. Query options before positional arguments.
   std::optional<std::string> value(const std::string& name);
   std::string value_or(const std::string& name, const std::string& fallback);
   double number(const std::string& name, double fallback);

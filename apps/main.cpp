@@ -41,7 +41,7 @@ std::string Args::positional(const std::string& what) {
 }
 
 std::optional<std::string> Args::value(const std::string& name) {
-  const std::string key = "--" + name;
+  const std::string key = name.rfind('-', 0) == 0 ? name : "--" + name;  // "-o" is a short option as given
   for (std::size_t i = 0; i < argv_.size(); ++i) {
     if (used_[i]) continue;
     if (argv_[i] == key) {

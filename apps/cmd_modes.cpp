@@ -1,0 +1,104 @@
+// seflex modes DECK: normal modes of a Nastran deck (SOL 103), printed like Nastran's REAL
+// EIGENVALUES table; optionally the eigenvalues as CSV and the mode shapes as a ParaView .vtu.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <string>
+
+#include "command.hpp"
+#include "seflex/io/nastran.hpp"
+#include "seflex/io/results_csv.hpp"
+#include "seflex/io/vtk_modes.hpp"
+#include "seflex/reduction/normal_modes.hpp"
+
+namespace {
+
+using seflex::reduction::EigenBackend;
+using seflex::reduction::FactorizationBackend;
+
+const char* normalization_name(seflex::reduction::ModeNormalization n) {
+  switch (n) {
+    case seflex::reduction::ModeNormalization::Mass: return "MASS";
+    case seflex::reduction::ModeNormalization::Max: return "MAX";
+    case seflex::reduction::ModeNormalization::Point: return "POINT";
+  }
+  return "?";
+}
+
+void print_table(const seflex::reduction::NormalModes& r) {
+  const Eigen::VectorXd rad = r.radians(), hz = r.cycles();
+  std::printf("\n%58s\n", "R E A L   E I G E N V A L U E S");
+  std::printf("   MODE   EXTRACTION    EIGENVALUE       RADIANS        CYCLES      GENERALIZED    GENERALIZED\n");
+  std::printf("    NO.      ORDER                                                    MASS         STIFFNESS\n");
+  for (Eigen::Index k = 0; k < r.eigenvalues.size(); ++k)
+    std::printf("%7d %9d   %13.6E %13.6E %13.6E %14.6E %14.6E\n", static_cast<int>(k + 1), static_cast<int>(k + 1),
+                r.eigenvalues(k), rad(k), hz(k), r.generalized_mass(k), r.generalized_stiffness(k));
+}
+
+int run_modes(seflex::app::Args& args) {
+  using seflex::app::UsageError;
+  seflex::reduction::ModesOptions o;
+  constexpr int kAbsent = std::numeric_limits<int>::min();
+  if (const int count = args.integer("count", kAbsent); count != kAbsent) {
+    if (count < 1) throw UsageError("option --count must be at least 1");
+    o.count = count;
+  }
+  const std::string solver = args.value_or("eigensolver", "spectra");
+  const auto backend = seflex::reduction::parse_eigen_backend(solver);
+  if (!backend) throw UsageError("option --eigensolver expects spectra, arpack or dense, got '" + solver + "'");
+  o.backend = *backend;
+  const std::string fact = args.value_or("factorization", std::string(seflex::reduction::to_string(o.factorization)));
+  const auto factorization = seflex::reduction::parse_factorization_backend(fact);
+  if (!factorization) throw UsageError("option --factorization expects cholmod or ldlt, got '" + fact + "'");
+  o.factorization = *factorization;
+  if (const int subcase = args.integer("subcase", kAbsent); subcase != kAbsent) o.subcase = subcase;
+  const auto csv = args.value("csv");
+  const auto vtk = args.value("vtk");
+  const bool force = args.flag("force");
+  const std::string deck = args.positional("DECK");
+  args.finish();
+  if (vtk && std::filesystem::path(*vtk).extension() != ".vtu") throw UsageError("--vtk expects a file name ending in .vtu");
+  if (csv) seflex::io::check_writable(*csv, force);  // before the work, not after it
+  if (vtk) seflex::io::check_writable(*vtk, force);
+
+  const auto t0 = std::chrono::steady_clock::now();
+  const seflex::fem::Model model = seflex::io::read_nastran(deck);
+  const auto t1 = std::chrono::steady_clock::now();
+  const seflex::reduction::NormalModes r = seflex::reduction::solve_normal_modes(model, o);
+  const auto t2 = std::chrono::steady_clock::now();
+  const auto seconds = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };
+
+  std::printf("normal modes of %s", deck.c_str());
+  if (r.selection.subcase_id) std::printf(", subcase %d", r.selection.subcase_id);
+  if (r.selection.method) std::printf(", METHOD %d", *r.selection.method);
+  if (r.selection.spc) std::printf(", SPC %d", *r.selection.spc);
+  std::printf("\n  %zu grids, %ld free dofs, %ld modes, normalisation %s\n", model.grids.size(), static_cast<long>(r.n_free),
+              static_cast<long>(r.eigenvalues.size()), normalization_name(r.normalization));
+  std::printf("  eigensolver %s on %s, shift %.6E, %ld solves, %d Lanczos runs%s\n",
+              std::string(to_string(r.stats.backend_used)).c_str(), std::string(to_string(o.factorization)).c_str(),
+              r.stats.shift, r.stats.operator_applications, r.stats.lanczos_runs,
+              r.stats.missed_modes_recovered ? (", " + std::to_string(r.stats.missed_modes_recovered) + " recovered by the completeness check").c_str() : "");
+  std::printf("  time: read %.2f s, solve %.2f s\n", seconds(t0, t1), seconds(t1, t2));
+  print_table(r);
+  std::fflush(stdout);
+
+  if (csv) {
+    Eigen::MatrixXd rows(r.eigenvalues.size(), 3);
+    for (Eigen::Index k = 0; k < rows.rows(); ++k) rows.row(k) << static_cast<double>(k + 1), r.eigenvalues(k), r.cycles()(k);
+    seflex::io::write_csv(*csv, {"mode", "eigenvalue", "frequency_hz"}, rows, force);
+    std::printf("\nwrote %s\n", csv->c_str());
+  }
+  if (vtk) {
+    seflex::io::write_mode_shapes_vtu(*vtk, model, r, force);
+    std::printf("wrote %s\n", vtk->c_str());
+  }
+  return seflex::app::kOk;
+}
+
+}  // namespace
+
+SEFLEX_COMMAND(modes, "DECK [--count N] [--csv FILE] [--vtk FILE.vtu] [--eigensolver spectra|arpack|dense] "
+                      "[--factorization cholmod|ldlt] [--subcase ID] [--force]",
+               "normal modes (SOL 103): Nastran-style eigenvalue table, CSV of frequencies, mode shapes for ParaView",
+               run_modes);
