@@ -113,8 +113,9 @@ NormalModes solve_normal_modes(const fem::Model& model, const ModesOptions& opti
     s = solve_eigenproblem(c.K_ff, c.M_ff, eo);
   } catch (const FactorizationError& e) {
     throw_singular_dof(model, g, c, e, "normal modes: K - sigma M is singular",
-                       "this dof has neither stiffness nor mass after the constraints (a mechanism); constrain it "
-                       "(SPC/SPC1, GRID PS) or connect it to the structure");
+                       "a motion of this dof has neither stiffness nor mass after the constraints (a massless "
+                       "mechanism or rigid-body motion, e.g. a free beam's rotation about its axis with lumped mass); "
+                       "constrain it (SPC/SPC1, GRID PS), give it mass (CONM2, PARAM COUPMASS) or connect it");
   }
   r.stats = s.stats;
   r.eigenvalues = s.eigenvalues;

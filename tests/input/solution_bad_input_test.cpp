@@ -1,0 +1,65 @@
+// Bad input to seflex static and seflex modes: exit status 3 and one "error:" line that names the
+// deck (or card) and says what is expected; never a crash. Also run under ASan + UBSan in CI.
+#include <gtest/gtest.h>
+
+#include "test_support.hpp"
+
+namespace seflex {
+namespace {
+
+const char* kBar =
+    "MAT1,1,7.e10,,0.3,2700.\nPBAR,1,1,1.e-4,2.e-8,2.e-8,4.e-8\n"
+    "GRID,1,,0.,0.,0.\nGRID,2,,1.,0.,0.\nGRID,3,,2.,0.,0.\n"
+    "CBAR,1,1,1,2,0.,1.,0.\nCBAR,2,1,2,3,0.,1.,0.\nSPC1,1,123456,1\nFORCE,7,3,0,1.,0.,0.,1.\n"
+    "EIGRL,1,,,2\nEIGRL,2\nENDDATA\n";
+
+test::RunResult run(const std::string& command, const std::string& case_control) {
+  test::TempDir dir;
+  const auto deck = dir.write("bad.bdf", "CEND\n" + case_control + "BEGIN BULK\n" + kBar);
+  return test::run_seflex(command + " bad.bdf", dir.path());
+}
+
+void expect_input_error(const test::RunResult& r, std::initializer_list<const char*> parts) {
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << r.err;
+  for (const char* p : parts) EXPECT_NE(r.err.find(p), std::string::npos) << "missing '" << p << "' in: " << r.err;
+}
+
+TEST(SolutionBadInput, ModesWithoutMethod) {
+  expect_input_error(run("modes", "SPC = 1\n"), {"bad.bdf", "METHOD", "--count"});
+}
+
+TEST(SolutionBadInput, ModesWithUndefinedMethod) {
+  expect_input_error(run("modes", "SPC = 1\nMETHOD = 9\n"), {"bad.bdf", "METHOD = 9", "EIGRL"});
+}
+
+TEST(SolutionBadInput, ModesWithAnUnboundedEigrl) {
+  expect_input_error(run("modes", "SPC = 1\nMETHOD = 2\n"), {"bad.bdf:", "EIGRL 2", "ND"});
+}
+
+TEST(SolutionBadInput, ModesWithAnUndefinedSubcase) {
+  expect_input_error(run("modes --subcase 4", "SPC = 1\nMETHOD = 1\n"), {"bad.bdf", "SUBCASE 4"});
+}
+
+TEST(SolutionBadInput, StaticWithoutLoad) {
+  expect_input_error(run("static", "SPC = 1\n"), {"bad.bdf", "LOAD"});
+}
+
+TEST(SolutionBadInput, StaticOfAnUnsupportedModel) {
+  expect_input_error(run("static", "LOAD = 7\n"), {"bad.bdf", "singular at grid", "SPC"});
+}
+
+TEST(SolutionBadInput, StaticWithAnUndefinedLoadSet) {
+  expect_input_error(run("static", "SPC = 1\nLOAD = 8\n"), {"bad.bdf", "8"});
+}
+
+TEST(SolutionBadInput, MissingDeckAndBadOptions) {
+  test::TempDir dir;
+  EXPECT_EQ(test::run_seflex("modes missing.bdf", dir.path()).exit_code, 3);
+  EXPECT_EQ(test::run_seflex("static", dir.path()).exit_code, 2);
+  EXPECT_EQ(test::run_seflex("modes x.bdf --count many", dir.path()).exit_code, 2);
+  EXPECT_EQ(test::run_seflex("modes x.bdf --factorization lu", dir.path()).exit_code, 2);
+}
+
+}  // namespace
+}  // namespace seflex

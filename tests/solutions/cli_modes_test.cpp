@@ -1,0 +1,144 @@
+// seflex modes: the eigenvalue table, --csv, --vtk (read back with VTK), --eigensolver, --count.
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "solution_decks.hpp"
+#include "test_support.hpp"
+
+namespace seflex {
+namespace {
+
+std::filesystem::path bar_cc() {
+  return test::validation_dir() / "mystran_cbar_cantilever_and_freefree_modes" / "BAR-CC-GIV.DAT";
+}
+
+/// Rows of a CSV file as numbers (header dropped).
+std::vector<std::vector<double>> csv_rows(const std::filesystem::path& p) {
+  std::istringstream in(test::read_file(p));
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::vector<double> v;
+    std::istringstream fields(line);
+    for (std::string f; std::getline(fields, f, ',');) v.push_back(std::stod(f));
+    rows.push_back(v);
+  }
+  return rows;
+}
+
+// The table reproduces MYSTRAN's REAL EIGENVALUES of BAR-CC-GIV (tests/data/validation), and the
+// CSV holds mode, eigenvalue and frequency.
+TEST(ModesCli, BarCantileverTableAndCsv) {
+  test::TempDir dir;
+  const auto r = test::run_seflex("modes '" + bar_cc().string() + "' --csv f.csv", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("R E A L   E I G E N V A L U E S"), std::string::npos);
+  EXPECT_NE(r.out.find("      1         1    4.509067E+03  6.714959E+01  1.068719E+01   6.800571E-04   3.066423E+00"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("      4         4    3.318753E+06  1.821744E+03  2.899396E+02   1.590132E-03   5.277256E+03"),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(test::read_file(dir / "f.csv").rfind("mode,eigenvalue,frequency_hz\n", 0), 0u);
+  const auto rows = csv_rows(dir / "f.csv");
+  ASSERT_EQ(rows.size(), 4u);
+  const double cycles[4] = {10.68719, 62.81653, 166.3460, 289.9396};
+  for (int j = 0; j < 4; ++j) {
+    EXPECT_EQ(rows[j][0], j + 1);
+    EXPECT_NEAR(rows[j][2] / cycles[j], 1.0, 1e-5);
+    EXPECT_NEAR(std::sqrt(rows[j][1]) / (2 * M_PI), rows[j][2], 1e-12 * rows[j][2]);
+  }
+}
+
+// The .vtu reads back: 5 grids, 4 lines, per-mode displacement and rotation vectors in basic
+// (NORM = MAX: the largest component of each mode is +1; in mode 1 it is the tip's T3), and the
+// frequencies as field data.
+TEST(ModesCli, VtkModeShapesReadBack) {
+  test::TempDir dir;
+  const auto r = test::run_seflex("modes '" + bar_cc().string() + "' --vtk bar.vtu", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName((dir / "bar.vtu").string().c_str());
+  reader->Update();
+  vtkUnstructuredGrid* grid = reader->GetOutput();
+  ASSERT_NE(grid, nullptr);
+  EXPECT_EQ(grid->GetNumberOfPoints(), 5);
+  EXPECT_EQ(grid->GetNumberOfCells(), 4);
+  EXPECT_EQ(grid->GetCellType(0), 3);  // VTK_LINE
+  vtkDataArray* ids = grid->GetPointData()->GetArray("grid_id");
+  ASSERT_NE(ids, nullptr);
+  EXPECT_EQ(ids->GetTuple1(4), 5);
+  for (int k = 1; k <= 4; ++k) {
+    const std::string name = "mode_0" + std::to_string(k);
+    vtkDataArray* u = grid->GetPointData()->GetArray((name + "_displacement").c_str());
+    vtkDataArray* rot = grid->GetPointData()->GetArray((name + "_rotation").c_str());
+    ASSERT_NE(u, nullptr) << name;
+    ASSERT_NE(rot, nullptr) << name;
+    EXPECT_EQ(u->GetNumberOfComponents(), 3);
+    double largest = 0;
+    for (vtkIdType p = 0; p < 5; ++p)
+      for (vtkDataArray* a : {u, rot})
+        for (int c = 0; c < 3; ++c)
+          if (std::abs(a->GetComponent(p, c)) > std::abs(largest)) largest = a->GetComponent(p, c);
+    EXPECT_NEAR(largest, 1.0, 1e-12) << name;
+    EXPECT_EQ(u->GetComponent(0, 2), 0.0) << name;           // grid 1 is clamped
+    EXPECT_EQ(u->GetComponent(2, 0), 0.0) << name;           // GRDSET PS 1246
+  }
+  // mode 1 at grid 5: T3 = 1 and R2 as MYSTRAN prints it
+  EXPECT_NEAR(grid->GetPointData()->GetArray("mode_01_displacement")->GetComponent(4, 2), 1.0, 1e-12);
+  EXPECT_NEAR(grid->GetPointData()->GetArray("mode_01_rotation")->GetComponent(4, 1), -1.398892E-02, 1e-8);
+  vtkDataArray* hz = grid->GetFieldData()->GetArray("frequency_hz");
+  ASSERT_NE(hz, nullptr);
+  ASSERT_EQ(hz->GetNumberOfTuples(), 4);
+  EXPECT_NEAR(hz->GetTuple1(0) / 10.68719, 1.0, 1e-5);
+}
+
+// A free plate large enough for the Krylov backends: Spectra and ARPACK print the same
+// frequencies, six of them rigid-body modes below 1e-4 of the first elastic one; --count overrides ND.
+TEST(ModesCli, SpectraAndArpackAgreeOnAFreePlate) {
+  test::TempDir dir;
+  const auto deck = dir.write("plate.bdf", test::free_plate_deck(24, 16, 12));
+  std::vector<std::vector<std::vector<double>>> results;
+  for (const char* solver : {"spectra", "arpack"}) {
+    const std::string csv = std::string(solver) + ".csv";
+    const auto r = test::run_seflex("modes plate.bdf --count 14 --eigensolver " + std::string(solver) + " --csv " + csv,
+                                    dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("eigensolver " + std::string(solver)), std::string::npos) << r.out;
+    results.push_back(csv_rows(dir / csv));
+    ASSERT_EQ(results.back().size(), 14u);
+    int rigid = 0;
+    for (const auto& row : results.back()) rigid += row[2] < 1e-4 * results.back()[6][2];
+    EXPECT_EQ(rigid, 6) << solver;
+  }
+  for (int j = 6; j < 14; ++j) EXPECT_NEAR(results[0][j][1] / results[1][j][1], 1.0, 1e-10) << "mode " << j + 1;
+  const auto nd = test::run_seflex("modes plate.bdf", dir.path());
+  ASSERT_EQ(nd.exit_code, 0) << nd.err;
+  EXPECT_NE(nd.out.find(", 12 modes,"), std::string::npos) << nd.out;  // EIGRL ND = 12
+}
+
+TEST(ModesCli, RefusesToOverwriteAndChecksOptions) {
+  test::TempDir dir;
+  dir.write("f.csv", "keep\n");
+  const auto r = test::run_seflex("modes '" + bar_cc().string() + "' --csv f.csv", dir.path());
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_NE(r.err.find("f.csv"), std::string::npos) << r.err;
+  EXPECT_EQ(test::read_file(dir / "f.csv"), "keep\n");
+  EXPECT_EQ(test::run_seflex("modes '" + bar_cc().string() + "' --csv f.csv --force", dir.path()).exit_code, 0);
+  EXPECT_EQ(test::run_seflex("modes '" + bar_cc().string() + "' --eigensolver lobpcg", dir.path()).exit_code, 2);
+  EXPECT_EQ(test::run_seflex("modes '" + bar_cc().string() + "' --count 0", dir.path()).exit_code, 2);
+  EXPECT_EQ(test::run_seflex("modes '" + bar_cc().string() + "' --vtk shapes.vtk", dir.path()).exit_code, 2);
+}
+
+}  // namespace
+}  // namespace seflex

@@ -1,0 +1,62 @@
+// Normal modes of the validation decks, read by the Nastran reader and solved by the production
+// path (fem assembly and constraints, reduction's factorisation and eigensolvers).
+// Decks and answers: tests/data/validation (MYSTRAN 12.0 benchmark archive; README there).
+#include <gtest/gtest.h>
+
+#include "seflex/fem/dof_map.hpp"
+#include "seflex/io/nastran.hpp"
+#include "seflex/reduction/normal_modes.hpp"
+#include "test_support.hpp"
+
+namespace seflex {
+namespace {
+
+fem::Model deck(const char* rel) { return io::read_nastran(test::validation_dir() / rel); }
+
+// BAR-CC-GIV.reference.txt: REAL EIGENVALUES (EIGR GIV, ND = 4, NORM = MAX), 1e-5 in frequency.
+TEST(ValidationModes, BarCantileverMatchesMystran) {
+  const auto r = reduction::solve_normal_modes(deck("mystran_cbar_cantilever_and_freefree_modes/BAR-CC-GIV.DAT"));
+  ASSERT_EQ(r.eigenvalues.size(), 4);
+  const double cycles[4] = {1.068719E+01, 6.281653E+01, 1.663460E+02, 2.899396E+02};
+  const double gen_mass[4] = {6.800571E-04, 9.499997E-04, 1.461918E-03, 1.590132E-03};
+  for (int j = 0; j < 4; ++j) {
+    EXPECT_NEAR(r.cycles()(j) / cycles[j], 1.0, 1e-5) << "mode " << j + 1;
+    EXPECT_NEAR(r.generalized_mass(j) / gen_mass[j], 1.0, 2e-6) << "mode " << j + 1;
+  }
+}
+
+// BAR-FF-GIV.reference.txt (ND = 4, NORM = POINT 5/3): two rigid-body modes, then 59.11978 and
+// 150.0817 Hz; the third elastic mode, 271.5359 Hz (README), with --count 5.
+TEST(ValidationModes, BarFreeFreeMatchesMystran) {
+  const fem::Model m = deck("mystran_cbar_cantilever_and_freefree_modes/BAR-FF-GIV.DAT");
+  reduction::ModesOptions o;
+  o.count = 5;
+  const auto r = reduction::solve_normal_modes(m, o);
+  ASSERT_EQ(r.eigenvalues.size(), 5);
+  EXPECT_LT(r.cycles()(1), 1e-4 * r.cycles()(2));
+  const double elastic[3] = {59.11978, 150.0817, 271.5359};
+  for (int j = 0; j < 3; ++j) EXPECT_NEAR(r.cycles()(j + 2) / elastic[j], 1.0, 1e-5) << "mode " << j + 3;
+  EXPECT_NEAR(r.generalized_mass(2) / 9.738369E-04, 1.0, 2e-6);
+}
+
+// CB-EXAMPLE-12: the Craig-Bampton frame's fixed-interface modes, i.e. the normal modes with the
+// SUPORT dofs (the boundary set, README) held fixed: 9.933119 / 13.32647 / 14.70232 Hz, to 1e-6
+// on the eigenvalues 3.895211E+03 / 7.011163E+03 / 8.533585E+03 (7 printed digits: 1e-6 is the
+// precision of the reference itself).
+TEST(ValidationModes, CraigBamptonFrameFixedInterfaceModes) {
+  const fem::Model m = deck("mystran_craig_bampton_cbar_frame/CB-EXAMPLE-12.DAT");
+  const fem::DofMap dofs = fem::make_dof_map(m);
+  reduction::ModesOptions o;
+  for (const fem::DofSetEntry& e : m.suport)
+    for (int c = 1; c <= 6; ++c)
+      if ((e.c >> (c - 1)) & 1u) o.fixed_dofs.push_back(*fem::find_dof(m, dofs, e.grid, c));
+  ASSERT_EQ(o.fixed_dofs.size(), 8u);
+  const auto r = reduction::solve_normal_modes(m, o);
+  ASSERT_EQ(r.eigenvalues.size(), 3);
+  const double lambda[3] = {3.895211E+03, 7.011163E+03, 8.533585E+03};
+  for (int j = 0; j < 3; ++j) EXPECT_NEAR(r.eigenvalues(j) / lambda[j], 1.0, 1e-6) << "mode " << j + 1;
+  EXPECT_LT((r.generalized_mass.array() - 1.0).abs().maxCoeff(), 1e-10);  // EIGRL NORM = MASS
+}
+
+}  // namespace
+}  // namespace seflex
