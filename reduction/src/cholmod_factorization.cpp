@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 #include "backends.hpp"
@@ -128,12 +129,14 @@ class CholmodFactorization final : public SparseFactorization {
     const auto* pi = static_cast<const SuiteSparse_long*>(factor_->pi);
     const auto* px = static_cast<const SuiteSparse_long*>(factor_->px);
     const auto* x = static_cast<const double*>(factor_->x);
+    double min_ratio = std::numeric_limits<double>::infinity();
     for (SuiteSparse_long s = 0; s < static_cast<SuiteSparse_long>(factor_->nsuper); ++s) {
       const SuiteSparse_long k1 = super[s], k2 = super[s + 1], nrows = pi[s + 1] - pi[s];
       for (SuiteSparse_long k = k1; k < k2; ++k) {
         const double l = x[px[s] + (k - k1) * nrows + (k - k1)];
         const SuiteSparse_long column = perm != nullptr ? perm[k] : k;
         const double a = diagonal(column);
+        min_ratio = std::min(min_ratio, l * l / std::abs(a));
         if (!(l * l > kPivotTolerance * std::abs(a)))
           throw FactorizationError(FactorizationError::Kind::Singular, column,
                                    "Cholesky factorisation: matrix is singular to working precision (pivot " +
@@ -141,7 +144,7 @@ class CholmodFactorization final : public SparseFactorization {
                                        std::to_string(column) + ")");
       }
     }
-    (void)n;
+    stats_.min_pivot_ratio = n > 0 ? min_ratio : 1.0;
   }
 
   /// A_jj from the stored lower triangle (the first entry of column j when present).

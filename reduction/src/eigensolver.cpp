@@ -41,6 +41,7 @@ constexpr int kProbeSize = 12;                 // block of the shift-calibration
 constexpr int kProbeIterations = 3;
 constexpr double kZeroModeGap = 1e-7;          // probe eigenvalues this far below the probe's top are "zero"
 constexpr double kShiftFraction = 1e-3;        // calibrated sigma = -kShiftFraction * lowest nonzero eigenvalue
+constexpr double kNearSingularPivot = 1e-8;  // min pivot ratio below which zero modes are suspected
 constexpr int kCheckModes = 3;                 // modes sought by each completeness check
 constexpr int kRangeBatch = 20;
 constexpr Eigen::Index kDenseLimit = 1000;       // largest model solved densely without being asked                // modes per run when only a frequency range bounds the count
@@ -239,7 +240,8 @@ EigenSolution solve_eigenproblem(const SparseMatrixd& K, const SparseMatrixd& M,
   // small enough for O(n^3): a Krylov space needs room beyond the wanted pairs.
   const bool dense = options.backend == EigenBackend::Dense || n <= options.dense_below ||
                      (options.count && wanted + 1 >= finite && n <= kDenseLimit);
-  if (!options.shift) {
+  // Only a nearly singular K - sigma M (tiny pivots: zero-eigenvalue modes) needs the calibration.
+  if (!options.shift && factor->stats().min_pivot_ratio < kNearSingularPivot) {
     if (const auto better = calibrated_shift(*factor, K, M, finite, 4242u, stats); better && *better < sigma) {
       sigma = *better;
       factorize_shifted(*factor, K, M, sigma, true, stats);

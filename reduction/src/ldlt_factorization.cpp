@@ -55,9 +55,11 @@ class LdltFactorization final : public SparseFactorization {
     const auto& pinv = ldlt_.permutationPinv().indices();
     Eigen::VectorXd diag = A.diagonal().cwiseAbs();
     negative_ = 0;
+    stats_.min_pivot_ratio = 1.0;
     for (Eigen::Index k = 0; k < D.size(); ++k) {
       const Eigen::Index column = pinv(k);
       const double scale = diag(column) > 0 ? diag(column) : 1.0;
+      stats_.min_pivot_ratio = std::min(stats_.min_pivot_ratio, std::abs(D(k)) / scale);
       if (!(std::abs(D(k)) > kPivotTolerance * scale)) throw singular(column);
       if (D(k) < 0) ++negative_;
     }

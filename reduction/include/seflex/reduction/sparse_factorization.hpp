@@ -63,6 +63,9 @@ struct FactorizationStats {
   Eigen::Index rows = 0;
   double factor_nonzeros = 0;     ///< entries of L (including the diagonal)
   double flops = 0;               ///< floating-point operations of the numeric factorisation (0 if unknown)
+  /// min_j |pivot_j| / |A_jj|: near kPivotTolerance when A is close to singular (e.g. K + s M of a
+  /// free-free model with a tiny s), O(1e-3..1) for a well-constrained stiffness.
+  double min_pivot_ratio = 0;
   int symbolic_analyses = 0;      ///< how many times the pattern was (re)analysed
   int numeric_factorizations = 0;
 };
