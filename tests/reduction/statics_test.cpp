@@ -23,6 +23,7 @@ fem::Model cantilever(int tip_cd = 0) {
   if (tip_cd != 0) {
     fem::CoordSys cs;
     cs.id = tip_cd;
+    cs.abc = {0, 0, 0, 0, 0, 1, 0, 1, 0};  // CORD2R: A origin, B on z, C in the x-z plane
     cs.resolved = true;
     cs.axes << 0, -1, 0, 1, 0, 0, 0, 0, 1;  // e1 = basic y, e2 = -basic x, e3 = basic z
     m.coords.push_back(cs);
