@@ -10,7 +10,8 @@
 #include "seflex/fem/finalize.hpp"
 #include "seflex/fem/mass_properties.hpp"
 #include "seflex/fem/model.hpp"
-#include "seflex/io/nastran.hpp"
+#include "model_args.hpp"
+#include "seflex/io/model_reader.hpp"
 
 namespace {
 
@@ -90,11 +91,12 @@ void print_mass_properties(const seflex::fem::Model& m, std::optional<int> refer
 }
 
 int run_info(seflex::app::Args& args) {
+  const seflex::io::ModelReadOptions model_options = seflex::app::model_read_options(args);
   const std::string deck = args.positional("DECK");
   constexpr int kUnset = std::numeric_limits<int>::min();
   const int grdpnt = args.integer("grdpnt", kUnset);
   args.finish();
-  const seflex::fem::Model m = seflex::io::read_nastran(deck);
+  const seflex::fem::Model m = seflex::io::read_model(deck, model_options);
   std::printf("deck        %s\n", deck.c_str());
   std::printf("files read  %zu\n", m.files.size());
   for (const auto& f : m.files) std::printf("  %s\n", f.c_str());

@@ -1,0 +1,50 @@
+// seflex convert MODEL -o DECK: write any model seflex reads (Nastran deck, gmsh .msh/.geo with its
+// property file) as a Nastran bulk-data deck that reads back to the same matrices.
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "command.hpp"
+#include "model_args.hpp"
+#include "seflex/io/model_reader.hpp"
+#include "seflex/io/nastran_writer.hpp"
+
+namespace {
+
+int run_convert(seflex::app::Args& args) {
+  using seflex::app::UsageError;
+  std::optional<std::string> output = args.value("-o");
+  if (!output) output = args.value("output");
+  const bool force = args.flag("force");
+  const seflex::io::ModelReadOptions options = seflex::app::model_read_options(args);
+  const std::string input = args.positional("MODEL");
+  args.finish();
+  if (!output) throw UsageError("missing -o DECK (the Nastran deck to write; also --output DECK)");
+  std::error_code ec;
+  if (!force && std::filesystem::exists(*output, ec))
+    throw seflex::InputError(*output + ": exists; expected a new file name, or --force to overwrite it");
+
+  const seflex::fem::Model model = seflex::io::read_model(input, options);
+  seflex::io::NastranWriteOptions w;
+  w.comments.push_back("written by seflex convert from " + input);
+  for (const auto& p : options.parameters) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.17g", p.value);
+    w.comments.push_back("  --set " + p.name + "=" + buf);
+  }
+  seflex::io::write_nastran_file(model, *output, force, w);
+
+  std::size_t elements = model.bars.size() + model.rods.size() + model.shells.size() + model.springs.size() + model.rbe2.size();
+  std::printf("wrote %s: %zu grids, %zu elements, %zu CONM2, %zu node sets\n", output->c_str(), model.grids.size(), elements,
+              model.conm2.size(), model.node_sets.size());
+  for (const auto& u : seflex::io::unwritten_cards(model))
+    std::fprintf(stderr, "warning: not written (seflex does not model it): %s\n", u.c_str());
+  std::fflush(stdout);
+  return seflex::app::kOk;
+}
+
+}  // namespace
+
+SEFLEX_COMMAND(convert, "MODEL -o DECK [--force] [--properties FILE] [--set NAME=VALUE]...",
+               "write a model (Nastran deck, gmsh .msh/.geo + property file) as a Nastran bulk-data deck", run_convert);

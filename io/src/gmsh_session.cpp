@@ -1,0 +1,250 @@
+// The gmsh library behind one function: the only file of seflex that includes gmsh.h.
+// gmsh is a process-wide singleton (one current model, global options): a Session initialises it
+// quietly (General.Terminal = 0, messages to the logger), is held by one read at a time, and always
+// finalises it, also when the read throws.
+#include <gmsh.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "seflex/common/error.hpp"
+#include "seflex/io/gmsh_mesh.hpp"
+#include "seflex/io/nastran_lines.hpp"
+
+namespace seflex::io::gmsh {
+namespace {
+
+std::mutex& session_mutex() {
+  static std::mutex m;
+  return m;
+}
+thread_local bool t_in_session = false;
+
+/// Marks this thread as inside a gmsh session for its lifetime.
+class ThreadFlag {
+ public:
+  ThreadFlag() {
+    if (t_in_session)
+      throw InvariantError("a gmsh read was started from inside another gmsh read on the same thread; gmsh is a "
+                           "process-wide singleton and cannot nest");
+    t_in_session = true;
+  }
+  ~ThreadFlag() { t_in_session = false; }
+  ThreadFlag(const ThreadFlag&) = delete;
+  ThreadFlag& operator=(const ThreadFlag&) = delete;
+};
+
+/// Exclusive, quiet use of gmsh; finalised on destruction whatever happened.
+class Session {
+ public:
+  Session() : lock_(session_mutex()) {
+    try {
+      ::gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
+    } catch (...) {
+      try {
+        ::gmsh::finalize();
+      } catch (...) {
+      }
+      throw;
+    }
+    ::gmsh::option::setNumber("General.Terminal", 0);
+    ::gmsh::onelab::clear();  // parameter values of an earlier read
+    ::gmsh::logger::start();
+  }
+  ~Session() {
+    try {
+      ::gmsh::logger::stop();
+    } catch (...) {
+    }
+    try {
+      ::gmsh::onelab::clear();
+      ::gmsh::clear();
+    } catch (...) {
+    }
+    try {
+      ::gmsh::finalize();
+    } catch (...) {
+    }
+  }
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+
+  /// gmsh's error messages so far (and the last error), without repeats.
+  std::string errors() const {
+    std::vector<std::string> log, lines;
+    try {
+      ::gmsh::logger::get(log);
+    } catch (...) {
+    }
+    for (const auto& l : log)
+      if (l.rfind("Error", 0) == 0) {
+        const std::size_t colon = l.find(':');
+        std::string text = colon == std::string::npos ? l : std::string(nastran::trim(l.substr(colon + 1)));
+        if (std::find(lines.begin(), lines.end(), text) == lines.end()) lines.push_back(std::move(text));
+      }
+    std::string last;
+    try {
+      ::gmsh::logger::getLastError(last);
+    } catch (...) {
+    }
+    if (!last.empty() && std::find(lines.begin(), lines.end(), last) == lines.end()) lines.push_back(last);
+    std::string out;
+    constexpr std::size_t kMaxLines = 8;
+    for (std::size_t i = 0; i < lines.size() && i < kMaxLines; ++i) out += (i ? "; " : "") + lines[i];
+    if (lines.size() > kMaxLines) out += "; ... (" + std::to_string(lines.size() - kMaxLines) + " more)";
+    return out;
+  }
+
+ private:
+  ThreadFlag flag_;
+  std::unique_lock<std::mutex> lock_;
+};
+
+/// Run a gmsh call; turn its failure (gmsh 4.8 throws std::string, or logs an error) into an
+/// InputError "file: what: gmsh's messages".
+template <class F>
+void checked(const Session& session, const std::string& file, const std::string& what, F&& call) {
+  std::string thrown;
+  try {
+    call();
+  } catch (const std::string& s) {
+    thrown = s;
+  } catch (const std::exception& e) {
+    thrown = e.what();
+  }
+  std::string errors = session.errors();
+  if (errors.empty()) errors = thrown;
+  if (!thrown.empty() || !errors.empty())
+    throw InputError(file + ": " + what + ": " + (errors.empty() ? std::string("gmsh reported a failure") : errors));
+}
+
+std::string lower_extension(const std::filesystem::path& p) {
+  std::string e = p.extension().string();
+  for (char& c : e) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+  return e;
+}
+
+/// The ONELAB parameters a .geo file defined (DefineConstant[x = {value, Name "Path/x"}]).
+std::vector<std::string> geo_parameters() {
+  std::vector<std::string> names, out;
+  ::gmsh::onelab::getNames(names);
+  for (auto& n : names)
+    if (n.rfind("Gmsh/", 0) != 0 && n.rfind("ONELAB/", 0) != 0) out.push_back(std::move(n));
+  return out;
+}
+
+/// `name` as the full ONELAB name or its last part (after the last '/', ordering digits ignored).
+bool parameter_matches(const std::string& full, const std::string& name) {
+  if (full == name) return true;
+  std::size_t p = full.rfind('/');
+  p = p == std::string::npos ? 0 : p + 1;
+  while (p < full.size() && full[p] >= '0' && full[p] <= '9') ++p;
+  return full.compare(p, std::string::npos, name) == 0;
+}
+
+/// Preset the parameters and parse the .geo file again with them.
+void apply_parameters(const Session& session, const std::filesystem::path& path, const std::string& file,
+                      const std::vector<GmshParameter>& parameters) {
+  const std::vector<std::string> defined = geo_parameters();
+  std::string list;
+  for (const auto& d : defined) list += (list.empty() ? "" : ", ") + d;
+  std::vector<std::string> full;
+  for (const auto& p : parameters) {
+    std::string match;
+    for (const auto& d : defined)
+      if (parameter_matches(d, p.name)) match = d;
+    if (match.empty())
+      throw InputError(file + ": no parameter '" + p.name + "'; expected one the .geo file defines with DefineConstant[" +
+                       p.name + " = {value, Name \"Parameters/" + p.name + "\"}] (its parameters: " +
+                       (list.empty() ? std::string("none") : list) + ")");
+    ::gmsh::onelab::setNumber(match, {p.value});
+    full.push_back(match);
+  }
+  checked(session, file, "gmsh cannot read it", [&] { ::gmsh::open(path.string()); });
+  for (std::size_t k = 0; k < parameters.size(); ++k) {
+    std::vector<double> v;
+    ::gmsh::onelab::getNumber(full[k], v);
+    if (v.size() != 1 || v[0] != parameters[k].value)
+      throw InputError(file + ": parameter '" + parameters[k].name + "' kept " + (v.empty() ? std::string("no value") : std::to_string(v[0])) +
+                       " instead of the value given; expected a parameter that is not ReadOnly and accepts the value");
+  }
+}
+
+ElementBlock element_block(int type, int entity, std::vector<std::size_t>&& nodes) {
+  ElementBlock b;
+  b.type = type;
+  b.entity_tag = entity;
+  std::vector<double> local;
+  int primary = 0;
+  ::gmsh::model::mesh::getElementProperties(type, b.type_name, b.dim, b.order, b.nodes_per_element, local, primary);
+  b.nodes = std::move(nodes);
+  return b;
+}
+
+}  // namespace
+
+const char* dimension_name(int dim) {
+  switch (dim) {
+    case 0: return "point";
+    case 1: return "curve";
+    case 2: return "surface";
+    default: return "volume";
+  }
+}
+
+MeshData load_gmsh_mesh(const std::filesystem::path& path, const std::vector<GmshParameter>& parameters) {
+  MeshData mesh;
+  mesh.file = path.string();
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(mesh.file + ": no such file; expected a gmsh .msh or .geo file");
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw InputError(mesh.file + ": not a regular file; expected a gmsh .msh or .geo file");
+  const bool geo = lower_extension(path) == ".geo";
+  if (!parameters.empty() && !geo)
+    throw InputError(mesh.file + ": parameter '" + parameters.front().name +
+                     "' given for a mesh file; expected parameters only for a .geo file, which gmsh meshes");
+
+  Session session;
+  checked(session, mesh.file, "gmsh cannot read it", [&] { ::gmsh::open(path.string()); });
+  if (!parameters.empty()) apply_parameters(session, path, mesh.file, parameters);
+  std::vector<int> types;
+  ::gmsh::model::mesh::getElementTypes(types);
+  if (types.empty() && geo) {
+    const int dim = ::gmsh::model::getDimension();
+    if (dim > 0) checked(session, mesh.file, "gmsh cannot mesh it", [&] { ::gmsh::model::mesh::generate(dim); });
+  }
+
+  std::vector<double> parametric;
+  ::gmsh::model::mesh::getNodes(mesh.node_tags, mesh.coords, parametric, -1, -1, false, false);
+  {
+    std::vector<int> all_types;
+    std::vector<std::vector<std::size_t>> tags, nodes;
+    ::gmsh::model::mesh::getElements(all_types, tags, nodes);
+    for (const auto& t : tags) mesh.total_elements += t.size();
+  }
+
+  ::gmsh::vectorpair groups;
+  ::gmsh::model::getPhysicalGroups(groups);
+  std::sort(groups.begin(), groups.end());
+  for (const auto& [dim, tag] : groups) {
+    PhysicalGroup g;
+    g.dim = dim;
+    g.tag = tag;
+    ::gmsh::model::getPhysicalName(dim, tag, g.name);
+    ::gmsh::model::getEntitiesForPhysicalGroup(dim, tag, g.entities);
+    for (const int entity : g.entities) {
+      std::vector<int> block_types;
+      std::vector<std::vector<std::size_t>> element_tags, node_tags;
+      ::gmsh::model::mesh::getElements(block_types, element_tags, node_tags, dim, entity);
+      for (std::size_t k = 0; k < block_types.size(); ++k)
+        if (!element_tags[k].empty()) g.blocks.push_back(element_block(block_types[k], entity, std::move(node_tags[k])));
+    }
+    mesh.groups.push_back(std::move(g));
+  }
+  return mesh;
+}
+
+}  // namespace seflex::io::gmsh

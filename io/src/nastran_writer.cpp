@@ -1,0 +1,360 @@
+#include "seflex/io/nastran_writer.hpp"
+
+#include <charconv>
+#include <cstdio>
+#include <fstream>
+
+#include "seflex/common/error.hpp"
+#include "seflex/fem/finalize.hpp"
+
+namespace seflex::io {
+namespace {
+
+/// Builds one card's fields and appends it, free field, to a text buffer.
+class CardWriter {
+ public:
+  explicit CardWriter(std::string& out) : out_(out) {}
+
+  CardWriter& start(const char* name) {
+    name_ = name;
+    fields_.clear();
+    return *this;
+  }
+  CardWriter& i(long long v) {
+    char buf[24];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    fields_.emplace_back(buf, r.ptr);
+    return *this;
+  }
+  /// Shortest text that reads back to the same double, always with '.' or an exponent.
+  CardWriter& r(double v) {
+    char buf[40];
+    const auto res = std::to_chars(buf, buf + sizeof buf, v);
+    std::string s(buf, res.ptr);
+    if (s.find_first_of(".e") == std::string::npos) s += '.';
+    fields_.push_back(std::move(s));
+    return *this;
+  }
+  CardWriter& t(std::string s) {
+    fields_.push_back(std::move(s));
+    return *this;
+  }
+  CardWriter& blank(std::size_t n = 1) {
+    for (std::size_t k = 0; k < n; ++k) fields_.emplace_back();
+    return *this;
+  }
+  /// Id or blank when 0.
+  CardWriter& id0(int v) { return v ? i(v) : blank(); }
+  CardWriter& components(fem::ComponentMask c, bool zero_is_blank = true) {
+    if (c == 0) return zero_is_blank ? blank() : i(0);
+    std::string s;
+    for (int k = 0; k < 6; ++k)
+      if (c & (1u << k)) s += static_cast<char>('1' + k);
+    return t(std::move(s));
+  }
+  /// Pad to the start of the next continuation line.
+  CardWriter& next_line() {
+    while (fields_.size() % 8) fields_.emplace_back();
+    return *this;
+  }
+  void end() {
+    std::size_t n = fields_.size();
+    while (n > 0 && fields_[n - 1].empty()) --n;
+    out_ += name_;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (k > 0 && k % 8 == 0) out_ += "\n";
+      out_ += ',';
+      out_ += fields_[k];
+    }
+    if (n == 0) out_ += ',';
+    out_ += '\n';
+  }
+
+ private:
+  std::string& out_;
+  const char* name_ = "";
+  std::vector<std::string> fields_;
+};
+
+const char* coord_name(const fem::CoordSys& c) {
+  static const char* names[2][3] = {{"CORD2R", "CORD2C", "CORD2S"}, {"CORD1R", "CORD1C", "CORD1S"}};
+  return names[c.by_grids ? 1 : 0][static_cast<int>(c.type)];
+}
+
+const char* bar_prop_card(fem::BarProperty::Source s) {
+  switch (s) {
+    case fem::BarProperty::Source::PBAR: return "PBAR";
+    case fem::BarProperty::Source::PBARL: return "PBARL";
+    case fem::BarProperty::Source::PBEAM: return "PBEAM";
+    case fem::BarProperty::Source::PBEAML: return "PBEAML";
+  }
+  return "PBAR";
+}
+
+/// Name or quoted name for a `$seflex set` line.
+std::string set_name(const std::string& s) {
+  return s.find_first_of(" \t") == std::string::npos && !s.empty() ? s : "\"" + s + "\"";
+}
+
+void write_case_control(const fem::Model& m, std::string& out) {
+  const fem::CaseControl& cc = m.case_control;
+  auto selections = [&](const fem::Subcase& s, const char* indent) {
+    if (!s.label.empty()) out += std::string(indent) + "LABEL = " + s.label + "\n";
+    if (s.spc) out += std::string(indent) + "SPC = " + std::to_string(*s.spc) + "\n";
+    if (s.mpc) out += std::string(indent) + "MPC = " + std::to_string(*s.mpc) + "\n";
+    if (s.load) out += std::string(indent) + "LOAD = " + std::to_string(*s.load) + "\n";
+    if (s.method) out += std::string(indent) + "METHOD = " + std::to_string(*s.method) + "\n";
+    for (const auto* names : {&s.k2gg, &s.m2gg}) {
+      if (names->empty()) continue;
+      out += std::string(indent) + (names == &s.k2gg ? "K2GG = " : "M2GG = ");
+      for (std::size_t k = 0; k < names->size(); ++k) out += (k ? ", " : "") + (*names)[k];
+      out += "\n";
+    }
+  };
+  const fem::Subcase& g = cc.global;
+  const bool any = cc.sol || !cc.title.empty() || !cc.subtitle.empty() || !cc.subcases.empty() || !g.label.empty() ||
+                   g.spc || g.mpc || g.load || g.method || !g.k2gg.empty() || !g.m2gg.empty();
+  if (!any) return;
+  if (cc.sol) out += "SOL " + *cc.sol + "\n";
+  out += "CEND\n";
+  if (!cc.title.empty()) out += "TITLE = " + cc.title + "\n";
+  if (!cc.subtitle.empty()) out += "SUBTITLE = " + cc.subtitle + "\n";
+  selections(g, "");
+  for (const auto& s : cc.subcases) {
+    out += "SUBCASE " + std::to_string(s.id) + "\n";
+    selections(s, "  ");
+  }
+}
+
+/// MAT1 with the one of E, G, NU blank that the reader's completion rule gives back exactly.
+void write_mat1(CardWriter& w, const fem::Mat1& m) {
+  const bool g_follows = m.G == m.E / (2.0 * (1.0 + m.nu));
+  const bool nu_follows = !g_follows && m.G != 0.0 && m.nu == m.E / (2.0 * m.G) - 1.0;
+  const bool e_follows = !g_follows && !nu_follows && m.E == 2.0 * (1.0 + m.nu) * m.G;
+  w.start("MAT1").i(m.id);
+  e_follows ? w.blank() : w.r(m.E);
+  g_follows ? w.blank() : w.r(m.G);
+  nu_follows ? w.blank() : w.r(m.nu);
+  w.r(m.rho).r(m.alpha).r(m.tref).r(m.ge).end();
+}
+
+void write_bar_property(CardWriter& w, const fem::BarProperty& p) {
+  using Source = fem::BarProperty::Source;
+  w.start(bar_prop_card(p.source)).i(p.id).i(p.mid);
+  switch (p.source) {
+    case Source::PBAR:
+      w.r(p.A).r(p.I1).r(p.I2).r(p.J).r(p.nsm).next_line().blank(8).r(p.K1).r(p.K2).r(p.I12);
+      break;
+    case Source::PBEAM:
+      w.r(p.A).r(p.I1).r(p.I2).r(p.I12).r(p.J).r(p.nsm).next_line().blank(8).r(p.K1).r(p.K2);
+      break;
+    case Source::PBARL:
+    case Source::PBEAML:
+      w.t("MSCBML0").t(p.section_type).next_line();
+      for (const double d : p.dims) w.r(d);
+      w.r(p.nsm);
+      break;
+  }
+  w.end();
+}
+
+void write_bar(CardWriter& w, const fem::Bar& b) {
+  w.start(b.is_beam ? "CBEAM" : "CBAR").i(b.id).i(b.pid).i(b.ga).i(b.gb);
+  if (b.has_g0)
+    w.i(b.g0).blank(2);
+  else if (b.v.squaredNorm() > 0.0)
+    w.r(b.v.x()).r(b.v.y()).r(b.v.z());
+  else
+    w.blank(3);
+  w.t(b.offt.empty() ? "GGG" : b.offt);
+  if (b.pa || b.pb || b.wa.squaredNorm() > 0.0 || b.wb.squaredNorm() > 0.0) {
+    w.components(b.pa).components(b.pb);
+    for (int k = 0; k < 3; ++k) w.r(b.wa(k));
+    for (int k = 0; k < 3; ++k) w.r(b.wb(k));
+  }
+  w.end();
+}
+
+void write_shell(CardWriter& w, const fem::Shell& s) {
+  w.start(s.nnode == 4 ? "CQUAD4" : "CTRIA3").i(s.id).i(s.pid);
+  for (int k = 0; k < s.nnode; ++k) w.i(s.g[k]);
+  if (s.theta_is_mcid)
+    w.i(s.mcid);
+  else
+    w.r(s.theta_deg);
+  w.r(s.zoffs);
+  const bool corner = s.tflag != 0 || s.t[0] != 0.0 || s.t[1] != 0.0 || s.t[2] != 0.0 || s.t[3] != 0.0;
+  if (corner) {
+    w.next_line().blank(2).i(s.tflag);
+    for (int k = 0; k < s.nnode; ++k) s.t[k] != 0.0 ? w.r(s.t[k]) : w.blank();
+  }
+  w.end();
+}
+
+void write_elements(const fem::Model& m, CardWriter& w) {
+  for (const auto& b : m.bars) write_bar(w, b);
+  for (const auto& r : m.rods) {
+    if (r.inline_property)
+      w.start("CONROD").i(r.id).i(r.ga).i(r.gb).i(r.mid).r(r.A).r(r.J).r(r.C).r(r.nsm).end();
+    else
+      w.start("CROD").i(r.id).i(r.pid).i(r.ga).i(r.gb).end();
+  }
+  for (const auto& s : m.shells) write_shell(w, s);
+  for (const auto& s : m.springs) {
+    if (s.inline_property)
+      w.start("CELAS2").i(s.id).r(s.k).id0(s.g1).i(s.c1).id0(s.g2).i(s.c2).r(s.ge).r(s.s).end();
+    else
+      w.start("CELAS1").i(s.id).i(s.pid).id0(s.g1).i(s.c1).id0(s.g2).i(s.c2).end();
+  }
+  for (const auto& r : m.rbe2) {
+    w.start("RBE2").i(r.id).i(r.gn).components(r.cm);
+    for (const int g : r.gm) w.i(g);
+    w.end();
+  }
+  for (const auto& c : m.conm2)
+    w.start("CONM2").i(c.id).i(c.grid).i(c.cid).r(c.m).r(c.x.x()).r(c.x.y()).r(c.x.z()).blank()
+        .r(c.I11).r(c.I21).r(c.I22).r(c.I31).r(c.I32).r(c.I33).end();
+}
+
+void write_constraints_and_loads(const fem::Model& m, CardWriter& w) {
+  for (const auto& s : m.spcs) w.start("SPC").i(s.sid).i(s.grid).components(s.c, false).r(s.d).end();
+  for (const auto& a : m.spcadds) {
+    w.start("SPCADD").i(a.sid);
+    for (const int s : a.sets) w.i(s);
+    w.end();
+  }
+  const std::pair<const char*, const std::vector<fem::DofSetEntry>*> sets[] = {
+      {"ASET", &m.aset}, {"BSET", &m.bset}, {"SUPORT", &m.suport}};
+  for (const auto& [name, entries] : sets)
+    for (const auto& e : *entries) w.start(name).i(e.grid).components(e.c, false).end();
+  for (const auto& l : m.point_loads)
+    w.start(l.kind == fem::PointLoad::Kind::Force ? "FORCE" : "MOMENT").i(l.sid).i(l.grid).i(l.cid).r(l.scale)
+        .r(l.n.x()).r(l.n.y()).r(l.n.z()).end();
+  for (const auto& l : m.load_combinations) {
+    w.start("LOAD").i(l.sid).r(l.s);
+    for (const auto& [s, id] : l.terms) w.r(s).i(id);
+    w.end();
+  }
+}
+
+void write_solution_cards(const fem::Model& m, CardWriter& w) {
+  for (const auto& e : m.eigen_methods) {
+    auto opt_r = [&](const std::optional<double>& v) { v ? w.r(*v) : w.blank(); };
+    if (e.is_eigr) {
+      w.start("EIGR").i(e.sid).t(e.method);
+      opt_r(e.f1);
+      opt_r(e.f2);
+      w.blank();
+      e.nd ? w.i(*e.nd) : w.blank();
+      w.next_line().t(e.norm);
+      if (e.norm == "POINT") w.i(e.norm_grid).i(e.norm_component);
+    } else {
+      w.start("EIGRL").i(e.sid);
+      opt_r(e.f1);
+      opt_r(e.f2);
+      e.nd ? w.i(*e.nd) : w.blank();
+      w.blank(3).t(e.norm);
+    }
+    w.end();
+  }
+  for (const auto& d : m.dmigs) {
+    w.start("DMIG").t(d.name).i(0).i(d.form).i(d.tin).i(d.tout).end();
+    for (std::size_t k = 0; k < d.entries.size();) {
+      const fem::DmigEntry& head = d.entries[k];
+      w.start("DMIG").t(d.name).i(head.gj).i(head.cj).blank();
+      for (; k < d.entries.size() && d.entries[k].gj == head.gj && d.entries[k].cj == head.cj; ++k)
+        w.i(d.entries[k].gi).i(d.entries[k].ci).r(d.entries[k].value).blank();
+      w.end();
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> unwritten_cards(const fem::Model& model) {
+  std::vector<std::string> out;
+  for (const auto& u : model.unsupported)
+    out.push_back(u.name + " (" + std::to_string(u.count) + ", first at " + fem::where(model, u.first).str() + ")");
+  return out;
+}
+
+void write_nastran(const fem::Model& m, std::ostream& stream, const NastranWriteOptions& options) {
+  std::string out;
+  out.reserve(256 + 64 * (m.grids.size() + m.shells.size() + m.bars.size() + m.conm2.size()));
+  for (const auto& c : options.comments) out += "$ " + c + "\n";
+  for (const auto& u : unwritten_cards(m)) out += "$ not written (seflex does not model it): " + u + "\n";
+  write_case_control(m, out);
+  out += "BEGIN BULK\n";
+  CardWriter w(out);
+  for (const auto& [name, ids] : m.node_sets)
+    for (std::size_t k = 0; k < ids.size(); k += 10) {
+      out += "$seflex set " + set_name(name);
+      for (std::size_t j = k; j < ids.size() && j < k + 10; ++j) out += " " + std::to_string(ids[j]);
+      out += "\n";
+    }
+  for (const auto& p : m.params) {
+    w.start("PARAM").t(p.name);
+    for (const auto& v : p.values) w.t(v);
+    w.end();
+  }
+  for (const auto& c : m.coords) {
+    w.start(coord_name(c)).i(c.id);
+    if (c.by_grids) {
+      w.i(c.grids[0]).i(c.grids[1]).i(c.grids[2]);
+    } else {
+      w.i(c.rid);
+      for (const double x : c.abc) w.r(x);
+    }
+    w.end();
+  }
+  for (const auto& g : m.grids)
+    w.start("GRID").i(g.id).i(g.cp).r(g.x.x()).r(g.x.y()).r(g.x.z()).i(g.cd).components(g.ps).end();
+  for (std::size_t k = 0; k < m.spoints.size(); k += 8) {
+    w.start("SPOINT");
+    for (std::size_t j = k; j < m.spoints.size() && j < k + 8; ++j) w.i(m.spoints[j].id);
+    w.end();
+  }
+  for (const auto& mat : m.mat1) write_mat1(w, mat);
+  for (const auto& p : m.bar_props) write_bar_property(w, p);
+  for (const auto& p : m.rod_props) w.start("PROD").i(p.id).i(p.mid).r(p.A).r(p.J).r(p.C).r(p.nsm).end();
+  for (const auto& p : m.shell_props)
+    w.start("PSHELL").i(p.id).id0(p.mid1).r(p.t).id0(p.mid2).r(p.bend_ratio).id0(p.mid3).r(p.ts_t).r(p.nsm)
+        .r(p.z1).r(p.z2).id0(p.mid4).end();
+  for (const auto& p : m.spring_props) w.start("PELAS").i(p.id).r(p.k).r(p.ge).r(p.s).end();
+  stream << out;
+  out.clear();
+  write_elements(m, w);
+  write_constraints_and_loads(m, w);
+  write_solution_cards(m, w);
+  out += "ENDDATA\n";
+  stream << out;
+}
+
+void write_nastran_file(const fem::Model& model, const std::filesystem::path& path, bool overwrite,
+                        const NastranWriteOptions& options) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path.string() + ": is a folder; expected the name of the deck to write");
+  if (!overwrite && std::filesystem::exists(path, ec))
+    throw InputError(path.string() + ": exists; expected a new file name (seflex convert --force overwrites)");
+  std::filesystem::path tmp = path;
+  tmp += ".seflex-tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw InputError(path.string() + ": cannot create it (" + tmp.string() + " not writable); expected a writable folder");
+    write_nastran(model, out, options);
+    out.flush();
+    if (!out) {
+      out.close();
+      std::filesystem::remove(tmp, ec);
+      throw InputError(path.string() + ": writing failed (disk full?)");
+    }
+  }
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::filesystem::remove(tmp, ec);
+    throw InputError(path.string() + ": cannot write it (" + ec.message() + ")");
+  }
+}
+
+}  // namespace seflex::io
