@@ -7,7 +7,7 @@
 //
 // refine = elements along each side of one cell of the 4 x 4 grid (cells 0.25 in y by 0.3 in z):
 //   refine = 1 is panel.bdf's 4 x 4 mesh; the plate has (4 refine + 1)^2 nodes, 6 dofs each, plus the
-//   6 hinge points: refine 8 -> 6,570 dofs, 32 -> 101,442, 102 -> 1,003,758.
+//   6 hinge points: refine 8 -> 6,570 dofs, 32 -> 99,882, 102 -> 1,003,722.
 //   seflex: --set refine=8      gmsh: gmsh panel.geo -2 -setnumber refine 8 (or the GUI parameter list)
 // The 25 grid points (the CONM2 mass points), the edge members' and brackets' nodes are geometry
 // points, hence mesh nodes at every refinement: the physical model stays the same and converges.
