@@ -126,15 +126,18 @@ void write_case_control(const fem::Model& m, std::string& out) {
   }
 }
 
-/// MAT1 with the one of E, G, NU blank that the reader's completion rule gives back exactly.
+/// MAT1 with the one of E, G, NU blank that the reader's completion rule gives back exactly. A NU
+/// outside (-1, 0.5] can only have been computed (the reader checks a given NU): it stays blank.
 void write_mat1(CardWriter& w, const fem::Mat1& m) {
-  const bool g_follows = m.G == m.E / (2.0 * (1.0 + m.nu));
-  const bool nu_follows = !g_follows && m.G != 0.0 && m.nu == m.E / (2.0 * m.G) - 1.0;
-  const bool e_follows = !g_follows && !nu_follows && m.E == 2.0 * (1.0 + m.nu) * m.G;
+  const bool nu_computed = m.G != 0.0 && m.nu == m.E / (2.0 * m.G) - 1.0;
+  const bool nu_blank = nu_computed && !(m.nu > -1.0 && m.nu <= 0.5);
+  const bool g_blank = !nu_blank && m.G == m.E / (2.0 * (1.0 + m.nu));
+  const bool nu_blank2 = nu_blank || (!g_blank && nu_computed);
+  const bool e_blank = !g_blank && !nu_blank2 && m.E == 2.0 * (1.0 + m.nu) * m.G;
   w.start("MAT1").i(m.id);
-  e_follows ? w.blank() : w.r(m.E);
-  g_follows ? w.blank() : w.r(m.G);
-  nu_follows ? w.blank() : w.r(m.nu);
+  e_blank ? w.blank() : w.r(m.E);
+  g_blank ? w.blank() : w.r(m.G);
+  nu_blank2 ? w.blank() : w.r(m.nu);
   w.r(m.rho).r(m.alpha).r(m.tref).r(m.ge).end();
 }
 

@@ -71,6 +71,8 @@ SPOINT,100,101
 MAT1,1,7.1+10,,.3,2700.,2.3-5,20.,0.01
 MAT1,2,2.1E11,8.E10,,7800.
 MAT1,3,,2.6+10,0.3,1000.
+MAT1,4,1.,0.1
+MAT1,5,2.+11
 PBAR,10,1,5.4-4,7.-8,6.-8,1.4-7,0.1,,+P
 +P,,,,,,,,,+Q
 +Q,0.8,0.9,1.-9
@@ -149,6 +151,8 @@ TEST(NastranWriter, RoundTripsEveryCard) {
   EXPECT_EQ(back.mat1[0].G, m.mat1[0].G);     // G blank: recomputed from E and NU
   EXPECT_EQ(back.mat1[1].nu, m.mat1[1].nu);   // NU blank: recomputed from E and G
   EXPECT_EQ(back.mat1[2].E, m.mat1[2].E);     // E blank
+  EXPECT_EQ(back.mat1[3].nu, 4.0);            // NU = E / (2 G) - 1 = 4: only a blank NU reads back
+  EXPECT_EQ(back.mat1[4].G, 0.0);             // E only: G = NU = 0 (QRG MAT1)
   EXPECT_EQ(back.bar_props[0].K1, 0.8);
   EXPECT_EQ(back.bar_props[0].I12, 1e-9);
   EXPECT_EQ(back.bar_props[1].dims, (std::vector<double>{0.05, 0.04}));
