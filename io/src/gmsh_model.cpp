@@ -1,5 +1,6 @@
 // gmsh mesh + companion bulk data + $seflex directives -> fem::Model (docs/gmsh-input.md).
 #include <algorithm>
+#include <climits>
 #include <map>
 #include <unordered_map>
 #include <unordered_set>
@@ -274,15 +275,15 @@ class ModelBuilder {
     if (dir_.first_grid) {
       next = *dir_.first_grid;
     } else {
-      for (const int id : taken) next = std::max(next, id + 1);
+      for (const int id : taken) next = std::max(next, id < INT_MAX ? id + 1 : INT_MAX);
     }
     std::vector<std::size_t> order;
     for (std::size_t k = 0; k < n; ++k)
       if (needed[k] && id_of_[k] == 0) order.push_back(k);
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return mesh_.node_tags[a] < mesh_.node_tags[b]; });
     for (const std::size_t k : order) {
-      while (taken.count(next)) ++next;
-      if (next <= 0) fail_mesh("too many nodes for the grid ids left above first_grid; expected fewer than 2^31 ids");
+      while (next < INT_MAX && taken.count(next)) ++next;
+      if (next == INT_MAX) fail_mesh("too many nodes for the grid ids left above first_grid; expected ids below 2^31 - 1");
       id_of_[k] = next++;
     }
     std::vector<std::size_t> all;
@@ -303,8 +304,8 @@ class ModelBuilder {
   int grid_id(std::size_t tag) const { return id_of_[nodes_.find(tag)]; }
 
   int next_element_id() {
-    while (element_taken_.count(next_element_)) ++next_element_;
-    if (next_element_ <= 0) fail_mesh("too many elements for the ids left above first_element; expected fewer than 2^31 ids");
+    while (next_element_ < INT_MAX && element_taken_.count(next_element_)) ++next_element_;
+    if (next_element_ == INT_MAX) fail_mesh("too many elements for the ids left above first_element; expected ids below 2^31 - 1");
     return next_element_++;
   }
 
@@ -322,7 +323,7 @@ class ModelBuilder {
     take(m_.conm2);
     take(m_.springs);
     take(m_.rbe2);
-    next_element_ = dir_.first_element ? *dir_.first_element : max_id + 1;
+    next_element_ = dir_.first_element ? *dir_.first_element : (max_id < INT_MAX ? max_id + 1 : INT_MAX);
   }
 
   void make_elements() {

@@ -164,6 +164,10 @@ TEST(GmshBadInput, FilesGmshCannotRead) {
   dir.write("s.props.bdf", kSmallProps);
   EXPECT_TRUE(mentions(read_error(dir.write("s.geo", "Point(1) = {0, 0, 0};\nLine(1) = {1, 2;\n")),
                        {"s.geo: gmsh cannot read it: ", "line 2", "syntax error"}));
+  // An error inside braces: gmsh's parser must be left able to read the next file.
+  dir.write("b.props.bdf", kSmallProps);
+  EXPECT_TRUE(mentions(read_error(dir.write("b.geo", "Point(1) = {0, 0, 0\nfoo;\n")), {"b.geo: gmsh cannot read it: ", "line 2", "syntax error (foo)"}));
+  EXPECT_EQ(io::read_model(panel_geo()).grids.size(), 31u);
   dir.write("c.props.bdf", kSmallProps);
   EXPECT_TRUE(mentions(read_error(dir.write("c.geo", "Point(1) = {0, 0, 0};\nLine(1) = {1, 2};\n")),
                        {"c.geo: gmsh cannot read it: ", "Unknown control point 2"}));

@@ -64,9 +64,9 @@ TEST(GmshPanel, SameModelAsNastranPanel) {
   for (int k = 6; k < 20; ++k) EXPECT_NEAR(fg_own(k), fn_own(k), 1e-7 * fn_own(k)) << "mode " << k + 1;
 }
 
-TEST(GmshPanel, MshFormats2And4GiveTheGeoModel) {
+TEST(GmshPanel, MshFormats2And4AsciiAndBinaryGiveTheGeoModel) {
   const fem::Model geo = io::read_model(test::meshes_dir() / "panel.geo");
-  for (const char* name : {"panel_msh2.msh", "panel_msh4.msh"}) {
+  for (const char* name : {"panel_msh2.msh", "panel_msh4.msh", "panel_msh4_binary.msh"}) {
     SCOPED_TRACE(name);
     io::ModelReadOptions o;
     o.properties = test::meshes_dir() / "panel.props.bdf";

@@ -73,7 +73,9 @@ inline double max_abs_difference(const Eigen::SparseMatrix<double>& a, const Eig
 inline void expect_same_matrices(const fem::Model& a, const fem::Model& b, bool same_ids = true) {
   ASSERT_EQ(a.grids.size(), b.grids.size());
   for (std::size_t i = 0; i < a.grids.size(); ++i) {
-    if (same_ids) ASSERT_EQ(a.grids[i].id, b.grids[i].id) << i;
+    if (same_ids) {
+      ASSERT_EQ(a.grids[i].id, b.grids[i].id) << i;
+    }
     ASSERT_EQ(a.grids[i].x_basic, b.grids[i].x_basic) << a.grids[i].id << " / " << b.grids[i].id;
   }
   const fem::GlobalMatrices ga = fem::assemble(a, fem::assembly_options(a));
