@@ -9,6 +9,7 @@
 #include "model_args.hpp"
 #include "seflex/io/model_reader.hpp"
 #include "seflex/io/nastran_writer.hpp"
+#include "seflex/io/results_csv.hpp"
 
 namespace {
 
@@ -21,9 +22,7 @@ int run_convert(seflex::app::Args& args) {
   const std::string input = args.positional("MODEL");
   args.finish();
   if (!output) throw UsageError("missing -o DECK (the Nastran deck to write; also --output DECK)");
-  std::error_code ec;
-  if (!force && std::filesystem::exists(*output, ec))
-    throw seflex::InputError(*output + ": exists; expected a new file name, or --force to overwrite it");
+  seflex::io::check_writable(*output, force);  // before the work, not after it
 
   const seflex::fem::Model model = seflex::io::read_model(input, options);
   seflex::io::NastranWriteOptions w;

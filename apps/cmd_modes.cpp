@@ -7,7 +7,8 @@
 #include <string>
 
 #include "command.hpp"
-#include "seflex/io/nastran.hpp"
+#include "model_args.hpp"
+#include "seflex/io/model_reader.hpp"
 #include "seflex/io/results_csv.hpp"
 #include "seflex/io/vtk_modes.hpp"
 #include "seflex/reduction/normal_modes.hpp"
@@ -56,6 +57,7 @@ int run_modes(seflex::app::Args& args) {
   const auto csv = args.value("csv");
   const auto vtk = args.value("vtk");
   const bool force = args.flag("force");
+  const seflex::io::ModelReadOptions model_options = seflex::app::model_read_options(args);
   const std::string deck = args.positional("DECK");
   args.finish();
   if (vtk && std::filesystem::path(*vtk).extension() != ".vtu") throw UsageError("--vtk expects a file name ending in .vtu");
@@ -63,7 +65,7 @@ int run_modes(seflex::app::Args& args) {
   if (vtk) seflex::io::check_writable(*vtk, force);
 
   const auto t0 = std::chrono::steady_clock::now();
-  const seflex::fem::Model model = seflex::io::read_nastran(deck);
+  const seflex::fem::Model model = seflex::io::read_model(deck, model_options);
   const auto t1 = std::chrono::steady_clock::now();
   const seflex::reduction::NormalModes r = seflex::reduction::solve_normal_modes(model, o);
   const auto t2 = std::chrono::steady_clock::now();

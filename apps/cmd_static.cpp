@@ -9,7 +9,8 @@
 #include <string>
 
 #include "command.hpp"
-#include "seflex/io/nastran.hpp"
+#include "model_args.hpp"
+#include "seflex/io/model_reader.hpp"
 #include "seflex/io/results_csv.hpp"
 #include "seflex/reduction/grid_results.hpp"
 #include "seflex/reduction/statics.hpp"
@@ -28,6 +29,7 @@ int run_static(seflex::app::Args& args) {
   auto out = args.value("-o");
   if (!out) out = args.value("output");
   const bool force = args.flag("force");
+  const seflex::io::ModelReadOptions model_options = seflex::app::model_read_options(args);
   const std::string deck = args.positional("DECK");
   args.finish();
   const std::filesystem::path csv = out ? std::filesystem::path(*out)
@@ -35,7 +37,7 @@ int run_static(seflex::app::Args& args) {
   seflex::io::check_writable(csv, force);  // before the work, not after it
 
   const auto t0 = std::chrono::steady_clock::now();
-  const seflex::fem::Model model = seflex::io::read_nastran(deck);
+  const seflex::fem::Model model = seflex::io::read_model(deck, model_options);
   const seflex::reduction::StaticSolution s = seflex::reduction::solve_static(model, o);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 

@@ -6,6 +6,7 @@
 
 #include "seflex/common/error.hpp"
 #include "seflex/fem/finalize.hpp"
+#include "seflex/io/results_csv.hpp"
 
 namespace seflex::io {
 namespace {
@@ -292,7 +293,10 @@ void write_nastran(const fem::Model& m, std::ostream& stream, const NastranWrite
   for (const auto& [name, ids] : m.node_sets)
     for (std::size_t k = 0; k < ids.size(); k += 10) {
       out += "$seflex set " + set_name(name);
-      for (std::size_t j = k; j < ids.size() && j < k + 10; ++j) out += " " + std::to_string(ids[j]);
+      for (std::size_t j = k; j < ids.size() && j < k + 10; ++j) {
+        out += ' ';
+        out += std::to_string(ids[j]);
+      }
       out += "\n";
     }
   for (const auto& p : m.params) {
@@ -338,8 +342,7 @@ void write_nastran_file(const fem::Model& model, const std::filesystem::path& pa
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw InputError(path.string() + ": is a folder; expected the name of the deck to write");
-  if (!overwrite && std::filesystem::exists(path, ec))
-    throw InputError(path.string() + ": exists; expected a new file name (seflex convert --force overwrites)");
+  check_writable(path, overwrite);
   std::filesystem::path tmp = path;
   tmp += ".seflex-tmp";
   {
