@@ -81,7 +81,11 @@ int run_modes(seflex::app::Args& args) {
               std::string(to_string(r.stats.backend_used)).c_str(), std::string(to_string(o.factorization)).c_str(),
               r.stats.shift, r.stats.operator_applications, r.stats.lanczos_runs,
               r.stats.missed_modes_recovered ? (", " + std::to_string(r.stats.missed_modes_recovered) + " recovered by the completeness check").c_str() : "");
-  std::printf("  time: read %.2f s, solve %.2f s\n", seconds(t0, t1), seconds(t1, t2));
+  const auto& st = r.stats;
+  std::printf("  time: read %.2f s, solve %.2f s (factorisation %.2f, shift calibration %.2f, Lanczos %.2f, "
+              "completeness check %.2f, Rayleigh-Ritz %.2f; nnz(L) %.3g)\n",
+              seconds(t0, t1), seconds(t1, t2), st.seconds_factorization, st.seconds_calibration, st.seconds_lanczos,
+              st.seconds_check, st.seconds_postprocess, st.factorization.factor_nonzeros);
   print_table(r);
   std::fflush(stdout);
 

@@ -29,6 +29,12 @@ E, NU, RHO = 2.1e11, 0.3, 7850.0
 MODES = 20
 
 
+def real(x):
+    """A Nastran real: always with a decimal point or exponent."""
+    t = "%.9g" % x
+    return t if ("." in t or "e" in t) else t + "."
+
+
 def grid_id(i, j, n):
     return 1 + i + (n + 1) * j
 
@@ -43,11 +49,11 @@ def write_nastran(path, n):
         f.write("SOL 103\nCEND\nTITLE = clamped square plate %d x %d CQUAD4\nSPC = 1\nMETHOD = 1\nBEGIN BULK\n" % (n, n))
         f.write("EIGRL,1,,,%d\n" % MODES)
         f.write("MAT1,1,%.6e,,%.3f,%.1f\n" % (E, NU, RHO))
-        f.write("PSHELL,1,1,%g,1,,1\n" % THICKNESS)
+        f.write("PSHELL,1,1,%s,1,,1\n" % real(THICKNESS))
         out = []
         for j in range(n + 1):
             for i in range(n + 1):
-                out.append("GRID,%d,,%.9g,%.9g,0.\n" % (grid_id(i, j, n), i * h, j * h))
+                out.append("GRID,%d,,%s,%s,0.\n" % (grid_id(i, j, n), real(i * h), real(j * h)))
         eid = 1
         for j in range(n):
             for i in range(n):

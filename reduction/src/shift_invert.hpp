@@ -26,6 +26,9 @@ class ShiftInvertOperator {
  private:
   SparseFactorization& factor_;
   const SparseMatrixd& M_;
+  Eigen::VectorXd M_diagonal_;  // M when it is diagonal (lumped mass): y = d .* x
+  SparseMatrixd M_full_;        // otherwise both triangles, for a plain sparse product
+  bool M_is_diagonal_ = true;
   const Eigen::MatrixXd& X_;
   Eigen::MatrixXd MX_;  // M X
   Eigen::VectorXd scratch_;

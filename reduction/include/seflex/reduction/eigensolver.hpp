@@ -50,6 +50,7 @@ struct EigenOptions {
   double tolerance = 1e-10;            ///< Lanczos convergence: ||OP x - theta x||_M <= tol |theta|
   std::optional<double> shift;         ///< sigma; must lie below the wanted eigenvalues
   bool check_completeness = true;      ///< run the deflated missing-mode check
+  int subspace = 0;                    ///< Krylov subspace size of the main run; 0 = automatic
   int max_restarts = 1000;
 };
 
@@ -62,6 +63,9 @@ struct EigenStats {
   int missed_modes_recovered = 0;      ///< modes found by the completeness check
   EigenBackend backend_used = EigenBackend::Spectra;
   FactorizationStats factorization;
+  // Wall time of the phases (benchmarks and summaries; never used by the algorithm).
+  double seconds_factorization = 0, seconds_calibration = 0, seconds_lanczos = 0, seconds_check = 0,
+         seconds_postprocess = 0;
 };
 
 struct EigenSolution {
