@@ -10,6 +10,7 @@ frequencies agree to a few per cent, not exactly).
 
 usage: bench/plate_modes_vs_calculix.py [--sizes 40,129,408] [--seflex build/apps/seflex]
                                        [--ccx ccx] [--keep DIR] [--threads 2] [--only seflex|ccx]
+                                       [--decks-only]
 Sizes are elements per side: 40 -> 10,086 dofs, 129 -> 101,400 dofs, 408 -> 1,003,686 dofs
 (6 dofs per grid before the edge constraints). CalculiX is found as --ccx, else $CCX, else `ccx`
 on PATH (Debian package calculix-ccx; a benchmark-only dependency).
@@ -116,7 +117,7 @@ def ccx_frequencies(dat):
                 continue
             if on:
                 w = line.split()
-                if len(w) == 4 and w[0].isdigit():
+                if len(w) == 5 and w[0].isdigit():
                     freqs.append(float(w[3]))
                 elif freqs and not w:
                     break
@@ -132,6 +133,8 @@ def main():
     ap.add_argument("--keep", help="write the decks and results here instead of a temporary folder")
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--only", choices=["seflex", "ccx"])
+    ap.add_argument("--decks-only", action="store_true",
+                    help="write DIR/nN/plate.bdf and plate.inp (with --keep DIR) and stop; e.g. for bench/factorization_backends")
     args = ap.parse_args()
     ccx = shutil.which(args.ccx)
     if args.only != "seflex" and ccx is None:
@@ -150,6 +153,9 @@ def main():
         os.makedirs(d, exist_ok=True)
         write_nastran(os.path.join(d, "plate.bdf"), n)
         write_calculix(os.path.join(d, "plate.inp"), n)
+        if args.decks_only:
+            print("%6d %10d   %s" % (n, dofs, os.path.join(d, "plate.bdf")))
+            continue
         ts = ms = tc = mc = float("nan")
         fs, fc = [float("nan")], [float("nan")]
         if args.only != "ccx":
@@ -168,7 +174,8 @@ def main():
         if len(fs) == len(fc) == MODES:
             dev = max(abs(a / b - 1) for a, b in zip(fs, fc))
             print("%6s %10s   modes 1-%d: largest seflex/ccx frequency difference %.2f %%" % ("", "", MODES, 100 * dev))
-    print("\n(t ratio, m ratio: CalculiX time and peak memory over seflex's; files in %s)" % work)
+    if not args.decks_only:
+        print("\n(t ratio, m ratio: CalculiX time and peak memory over seflex's; files in %s)" % work)
 
 
 if __name__ == "__main__":
