@@ -244,7 +244,6 @@ EigenSolution solve_eigenproblem(const SparseMatrixd& K, const SparseMatrixd& M,
   if (n == 0 || wanted == 0) return solution;
 
   double sigma = options.shift ? *options.shift : default_shift(K, M);
-  if (options.lambda_min && *options.lambda_min > 0 && !options.shift) sigma = std::min(sigma, 0.0);
   stats.shift = sigma;
   auto factor = make_factorization(options.factorization);
   factorize_shifted(*factor, K, M, sigma, !options.shift, stats);

@@ -39,6 +39,16 @@ TEST(ValidationModes, BarFreeFreeMatchesMystran) {
   EXPECT_NEAR(r.generalized_mass(2) / 9.738369E-04, 1.0, 2e-6);
 }
 
+// ALL-ELEM-TEST-GIV (CBAR, CROD, CQUAD4, CTRIA3, CELAS1; SPC 998, EIGR 2 with ND = 4, NORM = MAX):
+// within 1 % of MYSTRAN's 34.46520 / 39.34327 / 63.02253 / 74.00890 Hz (README: shell formulations
+// differ, so 1 % is the expected agreement).
+TEST(ValidationModes, MixedElementShelfWithinOnePercent) {
+  const auto r = reduction::solve_normal_modes(deck("mystran_mixed_cbar_crod_cquad4_ctria3_celas_modes/ALL-ELEM-TEST-GIV.DAT"));
+  ASSERT_EQ(r.eigenvalues.size(), 4);
+  const double cycles[4] = {34.46520, 39.34327, 63.02253, 74.00890};
+  for (int j = 0; j < 4; ++j) EXPECT_NEAR(r.cycles()(j) / cycles[j], 1.0, 0.01) << "mode " << j + 1;
+}
+
 // CB-EXAMPLE-12: the Craig-Bampton frame's fixed-interface modes, i.e. the normal modes with the
 // SUPORT dofs (the boundary set, README) held fixed: 9.933119 / 13.32647 / 14.70232 Hz, to 1e-6
 // on the eigenvalues 3.895211E+03 / 7.011163E+03 / 8.533585E+03 (7 printed digits: 1e-6 is the
