@@ -102,6 +102,15 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
     rod_nodes.insert(rod_nodes.end(), n, n + 2);
   }
   detail::ShellSectionCache sections;
+  std::size_t n_quads = 0;
+  for (const Shell& s : model.shells) n_quads += s.nnode == 4;
+  quads.reserve(n_quads);
+  trias.reserve(model.shells.size() - n_quads);
+  quad_nodes.reserve(4 * n_quads);
+  tria_nodes.reserve(3 * (model.shells.size() - n_quads));
+  conn.nodes.reserve(2 * (model.bars.size() + model.rods.size() + model.springs.size()) + 4 * model.shells.size() +
+                     model.conm2.size());
+  conn.ptr.reserve(model.bars.size() + model.rods.size() + model.shells.size() + model.springs.size() + 1);
   for (const Shell& s : model.shells) {
     const std::string card = s.nnode == 4 ? "CQUAD4" : "CTRIA3";
     std::int32_t n[4];
@@ -116,6 +125,8 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
       tria_nodes.insert(tria_nodes.end(), n, n + 3);
     }
   }
+  masses.reserve(model.conm2.size());
+  springs.reserve(model.springs.size());
   for (const Conm2& c : model.conm2) {
     masses.push_back(make_conm2_element(model, c));
     mass_nodes.push_back(node_of_grid(model, c.grid, c.ref, "CONM2", c.id, "3 (G)"));
@@ -133,7 +144,7 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
   // Stiffness.
   {
     const detail::BlockPattern pattern(g.dofs, conn, false);
-    g.K = pattern.make_matrix();
+    pattern.make_matrix(g.K);
     for (std::size_t i = 0; i < bars.size(); ++i) {
       NodeMatrix<2> K = bar_stiffness(bars[i]);
       to_cd<2>(&bar_nodes[2 * i], axes, K);
@@ -167,7 +178,7 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
   // Mass: lumped mass only couples dofs of the same node.
   {
     const detail::BlockPattern pattern(g.dofs, conn, options.mass == MassKind::Lumped);
-    g.M = pattern.make_matrix();
+    pattern.make_matrix(g.M);
     const double w = options.wtmass;
     for (std::size_t i = 0; i < bars.size(); ++i) {
       NodeMatrix<2> M = w * bar_mass(bars[i], options.mass);

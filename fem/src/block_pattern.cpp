@@ -55,7 +55,7 @@ BlockPattern::BlockPattern(const DofMap& dofs, const Connectivity& conn, bool se
   }
 }
 
-Eigen::SparseMatrix<double> BlockPattern::make_matrix() const {
+void BlockPattern::make_matrix(Eigen::SparseMatrix<double>& A) const {
   const Eigen::Index n = dofs_.size();
   // column lengths: per node, the dofs of all neighbours
   std::int64_t nnz = 0;
@@ -65,7 +65,7 @@ Eigen::SparseMatrix<double> BlockPattern::make_matrix() const {
     nnz += len * dofs_.node_dof_count(i);
   }
   SEFLEX_DEMAND(nnz < std::int64_t(2147483647), "sparse matrix too large for 32-bit indices");
-  Eigen::SparseMatrix<double> A(n, n);
+  A.resize(n, n);
   A.resizeNonZeros(static_cast<Eigen::Index>(nnz));
   int* outer = A.outerIndexPtr();
   int* inner = A.innerIndexPtr();
@@ -81,7 +81,6 @@ Eigen::SparseMatrix<double> BlockPattern::make_matrix() const {
   }
   outer[n] = static_cast<int>(pos);
   std::fill(A.valuePtr(), A.valuePtr() + nnz, 0.0);
-  return A;
 }
 
 std::int64_t BlockPattern::row_offset(std::int32_t J, std::int32_t I) const {

@@ -30,8 +30,9 @@ class BlockPattern {
   /// off-diagonal node blocks, which must be zero, as in lumped mass matrices).
   BlockPattern(const DofMap& dofs, const Connectivity& conn, bool self_only);
 
-  /// A compressed n x n matrix with this pattern and zero values.
-  Eigen::SparseMatrix<double> make_matrix() const;
+  /// Make A a compressed n x n matrix with this pattern and zero values (in place: Eigen 3.4's
+  /// SparseMatrix copies on assignment from a temporary).
+  void make_matrix(Eigen::SparseMatrix<double>& A) const;
 
   /// A(dofs of node a, dofs of node b) += block, for grid nodes (6 x 6 blocks) in element order:
   /// Ke is 6N x 6N on `nodes` (N grids).

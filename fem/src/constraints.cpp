@@ -30,11 +30,11 @@ double lookup(const Eigen::SparseMatrix<double>& A, Index row, Index col) {
   return (it != inner + e && *it == row) ? A.valuePtr()[it - inner] : 0.0;
 }
 
-// Principal submatrix A(keep, keep) with keep given by g_to_f (monotonic), built directly.
-Eigen::SparseMatrix<double> select(const Eigen::SparseMatrix<double>& A, const std::vector<Index>& f_to_g,
-                                   const std::vector<Index>& g_to_f) {
+// B = principal submatrix A(keep, keep) with keep given by g_to_f (monotonic), built in place.
+void select(const Eigen::SparseMatrix<double>& A, const std::vector<Index>& f_to_g, const std::vector<Index>& g_to_f,
+            Eigen::SparseMatrix<double>& B) {
   const Index nf = static_cast<Index>(f_to_g.size());
-  Eigen::SparseMatrix<double> B(nf, nf);
+  B.resize(nf, nf);
   std::vector<int> outer(static_cast<std::size_t>(nf + 1), 0);
   std::int64_t nnz = 0;
   for (Index j = 0; j < nf; ++j) {
@@ -56,7 +56,6 @@ Eigen::SparseMatrix<double> select(const Eigen::SparseMatrix<double>& A, const s
       ++pos;
     }
   }
-  return B;
 }
 
 }  // namespace
@@ -271,8 +270,8 @@ ConstrainedSystem apply_constraints(const Model& model, const GlobalMatrices& g,
   out.T.setFromTriplets(trip.begin(), trip.end());
 
   if (!any_dependent) {
-    out.K_ff = select(g.K, out.f_to_g, out.g_to_f);
-    out.M_ff = select(g.M, out.f_to_g, out.g_to_f);
+    select(g.K, out.f_to_g, out.g_to_f, out.K_ff);
+    select(g.M, out.f_to_g, out.g_to_f, out.M_ff);
   } else {
     const Eigen::SparseMatrix<double> Tt = out.T.transpose();
     out.K_ff = Tt * (g.K * out.T);

@@ -13,7 +13,6 @@ namespace seflex::fem {
 namespace {
 
 using Matrix24 = NodeMatrix<4>;
-using Row24 = Eigen::Matrix<double, 1, 24>;
 
 constexpr double kXi[4] = {-1, 1, 1, -1};
 constexpr double kEta[4] = {-1, -1, 1, 1};
@@ -73,20 +72,41 @@ Eigen::Matrix2d jacobian(const Geometry& g, const Shape& s) {
   return J;
 }
 
-// Covariant transverse shear strain along xi (dir = 0) or eta (dir = 1) at (xi, eta):
-// gamma_dir = dw/d(dir) + beta . g_dir, beta = (theta_y, -theta_x).
-Row24 covariant_shear(const Geometry& g, double xi, double eta, int dir) {
+// The flat element's stiffness splits into two uncoupled 12 x 12 parts: membrane + drilling on
+// (u, v, theta_z) and plate on (w, theta_x, theta_y) of each corner (index 3 i + k below).
+using Row12 = Eigen::Matrix<double, 1, 12>;
+using Matrix12 = Eigen::Matrix<double, 12, 12>;
+constexpr int kMembraneDof[3] = {kU, kV, kRz};
+constexpr int kPlateDof[3] = {kW, kRx, kRy};
+constexpr int pW = 0, pRx = 1, pRy = 2;  // plate part
+constexpr int mU = 0, mV = 1, mRz = 2;   // membrane part
+
+// Covariant transverse shear strain along xi (dir = 0) or eta (dir = 1) at (xi, eta), on the plate
+// dofs: gamma_dir = dw/d(dir) + beta . g_dir, beta = (theta_y, -theta_x).
+Row12 covariant_shear(const Geometry& g, double xi, double eta, int dir) {
   const Shape s = shape(xi, eta);
   const Eigen::Matrix2d J = jacobian(g, s);
   const Eigen::Vector4d& dN = dir == 0 ? s.dxi : s.deta;
   const double gx = J(dir, 0), gy = J(dir, 1);
-  Row24 r = Row24::Zero();
+  Row12 r = Row12::Zero();
   for (int i = 0; i < 4; ++i) {
-    r(6 * i + kW) = dN[i];
-    r(6 * i + kRy) = s.N[i] * gx;
-    r(6 * i + kRx) = -s.N[i] * gy;
+    r(3 * i + pW) = dN[i];
+    r(3 * i + pRy) = s.N[i] * gx;
+    r(3 * i + pRx) = -s.N[i] * gy;
   }
   return r;
+}
+
+// Drilling row theta_z - (v,x - u,y)/2 on the membrane dofs, for shape values N and Cartesian
+// derivatives dN (rows d/dx, d/dy).
+Row12 drilling_row(const Eigen::Vector4d& N, const Eigen::Matrix<double, 2, 4>& dN) {
+  Row12 d = Row12::Zero();
+  for (int i = 0; i < 4; ++i) {
+    d(3 * i + mRz) = N[i];
+    d(3 * i + mV) = -0.5 * dN(0, i);
+    d(3 * i + mU) = 0.5 * dN(1, i);
+  }
+  return d;
 }
 
 const double kGauss = 1.0 / std::sqrt(3.0);
@@ -106,16 +126,16 @@ NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot) {
   const double kd = sec.has_membrane ? k6rot * 1e-6 * sec.membrane.G * sec.t : 0.0;
 
   // MITC4 tying points: gamma_xi at A (0,-1), C (0,1); gamma_eta at D (-1,0), B (1,0).
-  const Row24 gA = covariant_shear(g, 0, -1, 0), gC = covariant_shear(g, 0, 1, 0);
-  const Row24 gD = covariant_shear(g, -1, 0, 1), gB = covariant_shear(g, 1, 0, 1);
+  const Row12 gA = covariant_shear(g, 0, -1, 0), gC = covariant_shear(g, 0, 1, 0);
+  const Row12 gD = covariant_shear(g, -1, 0, 1), gB = covariant_shear(g, 1, 0, 1);
 
   const Shape s0 = shape(0, 0);
   const Eigen::Matrix2d J0 = jacobian(g, s0);
   const Eigen::Matrix2d J0inv = J0.inverse();
   const double det0 = J0.determinant();
 
-  Matrix24 K = Matrix24::Zero();
-  Eigen::Matrix<double, 24, 4> Kua = Eigen::Matrix<double, 24, 4>::Zero();
+  Matrix12 Km = Matrix12::Zero(), Kp = Matrix12::Zero();
+  Eigen::Matrix<double, 12, 4> Kua = Eigen::Matrix<double, 12, 4>::Zero();
   Eigen::Matrix4d Kaa = Eigen::Matrix4d::Zero();
   for (double xi : {-kGauss, kGauss})
     for (double eta : {-kGauss, kGauss}) {
@@ -131,51 +151,48 @@ NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot) {
       const double w = det;  // Gauss weights are 1
 
       // Membrane, compatible part and QM6 incompatible modes (1 - xi^2, 1 - eta^2 per direction).
-      Eigen::Matrix<double, 3, 24> Bm = Eigen::Matrix<double, 3, 24>::Zero();
+      Eigen::Matrix<double, 3, 12> Bm = Eigen::Matrix<double, 3, 12>::Zero();
       for (int i = 0; i < 4; ++i) {
-        Bm(0, 6 * i + kU) = dN(0, i);
-        Bm(1, 6 * i + kV) = dN(1, i);
-        Bm(2, 6 * i + kU) = dN(1, i);
-        Bm(2, 6 * i + kV) = dN(0, i);
+        Bm(0, 3 * i + mU) = dN(0, i);
+        Bm(1, 3 * i + mV) = dN(1, i);
+        Bm(2, 3 * i + mU) = dN(1, i);
+        Bm(2, 3 * i + mV) = dN(0, i);
       }
       const Eigen::Vector2d P1 = (det0 / det) * (J0inv * Eigen::Vector2d(-2 * xi, 0));
       const Eigen::Vector2d P2 = (det0 / det) * (J0inv * Eigen::Vector2d(0, -2 * eta));
       Eigen::Matrix<double, 3, 4> Gm;
       Gm << P1.x(), P2.x(), 0, 0, 0, 0, P1.y(), P2.y(), P1.y(), P2.y(), P1.x(), P2.x();
-      K.noalias() += w * Bm.transpose() * Am * Bm;
-      Kua.noalias() += w * Bm.transpose() * Am * Gm;
-      Kaa.noalias() += w * Gm.transpose() * Am * Gm;
+      const Eigen::Matrix<double, 12, 3> BtA = w * Bm.transpose() * Am;
+      Km.noalias() += BtA.lazyProduct(Bm);
+      Kua.noalias() += BtA.lazyProduct(Gm);
+      Kaa.noalias() += (w * Gm.transpose() * Am).lazyProduct(Gm);
 
       // Bending: kappa = (theta_y,x, -theta_x,y, theta_y,y - theta_x,x).
-      Eigen::Matrix<double, 3, 24> Bb = Eigen::Matrix<double, 3, 24>::Zero();
+      Eigen::Matrix<double, 3, 12> Bb = Eigen::Matrix<double, 3, 12>::Zero();
       for (int i = 0; i < 4; ++i) {
-        Bb(0, 6 * i + kRy) = dN(0, i);
-        Bb(1, 6 * i + kRx) = -dN(1, i);
-        Bb(2, 6 * i + kRy) = dN(1, i);
-        Bb(2, 6 * i + kRx) = -dN(0, i);
+        Bb(0, 3 * i + pRy) = dN(0, i);
+        Bb(1, 3 * i + pRx) = -dN(1, i);
+        Bb(2, 3 * i + pRy) = dN(1, i);
+        Bb(2, 3 * i + pRx) = -dN(0, i);
       }
-      K.noalias() += w * Bb.transpose() * Db * Bb;
+      const Eigen::Matrix<double, 12, 3> BtD = w * Bb.transpose() * Db;
+      Kp.noalias() += BtD.lazyProduct(Bb);
 
       // MITC4 transverse shear: assumed covariant strains, then Cartesian (gxz, gyz) = J^-1 (g_xi, g_eta).
-      Eigen::Matrix<double, 2, 24> Gcov;
+      Eigen::Matrix<double, 2, 12> Gcov;
       Gcov.row(0) = 0.5 * (1 - eta) * gA + 0.5 * (1 + eta) * gC;
       Gcov.row(1) = 0.5 * (1 - xi) * gD + 0.5 * (1 + xi) * gB;
-      const Eigen::Matrix<double, 2, 24> Bs = Jinv * Gcov;
-      K.noalias() += (w * ks) * Bs.transpose() * Bs;
+      const Eigen::Matrix<double, 2, 12> Bs = Jinv * Gcov;
+      Kp.noalias() += ((w * ks) * Bs.transpose()).lazyProduct(Bs);
 
       // Drilling penalty on theta_z - omega, omega = (v,x - u,y)/2 of the membrane field including
       // its incompatible modes (so that the exact in-plane bending of QM6 is not penalised).
       if (kd > 0.0) {
-        Row24 d = Row24::Zero();
-        for (int i = 0; i < 4; ++i) {
-          d(6 * i + kRz) = s.N[i];
-          d(6 * i + kV) = -0.5 * dN(0, i);
-          d(6 * i + kU) = 0.5 * dN(1, i);
-        }
+        const Row12 d = drilling_row(s.N, dN);
         const Eigen::RowVector4d da(0.5 * P1.y(), 0.5 * P2.y(), -0.5 * P1.x(), -0.5 * P2.x());
-        K.noalias() += (w * kd) * d.transpose() * d;
-        Kua.noalias() += (w * kd) * d.transpose() * da;
-        Kaa.noalias() += (w * kd) * da.transpose() * da;
+        Km.noalias() += ((w * kd) * d.transpose()).lazyProduct(d);
+        Kua.noalias() += ((w * kd) * d.transpose()).lazyProduct(da);
+        Kaa.noalias() += ((w * kd) * da.transpose()).lazyProduct(da);
       }
     }
   // Drilling coupling at the centre (Hughes & Brezzi): G t A (theta_z - omega)^2 at xi = eta = 0,
@@ -184,17 +201,19 @@ NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot) {
     Eigen::Matrix<double, 2, 4> dN;
     dN.row(0) = s0.dxi.transpose();
     dN.row(1) = s0.deta.transpose();
-    dN = J0inv * dN;
-    Row24 d = Row24::Zero();
-    for (int i = 0; i < 4; ++i) {
-      d(6 * i + kRz) = s0.N[i];
-      d(6 * i + kV) = -0.5 * dN(0, i);
-      d(6 * i + kU) = 0.5 * dN(1, i);
-    }
-    K.noalias() += (4.0 * det0 * sec.membrane.G * sec.t) * d.transpose() * d;
+    const Row12 d = drilling_row(s0.N, J0inv * dN);
+    Km.noalias() += ((4.0 * det0 * sec.membrane.G * sec.t) * d.transpose()).lazyProduct(d);
   }
-  if (Kaa.trace() > 0.0) K.noalias() -= Kua * Kaa.inverse() * Kua.transpose();
-  K = 0.5 * (K + K.transpose()).eval();
+  if (Kaa.trace() > 0.0) Km.noalias() -= (Kua * Kaa.inverse()).lazyProduct(Kua.transpose());
+
+  Matrix24 K = Matrix24::Zero();
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) {
+          K(6 * i + kMembraneDof[a], 6 * j + kMembraneDof[b]) = 0.5 * (Km(3 * i + a, 3 * j + b) + Km(3 * j + b, 3 * i + a));
+          K(6 * i + kPlateDof[a], 6 * j + kPlateDof[b]) = 0.5 * (Kp(3 * i + a, 3 * j + b) + Kp(3 * j + b, 3 * i + a));
+        }
 
   // Warping: the flat element sits on the projections p_i = x_i - h_i e3 (local offset (0, 0, -h_i)).
   std::array<Eigen::Vector3d, 4> d;

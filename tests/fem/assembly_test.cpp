@@ -24,10 +24,7 @@ Model frame_model() {
   p.K1 = p.K2 = 0.8;
   test::add_cbar(m, 1, 5, 10, 20, {0, 0, 1});
   test::add_cbar(m, 2, 5, 20, 30, {0.3, 0.1, 1});
-  Conm2 c;
-  c.id = 7;
-  c.grid = 30;
-  c.m = 4.0;
+  Conm2& c = test::add_conm2(m, 7, 30, 4.0);
   c.x = {0.1, -0.2, 0.3};
   c.I11 = 0.5;
   c.I22 = 0.4;
@@ -35,7 +32,6 @@ Model frame_model() {
   c.I21 = 0.05;
   c.I31 = -0.02;
   c.I32 = 0.01;
-  m.conm2.push_back(c);
   test::finalize_for_test(m);
   return m;
 }

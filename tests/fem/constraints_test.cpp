@@ -134,18 +134,8 @@ TEST(Constraints, EnforcedDisplacement) {
 TEST(Constraints, SetsAndAutospc) {
   Model m = cantilever(2, 1.0);
   test::add_grid(m, 9, 1.0, 1.0, 0.0, 0, test::mask("3"));
-  Rod r;
-  r.id = 70;
-  r.ga = 3;
-  r.gb = 9;
-  r.inline_property = true;
-  r.mid = 1;
-  r.A = 1e-4;
-  m.rods.push_back(r);
-  Rod r2 = r;
-  r2.id = 71;
-  r2.ga = 2;
-  m.rods.push_back(r2);
+  test::add_conrod(m, 70, 3, 9, 1, 1e-4);
+  test::add_conrod(m, 71, 2, 9, 1, 1e-4);
   test::finalize_for_test(m);
   const GlobalMatrices g = assemble(m, AssemblyOptions{});
   const ConstrainedSystem c = apply_constraints(m, g, 1, {6 + 2});  // hold grid 2 T3

@@ -105,6 +105,37 @@ inline Shell& add_shell(Model& m, int id, int pid, std::initializer_list<int> g)
   return m.shells.back();
 }
 
+/// CONROD between grids ga and gb.
+inline Rod& add_conrod(Model& m, int id, int ga, int gb, int mid, double A, double nsm = 0) {
+  Rod r;
+  r.id = id;
+  r.ga = ga;
+  r.gb = gb;
+  r.inline_property = true;
+  r.mid = mid;
+  r.A = A;
+  r.nsm = nsm;
+  m.rods.push_back(r);
+  return m.rods.back();
+}
+
+/// CONM2 at `grid` (CID 0, no offset or inertia unless set on the result).
+inline Conm2& add_conm2(Model& m, int id, int grid, double mass) {
+  Conm2 c;
+  c.id = id;
+  c.grid = grid;
+  c.m = mass;
+  m.conm2.push_back(c);
+  return m.conm2.back();
+}
+
+inline void add_param(Model& m, const std::string& name, const std::string& value) {
+  Param p;
+  p.name = name;
+  p.values = {value};
+  m.params.push_back(p);
+}
+
 inline void add_spc1(Model& m, int sid, ComponentMask c, int grid) {
   SpcEntry e;
   e.sid = sid;

@@ -31,6 +31,7 @@ inline Matrix6 rigid_link(const Eigen::Vector3d& d) {
 /// node dofs in local axes L into one on dofs in basic B. R_BL has the local axes as columns.
 template <int N>
 void rotate_local_to_basic(const Eigen::Matrix3d& R_BL, NodeMatrix<N>& K) {
+  if (R_BL == Eigen::Matrix3d::Identity()) return;  // local axes are the basic ones (exactly)
   for (int j = 0; j < 2 * N; ++j)
     for (int i = 0; i < 2 * N; ++i) {
       const Eigen::Matrix3d b = R_BL * K.template block<3, 3>(3 * i, 3 * j) * R_BL.transpose();

@@ -1,0 +1,96 @@
+// Models that read but cannot be assembled or constrained: the fem library must throw InputError
+// naming the file:line, the card and field, and what was expected. (Also run under ASan + UBSan.)
+#include <gtest/gtest.h>
+
+#include "nastran_test_util.hpp"
+#include "seflex/fem/assembly.hpp"
+#include "seflex/fem/constraints.hpp"
+#include "seflex/fem/loads.hpp"
+
+using namespace seflex;
+using seflex::test::mentions;
+using seflex::test::read_deck;
+
+namespace {
+
+const std::string kBar = "MAT1,1,2.1+11,,0.3,7800.\nPBAR,7,1,1.e-4,1.e-8,2.e-8,0.\n"
+                         "GRID,1,,0.,0.,0.\nGRID,2,,1.,0.,0.\nGRID,3,,1.,0.,0.\nGRID,4,,2.,1.,0.\n";
+
+/// The InputError message of assembling the deck ("" and a test failure if it assembles).
+std::string assembly_error(const std::string& deck) {
+  const fem::Model m = read_deck(deck);
+  try {
+    fem::assemble(m, fem::assembly_options(m));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "assembled without error";
+  return "";
+}
+
+/// The InputError message of applying the constraints (SPC set `spc`, if any).
+std::string constraint_error(const std::string& deck, std::optional<int> spc = std::nullopt) {
+  const fem::Model m = read_deck(deck);
+  const fem::GlobalMatrices g = fem::assemble(m, fem::assembly_options(m));
+  try {
+    fem::apply_constraints(m, g, spc);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "constraints applied without error";
+  return "";
+}
+
+}  // namespace
+
+TEST(FemBadInput, BarGeometry) {
+  EXPECT_TRUE(mentions(assembly_error(kBar + "CBAR,5,7,2,3,0.,0.,1.\n"),
+                       {"deck.bdf:7: CBAR 5", "zero length"}));
+  EXPECT_TRUE(mentions(assembly_error(kBar + "CBAR,5,7,1,2,1.,0.,0.\n"),
+                       {"deck.bdf:7: CBAR 5, field 6-8 (X1-X3)", "parallel to the bar axis"}));
+  EXPECT_TRUE(mentions(assembly_error(kBar + "CBAR,5,7,1,2,3\n"), {"deck.bdf:7: CBAR 5, field 6 (G0)", "parallel"}));
+}
+
+TEST(FemBadInput, PinFlagWithoutStiffness) {
+  // J = 0: releasing the torsion (4) at end A has nothing to release
+  EXPECT_TRUE(mentions(assembly_error(kBar + "CBAR,5,7,1,2,0.,0.,1.\n,4\n"),
+                       {"deck.bdf:7: CBAR 5, field PA/PB", "PA = '4'", "no stiffness"}));
+  // releasing the transverse translation at both ends leaves a mechanism
+  EXPECT_TRUE(mentions(assembly_error(kBar + "CBAR,5,7,1,2,0.,0.,1.\n,26,26\n"), {"CBAR 5", "mechanism"}));
+}
+
+TEST(FemBadInput, ShellGeometry) {
+  const std::string d = "MAT1,1,2.1+11,,0.3,7800.\nPSHELL,1,1,0.002,1\n"
+                        "GRID,1,,0.,0.,0.\nGRID,2,,1.,0.,0.\nGRID,3,,0.2,0.2,0.\nGRID,4,,0.,1.,0.\nGRID,5,,2.,0.,0.\n";
+  EXPECT_TRUE(mentions(assembly_error(d + "CQUAD4,9,1,1,2,3,4\n"),
+                       {"deck.bdf:8: CQUAD4 9, field 4-7 (G1-G4)", "convex quadrilateral"}));
+  EXPECT_TRUE(mentions(assembly_error(d + "CQUAD4,9,1,1,4,3,2\n"), {"CQUAD4 9", "convex"}));
+  EXPECT_TRUE(mentions(assembly_error(d + "CTRIA3,9,1,1,2,5\n"), {"deck.bdf:8: CTRIA3 9, field 4-6 (G1-G3)", "collinear"}));
+}
+
+TEST(FemBadInput, ConflictingConstraints) {
+  const std::string d = kBar + "CBAR,5,7,1,2,0.,0.,1.\nCBAR,6,7,2,4,0.,0.,1.\n";
+  // a dependent component that is also a GRID PS constraint
+  EXPECT_TRUE(mentions(constraint_error(d + "RBE2,20,1,123,4\nGRID,9,,5.,5.,5.,,3\nRBE2,21,2,3,9\n"),
+                       {"deck.bdf:11: RBE2 21, field GMi", "component 3 of GRID 9", "also constrained"}));
+  // a component made dependent by two RBE2s
+  EXPECT_TRUE(mentions(constraint_error(d + "RBE2,20,1,123,4\nRBE2,21,2,12,4\n"),
+                       {"deck.bdf:10: RBE2 21", "component 1 of GRID 4 is already dependent in RBE2 20"}));
+  // RBE2s that depend on each other in a loop
+  EXPECT_TRUE(mentions(constraint_error(d + "RBE2,20,1,123456,4\nRBE2,21,4,123456,2\nRBE2,22,2,123456,1\n"),
+                       {"RBE2", "closed loop"}));
+}
+
+TEST(FemBadInput, UndefinedSets) {
+  const std::string d = kBar + "CBAR,5,7,1,2,0.,0.,1.\nSPC1,3,123456,1\nFORCE,4,2,,1.,0.,0.,1.\n";
+  EXPECT_TRUE(mentions(constraint_error(d, 8), {"case control SPC = 8", "no SPC, SPC1 or SPCADD"}));
+  const fem::Model m = read_deck(d);
+  const fem::DofMap dofs = fem::make_dof_map(m);
+  try {
+    fem::load_vector(m, dofs, 12);
+    ADD_FAILURE() << "no error for an undefined load set";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(mentions(e.what(), {"case control LOAD = 12", "no LOAD, FORCE or MOMENT"}));
+  }
+  EXPECT_EQ(fem::load_vector(m, dofs, 4)[6 + 2], 1.0);
+}
