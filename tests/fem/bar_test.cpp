@@ -161,3 +161,49 @@ TEST(Bar, MassSumsToTotalAndRigidInertia) {
 
 }  // namespace
 }  // namespace seflex::fem
+
+namespace seflex::fem {
+namespace {
+
+// Orientation and offsets as a CBAR card gives them: G0 (v from GA to G0), v in GA's displacement
+// system (OFFT G..) or basic (B..), offsets in the grids' displacement systems (.GG), basic (.BB)
+// or element axes (.OO): all describe the same bar here, so all give the same stiffness.
+TEST(Bar, OrientationAndOffsetConventions) {
+  Model m;
+  test::add_grid(m, 1, 0, 0, 0, 5);
+  test::add_grid(m, 2, 2, 0.5, 0, 5);
+  test::add_grid(m, 3, 0.3, 1.0, 2.0);
+  const Eigen::Matrix3d R5 = so3::exp(Eigen::Vector3d(0.4, -0.2, 0.9));
+  test::add_rect_coord(m, 5, {0, 0, 0}, R5);
+  test::add_mat1(m, 1, 7e10, 0.3, 2700);
+  test::add_pbar(m, 2, 1, 1e-3, 2e-6, 1e-6, 3e-6);
+  const Eigen::Vector3d v_basic(0.3, 1.0, 2.0), wa(0.05, 0.02, 0.1), wb(-0.02, 0.04, 0.1);
+  Bar& g0 = test::add_cbar(m, 10, 2, 1, 2, Eigen::Vector3d::Zero());  // G0 = 3 and offsets in CD 5
+  g0.has_g0 = true;
+  g0.g0 = 3;
+  g0.wa = R5.transpose() * wa;
+  g0.wb = R5.transpose() * wb;
+  Bar& vg = test::add_cbar(m, 11, 2, 1, 2, R5.transpose() * v_basic);  // v in GA's CD, offsets basic
+  vg.offt = "GBB";
+  vg.wa = wa;
+  vg.wb = wb;
+  test::finalize_for_test(m);
+  const BarElement e0 = make_bar_element(m, m.bars[0]), e1 = make_bar_element(m, m.bars[1]);
+  // offsets in element axes of the grid-to-grid line (the same line here up to the offsets' shift)
+  Bar oo = m.bars[1];
+  oo.offt = "BOO";
+  oo.v = v_basic;
+  BarElement probe = e1;
+  probe.w_A = probe.w_B = Eigen::Vector3d::Zero();
+  const Eigen::Matrix3d R0 = bar_axes(probe);
+  oo.wa = R0.transpose() * wa;
+  oo.wb = R0.transpose() * wb;
+  const BarElement e2 = make_bar_element(m, oo);
+  const NodeMatrix<2> K0 = bar_stiffness(e0);
+  EXPECT_LE((bar_stiffness(e1) - K0).norm(), 1e-12 * K0.norm());
+  EXPECT_LE((bar_stiffness(e2) - K0).norm(), 1e-12 * K0.norm());
+  EXPECT_LE((e0.v.normalized() - v_basic.normalized()).norm(), 1e-15);
+}
+
+}  // namespace
+}  // namespace seflex::fem
