@@ -5,6 +5,7 @@
 #include "model_lookup.hpp"
 #include "seflex/fem/finalize.hpp"
 #include "seflex/common/error.hpp"
+#include "seflex/fem/dmig.hpp"
 #include "seflex/fem/element_bar.hpp"
 #include "seflex/fem/element_conm2.hpp"
 #include "seflex/fem/element_rod.hpp"
@@ -206,6 +207,7 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
       pattern.scatter<1>(&mass_nodes[i], M, g.M);
     }
   }
+  add_direct_matrices(model, g.dofs, g.K, g.M);  // K2GG / M2GG (dmig.hpp)
   if (options.prune_zeros) {
     g.K.prune(0.0, 0.0);
     g.M.prune(0.0, 0.0);

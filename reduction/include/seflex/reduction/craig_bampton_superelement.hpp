@@ -1,0 +1,83 @@
+#pragma once
+// An FE model reduced to the absolute-interface-coordinate superelement (se::Superelement,
+// formulation.md sections 1.2-1.3 and 2.4-2.5): Craig-Bampton on all six dofs of N interface
+// grids plus m fixed-interface modes, with everything the multibody side needs.
+//
+//   q = [u_1 theta_1 ... u_N theta_N eta_1 ... eta_m]   (n = 6N + m), body axes = basic axes,
+//   origin at the frame node f.
+//
+// Steps (the model is read, never changed):
+//  1. K, M of the g-set (fem::assemble; DMIG K2GG/M2GG included), constraints of the case control
+//     SPC set and RBE2s eliminated exactly (fem::apply_constraints, AUTOSPC on).
+//  2. Every interface grid must keep its six dofs free (not SPC'd, not an RBE2 dependent, not
+//     removed by AUTOSPC); the boundary set is their 6N f-dofs.
+//  3. Craig-Bampton (craig_bampton.hpp). Constraint-mode columns are then expressed in basic
+//     components, so q is in body axes even for grids with a CD system (interface triads R_BN = I).
+//  4. Recovery to every grid's 6 dofs in basic (RBE2 dependents and SPC'd dofs through T):
+//     recovery = A_g T [Psi Phi], A_g the grids' CD axes; Phi_f = the frame node's 6 rows.
+//  5. M_fe = A_g M_gg A_g^T on the grid dofs (WTMASS applied: recovery^T M_fe recovery = M).
+//  6. Mass properties (mass, CG from f, inertia about the CG, basic axes) from D^T M_gg D with D
+//     the rigid-body modes about f: the mass the analysis uses (WTMASS applied, DMIG included).
+//  7. Truncation report with the rigid motions about f (craig_bampton.hpp, truncation_report).
+// Frame node: options.frame_node, or by default the grid with six free dofs, not an interface
+// node, nearest the centre of mass (ties: the lower id). The yoke uses 2 and the panel 112.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "seflex/fem/model.hpp"
+#include "seflex/reduction/craig_bampton.hpp"
+#include "seflex/superelement/superelement.hpp"
+
+namespace seflex::reduction {
+
+/// Cards that name an interface (boundary) set.
+enum class InterfaceCards : unsigned char { Aset, Bset, Suport };
+
+/// Interface grids named by ASET/ASET1, BSET/BSET1 or SUPORT cards, in order of first appearance.
+/// Each entry must name all six components of a GRID (a superelement interface node carries six
+/// dofs); throws InputError naming the card otherwise, or when there is no such card.
+std::vector<int> interface_nodes_from_cards(const fem::Model& model, InterfaceCards cards);
+
+/// Interface grids of a named node set (Model::node_sets, e.g. a gmsh physical group). Throws
+/// InputError listing the available names if there is none of that name.
+std::vector<int> interface_nodes_from_set(const fem::Model& model, const std::string& name);
+
+struct SuperelementOptions {
+  std::vector<int> interface_ids;          ///< grid ids, in the order of q
+  std::optional<int> frame_node;           ///< default: see above
+  CraigBamptonOptions modes;               ///< fixed-interface modes (count or frequency limit)
+  std::string name;                        ///< body name
+  bool full_mesh = true;                   ///< recovery, M_fe and cells (animation, full inertia)
+};
+
+/// What was done, for the summary of `seflex reduce` and the benchmark.
+struct SuperelementInfo {
+  CraigBamptonStats stats;
+  bool frame_chosen = false;               ///< the frame node was chosen by the default rule
+  int spc_set = 0;                         ///< SPC set applied (0 = none)
+  Eigen::Index autospc_dofs = 0;           ///< dofs removed by AUTOSPC
+  Eigen::Index dependent_dofs = 0;         ///< RBE2-dependent dofs eliminated
+};
+
+/// Reduce a finalized model. Fills every field of se::Superelement except the provenance ones the
+/// caller knows (source_file, source_hash, created). Throws InputError for a bad interface or
+/// frame node (naming the node and why: missing, a scalar point, SPC'd, an RBE2 dependent,
+/// without stiffness in a component, listed twice) and for an interior the interface does not hold
+/// (a part connected to no interface node, or a mechanism: names a grid and component).
+se::Superelement reduce_to_superelement(const fem::Model& model, const SuperelementOptions& options,
+                                        SuperelementInfo* info = nullptr);
+
+/// The rigid-body modes of the interface (6N x 6) for unit translations along and rotations about
+/// the basic axes through the frame origin: rows of node j = [I, -skew(x_j); 0, I] (formulation.md
+/// section 1.4, Phi_rig at u = 0).
+Eigen::MatrixXd interface_rigid_modes(const se::Superelement& body);
+
+/// Lowest `count` eigenvalues of the free-free reduced model (K, M of the superelement), ascending.
+Eigen::VectorXd reduced_eigenvalues(const se::Superelement& body, int count);
+
+/// Lowest `count` eigenvalues of the full FE model with the constraints `reduce_to_superelement`
+/// applies (case-control SPC, RBE2, AUTOSPC), for comparison with the reduced model.
+Eigen::VectorXd full_model_eigenvalues(const fem::Model& model, int count, EigenBackend backend = EigenBackend::Spectra);
+
+}  // namespace seflex::reduction

@@ -1,0 +1,173 @@
+// Generic Craig-Bampton reduction on the f-set (craig_bampton.hpp).
+#include "seflex/reduction/craig_bampton.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "seflex/common/error.hpp"
+
+namespace seflex::reduction {
+
+namespace {
+
+/// Columns `cols` and rows `rows` of the symmetric A (both triangles stored), as a sparse matrix.
+/// row_pos / col_pos map an f index to its position in the block (-1 = not in it); rows must be
+/// numbered increasingly with f so that each column stays sorted. lower_only keeps row >= column.
+SparseMatrixd extract_block(const SparseMatrixd& A, const std::vector<Eigen::Index>& rows, const std::vector<Eigen::Index>& row_pos,
+                            const std::vector<Eigen::Index>& cols, bool lower_only) {
+  const auto nc = static_cast<Eigen::Index>(cols.size()), nr = static_cast<Eigen::Index>(rows.size());
+  SparseMatrixd B(nr, nc);
+  std::vector<int> count(static_cast<std::size_t>(nc), 0);
+  for (Eigen::Index c = 0; c < nc; ++c)
+    for (SparseMatrixd::InnerIterator it(A, cols[static_cast<std::size_t>(c)]); it; ++it) {
+      const Eigen::Index r = row_pos[static_cast<std::size_t>(it.row())];
+      if (r >= 0 && (!lower_only || r >= c)) ++count[static_cast<std::size_t>(c)];
+    }
+  B.reserve(count);
+  for (Eigen::Index c = 0; c < nc; ++c)
+    for (SparseMatrixd::InnerIterator it(A, cols[static_cast<std::size_t>(c)]); it; ++it) {
+      const Eigen::Index r = row_pos[static_cast<std::size_t>(it.row())];
+      if (r >= 0 && (!lower_only || r >= c)) B.insert(r, c) = it.value();
+    }
+  B.makeCompressed();
+  return B;
+}
+
+/// Number of finite eigenvalues bound (columns of M with a nonzero) - for "all modes" requests.
+Eigen::Index nonzero_columns(const SparseMatrixd& M) {
+  Eigen::Index n = 0;
+  for (Eigen::Index j = 0; j < M.outerSize(); ++j)
+    for (SparseMatrixd::InnerIterator it(M, j); it; ++it)
+      if (it.value() != 0) {
+        ++n;
+        break;
+      }
+  return n;
+}
+
+}  // namespace
+
+CraigBamptonBasis craig_bampton(const SparseMatrixd& K_ff, const SparseMatrixd& M_ff,
+                                const std::vector<Eigen::Index>& boundary, const CraigBamptonOptions& options) {
+  const Eigen::Index n = K_ff.rows();
+  SEFLEX_DEMAND(K_ff.cols() == n && M_ff.rows() == n && M_ff.cols() == n, "Craig-Bampton: K and M must be square, same size");
+  SEFLEX_DEMAND(options.modes.has_value() != options.fmax_hz.has_value(),
+                "Craig-Bampton: give either a number of modes or a frequency limit");
+  SEFLEX_DEMAND(!options.modes || *options.modes >= 0, "Craig-Bampton: negative mode count");
+  SEFLEX_DEMAND(!options.fmax_hz || *options.fmax_hz > 0, "Craig-Bampton: the frequency limit must be positive");
+  SEFLEX_DEMAND(options.extra_modes >= 0, "Craig-Bampton: negative extra mode count");
+  SEFLEX_DEMAND(!boundary.empty(), "Craig-Bampton: empty boundary set");
+
+  CraigBamptonBasis cb;
+  cb.boundary = boundary;
+  std::vector<Eigen::Index> bpos(static_cast<std::size_t>(n), -1), ipos(static_cast<std::size_t>(n), -1);
+  for (std::size_t k = 0; k < boundary.size(); ++k) {
+    const Eigen::Index f = boundary[k];
+    SEFLEX_DEMAND(f >= 0 && f < n, "Craig-Bampton: boundary dof out of range");
+    SEFLEX_DEMAND(bpos[static_cast<std::size_t>(f)] < 0, "Craig-Bampton: boundary dof " + std::to_string(f) + " given twice");
+    bpos[static_cast<std::size_t>(f)] = static_cast<Eigen::Index>(k);
+  }
+  for (Eigen::Index f = 0; f < n; ++f)
+    if (bpos[static_cast<std::size_t>(f)] < 0) {
+      ipos[static_cast<std::size_t>(f)] = static_cast<Eigen::Index>(cb.interior.size());
+      cb.interior.push_back(f);
+    }
+  const auto nb = static_cast<Eigen::Index>(boundary.size()), ni = static_cast<Eigen::Index>(cb.interior.size());
+  cb.stats.n_free = n;
+  cb.stats.n_boundary = nb;
+  cb.stats.n_interior = ni;
+
+  // Boundary rows of K (dense n_b x n_b) and the coupling K_ib (sparse n_i x n_b).
+  const Eigen::MatrixXd K_bb = Eigen::MatrixXd(extract_block(K_ff, boundary, bpos, boundary, false));
+  const SparseMatrixd K_ib = extract_block(K_ff, cb.interior, ipos, boundary, false);
+
+  // Constraint modes: Psi_i = -K_ii^-1 K_ib, one factorisation, one block solve.
+  Eigen::MatrixXd Psi_i = -Eigen::MatrixXd(K_ib);
+  if (ni > 0) {
+    const SparseMatrixd K_ii = extract_block(K_ff, cb.interior, ipos, cb.interior, true);
+    auto factor = make_factorization(options.factorization);
+    factor->factorize(K_ii);  // FactorizationError names the interior column: mapped by the caller
+    factor->solve_in_place(Psi_i);
+    cb.stats.interior_factorization = factor->stats();
+  }
+  cb.Psi = Eigen::MatrixXd::Zero(n, nb);
+  for (Eigen::Index k = 0; k < nb; ++k) cb.Psi(boundary[static_cast<std::size_t>(k)], k) = 1.0;
+  for (Eigen::Index r = 0; r < ni; ++r) cb.Psi.row(cb.interior[static_cast<std::size_t>(r)]) = Psi_i.row(r);
+
+  // Fixed-interface modes of (K_ii, M_ii).
+  Eigen::MatrixXd X(ni, 0);
+  Eigen::VectorXd lambda(0);
+  Eigen::Index kept = 0;
+  if (ni > 0) {
+    const SparseMatrixd K_ii = extract_block(K_ff, cb.interior, ipos, cb.interior, true);
+    const SparseMatrixd M_ii = extract_block(M_ff, cb.interior, ipos, cb.interior, true);
+    const Eigen::Index finite = nonzero_columns(M_ii);
+    EigenOptions eo;
+    eo.backend = options.backend;
+    eo.factorization = options.factorization;
+    auto solve = [&](std::optional<int> count, std::optional<double> lambda_max) {
+      eo.count = count;
+      eo.lambda_max = lambda_max;
+      EigenSolution s = solve_eigenproblem(K_ii, M_ii, eo);
+      cb.stats.eigen = s.stats;
+      ++cb.stats.eigen_solutions;
+      return s;
+    };
+    EigenSolution sol;
+    if (options.modes) {
+      const Eigen::Index want = std::min<Eigen::Index>(*options.modes + options.extra_modes, finite);
+      if (want > 0) sol = solve(static_cast<int>(want), std::nullopt);
+      kept = std::min<Eigen::Index>(*options.modes, sol.eigenvalues.size());
+    } else {
+      const double lambda_max = std::pow(2.0 * 3.14159265358979323846 * *options.fmax_hz, 2);
+      sol = solve(std::nullopt, lambda_max);
+      kept = sol.eigenvalues.size();
+      if (options.extra_modes > 0 && kept < finite) {
+        // The modes just above the limit, for the first neglected frequency: one more run asking
+        // for a count (the eigensolver extracts from the bottom of the spectrum).
+        sol = solve(static_cast<int>(std::min<Eigen::Index>(kept + options.extra_modes, finite)), std::nullopt);
+        kept = 0;
+        while (kept < sol.eigenvalues.size() && sol.eigenvalues(kept) <= lambda_max) ++kept;
+      }
+    }
+    if (sol.eigenvalues.size() > 0) {
+      X = std::move(sol.vectors);
+      lambda = std::move(sol.eigenvalues);
+    }
+  }
+  const Eigen::Index m = kept;
+  cb.eigenvalues = lambda.head(m);
+  cb.neglected_eigenvalues = lambda.tail(lambda.size() - m);
+  cb.Phi = Eigen::MatrixXd::Zero(n, m);
+  for (Eigen::Index r = 0; r < ni; ++r) cb.Phi.row(cb.interior[static_cast<std::size_t>(r)]) = X.row(r).head(m);
+
+  // Reduced matrices.
+  const Eigen::Index nr = nb + m;
+  cb.K = Eigen::MatrixXd::Zero(nr, nr);
+  cb.M = Eigen::MatrixXd::Zero(nr, nr);
+  Eigen::MatrixXd Kbb = K_bb + Eigen::MatrixXd(K_ib.transpose() * Psi_i);  // Schur complement Psi^T K Psi
+  cb.K.topLeftCorner(nb, nb) = 0.5 * (Kbb + Kbb.transpose());
+  cb.K.diagonal().tail(m) = cb.eigenvalues;
+  const Eigen::MatrixXd MPsi = M_ff * cb.Psi;
+  Eigen::MatrixXd Mbb = cb.Psi.transpose() * MPsi;
+  cb.M.topLeftCorner(nb, nb) = 0.5 * (Mbb + Mbb.transpose());
+  if (m > 0) {
+    cb.M.bottomLeftCorner(m, nb) = cb.Phi.transpose() * MPsi;
+    cb.M.topRightCorner(nb, m) = cb.M.bottomLeftCorner(m, nb).transpose();
+    cb.M.bottomRightCorner(m, m).setIdentity();
+  }
+  return cb;
+}
+
+Eigen::VectorXd small_pencil_eigenvalues(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M, int count) {
+  SEFLEX_DEMAND(K.rows() == K.cols() && M.rows() == M.cols() && K.rows() == M.rows(), "pencil: sizes differ");
+  if (K.rows() == 0 || count <= 0) return Eigen::VectorXd(0);
+  EigenOptions eo;
+  eo.backend = EigenBackend::Dense;
+  eo.count = count;
+  const SparseMatrixd Ks = K.sparseView(), Ms = M.sparseView();
+  return solve_eigenproblem(Ks, Ms, eo).eigenvalues;
+}
+
+}  // namespace seflex::reduction
