@@ -29,7 +29,8 @@ int run_export(seflex::app::Args& args) {
   if (first_spoint != kAbsent && first_spoint < 1) throw UsageError("option --first-spoint expects an id >= 1");
   for (const auto& p : {dmig, op4})  // before the work, not after it
     if (p && !force && std::filesystem::exists(*p))
-      throw seflex::InputError(seflex::SourceRef{*p, 0}, "exists already; refusing to overwrite it (use --force to replace it)");
+      throw seflex::InputError(seflex::SourceRef{*p, 0},
+                               "exists already; refusing to overwrite it (use --force to replace it)");
 
   const seflex::se::Superelement body = seflex::io::load_superelement(body_path);
   std::printf("superelement '%s' from %s: %d interface nodes, %d modes, n = %d\n", body.name.c_str(), body_path.c_str(),

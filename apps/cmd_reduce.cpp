@@ -45,7 +45,8 @@ std::vector<int> interface_ids(const seflex::fem::Model& model, const std::strin
     std::string item = spec.substr(pos, comma - pos);
     item.erase(std::remove(item.begin(), item.end(), ' '), item.end());
     if (item.empty() || item.size() > 9)
-      throw UsageError("option --interface: '" + spec + "': expected grid ids separated by commas (e.g. 1,3,4), aset, bset, "
+      throw UsageError("option --interface: '" + spec +
+                       "': expected grid ids separated by commas (e.g. 1,3,4), aset, bset, "
                        "suport or the name of a node set");
     ids.push_back(std::stoi(item));
     pos = comma + 1;
@@ -78,7 +79,8 @@ void print_vector(const char* label, const Eigen::Vector3d& v) {
   std::printf("  %-30s %14.6E %14.6E %14.6E\n", label, v.x(), v.y(), v.z());
 }
 
-void print_summary(const seflex::se::Superelement& s, const red::SuperelementInfo& info, const seflex::fem::Model& model) {
+void print_summary(const seflex::se::Superelement& s, const red::SuperelementInfo& info,
+                   const seflex::fem::Model& model) {
   const auto& st = info.stats;
   std::printf("\nmodel\n  %zu grids, %ld free dofs (f-set), %ld RBE2-dependent, %ld removed by AUTOSPC, SPC set %s\n",
               model.grids.size(), static_cast<long>(st.n_free), static_cast<long>(info.dependent_dofs),
@@ -87,8 +89,8 @@ void print_summary(const seflex::se::Superelement& s, const red::SuperelementInf
   std::printf("  %8s %14s %14s %14s   (position from the frame node)\n", "grid", "x", "y", "z");
   for (const auto& n : s.interfaces)
     std::printf("  %8d %14.6E %14.6E %14.6E\n", n.id, n.p_BoN_B.x(), n.p_BoN_B.y(), n.p_BoN_B.z());
-  std::printf("\nframe node %d at (%.6g, %.6g, %.6g) in basic%s\n", s.frame_node_id, s.p_OBo.x(), s.p_OBo.y(), s.p_OBo.z(),
-              info.frame_chosen ? ", chosen as the free grid nearest the centre of mass" : "");
+  std::printf("\nframe node %d at (%.6g, %.6g, %.6g) in basic%s\n", s.frame_node_id, s.p_OBo.x(), s.p_OBo.y(),
+              s.p_OBo.z(), info.frame_chosen ? ", chosen as the free grid nearest the centre of mass" : "");
   std::printf("\nmass properties of the full model (body axes = basic axes, WTMASS applied)\n");
   std::printf("  %-30s %14.6E\n", "mass", s.mass);
   print_vector("centre of mass from frame node", s.p_BoCm_B);
@@ -120,8 +122,7 @@ void print_free_free(const seflex::se::Superelement& s, int elastic, const Eigen
   const Eigen::VectorXd lambda = red::reduced_eigenvalues(s, 6 + elastic);
   std::printf("\nreduced model: n = %d (6 x %d interface dofs + %d modes); free-free frequencies\n", s.size(),
               s.num_interfaces(), s.num_modes);
-  if (full)
-    std::printf("  %4s %16s %16s %12s\n", "mode", "reduced (Hz)", "full FE (Hz)", "rel. error");
+  if (full) std::printf("  %4s %16s %16s %12s\n", "mode", "reduced (Hz)", "full FE (Hz)", "rel. error");
   for (Eigen::Index k = 0; k < lambda.size(); ++k) {
     const double f = red::eigenvalue_to_hz(lambda(k));
     std::printf("  %4ld %16.6f", static_cast<long>(k + 1), f);
@@ -156,12 +157,14 @@ int run_reduce(seflex::app::Args& args) {
   if (!out) throw UsageError("missing -o FILE (the superelement file to write)");
   if (modes != kAbsent && !std::isnan(fmax)) throw UsageError("give either --modes or --fmax, not both");
   if (modes != kAbsent && modes < 0) throw UsageError("option --modes expects a number >= 0");
-  if (!std::isnan(fmax) && !(fmax > 0 && std::isfinite(fmax))) throw UsageError("option --fmax expects a frequency > 0 (Hz)");
+  if (!std::isnan(fmax) && !(fmax > 0 && std::isfinite(fmax)))
+    throw UsageError("option --fmax expects a frequency > 0 (Hz)");
   if (compare != kAbsent && compare < 1) throw UsageError("option --compare expects a number of elastic modes >= 1");
   const auto backend = red::parse_eigen_backend(solver);
   if (!backend) throw UsageError("option --eigensolver expects spectra, arpack or dense, got '" + solver + "'");
   if (!force && std::filesystem::exists(*out))  // before the work, not after it
-    throw seflex::InputError(seflex::SourceRef{*out, 0}, "exists already; refusing to overwrite it (use --force to replace it)");
+    throw seflex::InputError(seflex::SourceRef{*out, 0},
+                             "exists already; refusing to overwrite it (use --force to replace it)");
 
   const auto t0 = std::chrono::steady_clock::now();
   const seflex::fem::Model model = seflex::io::read_nastran(model_path);
@@ -199,8 +202,16 @@ int run_reduce(seflex::app::Args& args) {
   const auto sec = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };
   std::printf("\nwrote %s (%.1f MB)\n", out->c_str(),
               static_cast<double>(std::filesystem::file_size(*out)) / (1024.0 * 1024.0));
-  std::printf("time: read %.2f s, reduce %.2f s, summary and write %.2f s (factor of K_ii: %.3g nonzeros)\n", sec(t0, t1),
-              sec(t1, t2), sec(t2, t3), info.stats.interior_factorization.factor_nonzeros);
+  const auto& st = info.stats;
+  std::printf("time: read %.2f s, reduce %.2f s, summary and write %.2f s\n", sec(t0, t1), sec(t1, t2), sec(t2, t3));
+  std::printf("work: K_ii %ld dofs, factor %.3g nonzeros; ", static_cast<long>(st.n_interior),
+              st.interior_factorization.factor_nonzeros);
+  if (st.block_solves > 0)
+    std::printf("fixed-interface modes by block Lanczos on that factor: %d block solves, basis %ld\n", st.block_solves,
+                static_cast<long>(st.krylov_basis));
+  else
+    std::printf("fixed-interface modes by %d eigensolver run(s), %ld solves\n", st.eigen_solutions,
+                st.eigen.operator_applications);
   return seflex::app::kOk;
 }
 

@@ -29,6 +29,10 @@ def main():
     def z(iz):
         return -0.5 * length + length * iz / nz
 
+    def real(x):
+        s = "%.10g" % x
+        return s if ("." in s or "e" in s) else s + "."
+
     lines = [
         "$ seflex reduction benchmark: refined demonstration panel (bench/refined_panel.py %d %d)" % (ny, nz),
         "$ %d x %d CQUAD4, %d grids, %d dofs. Units SI." % (ny, nz, (ny + 1) * (nz + 1) + 6, 6 * ((ny + 1) * (nz + 1) + 6)),
@@ -37,10 +41,10 @@ def main():
     add = lines.append
     for iy in range(ny + 1):
         for iz in range(nz + 1):
-            add("GRID,%d,,0.0,%.10g,%.10g" % (gid(iy, iz), y(iy), z(iz)))
+            add("GRID,%d,,0.0,%s,%s" % (gid(iy, iz), real(y(iy)), real(z(iz))))
     hinge = {1: (ny, nz // 4), 2: (ny, 3 * nz // 4), 3: (0, nz // 4), 4: (0, 3 * nz // 4), 5: (ny, nz // 2), 6: (0, nz // 2)}
     for h, (iy, iz) in hinge.items():
-        add("GRID,%d,,%.10g,%.10g,%.10g" % (h, -0.02 if iy == ny else 0.02, y(iy), z(iz)))
+        add("GRID,%d,,%s,%s,%s" % (h, real(-0.02 if iy == ny else 0.02), real(y(iy)), real(z(iz))))
     eid = 1000000
     for iy in range(ny):
         for iz in range(nz):
@@ -56,7 +60,7 @@ def main():
         bar += 1
     add("PBAR,10,10,0.00054,7.E-8,7.E-8,1.4E-7,0.0")
     add("MAT1,10,7.1E10,,0.3")
-    add("PSHELL,100,100,0.00036,100,11200.0,100,19.13,%.10g" % (13.75 / (width * length)))
+    add("PSHELL,100,100,0.00036,100,11200.0,100,19.13,%s" % real(13.75 / (width * length)))
     add("MAT1,100,1.21E11,,0.3")
     add("ENDDATA")
     with open(out, "w") as f:

@@ -38,9 +38,10 @@ DirectMatrixSelection direct_matrix_selection(const Model& model) {
   for (const Subcase& sc : cc.subcases)
     if (sc.k2gg != s.k2gg || sc.m2gg != s.m2gg) {
       const std::string file = model.files.empty() ? std::string() : model.files[0];
-      throw InputError(file + ": case control SUBCASE " + std::to_string(sc.id) +
-                       ": K2GG/M2GG differ from SUBCASE " + std::to_string(first.id) +
-                       "; expected one K2GG and one M2GG selection for all subcases (put them above the first SUBCASE)");
+      throw InputError(
+          file + ": case control SUBCASE " + std::to_string(sc.id) + ": K2GG/M2GG differ from SUBCASE " +
+          std::to_string(first.id) +
+          "; expected one K2GG and one M2GG selection for all subcases (put them above the first SUBCASE)");
     }
   return s;
 }
@@ -69,12 +70,13 @@ Eigen::SparseMatrix<double> dmig_matrix(const Model& model, const DofMap& dofs, 
       const Eigen::Index i = std::max(*row, *col), j = std::min(*row, *col);
       const auto [it, inserted] = seen.emplace(std::make_pair(i, j), std::make_pair(e.gi, e.ci));
       if (!inserted)
-        throw InputError(at, "DMIG " + d.name + ": the term (" + point_name(e.gi, e.ci) + ", " + point_name(e.gj, e.cj) +
+        throw InputError(at, "DMIG " + d.name + ": the term (" + point_name(e.gi, e.ci) + ", " +
+                                 point_name(e.gj, e.cj) +
                                  ") is given twice (also as its symmetric partner or a repeated entry); expected each "
                                  "term of a symmetric (IFO 6) matrix once, in either triangle");
       if (!std::isfinite(e.value))
-        throw InputError(at, "DMIG " + d.name + ": the term (" + point_name(e.gi, e.ci) + ", " + point_name(e.gj, e.cj) +
-                                 ") is not a finite number");
+        throw InputError(at, "DMIG " + d.name + ": the term (" + point_name(e.gi, e.ci) + ", " +
+                                 point_name(e.gj, e.cj) + ") is not a finite number");
       const double v = scale * e.value;
       triplets.emplace_back(i, j, v);
       if (i != j) triplets.emplace_back(j, i, v);

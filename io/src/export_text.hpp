@@ -11,12 +11,14 @@ namespace seflex::io::detail {
 
 inline void write_text_file(const std::filesystem::path& path, const std::string& text, bool overwrite) {
   if (!overwrite && std::filesystem::exists(path))
-    throw InputError(SourceRef{path.string(), 0}, "exists already; refusing to overwrite it (use --force to replace it)");
+    throw InputError(SourceRef{path.string(), 0},
+                     "exists already; refusing to overwrite it (use --force to replace it)");
   std::filesystem::path tmp = path;
   tmp += ".tmp-seflex";
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(SourceRef{path.string(), 0}, "cannot be written (check the folder exists and is writable)");
+    if (!out)
+      throw InputError(SourceRef{path.string(), 0}, "cannot be written (check the folder exists and is writable)");
     out.write(text.data(), static_cast<std::streamsize>(text.size()));
     out.close();
     if (!out) throw InputError(SourceRef{path.string(), 0}, "write failed (disk full?)");

@@ -73,7 +73,8 @@ std::vector<Op4Matrix> superelement_op4_matrices(const se::Superelement& body, b
   std::vector<Op4Matrix> mats{{"KAA", 6, body.K}, {"MAA", 6, body.M}};
   if (recovery) {
     if (body.recovery.size() == 0)
-      throw InputError("superelement '" + body.name + "' holds no recovery matrix; expected one for the OP4 RECOVERY "
+      throw InputError("superelement '" + body.name +
+                       "' holds no recovery matrix; expected one for the OP4 RECOVERY "
                        "matrix (reduce the model again with the full mesh)");
     mats.push_back({"RECOVERY", 2, body.recovery});
   }

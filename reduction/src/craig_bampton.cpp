@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "craig_bampton_modes.hpp"
 #include "seflex/common/error.hpp"
 
 namespace seflex::reduction {
@@ -14,8 +15,9 @@ namespace {
 /// Columns `cols` and rows `rows` of the symmetric A (both triangles stored), as a sparse matrix.
 /// row_pos / col_pos map an f index to its position in the block (-1 = not in it); rows must be
 /// numbered increasingly with f so that each column stays sorted. lower_only keeps row >= column.
-SparseMatrixd extract_block(const SparseMatrixd& A, const std::vector<Eigen::Index>& rows, const std::vector<Eigen::Index>& row_pos,
-                            const std::vector<Eigen::Index>& cols, bool lower_only) {
+SparseMatrixd extract_block(const SparseMatrixd& A, const std::vector<Eigen::Index>& rows,
+                            const std::vector<Eigen::Index>& row_pos, const std::vector<Eigen::Index>& cols,
+                            bool lower_only) {
   const auto nc = static_cast<Eigen::Index>(cols.size()), nr = static_cast<Eigen::Index>(rows.size());
   SparseMatrixd B(nr, nc);
   std::vector<int> count(static_cast<std::size_t>(nc), 0);
@@ -34,24 +36,13 @@ SparseMatrixd extract_block(const SparseMatrixd& A, const std::vector<Eigen::Ind
   return B;
 }
 
-/// Number of finite eigenvalues bound (columns of M with a nonzero) - for "all modes" requests.
-Eigen::Index nonzero_columns(const SparseMatrixd& M) {
-  Eigen::Index n = 0;
-  for (Eigen::Index j = 0; j < M.outerSize(); ++j)
-    for (SparseMatrixd::InnerIterator it(M, j); it; ++it)
-      if (it.value() != 0) {
-        ++n;
-        break;
-      }
-  return n;
-}
-
 }  // namespace
 
 CraigBamptonBasis craig_bampton(const SparseMatrixd& K_ff, const SparseMatrixd& M_ff,
                                 const std::vector<Eigen::Index>& boundary, const CraigBamptonOptions& options) {
   const Eigen::Index n = K_ff.rows();
-  SEFLEX_DEMAND(K_ff.cols() == n && M_ff.rows() == n && M_ff.cols() == n, "Craig-Bampton: K and M must be square, same size");
+  SEFLEX_DEMAND(K_ff.cols() == n && M_ff.rows() == n && M_ff.cols() == n,
+                "Craig-Bampton: K and M must be square, same size");
   SEFLEX_DEMAND(options.modes.has_value() != options.fmax_hz.has_value(),
                 "Craig-Bampton: give either a number of modes or a frequency limit");
   SEFLEX_DEMAND(!options.modes || *options.modes >= 0, "Craig-Bampton: negative mode count");
@@ -65,7 +56,8 @@ CraigBamptonBasis craig_bampton(const SparseMatrixd& K_ff, const SparseMatrixd& 
   for (std::size_t k = 0; k < boundary.size(); ++k) {
     const Eigen::Index f = boundary[k];
     SEFLEX_DEMAND(f >= 0 && f < n, "Craig-Bampton: boundary dof out of range");
-    SEFLEX_DEMAND(bpos[static_cast<std::size_t>(f)] < 0, "Craig-Bampton: boundary dof " + std::to_string(f) + " given twice");
+    SEFLEX_DEMAND(bpos[static_cast<std::size_t>(f)] < 0,
+                  "Craig-Bampton: boundary dof " + std::to_string(f) + " given twice");
     bpos[static_cast<std::size_t>(f)] = static_cast<Eigen::Index>(k);
   }
   for (Eigen::Index f = 0; f < n; ++f)
@@ -82,11 +74,14 @@ CraigBamptonBasis craig_bampton(const SparseMatrixd& K_ff, const SparseMatrixd& 
   const Eigen::MatrixXd K_bb = Eigen::MatrixXd(extract_block(K_ff, boundary, bpos, boundary, false));
   const SparseMatrixd K_ib = extract_block(K_ff, cb.interior, ipos, boundary, false);
 
-  // Constraint modes: Psi_i = -K_ii^-1 K_ib, one factorisation, one block solve.
+  // Constraint modes: Psi_i = -K_ii^-1 K_ib, one factorisation, one block solve. The factor of
+  // K_ii stays for the fixed-interface modes (block Lanczos at shift 0).
   Eigen::MatrixXd Psi_i = -Eigen::MatrixXd(K_ib);
+  SparseMatrixd K_ii, M_ii;
+  auto factor = make_factorization(options.factorization);
   if (ni > 0) {
-    const SparseMatrixd K_ii = extract_block(K_ff, cb.interior, ipos, cb.interior, true);
-    auto factor = make_factorization(options.factorization);
+    K_ii = extract_block(K_ff, cb.interior, ipos, cb.interior, true);
+    M_ii = extract_block(M_ff, cb.interior, ipos, cb.interior, true);
     factor->factorize(K_ii);  // FactorizationError names the interior column: mapped by the caller
     factor->solve_in_place(Psi_i);
     cb.stats.interior_factorization = factor->stats();
@@ -95,20 +90,39 @@ CraigBamptonBasis craig_bampton(const SparseMatrixd& K_ff, const SparseMatrixd& 
   for (Eigen::Index k = 0; k < nb; ++k) cb.Psi(boundary[static_cast<std::size_t>(k)], k) = 1.0;
   for (Eigen::Index r = 0; r < ni; ++r) cb.Psi.row(cb.interior[static_cast<std::size_t>(r)]) = Psi_i.row(r);
 
-  // Fixed-interface modes of (K_ii, M_ii).
+  // Fixed-interface modes of (K_ii, M_ii): the lowest `modes` + extra, or all up to fmax + extra.
   Eigen::MatrixXd X(ni, 0);
   Eigen::VectorXd lambda(0);
   Eigen::Index kept = 0;
-  if (ni > 0) {
-    const SparseMatrixd K_ii = extract_block(K_ff, cb.interior, ipos, cb.interior, true);
-    const SparseMatrixd M_ii = extract_block(M_ff, cb.interior, ipos, cb.interior, true);
-    const Eigen::Index finite = nonzero_columns(M_ii);
+  const std::optional<double> lambda_max =
+      options.fmax_hz ? std::optional<double>(std::pow(2.0 * 3.14159265358979323846 * *options.fmax_hz, 2))
+                      : std::nullopt;
+  const Eigen::Index finite = ni > 0 ? detail::mass_rank_bound(M_ii) : 0;
+  const Eigen::Index want = options.modes ? std::min<Eigen::Index>(*options.modes + options.extra_modes, finite) : 0;
+  bool done = ni == 0 || (options.modes && want == 0);
+  if (!done && ni >= options.block_lanczos_min_size) {
+    detail::BlockLanczosOptions bo;
+    if (options.modes)
+      bo.count = want;
+    else
+      bo.lambda_max = lambda_max;
+    bo.extra = options.extra_modes;
+    if (auto r = detail::block_lanczos_lowest(*factor, M_ii, bo)) {
+      cb.stats.block_solves = r->block_solves;
+      cb.stats.krylov_basis = r->basis_size;
+      X = std::move(r->vectors);
+      lambda = std::move(r->eigenvalues);
+      done = true;
+    }
+  }
+  factor.reset();
+  if (!done) {  // small interiors (dense), or more modes than a block Krylov basis holds: restarted Lanczos
     EigenOptions eo;
     eo.backend = options.backend;
     eo.factorization = options.factorization;
-    auto solve = [&](std::optional<int> count, std::optional<double> lambda_max) {
+    auto solve = [&](std::optional<int> count, std::optional<double> limit) {
       eo.count = count;
-      eo.lambda_max = lambda_max;
+      eo.lambda_max = limit;
       EigenSolution s = solve_eigenproblem(K_ii, M_ii, eo);
       cb.stats.eigen = s.stats;
       ++cb.stats.eigen_solutions;
@@ -116,25 +130,20 @@ CraigBamptonBasis craig_bampton(const SparseMatrixd& K_ff, const SparseMatrixd& 
     };
     EigenSolution sol;
     if (options.modes) {
-      const Eigen::Index want = std::min<Eigen::Index>(*options.modes + options.extra_modes, finite);
-      if (want > 0) sol = solve(static_cast<int>(want), std::nullopt);
-      kept = std::min<Eigen::Index>(*options.modes, sol.eigenvalues.size());
+      sol = solve(static_cast<int>(want), std::nullopt);
     } else {
-      const double lambda_max = std::pow(2.0 * 3.14159265358979323846 * *options.fmax_hz, 2);
       sol = solve(std::nullopt, lambda_max);
-      kept = sol.eigenvalues.size();
-      if (options.extra_modes > 0 && kept < finite) {
-        // The modes just above the limit, for the first neglected frequency: one more run asking
-        // for a count (the eigensolver extracts from the bottom of the spectrum).
-        sol = solve(static_cast<int>(std::min<Eigen::Index>(kept + options.extra_modes, finite)), std::nullopt);
-        kept = 0;
-        while (kept < sol.eigenvalues.size() && sol.eigenvalues(kept) <= lambda_max) ++kept;
-      }
+      const Eigen::Index below = sol.eigenvalues.size();
+      if (options.extra_modes > 0 && below < finite)  // the modes just above the limit: a count run
+        sol = solve(static_cast<int>(std::min<Eigen::Index>(below + options.extra_modes, finite)), std::nullopt);
     }
-    if (sol.eigenvalues.size() > 0) {
-      X = std::move(sol.vectors);
-      lambda = std::move(sol.eigenvalues);
-    }
+    X = std::move(sol.vectors);
+    lambda = std::move(sol.eigenvalues);
+  }
+  if (options.modes) {
+    kept = std::min<Eigen::Index>(*options.modes, lambda.size());
+  } else {
+    while (kept < lambda.size() && lambda(kept) <= *lambda_max) ++kept;
   }
   const Eigen::Index m = kept;
   cb.eigenvalues = lambda.head(m);

@@ -10,9 +10,12 @@
 namespace seflex::reduction {
 
 std::vector<int> interface_nodes_from_cards(const fem::Model& model, InterfaceCards cards) {
-  const std::vector<fem::DofSetEntry>& entries =
-      cards == InterfaceCards::Aset ? model.aset : cards == InterfaceCards::Bset ? model.bset : model.suport;
-  const char* name = cards == InterfaceCards::Aset ? "ASET/ASET1" : cards == InterfaceCards::Bset ? "BSET/BSET1" : "SUPORT";
+  const std::vector<fem::DofSetEntry>& entries = cards == InterfaceCards::Aset   ? model.aset
+                                                 : cards == InterfaceCards::Bset ? model.bset
+                                                                                 : model.suport;
+  const char* name = cards == InterfaceCards::Aset   ? "ASET/ASET1"
+                     : cards == InterfaceCards::Bset ? "BSET/BSET1"
+                                                     : "SUPORT";
   const std::string deck = model.files.empty() ? std::string("<model>") : model.files[0];
   if (entries.empty())
     throw InputError(deck + ": no " + std::string(name) + " card; expected the interface grids on " + name +
@@ -31,9 +34,10 @@ std::vector<int> interface_nodes_from_cards(const fem::Model& model, InterfaceCa
   for (int id : ids)
     if (mask[id] != 0x3F) {
       const fem::DofSetEntry& e = entries[first[id]];
-      throw InputError(fem::where(model, e.ref), std::string(name) + " grid " + std::to_string(id) + " names components " +
-                                                     fem::component_string(mask[id]) +
-                                                     "; expected 123456: a superelement interface node carries all six dofs");
+      throw InputError(fem::where(model, e.ref),
+                       std::string(name) + " grid " + std::to_string(id) + " names components " +
+                           fem::component_string(mask[id]) +
+                           "; expected 123456: a superelement interface node carries all six dofs");
     }
   return ids;
 }
@@ -45,8 +49,9 @@ std::vector<int> interface_nodes_from_set(const fem::Model& model, const std::st
   std::string known;
   for (const auto& [n, ids] : model.node_sets) known += (known.empty() ? "" : ", ") + n;
   throw InputError(deck + ": no node set named '" + name + "'; expected " +
-                   (known.empty() ? std::string("node ids (e.g. 1,3,4), aset, bset or suport (the model has no named node sets)")
-                                  : "one of: " + known));
+                   (known.empty()
+                        ? std::string("node ids (e.g. 1,3,4), aset, bset or suport (the model has no named node sets)")
+                        : "one of: " + known));
 }
 
 }  // namespace seflex::reduction

@@ -41,11 +41,20 @@ std::string not_free_reason(const fem::Model& model, const fem::ConstrainedSyste
   for (int k = 0; k < 6; ++k) {
     const auto bit = static_cast<fem::ComponentMask>(1u << k);
     switch (c.status[6 * gi + static_cast<std::size_t>(k)]) {
-      case fem::DofStatus::Free: break;
-      case fem::DofStatus::Dependent: dependent |= bit; break;
-      case fem::DofStatus::Spc: spc |= bit; break;
-      case fem::DofStatus::AutoSpc: autospc |= bit; break;
-      case fem::DofStatus::Fixed: fixed |= bit; break;
+      case fem::DofStatus::Free:
+        break;
+      case fem::DofStatus::Dependent:
+        dependent |= bit;
+        break;
+      case fem::DofStatus::Spc:
+        spc |= bit;
+        break;
+      case fem::DofStatus::AutoSpc:
+        autospc |= bit;
+        break;
+      case fem::DofStatus::Fixed:
+        fixed |= bit;
+        break;
     }
   }
   if (dependent) {
@@ -61,8 +70,8 @@ std::string not_free_reason(const fem::Model& model, const fem::ConstrainedSyste
              fem::where(model, grid.ref).str() + ")";
     for (const fem::SpcEntry& e : model.spcs)
       if (e.grid == grid.id && (e.c & spc))
-        return "components " + fem::component_string(spc) + " are constrained by SPC set " + std::to_string(e.sid) + " (" +
-               fem::where(model, e.ref).str() + ")";
+        return "components " + fem::component_string(spc) + " are constrained by SPC set " + std::to_string(e.sid) +
+               " (" + fem::where(model, e.ref).str() + ")";
     return "components " + fem::component_string(spc) + " are constrained (SPC)";
   }
   if (autospc)
@@ -74,7 +83,8 @@ std::string not_free_reason(const fem::Model& model, const fem::ConstrainedSyste
 
 /// Rigid-body modes of the g-set about point p (g x 6), each grid's rows in its CD components;
 /// scalar points do not move.
-Eigen::MatrixXd rigid_modes_g(const fem::Model& model, const fem::DofMap& dofs, const Axes& axes, const Eigen::Vector3d& p) {
+Eigen::MatrixXd rigid_modes_g(const fem::Model& model, const fem::DofMap& dofs, const Axes& axes,
+                              const Eigen::Vector3d& p) {
   Eigen::MatrixXd D = Eigen::MatrixXd::Zero(dofs.size(), 6);
   for (std::size_t i = 0; i < model.grids.size(); ++i) {
     Eigen::Matrix<double, 6, 6> B = Eigen::Matrix<double, 6, 6>::Identity();
@@ -90,8 +100,8 @@ Eigen::MatrixXd rigid_modes_g(const fem::Model& model, const fem::DofMap& dofs, 
 
 struct RigidMass {
   double mass = 0;
-  Eigen::Vector3d cg = Eigen::Vector3d::Zero();      ///< basic
-  Eigen::Matrix3d I_cg = Eigen::Matrix3d::Zero();    ///< about the CG, basic axes
+  Eigen::Vector3d cg = Eigen::Vector3d::Zero();    ///< basic
+  Eigen::Matrix3d I_cg = Eigen::Matrix3d::Zero();  ///< about the CG, basic axes
 };
 
 /// Mass, CG and inertia from the 6 x 6 rigid-body mass M0 about point p (basic axes):
@@ -163,8 +173,8 @@ std::size_t grid_of(const fem::Model& model, int id, const std::string& role) {
   if (model.spoint_index.count(id))
     throw InputError(deck_name(model) + ": " + role + " " + std::to_string(id) +
                      " is a scalar point (SPOINT); expected a GRID with six dofs");
-  throw InputError(deck_name(model) + ": " + role + " " + std::to_string(id) + ": there is no GRID " + std::to_string(id) +
-                   " in the model; expected the id of a GRID");
+  throw InputError(deck_name(model) + ": " + role + " " + std::to_string(id) + ": there is no GRID " +
+                   std::to_string(id) + " in the model; expected the id of a GRID");
 }
 
 }  // namespace
@@ -192,7 +202,8 @@ Eigen::VectorXd full_model_eigenvalues(const fem::Model& model, int count, Eigen
   return solve_eigenproblem(c.K_ff, c.M_ff, eo).eigenvalues;
 }
 
-se::Superelement reduce_to_superelement(const fem::Model& model, const SuperelementOptions& options, SuperelementInfo* info) {
+se::Superelement reduce_to_superelement(const fem::Model& model, const SuperelementOptions& options,
+                                        SuperelementInfo* info) {
   SEFLEX_DEMAND(model.finalized, "reduce_to_superelement needs a finalized model");
   SuperelementInfo local;
   SuperelementInfo& inf = info ? *info : local;
@@ -262,7 +273,8 @@ se::Superelement reduce_to_superelement(const fem::Model& model, const Superelem
       }
     }
     if (!found)
-      throw InputError(deck + ": no grid with six free dofs besides the interface nodes; expected one to carry the "
+      throw InputError(deck +
+                       ": no grid with six free dofs besides the interface nodes; expected one to carry the "
                        "floating frame (name it with --frame)");
     inf.frame_chosen = true;
   }

@@ -44,7 +44,8 @@ Eigen::MatrixXd solve_interior_mass(const SparseMatrixd& M_ff, const std::vector
 
 }  // namespace
 
-se::TruncationReport truncation_report(const CraigBamptonBasis& cb, const SparseMatrixd& M_ff, const Eigen::MatrixXd& R_b) {
+se::TruncationReport truncation_report(const CraigBamptonBasis& cb, const SparseMatrixd& M_ff,
+                                       const Eigen::MatrixXd& R_b) {
   SEFLEX_DEMAND(R_b.rows() == cb.Psi.cols() && R_b.cols() == 6, "truncation report: R_b must be n_b x 6");
   SEFLEX_DEMAND(M_ff.rows() == cb.Psi.rows(), "truncation report: M does not match the basis");
   se::TruncationReport report;
@@ -61,7 +62,8 @@ se::TruncationReport truncation_report(const CraigBamptonBasis& cb, const Sparse
   for (Eigen::Index f : cb.boundary) R_interior_only.row(f).setZero();
   const Eigen::MatrixXd MRi_full = M_ff * R_interior_only;
   Eigen::MatrixXd coupling(ni, 6);
-  for (Eigen::Index r = 0; r < ni; ++r) coupling.row(r) = MR_i.row(r) - MRi_full.row(cb.interior[static_cast<std::size_t>(r)]);
+  for (Eigen::Index r = 0; r < ni; ++r)
+    coupling.row(r) = MR_i.row(r) - MRi_full.row(cb.interior[static_cast<std::size_t>(r)]);
   Eigen::MatrixXd z = R_i;
   if (ni > 0 && coupling.cwiseAbs().maxCoeff() > 1e-14 * MR_i.cwiseAbs().maxCoeff())
     z = solve_interior_mass(M_ff, cb.interior, MR_i, kDefaultFactorization);

@@ -4,8 +4,8 @@
 
 #include "seflex/fem/assembly.hpp"
 #include "seflex/io/nastran.hpp"
-#include "seflex/io/superelement_file.hpp"
 #include "seflex/io/sha256.hpp"
+#include "seflex/io/superelement_file.hpp"
 #include "seflex/reduction/craig_bampton_superelement.hpp"
 #include "test_support.hpp"
 
@@ -20,9 +20,9 @@ TEST(ReduceCli, WritesASuperelementAndPrintsTheSummary) {
   const auto out = tmp / "yoke.se";
   const auto r = test::run_seflex("reduce " + q(yoke()) + " --interface 1,3,4 --modes 5 -o " + q(out));
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const char* part : {"interface: 3 nodes, 18 dofs", "frame node 2", "chosen as the free grid nearest the centre of mass",
-                           "fixed-interface modes: 5 kept", "modal effective mass fraction", "first neglected mode",
-                           "reduced model: n = 23", "wrote"})
+  for (const char* part : {"interface: 3 nodes, 18 dofs", "frame node 2",
+                           "chosen as the free grid nearest the centre of mass", "fixed-interface modes: 5 kept",
+                           "modal effective mass fraction", "first neglected mode", "reduced model: n = 23", "wrote"})
     EXPECT_NE(r.out.find(part), std::string::npos) << part << "\n" << r.out;
   const se::Superelement s = io::load_superelement(out);
   EXPECT_EQ(s.name, "yoke");
@@ -38,7 +38,8 @@ TEST(ReduceCli, WritesASuperelementAndPrintsTheSummary) {
   EXPECT_EQ(again.exit_code, 3);
   EXPECT_NE(again.err.find("refusing to overwrite"), std::string::npos) << again.err;
   EXPECT_EQ(test::read_file(out), before);
-  const auto forced = test::run_seflex("reduce " + q(yoke()) + " --interface 1,5 --fmax 200 --frame 18 --name arm -o " + q(out) + " --force");
+  const auto forced = test::run_seflex("reduce " + q(yoke()) + " --interface 1,5 --fmax 200 --frame 18 --name arm -o " +
+                                       q(out) + " --force");
   ASSERT_EQ(forced.exit_code, 0) << forced.err;
   const se::Superelement f = io::load_superelement(out);
   EXPECT_EQ(f.name, "arm");
@@ -52,7 +53,8 @@ TEST(ReduceCli, WritesASuperelementAndPrintsTheSummary) {
 // interior mode kept they agree (the table's relative errors are round-off).
 TEST(ReduceCli, CompareWithTheFullModel) {
   test::TempDir tmp;
-  const auto r = test::run_seflex("reduce " + q(yoke()) + " --interface 1,5 --modes 1000 --compare 4 -o " + q(tmp / "y.se"));
+  const auto r =
+      test::run_seflex("reduce " + q(yoke()) + " --interface 1,5 --modes 1000 --compare 4 -o " + q(tmp / "y.se"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   ASSERT_NE(r.out.find("full FE (Hz)"), std::string::npos) << r.out;
   int rows = 0;

@@ -52,26 +52,30 @@ TEST(ReduceInput, UsageErrors) {
 }
 
 void expect_dmig_error(const std::string& bulk, const std::vector<std::string>& parts) {
-  const std::string deck = "SOL 103\nCEND\nK2GG = KX\nBEGIN BULK\nGRID    1               0.      0.      0.\nSPOINT  7\n" + bulk +
-                           "ENDDATA\n";
+  const std::string deck =
+      "SOL 103\nCEND\nK2GG = KX\nBEGIN BULK\nGRID    1               0.      0.      0.\nSPOINT  7\n" + bulk +
+      "ENDDATA\n";
   try {
     const fem::Model m = io::read_nastran_text(deck, "d.bdf");
     fem::assemble(m, fem::assembly_options(m));
     ADD_FAILURE() << "no error for\n" << bulk;
   } catch (const InputError& e) {
-    for (const auto& p : parts) EXPECT_NE(std::string(e.what()).find(p), std::string::npos) << e.what() << "\nlacks: " << p;
+    for (const auto& p : parts)
+      EXPECT_NE(std::string(e.what()).find(p), std::string::npos) << e.what() << "\nlacks: " << p;
   }
 }
 
 TEST(DmigInput, K2ggMatricesMustBeSymmetricDmigsGivenOnce) {
   expect_dmig_error("DMIG    KX      0       1       2\nDMIG    KX      1       1               1       1       1.0\n",
                     {"d.bdf:", "DMIG KX, field 4 (IFO): got 1", "expected 6"});
-  expect_dmig_error("DMIG    KX      0       6       2\nDMIG    KX      1       1               7       0       1.0\n"
-                    "DMIG    KX      7       0               1       1       1.0\n",
-                    {"DMIG KX", "(1-1, 7)", "given twice"});
-  expect_dmig_error("DMIG    KX      0       6       2\nDMIG    KX      1       1               1       1       1.0\n"
-                    "DMIG    KX      1       1               1       1       2.0\n",
-                    {"DMIG KX", "given twice"});
+  expect_dmig_error(
+      "DMIG    KX      0       6       2\nDMIG    KX      1       1               7       0       1.0\n"
+      "DMIG    KX      7       0               1       1       1.0\n",
+      {"DMIG KX", "(1-1, 7)", "given twice"});
+  expect_dmig_error(
+      "DMIG    KX      0       6       2\nDMIG    KX      1       1               1       1       1.0\n"
+      "DMIG    KX      1       1               1       1       2.0\n",
+      {"DMIG KX", "given twice"});
 }
 
 }  // namespace

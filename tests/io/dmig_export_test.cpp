@@ -64,13 +64,16 @@ TEST(DmigExport, RoundTripThroughTheReaderGivesTheReducedFrequencies) {
 TEST(DmigExport, DeckLayout) {
   const se::Superelement s = reduced_yoke(2);
   const std::string deck = io::dmig_deck(s);
-  for (const char* part : {"SOL 103\n", "K2GG = KAAX\n", "M2GG = MAAX\n", "METHOD = 1\n", "BEGIN BULK\n",
-                           "SPOINT  9000001 THRU    9000002", "DMIG    KAAX    0       6       2       0",
-                           "DMIG    MAAX    0       6       2       0", "EIGRL   1                       20", "ENDDATA\n"})
+  for (const char* part :
+       {"SOL 103\n", "K2GG = KAAX\n", "M2GG = MAAX\n", "METHOD = 1\n", "BEGIN BULK\n",
+        "SPOINT  9000001 THRU    9000002", "DMIG    KAAX    0       6       2       0",
+        "DMIG    MAAX    0       6       2       0", "EIGRL   1                       20", "ENDDATA\n"})
     EXPECT_NE(deck.find(part), std::string::npos) << part;
   for (std::size_t pos = 0, next; pos < deck.size(); pos = next + 1) {  // Nastran's 80 columns
     next = deck.find('\n', pos);
-    if (deck[pos] != '$') EXPECT_LE(next - pos, 80u) << deck.substr(pos, next - pos);
+    if (deck[pos] != '$') {
+      EXPECT_LE(next - pos, 80u) << deck.substr(pos, next - pos);
+    }
   }
   io::DmigExportOptions o;
   o.first_spoint = 4;  // clashes with interface grid 4
@@ -117,14 +120,15 @@ ENDDATA
   no_dmig.case_control.global.k2gg.clear();
   no_dmig.case_control.global.m2gg.clear();
   const fem::GlobalMatrices e = fem::assemble(no_dmig, ao);
-  const Eigen::MatrixXd dK = Eigen::MatrixXd(g.K) - Eigen::MatrixXd(e.K), dM = Eigen::MatrixXd(g.M) - Eigen::MatrixXd(e.M);
+  const Eigen::MatrixXd dK = Eigen::MatrixXd(g.K) - Eigen::MatrixXd(e.K),
+                        dM = Eigen::MatrixXd(g.M) - Eigen::MatrixXd(e.M);
   const Eigen::Index s7 = 12;  // the scalar point after the two grids
   Eigen::MatrixXd K = Eigen::MatrixXd::Zero(13, 13), M = K;
-  K(s7, 6) = K(6, s7) = 2.0 * 5.0;    // (2-1, 7): upper triangle, in column 7
+  K(s7, 6) = K(6, s7) = 2.0 * 5.0;  // (2-1, 7): upper triangle, in column 7
   K(s7, s7) = 2.0 * 100.0;
-  K(7, 1) = K(1, 7) = 2.0 * -4.0;     // (2-2, 1-2): lower triangle, in column 1-2
+  K(7, 1) = K(1, 7) = 2.0 * -4.0;  // (2-2, 1-2): lower triangle, in column 1-2
   M(s7, s7) = 3.0 * 1.5;
-  M(2, 2) = 3.0 * 0.25;               // not scaled by WTMASS
+  M(2, 2) = 3.0 * 0.25;  // not scaled by WTMASS
   EXPECT_LT(max_abs(dK - K), 1e-12);
   EXPECT_LT(max_abs(dM - M), 1e-12);
 }

@@ -1,15 +1,15 @@
 // OUTPUT4 ASCII export (io/op4.hpp), read back by a small parser written here from the format
 // description (NX Nastran DMAP Programmer's Guide, OUTPUT4: header NCOL NROW NF NTYPE NAME FORMAT;
 // column records ICOL IROW NW followed by the values; a record for column NCOL + 1 ends a matrix).
-#include "seflex/io/op4.hpp"
-
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <map>
 #include <sstream>
 
 #include "seflex/io/nastran.hpp"
+#include "seflex/io/op4.hpp"
 #include "seflex/reduction/craig_bampton_superelement.hpp"
 #include "test_support.hpp"
 
@@ -52,12 +52,14 @@ std::map<std::string, Read> parse_op4(const std::string& text) {
     r.A = Eigen::MatrixXd::Zero(nrow, ncol);
     for (;;) {
       std::getline(in, line);
-      const int icol = std::stoi(line.substr(0, 8)), irow = std::stoi(line.substr(8, 8)), nw = std::stoi(line.substr(16, 8));
+      const int icol = std::stoi(line.substr(0, 8)), irow = std::stoi(line.substr(8, 8)),
+                nw = std::stoi(line.substr(16, 8));
       int read = 0;
       while (read < nw) {
         std::getline(in, line);
         for (int k = 0; k < per_line && read < nw; ++k, ++read) {
-          const double v = fortran_real(line.substr(static_cast<std::size_t>(k * width), static_cast<std::size_t>(width)));
+          const double v =
+              fortran_real(line.substr(static_cast<std::size_t>(k * width), static_cast<std::size_t>(width)));
           if (icol <= ncol) r.A(irow - 1 + read, icol - 1) = v;
         }
       }
@@ -76,7 +78,8 @@ TEST(Op4Export, SuperelementMatricesReadBackExactly) {
   const se::Superelement s = reduction::reduce_to_superelement(m, o);
   const auto mats = parse_op4(io::op4_text(io::superelement_op4_matrices(s, true)));
   ASSERT_EQ(mats.size(), 3u);
-  const std::pair<const char*, const Eigen::MatrixXd*> expected[] = {{"KAA", &s.K}, {"MAA", &s.M}, {"RECOVERY", &s.recovery}};
+  const std::pair<const char*, const Eigen::MatrixXd*> expected[] = {
+      {"KAA", &s.K}, {"MAA", &s.M}, {"RECOVERY", &s.recovery}};
   for (const auto& [name, A] : expected) {
     const Read& r = mats.at(name);
     EXPECT_EQ(r.type, 2) << name;
@@ -92,15 +95,15 @@ TEST(Op4Export, SuperelementMatricesReadBackExactly) {
 TEST(Op4Export, ColumnRecordsAndFortranExponents) {
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(5, 3);
   A(1, 0) = 1.5;
-  A(3, 0) = -2.0e-120;  // column 0: rows 2..4 written, with the zero between
-  A(4, 2) = 7.0e200;    // column 1 null: not written
+  A(3, 0) = -2.0e-120;             // column 0: rows 2..4 written, with the zero between
+  A(4, 2) = std::ldexp(1.0, 700);  // 5.2601359015483735E+210; column 1 null: not written
   const std::string text = io::op4_text({{"A", 2, A}});
   const std::string expected =
       "       3       5       2       2A       1P,3E23.16\n"
       "       1       2       3\n"
       " 1.5000000000000000E+00 0.0000000000000000E+00-2.0000000000000000-120\n"
       "       3       5       1\n"
-      " 7.0000000000000000+200\n"
+      " 5.2601359015483735+210\n"
       "       4       1       1\n"
       " 0.0000000000000000E+00\n";
   EXPECT_EQ(text, expected);

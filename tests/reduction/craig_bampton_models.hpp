@@ -20,7 +20,8 @@ using namespace fem::test;
 /// makes the analysis mass half the deck's numbers. With `coupled`, PARAM COUPMASS 1.
 inline fem::Model box_frame(bool coupled = false) {
   fem::Model m;
-  const double X[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 0.6, 0}, {0, 0.6, 0}, {0, 0, 0.4}, {1, 0, 0.4}, {1, 0.6, 0.4}, {0, 0.6, 0.4}};
+  const double X[8][3] = {{0, 0, 0},   {1, 0, 0},   {1, 0.6, 0},   {0, 0.6, 0},
+                          {0, 0, 0.4}, {1, 0, 0.4}, {1, 0.6, 0.4}, {0, 0.6, 0.4}};
   for (int i = 0; i < 8; ++i) add_grid(m, i + 1, X[i][0], X[i][1], X[i][2]);
   m.grids[2].cd = 7;
   fem::CoordSys cs;
@@ -31,7 +32,8 @@ inline fem::Model box_frame(bool coupled = false) {
   m.coords.push_back(cs);
   add_mat1(m, 1, 7.0e10, 0.3, 2700.0);
   add_pbar(m, 1, 1, 3.0e-4, 2.0e-8, 3.0e-8, 4.0e-8);
-  const int edges[12][2] = {{1, 2}, {2, 3}, {3, 4}, {4, 1}, {5, 6}, {6, 7}, {7, 8}, {8, 5}, {1, 5}, {2, 6}, {3, 7}, {4, 8}};
+  const int edges[12][2] = {{1, 2}, {2, 3}, {3, 4}, {4, 1}, {5, 6}, {6, 7},
+                            {7, 8}, {8, 5}, {1, 5}, {2, 6}, {3, 7}, {4, 8}};
   int bar = 100;
   for (int e = 0; e < 12; ++e) {
     const int a = edges[e][0], b = edges[e][1], mid = 11 + e;

@@ -23,10 +23,13 @@ Eigen::Matrix3d skew(const Eigen::Vector3d& a) {
   return S;
 }
 
-SuperelementOptions options(std::vector<int> ids, int modes) {
+/// `block`: the fixed-interface modes from the block Lanczos on the factor of K_ii (used by default
+/// for interiors of 2000 dofs and more) instead of solve_eigenproblem.
+SuperelementOptions options(std::vector<int> ids, int modes, bool block = false) {
   SuperelementOptions o;
   o.interface_ids = std::move(ids);
   o.modes.modes = modes;
+  if (block) o.modes.block_lanczos_min_size = 0;
   return o;
 }
 
@@ -42,22 +45,22 @@ double max_abs(const Eigen::MatrixXd& A) { return A.cwiseAbs().maxCoeff(); }
 // massless dofs, which static condensation handles exactly), so the reduced model has the full
 // model's eigenvalues (Craig & Bampton 1968).
 TEST(CraigBampton, AllModesKeptReproduceFullEigenvalues) {
-  const fem::Model m = box_frame();
-  const se::Superelement s = reduce_to_superelement(m, options({1, 7}, 100000));
-  const std::vector<double> full = full_free_free(m);
-  const Eigen::VectorXd red = reduction::reduced_eigenvalues(s, s.size());
-  std::cerr << "modes " << s.num_modes << " n " << s.size() << " red " << red.size() << " full " << full.size() << "\n" << red.transpose() << "\n";
-  for (double f : full) std::cerr << f << " ";
-  // The massless rotations of the interface grids make the reduced mass matrix singular too
-  // (rank M_red <= rank M): the same number of finite eigenvalues.
-  ASSERT_EQ(red.size(), static_cast<Eigen::Index>(full.size()));
-  const double top = full.back();
-  for (std::size_t k = 0; k < full.size(); ++k) {
-    if (k < 6) {
-      EXPECT_LT(std::abs(red(static_cast<Eigen::Index>(k))), 1e-8 * full[6]) << "rigid mode " << k;
-      EXPECT_LT(std::abs(full[k]), 1e-8 * full[6]);
-    } else {
-      EXPECT_NEAR(red(static_cast<Eigen::Index>(k)) / full[k], 1.0, 1e-8 * top / full[k]) << "mode " << k + 1;
+  for (const bool block : {false, true}) {
+    const fem::Model m = box_frame();
+    const se::Superelement s = reduce_to_superelement(m, options({1, 7}, 100000, block));
+    const std::vector<double> full = full_free_free(m);
+    const Eigen::VectorXd red = reduction::reduced_eigenvalues(s, s.size());
+    // The massless rotations of the interface grids make the reduced mass matrix singular too
+    // (rank M_red <= rank M): the same number of finite eigenvalues.
+    ASSERT_EQ(red.size(), static_cast<Eigen::Index>(full.size()));
+    const double top = full.back();
+    for (std::size_t k = 0; k < full.size(); ++k) {
+      if (k < 6) {
+        EXPECT_LT(std::abs(red(static_cast<Eigen::Index>(k))), 1e-8 * full[6]) << "rigid mode " << k;
+        EXPECT_LT(std::abs(full[k]), 1e-8 * full[6]);
+      } else {
+        EXPECT_NEAR(red(static_cast<Eigen::Index>(k)) / full[k], 1.0, 1e-8 * top / full[k]) << "mode " << k + 1;
+      }
     }
   }
 }
@@ -137,7 +140,8 @@ TEST(CraigBampton, SixRigidModesAndConvergenceFromAbove) {
     for (Eigen::Index k = 0; k < red.size(); ++k) rigid += std::abs(red(k)) < 1e-8 * full[6];
     EXPECT_EQ(rigid, 6) << modes << " modes";
     for (int k = 6; k < red.size(); ++k) {
-      EXPECT_GE(red(k), full[static_cast<std::size_t>(k)] * (1 - 1e-10)) << "mode " << k + 1 << ", " << modes << " modes";
+      EXPECT_GE(red(k), full[static_cast<std::size_t>(k)] * (1 - 1e-10))
+          << "mode " << k + 1 << ", " << modes << " modes";
       if (k < previous.size()) {
         EXPECT_LE(red(k), previous(k) * (1 + 1e-10)) << "mode " << k + 1 << ", " << modes << " modes";
       }
@@ -154,7 +158,8 @@ struct FixedInterfaceReference {
   cbtest::DenseModes modes;
   Eigen::MatrixXd L;  // all modes x 6 participation factors
 };
-FixedInterfaceReference fixed_interface_reference(const fem::Model& m, const std::vector<int>& ids, const Eigen::Vector3d& X_f) {
+FixedInterfaceReference fixed_interface_reference(const fem::Model& m, const std::vector<int>& ids,
+                                                  const Eigen::Vector3d& X_f) {
   const auto d = cbtest::dense_system(m);
   std::vector<char> boundary(static_cast<std::size_t>(d.c.n_free()), 0);
   for (int id : ids)
@@ -194,39 +199,43 @@ FixedInterfaceReference fixed_interface_reference(const fem::Model& m, const std
 // direction (sum over kept modes of L^2 over the sum over all modes), the highest kept and the
 // first neglected frequency; lumped (M_ib = 0) and coupled mass (M_ib != 0).
 TEST(CraigBampton, TruncationReportMatchesDenseReference) {
-  for (const bool coupled : {false, true}) {
-    const fem::Model m = box_frame(coupled);
-    const se::Superelement s = reduce_to_superelement(m, options({1, 7}, 4));
-    const auto ref = fixed_interface_reference(m, {1, 7}, s.p_OBo);
-    for (int k = 0; k < 4; ++k)
-      EXPECT_NEAR(s.mode_frequencies_hz(k) / reduction::eigenvalue_to_hz(ref.modes.lambda(k)), 1.0, 1e-9);
-    EXPECT_NEAR(s.truncation.max_kept_hz, reduction::eigenvalue_to_hz(ref.modes.lambda(3)), 1e-9 * s.truncation.max_kept_hz);
-    EXPECT_NEAR(s.truncation.first_neglected_hz, reduction::eigenvalue_to_hz(ref.modes.lambda(4)),
-                1e-9 * s.truncation.first_neglected_hz);
-    for (int d = 0; d < 6; ++d) {
-      const double kept = ref.L.col(d).head(4).squaredNorm(), total = ref.L.col(d).squaredNorm();
-      EXPECT_NEAR(s.truncation.effective_mass_fraction[static_cast<std::size_t>(d)], kept / total, 1e-9)
-          << "direction " << d << (coupled ? " (coupled mass)" : "");
+  for (const bool coupled : {false, true})
+    for (const bool block : {false, true}) {
+      const fem::Model m = box_frame(coupled);
+      const se::Superelement s = reduce_to_superelement(m, options({1, 7}, 4, block));
+      const auto ref = fixed_interface_reference(m, {1, 7}, s.p_OBo);
+      for (int k = 0; k < 4; ++k)
+        EXPECT_NEAR(s.mode_frequencies_hz(k) / reduction::eigenvalue_to_hz(ref.modes.lambda(k)), 1.0, 1e-9);
+      EXPECT_NEAR(s.truncation.max_kept_hz, reduction::eigenvalue_to_hz(ref.modes.lambda(3)),
+                  1e-9 * s.truncation.max_kept_hz);
+      EXPECT_NEAR(s.truncation.first_neglected_hz, reduction::eigenvalue_to_hz(ref.modes.lambda(4)),
+                  1e-9 * s.truncation.first_neglected_hz);
+      for (int d = 0; d < 6; ++d) {
+        const double kept = ref.L.col(d).head(4).squaredNorm(), total = ref.L.col(d).squaredNorm();
+        EXPECT_NEAR(s.truncation.effective_mass_fraction[static_cast<std::size_t>(d)], kept / total, 1e-9)
+            << "direction " << d << (coupled ? " (coupled mass)" : "") << (block ? " (block Lanczos)" : "");
+      }
+      const se::Superelement all = reduce_to_superelement(m, options({1, 7}, 100000, block));
+      for (double f : all.truncation.effective_mass_fraction) EXPECT_NEAR(f, 1.0, 1e-9);
+      EXPECT_EQ(all.truncation.first_neglected_hz, 0.0);
+      EXPECT_EQ(all.num_modes, ref.modes.lambda.size());
     }
-    const se::Superelement all = reduce_to_superelement(m, options({1, 7}, 100000));
-    for (double f : all.truncation.effective_mass_fraction) EXPECT_NEAR(f, 1.0, 1e-9);
-    EXPECT_EQ(all.truncation.first_neglected_hz, 0.0);
-    EXPECT_EQ(all.num_modes, ref.modes.lambda.size());
-  }
 }
 
 // --fmax: all fixed-interface modes up to the limit, the next one reported as the first neglected.
 TEST(CraigBampton, FrequencyLimitKeepsModesUpToIt) {
-  const fem::Model m = box_frame();
-  SuperelementOptions o = options({1, 7}, 0);
-  const se::Superelement four = reduce_to_superelement(m, options({1, 7}, 5));
-  o.modes.modes.reset();
-  o.modes.fmax_hz = 0.5 * (four.mode_frequencies_hz(3) + four.mode_frequencies_hz(4));
-  const se::Superelement s = reduce_to_superelement(m, o);
-  ASSERT_EQ(s.num_modes, 4);
-  EXPECT_NEAR(s.truncation.first_neglected_hz / four.mode_frequencies_hz(4), 1.0, 1e-9);
-  EXPECT_LE(s.truncation.max_kept_hz, *o.modes.fmax_hz);
-  EXPECT_LT(max_abs(s.K - four.K.topLeftCorner(6 * 2 + 4, 6 * 2 + 4)), 1e-9 * max_abs(s.K));
+  for (const bool block : {false, true}) {
+    const fem::Model m = box_frame();
+    SuperelementOptions o = options({1, 7}, 0, block);
+    const se::Superelement four = reduce_to_superelement(m, options({1, 7}, 5));
+    o.modes.modes.reset();
+    o.modes.fmax_hz = 0.5 * (four.mode_frequencies_hz(3) + four.mode_frequencies_hz(4));
+    const se::Superelement s = reduce_to_superelement(m, o);
+    ASSERT_EQ(s.num_modes, 4);
+    EXPECT_NEAR(s.truncation.first_neglected_hz / four.mode_frequencies_hz(4), 1.0, 1e-9);
+    EXPECT_LE(s.truncation.max_kept_hz, *o.modes.fmax_hz);
+    EXPECT_LT(max_abs(s.K - four.K.topLeftCorner(6 * 2 + 4, 6 * 2 + 4)), 1e-9 * max_abs(s.K));
+  }
 }
 
 // The generic reduction on the f-set, boundary given dof by dof: constraint modes are the static
@@ -238,20 +247,27 @@ TEST(CraigBampton, ConstraintModesAreStaticAndRaw) {
   // Grid 1 x y z, grid 2 y z, grid 4 z (a statically determinate support) and grid 5's rotation about x,
   // in an order that is not the f-set order (f-dof of grid index i, component c: 6 i + c - 1).
   const std::vector<Eigen::Index> boundary = {7, 0, 1, 2, 27, 8, 20};
-  reduction::CraigBamptonOptions o;
-  o.modes = 6;
-  const reduction::CraigBamptonBasis cb = reduction::craig_bampton(d.c.K_ff, d.c.M_ff, boundary, o);
-  const auto nb = static_cast<Eigen::Index>(boundary.size());
-  for (Eigen::Index k = 0; k < nb; ++k)
-    for (Eigen::Index j = 0; j < nb; ++j) EXPECT_EQ(cb.Psi(boundary[static_cast<std::size_t>(j)], k), j == k ? 1.0 : 0.0);
-  const Eigen::MatrixXd KPsi = d.K * cb.Psi;
-  for (Eigen::Index f : cb.interior) EXPECT_LT(KPsi.row(f).cwiseAbs().maxCoeff(), 1e-9 * max_abs(d.K));
-  EXPECT_LT(max_abs(cb.Psi.transpose() * KPsi - cb.K.topLeftCorner(nb, nb)), 1e-9 * max_abs(cb.K));
-  EXPECT_LT(max_abs(cb.Phi.transpose() * d.M * cb.Phi - Eigen::MatrixXd::Identity(6, 6)), 1e-10);
-  EXPECT_LT(max_abs(cb.Phi.transpose() * d.K * cb.Phi - Eigen::MatrixXd(cb.eigenvalues.asDiagonal())), 1e-9 * cb.eigenvalues.maxCoeff());
-  EXPECT_LT(max_abs(cb.Psi.transpose() * d.K * cb.Phi), 1e-9 * max_abs(d.K));
-  EXPECT_LT(max_abs(cb.Phi.transpose() * d.M * cb.Psi - cb.M.bottomLeftCorner(6, nb)), 1e-12 * max_abs(d.M) * d.M.rows());
-  for (Eigen::Index f : boundary) EXPECT_EQ(cb.Phi.row(f).cwiseAbs().maxCoeff(), 0.0);
+  for (const Eigen::Index block_min : {Eigen::Index{2000}, Eigen::Index{0}}) {
+    reduction::CraigBamptonOptions o;
+    o.modes = 6;
+    o.block_lanczos_min_size = block_min;
+    const reduction::CraigBamptonBasis cb = reduction::craig_bampton(d.c.K_ff, d.c.M_ff, boundary, o);
+    EXPECT_EQ(cb.stats.block_solves > 0, block_min == 0);
+    const auto nb = static_cast<Eigen::Index>(boundary.size());
+    for (Eigen::Index k = 0; k < nb; ++k)
+      for (Eigen::Index j = 0; j < nb; ++j)
+        EXPECT_EQ(cb.Psi(boundary[static_cast<std::size_t>(j)], k), j == k ? 1.0 : 0.0);
+    const Eigen::MatrixXd KPsi = d.K * cb.Psi;
+    for (Eigen::Index f : cb.interior) EXPECT_LT(KPsi.row(f).cwiseAbs().maxCoeff(), 1e-9 * max_abs(d.K));
+    EXPECT_LT(max_abs(cb.Psi.transpose() * KPsi - cb.K.topLeftCorner(nb, nb)), 1e-9 * max_abs(cb.K));
+    EXPECT_LT(max_abs(cb.Phi.transpose() * d.M * cb.Phi - Eigen::MatrixXd::Identity(6, 6)), 1e-10);
+    EXPECT_LT(max_abs(cb.Phi.transpose() * d.K * cb.Phi - Eigen::MatrixXd(cb.eigenvalues.asDiagonal())),
+              1e-9 * cb.eigenvalues.maxCoeff());
+    EXPECT_LT(max_abs(cb.Psi.transpose() * d.K * cb.Phi), 1e-9 * max_abs(d.K));
+    EXPECT_LT(max_abs(cb.Phi.transpose() * d.M * cb.Psi - cb.M.bottomLeftCorner(6, nb)),
+              1e-12 * max_abs(d.M) * d.M.rows());
+    for (Eigen::Index f : boundary) EXPECT_EQ(cb.Phi.row(f).cwiseAbs().maxCoeff(), 0.0);
+  }
 }
 
 // Default frame node: the free, non-interface grid nearest the centre of mass.
@@ -277,7 +293,8 @@ void expect_input_error(const fem::Model& m, const SuperelementOptions& o, const
     reduce_to_superelement(m, o);
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
-    for (const auto& p : parts) EXPECT_NE(std::string(e.what()).find(p), std::string::npos) << e.what() << "\nlacks: " << p;
+    for (const auto& p : parts)
+      EXPECT_NE(std::string(e.what()).find(p), std::string::npos) << e.what() << "\nlacks: " << p;
   }
 }
 

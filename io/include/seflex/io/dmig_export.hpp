@@ -21,7 +21,7 @@
 namespace seflex::io {
 
 struct DmigExportOptions {
-  int first_spoint = 0;            ///< id of the first modal SPOINT; 0 = 9000001, or above the largest interface id
+  int first_spoint = 0;  ///< id of the first modal SPOINT; 0 = 9000001, or above the largest interface id
   std::string stiffness_name = "KAAX";
   std::string mass_name = "MAAX";
   bool overwrite = false;
@@ -33,6 +33,7 @@ std::string dmig_deck(const se::Superelement& body, const DmigExportOptions& opt
 
 /// Write the deck (atomically). Throws InputError if the file exists and !overwrite, or cannot be
 /// written.
-void write_dmig_deck(const se::Superelement& body, const std::filesystem::path& path, const DmigExportOptions& options = {});
+void write_dmig_deck(const se::Superelement& body, const std::filesystem::path& path,
+                     const DmigExportOptions& options = {});
 
 }  // namespace seflex::io

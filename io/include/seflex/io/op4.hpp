@@ -10,19 +10,18 @@
 // NF (form): 1 square, 2 rectangular, 6 symmetric (all terms are still written). NTYPE 2 = real
 // double precision. Rows and columns are 1-based. Several matrices follow one another in a file.
 // Exponents of three digits are written the Fortran way (1.0000000000000000-100, no E).
+#include <Eigen/Core>
 #include <filesystem>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "seflex/superelement/superelement.hpp"
 
 namespace seflex::io {
 
 struct Op4Matrix {
-  std::string name;     ///< 1-8 characters
-  int form = 2;         ///< 1 square, 2 rectangular, 6 symmetric
+  std::string name;  ///< 1-8 characters
+  int form = 2;      ///< 1 square, 2 rectangular, 6 symmetric
   Eigen::MatrixXd values;
 };
 
@@ -34,7 +33,7 @@ void append_op4(std::string& out, const Op4Matrix& matrix);
 std::string op4_text(const std::vector<Op4Matrix>& matrices);
 
 struct Op4ExportOptions {
-  bool recovery = false;   ///< also write RECOVERY (6 n_fe x n, grid-major, basic components)
+  bool recovery = false;  ///< also write RECOVERY (6 n_fe x n, grid-major, basic components)
   bool overwrite = false;
 };
 

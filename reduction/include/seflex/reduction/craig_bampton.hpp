@@ -14,8 +14,9 @@
 //     K = [Psi^T K Psi, 0; 0, diag(lambda)],   M = [Psi^T M Psi, Psi^T M Phi; Phi^T M Psi, I]
 //   (the zero and identity blocks hold to round-off by construction and are set exactly).
 // Sizes: n_f = K_ff.rows(); Psi is n_f x n_b, Phi is n_f x m, rows in f-set order.
-// Cost: one factorisation of K_ii, one multi-RHS solve, one Lanczos run (two with fmax_hz: the
-// second for the neglected modes) on the interior.
+// Cost: one factorisation of K_ii; the constraint modes are one solve with n_b right-hand sides;
+// the fixed-interface modes come from a block shift-invert Lanczos on the same factor (block solves,
+// reduction/src/craig_bampton_modes.hpp), or for small interiors from solve_eigenproblem.
 #include <Eigen/Core>
 #include <cmath>
 #include <optional>
@@ -29,9 +30,13 @@ namespace seflex::reduction {
 
 /// How many fixed-interface modes to keep: exactly one of `modes` and `fmax_hz`.
 struct CraigBamptonOptions {
-  std::optional<int> modes;            ///< keep this many (0 = static/Guyan constraint modes only)
-  std::optional<double> fmax_hz;       ///< keep every mode up to this frequency (Hz)
-  int extra_modes = 3;                 ///< computed beyond the kept ones for the truncation report
+  std::optional<int> modes;       ///< keep this many (0 = static/Guyan constraint modes only)
+  std::optional<double> fmax_hz;  ///< keep every mode up to this frequency (Hz)
+  int extra_modes = 3;            ///< computed beyond the kept ones for the truncation report
+  /// Interiors with at least this many dofs get their modes from a block shift-invert Lanczos on
+  /// the factor of K_ii the constraint modes made (one factorisation in all, BLAS-3 solves); smaller
+  /// ones, and requests beyond its basis limit, from solve_eigenproblem with `backend`.
+  Eigen::Index block_lanczos_min_size = 2000;
   EigenBackend backend = EigenBackend::Spectra;
   FactorizationBackend factorization = kDefaultFactorization;
 };
@@ -40,18 +45,20 @@ struct CraigBamptonOptions {
 struct CraigBamptonStats {
   Eigen::Index n_free = 0, n_boundary = 0, n_interior = 0;
   FactorizationStats interior_factorization;  ///< of K_ii (constraint modes)
-  EigenStats eigen;                          ///< of the (last) fixed-interface eigensolution
-  int eigen_solutions = 0;
+  EigenStats eigen;                           ///< of the (last) solve_eigenproblem run, if any
+  int eigen_solutions = 0;                    ///< solve_eigenproblem runs (0 with block Lanczos)
+  int block_solves = 0;                       ///< block Lanczos: block solves with the factor of K_ii
+  Eigen::Index krylov_basis = 0;              ///< block Lanczos: basis size at convergence
 };
 
 struct CraigBamptonBasis {
-  std::vector<Eigen::Index> boundary;  ///< f-set indices of the boundary dofs, in column order of Psi
-  std::vector<Eigen::Index> interior;  ///< f-set indices of the interior dofs, ascending
-  Eigen::MatrixXd Psi;                 ///< n_f x n_b constraint modes (identity on b)
-  Eigen::MatrixXd Phi;                 ///< n_f x m fixed-interface modes (zero on b), M-orthonormal
-  Eigen::VectorXd eigenvalues;         ///< m kept, ascending, (rad/s)^2
+  std::vector<Eigen::Index> boundary;     ///< f-set indices of the boundary dofs, in column order of Psi
+  std::vector<Eigen::Index> interior;     ///< f-set indices of the interior dofs, ascending
+  Eigen::MatrixXd Psi;                    ///< n_f x n_b constraint modes (identity on b)
+  Eigen::MatrixXd Phi;                    ///< n_f x m fixed-interface modes (zero on b), M-orthonormal
+  Eigen::VectorXd eigenvalues;            ///< m kept, ascending, (rad/s)^2
   Eigen::VectorXd neglected_eigenvalues;  ///< the next fixed-interface eigenvalues (up to extra_modes)
-  Eigen::MatrixXd K, M;                ///< (n_b + m) square reduced matrices (see above)
+  Eigen::MatrixXd K, M;                   ///< (n_b + m) square reduced matrices (see above)
   CraigBamptonStats stats;
 };
 

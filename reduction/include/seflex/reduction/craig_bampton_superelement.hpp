@@ -44,20 +44,20 @@ std::vector<int> interface_nodes_from_cards(const fem::Model& model, InterfaceCa
 std::vector<int> interface_nodes_from_set(const fem::Model& model, const std::string& name);
 
 struct SuperelementOptions {
-  std::vector<int> interface_ids;          ///< grid ids, in the order of q
-  std::optional<int> frame_node;           ///< default: see above
-  CraigBamptonOptions modes;               ///< fixed-interface modes (count or frequency limit)
-  std::string name;                        ///< body name
-  bool full_mesh = true;                   ///< recovery, M_fe and cells (animation, full inertia)
+  std::vector<int> interface_ids;  ///< grid ids, in the order of q
+  std::optional<int> frame_node;   ///< default: see above
+  CraigBamptonOptions modes;       ///< fixed-interface modes (count or frequency limit)
+  std::string name;                ///< body name
+  bool full_mesh = true;           ///< recovery, M_fe and cells (animation, full inertia)
 };
 
 /// What was done, for the summary of `seflex reduce` and the benchmark.
 struct SuperelementInfo {
   CraigBamptonStats stats;
-  bool frame_chosen = false;               ///< the frame node was chosen by the default rule
-  int spc_set = 0;                         ///< SPC set applied (0 = none)
-  Eigen::Index autospc_dofs = 0;           ///< dofs removed by AUTOSPC
-  Eigen::Index dependent_dofs = 0;         ///< RBE2-dependent dofs eliminated
+  bool frame_chosen = false;        ///< the frame node was chosen by the default rule
+  int spc_set = 0;                  ///< SPC set applied (0 = none)
+  Eigen::Index autospc_dofs = 0;    ///< dofs removed by AUTOSPC
+  Eigen::Index dependent_dofs = 0;  ///< RBE2-dependent dofs eliminated
 };
 
 /// Reduce a finalized model. Fills every field of se::Superelement except the provenance ones the
@@ -78,6 +78,7 @@ Eigen::VectorXd reduced_eigenvalues(const se::Superelement& body, int count);
 
 /// Lowest `count` eigenvalues of the full FE model with the constraints `reduce_to_superelement`
 /// applies (case-control SPC, RBE2, AUTOSPC), for comparison with the reduced model.
-Eigen::VectorXd full_model_eigenvalues(const fem::Model& model, int count, EigenBackend backend = EigenBackend::Spectra);
+Eigen::VectorXd full_model_eigenvalues(const fem::Model& model, int count,
+                                       EigenBackend backend = EigenBackend::Spectra);
 
 }  // namespace seflex::reduction

@@ -1,0 +1,150 @@
+// Block shift-invert Lanczos for the fixed-interface modes (craig_bampton_modes.hpp).
+#include "craig_bampton_modes.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace seflex::reduction::detail {
+
+namespace {
+
+constexpr double kDropTolerance = 1e-9;  // a column this small after orthogonalisation is dependent
+
+/// M-orthonormalise the columns of W among themselves (modified Gram-Schmidt, twice, with M Q kept
+/// so that every inner product costs no sparse product): W = Q R with R (kept x W.cols()).
+/// Columns that are dependent to round-off are dropped.
+void orthonormalize_block(const SparseMatrixd& M, const Eigen::MatrixXd& W, Eigen::MatrixXd& Q, Eigen::MatrixXd& R) {
+  const Eigen::Index n = W.rows(), b = W.cols();
+  Q.resize(n, b);
+  Eigen::MatrixXd MQ(n, b);
+  R = Eigen::MatrixXd::Zero(b, b);
+  Eigen::Index k = 0;
+  for (Eigen::Index j = 0; j < b; ++j) {
+    Eigen::VectorXd w = W.col(j);
+    Eigen::VectorXd Mw = M.selfadjointView<Eigen::Lower>() * w;
+    const double original = std::sqrt(std::max(0.0, w.dot(Mw)));
+    for (int pass = 0; pass < 2; ++pass)
+      for (Eigen::Index i = 0; i < k; ++i) {
+        const double r = Q.col(i).dot(Mw);
+        w -= r * Q.col(i);
+        Mw -= r * MQ.col(i);
+        R(i, j) += r;
+      }
+    const double norm = std::sqrt(std::max(0.0, w.dot(Mw)));
+    if (!(norm > kDropTolerance * original)) continue;
+    Q.col(k) = w / norm;
+    MQ.col(k) = Mw / norm;
+    R(k, j) = norm;
+    ++k;
+  }
+  Q.conservativeResize(n, k);
+  R.conservativeResize(k, b);
+}
+
+}  // namespace
+
+Eigen::Index mass_rank_bound(const SparseMatrixd& M) {
+  std::vector<char> nz(static_cast<std::size_t>(M.cols()), 0);
+  for (Eigen::Index j = 0; j < M.outerSize(); ++j)
+    for (SparseMatrixd::InnerIterator it(M, j); it; ++it)
+      if (it.value() != 0) nz[static_cast<std::size_t>(j)] = nz[static_cast<std::size_t>(it.row())] = 1;
+  return std::count(nz.begin(), nz.end(), 1);
+}
+
+std::optional<BlockLanczosResult> block_lanczos_lowest(SparseFactorization& factor, const SparseMatrixd& M,
+                                                       const BlockLanczosOptions& o) {
+  SEFLEX_DEMAND(o.count.has_value() != o.lambda_max.has_value(), "block Lanczos: give a count or an eigenvalue limit");
+  SEFLEX_DEMAND(o.block >= 1 && o.tolerance > 0, "block Lanczos: bad options");
+  const Eigen::Index n = M.rows();
+  BlockLanczosResult res;
+  res.eigenvalues.resize(0);
+  res.vectors.resize(n, 0);
+  const Eigen::Index finite = mass_rank_bound(M);
+  if (n == 0 || finite == 0 || (o.count && *o.count <= 0)) return res;
+
+  // Start block OP X0: in range(OP), so massless directions never enter the basis.
+  std::mt19937_64 rng(o.seed);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  Eigen::MatrixXd W(n, std::min(o.block, finite));
+  for (Eigen::Index j = 0; j < W.cols(); ++j)
+    for (Eigen::Index i = 0; i < n; ++i) W(i, j) = uniform(rng);
+  W = M.selfadjointView<Eigen::Lower>() * W;
+  factor.solve_in_place(W);
+  ++res.block_solves;
+
+  std::vector<Eigen::MatrixXd> Q;   // basis blocks, M-orthonormal together
+  std::vector<Eigen::Index> first;  // column offset of each block
+  Eigen::MatrixXd T(0, 0);          // V^T M OP V
+  Eigen::MatrixXd R;
+  Eigen::MatrixXd Qnew;
+  orthonormalize_block(M, W, Qnew, R);
+  Eigen::Index k = 0;
+  for (;;) {
+    // Append the new block.
+    const Eigen::Index bj = Qnew.cols();
+    Q.push_back(std::move(Qnew));
+    first.push_back(k);
+    k += bj;
+    // Next block: OP Q_j, orthogonalised against the whole basis (two passes of block classical
+    // Gram-Schmidt); the coefficients are column block j of T.
+    W = M.selfadjointView<Eigen::Lower>() * Q.back();
+    factor.solve_in_place(W);
+    ++res.block_solves;
+    Eigen::MatrixXd H = Eigen::MatrixXd::Zero(k, bj);
+    for (int pass = 0; pass < 2; ++pass) {
+      const Eigen::MatrixXd MW = M.selfadjointView<Eigen::Lower>() * W;
+      for (std::size_t i = 0; i < Q.size(); ++i) {
+        const Eigen::MatrixXd C = Q[i].transpose() * MW;
+        W.noalias() -= Q[i] * C;
+        H.middleRows(first[i], Q[i].cols()) += C;
+      }
+    }
+    orthonormalize_block(M, W, Qnew, R);
+    T.conservativeResize(k, k);
+    T.rightCols(bj) = H;
+    T.bottomRows(bj).leftCols(k - bj) = H.topRows(k - bj).transpose();
+    const bool exhausted = Qnew.cols() == 0 || k >= finite;
+
+    // Rayleigh-Ritz in the transformed space; residual of pair i: ||R c_i(last block)||.
+    const Eigen::MatrixXd Ts = 0.5 * (T + T.transpose());
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(Ts);
+    SEFLEX_DEMAND(es.info() == Eigen::Success, "block Lanczos: projected eigenproblem failed");
+    std::vector<Eigen::Index> order;  // positive theta, descending = lambda ascending
+    for (Eigen::Index i = k - 1; i >= 0; --i)
+      if (es.eigenvalues()(i) > 0) order.push_back(i);
+    Eigen::Index prefix = 0, below = 0;
+    for (Eigen::Index i : order) {
+      const double theta = es.eigenvalues()(i);
+      const double residual = exhausted ? 0.0 : (R * es.eigenvectors().col(i).tail(bj)).norm();
+      if (!(residual <= o.tolerance * theta)) break;
+      ++prefix;
+      if (o.lambda_max && 1.0 / theta <= *o.lambda_max) ++below;
+    }
+    const auto available = static_cast<Eigen::Index>(order.size());
+    Eigen::Index take = -1;
+    if (o.count) {
+      if (prefix >= *o.count || exhausted) take = std::min<Eigen::Index>(*o.count, exhausted ? available : prefix);
+    } else {
+      const Eigen::Index need = below + std::max<Eigen::Index>(o.extra, 1);
+      if (prefix >= need || exhausted) take = std::min(exhausted ? available : prefix, below + o.extra);
+    }
+    if (take >= 0) {
+      res.basis_size = k;
+      res.eigenvalues.resize(take);
+      res.vectors = Eigen::MatrixXd::Zero(n, take);
+      for (Eigen::Index t = 0; t < take; ++t) {
+        const Eigen::Index i = order[static_cast<std::size_t>(t)];
+        res.eigenvalues(t) = 1.0 / es.eigenvalues()(i);
+        for (std::size_t blk = 0; blk < Q.size(); ++blk)
+          res.vectors.col(t).noalias() += Q[blk] * es.eigenvectors().col(i).segment(first[blk], Q[blk].cols());
+      }
+      return res;
+    }
+    if (k + Qnew.cols() > o.max_basis) return std::nullopt;
+  }
+}
+
+}  // namespace seflex::reduction::detail
