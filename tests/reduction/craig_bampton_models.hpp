@@ -24,12 +24,8 @@ inline fem::Model box_frame(bool coupled = false) {
                           {0, 0, 0.4}, {1, 0, 0.4}, {1, 0.6, 0.4}, {0, 0.6, 0.4}};
   for (int i = 0; i < 8; ++i) add_grid(m, i + 1, X[i][0], X[i][1], X[i][2]);
   m.grids[2].cd = 7;
-  fem::CoordSys cs;
-  cs.id = 7;
-  cs.resolved = true;
-  cs.origin = Eigen::Vector3d(0.3, -0.2, 0.1);
-  cs.axes = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
-  m.coords.push_back(cs);
+  add_rect_coord(m, 7, Eigen::Vector3d(0.3, -0.2, 0.1),
+                 Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix());
   add_mat1(m, 1, 7.0e10, 0.3, 2700.0);
   add_pbar(m, 1, 1, 3.0e-4, 2.0e-8, 3.0e-8, 4.0e-8);
   const int edges[12][2] = {{1, 2}, {2, 3}, {3, 4}, {4, 1}, {5, 6}, {6, 7},
