@@ -27,8 +27,11 @@ for run in $(seq 1 "$runs"); do
   wall=$(sed -n 's/.*Elapsed (wall clock) time (h:mm:ss or m:ss): //p' "$work/time.txt" |
          awk -F: '{ s = 0; for (i = 1; i <= NF; i++) s = s * 60 + $i; print s }')
   rss=$(sed -n 's/.*Maximum resident set size (kbytes): //p' "$work/time.txt")
-  phases=$(grep '^time:' "$work/out.txt")
-  printf 'run %d: wall %.1f s, peak RSS %.2f GB; seflex %s\n' "$run" "$wall" "$(echo "$rss / 1048576" | bc -l)" "$phases"
+  user=$(sed -n 's/.*User time (seconds): //p' "$work/time.txt")
+  sys=$(sed -n 's/.*System time (seconds): //p' "$work/time.txt")
+  printf 'run %d: wall %.1f s, CPU %.1f s (user %.1f + system %.1f), peak RSS %.2f GB, load average %s\n' "$run" "$wall" \
+    "$(echo "$user + $sys" | bc -l)" "$user" "$sys" "$(echo "$rss / 1048576" | bc -l)" "$(cut -d' ' -f1-3 /proc/loadavg)"
+  grep -E '^(time|work):' "$work/out.txt" | sed 's/^/  seflex /'
   times="$times $wall"
 done
 grep -E 'fixed-interface modes:|first neglected|wrote' "$work/out.txt" | sed 's/^/  /'

@@ -16,12 +16,15 @@ namespace {
 
 constexpr int kMaxNastranId = 99999999;
 
-/// A real number in a 16-character large field, as many digits as fit (10 significant normally).
+/// A real number in a 16-character large field with as many digits as fit: Nastran's implicit
+/// exponent form without the E ("-1.2345678901+05"), 11 significant digits (12 when positive).
 std::string real16(double x) {
   char buf[64];
-  for (int digits = 9; digits >= 1; --digits) {
-    const int len = std::snprintf(buf, sizeof buf, "%.*E", digits, x);
-    if (len <= 16) return std::string(16 - static_cast<std::size_t>(len), ' ') + buf;
+  for (int digits = 11; digits >= 1; --digits) {
+    std::snprintf(buf, sizeof buf, "%.*E", digits, x);
+    std::string s = buf;
+    s.erase(s.find('E'), 1);
+    if (s.size() <= 16) return std::string(16 - s.size(), ' ') + s;
   }
   SEFLEX_DEMAND(false, "a number does not fit a large field");
   return {};

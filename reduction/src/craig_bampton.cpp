@@ -1,6 +1,8 @@
 // Generic Craig-Bampton reduction on the f-set (craig_bampton.hpp).
 #include "seflex/reduction/craig_bampton.hpp"
 
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -11,6 +13,8 @@
 namespace seflex::reduction {
 
 namespace {
+
+constexpr double kMasslessFraction = 1e-12;  // M's eigenvalues below this fraction of the largest are zero
 
 /// Columns `cols` and rows `rows` of the symmetric A (both triangles stored), as a sparse matrix.
 /// row_pos / col_pos map an f index to its position in the block (-1 = not in it); rows must be
@@ -172,11 +176,30 @@ CraigBamptonBasis craig_bampton(const SparseMatrixd& K_ff, const SparseMatrixd& 
 Eigen::VectorXd small_pencil_eigenvalues(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M, int count) {
   SEFLEX_DEMAND(K.rows() == K.cols() && M.rows() == M.cols() && K.rows() == M.rows(), "pencil: sizes differ");
   if (K.rows() == 0 || count <= 0) return Eigen::VectorXd(0);
-  EigenOptions eo;
-  eo.backend = EigenBackend::Dense;
-  eo.count = count;
-  const SparseMatrixd Ks = K.sparseView(), Ms = M.sparseView();
-  return solve_eigenproblem(Ks, Ms, eo).eigenvalues;
+  // M = [R Z] diag(mu_r, ~0) [R Z]^T. The massless directions Z carry infinite eigenvalues; the finite
+  // ones are those of the pencil condensed onto R: (K_rr - K_rz K_zz^-1 K_zr, diag(mu_r)). Working
+  // from M (not a shift of K) keeps rigid-body modes at 0 to round-off of ||K|| / ||M|| and every
+  // elastic eigenvalue to working precision, whatever the spread of the spectrum.
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> me(0.5 * (M + M.transpose()));
+  SEFLEX_DEMAND(me.info() == Eigen::Success, "pencil: eigendecomposition of M failed");
+  const double mu_max = me.eigenvalues().cwiseAbs().maxCoeff();
+  SEFLEX_DEMAND(mu_max > 0, "pencil: M is zero");
+  Eigen::Index nz = 0;
+  while (nz < M.rows() && me.eigenvalues()(nz) <= kMasslessFraction * mu_max) ++nz;
+  const Eigen::MatrixXd Z = me.eigenvectors().leftCols(nz), R = me.eigenvectors().rightCols(M.rows() - nz);
+  const Eigen::MatrixXd Ks = 0.5 * (K + K.transpose());
+  Eigen::MatrixXd Kc = R.transpose() * Ks * R;
+  if (nz > 0) {
+    const Eigen::LLT<Eigen::MatrixXd> zz(Z.transpose() * Ks * Z);
+    SEFLEX_DEMAND(zz.info() == Eigen::Success, "pencil: a massless direction has no stiffness (a mechanism)");
+    const Eigen::MatrixXd Krz = R.transpose() * Ks * Z;
+    Kc -= Krz * zz.solve(Krz.transpose());
+  }
+  const Eigen::VectorXd scale = me.eigenvalues().tail(M.rows() - nz).cwiseSqrt().cwiseInverse();
+  Eigen::MatrixXd A = scale.asDiagonal() * Kc * scale.asDiagonal();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ae(0.5 * (A + A.transpose()), Eigen::EigenvaluesOnly);
+  SEFLEX_DEMAND(ae.info() == Eigen::Success, "pencil: eigensolution failed");
+  return ae.eigenvalues().head(std::min<Eigen::Index>(count, ae.eigenvalues().size()));
 }
 
 }  // namespace seflex::reduction

@@ -24,7 +24,7 @@ struct BlockLanczosOptions {
   std::optional<Eigen::Index> count;  ///< lowest pairs wanted
   std::optional<double> lambda_max;   ///< or: all pairs up to this eigenvalue ...
   Eigen::Index extra = 0;             ///< ... and this many more above it
-  Eigen::Index block = 12;            ///< block size
+  Eigen::Index block = 8;             ///< block size (4-8 fastest on the 100k-dof panel, 30 modes)
   Eigen::Index max_basis = 600;       ///< give up (nullopt) beyond this many basis vectors
   double tolerance = 1e-10;
   unsigned seed = 20261121u;

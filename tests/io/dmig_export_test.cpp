@@ -8,7 +8,6 @@
 #include "seflex/fem/constraints.hpp"
 #include "seflex/io/nastran.hpp"
 #include "seflex/reduction/craig_bampton_superelement.hpp"
-#include "seflex/reduction/eigensolver.hpp"
 #include "test_support.hpp"
 
 namespace seflex {
@@ -26,8 +25,9 @@ se::Superelement reduced_yoke(int modes) {
 }
 
 // The exported deck, read by seflex's reader, assembles (K2GG/M2GG) to the superelement's K and M
-// to the 10 significant digits written, and its normal modes are the reduced model's free-free
-// modes: the round trip the issue asks for.
+// to the 11 significant digits written, and its normal modes are the reduced model's free-free
+// modes, every frequency to 1e-8 (the highest, of the stiff 0.02 m brackets, are the most sensitive
+// to the rounding of the terms): the round trip the issue asks for.
 TEST(DmigExport, RoundTripThroughTheReaderGivesTheReducedFrequencies) {
   const se::Superelement s = reduced_yoke(6);
   const std::string deck = io::dmig_deck(s);
@@ -48,16 +48,16 @@ TEST(DmigExport, RoundTripThroughTheReaderGivesTheReducedFrequencies) {
 
   const fem::ConstrainedSystem c = fem::apply_constraints(m, g, std::nullopt);
   ASSERT_EQ(c.n_free(), s.size());
-  reduction::EigenOptions eo;
-  eo.count = s.size();
-  const Eigen::VectorXd deck_lambda = reduction::solve_eigenproblem(c.K_ff, c.M_ff, eo).eigenvalues;
+  // The same dense pencil solution on both sides isolates what the deck carries.
+  const Eigen::VectorXd deck_lambda =
+      reduction::small_pencil_eigenvalues(Eigen::MatrixXd(c.K_ff), Eigen::MatrixXd(c.M_ff), s.size());
   const Eigen::VectorXd red = reduction::reduced_eigenvalues(s, s.size());
   ASSERT_EQ(deck_lambda.size(), red.size());
   for (Eigen::Index k = 0; k < red.size(); ++k) {
     if (k < 6)
-      EXPECT_LT(std::abs(deck_lambda(k)), 1e-6 * red(6)) << "rigid mode " << k + 1;
+      EXPECT_LT(std::abs(deck_lambda(k)), 1e-8 * red(6)) << "rigid mode " << k + 1;
     else
-      EXPECT_NEAR(deck_lambda(k) / red(k), 1.0, 1e-8) << "mode " << k + 1;
+      EXPECT_NEAR(std::sqrt(deck_lambda(k) / red(k)), 1.0, 1e-8) << "frequency of mode " << k + 1;
   }
 }
 

@@ -8,8 +8,8 @@
 //   SPOINT  for the m fixed-interface modal coordinates (ids first_spoint ... first_spoint + m - 1)
 //   EIGRL   1 with ND = n (all modes of the reduced model)
 //   DMIG    KAAX and MAAX, IFO 6 (symmetric: each column j lists rows i >= j, the lower triangle),
-//           TIN 2 (double precision), terms in large field with 10 significant digits; exact zeros
-//           are omitted.
+//           TIN 2 (double precision), terms in large field with 11-12 significant digits (the implicit
+//           exponent form -1.2345678901+05); exact zeros are omitted.
 // Dof order of the matrices: interface grids in the superelement's order (components 1-6, basic
 // axes = body axes), then the SPOINTs. PARAM WTMASS is not written: the matrices are already in
 // consistent units (M2GG is not scaled by WTMASS in Nastran anyway).

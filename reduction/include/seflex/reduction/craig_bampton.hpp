@@ -81,9 +81,11 @@ CraigBamptonBasis craig_bampton(const SparseMatrixd& K_ff, const SparseMatrixd& 
 se::TruncationReport truncation_report(const CraigBamptonBasis& basis, const SparseMatrixd& M_ff,
                                        const Eigen::MatrixXd& R_b);
 
-/// Eigenvalues (ascending, (rad/s)^2) of a small dense pencil (K, M), M positive semi-definite
-/// (massless coordinates allowed): the lowest `count` (all finite ones if count exceeds them).
-/// Used for the free-free frequencies of a reduced model.
+/// Eigenvalues (ascending, (rad/s)^2) of a small dense pencil (K, M), K and M positive
+/// semi-definite: the lowest `count` (all finite ones if count exceeds them). Directions of M below
+/// 1e-12 of its largest eigenvalue are massless and condensed out (their stiffness must be
+/// positive definite). For the free-free frequencies of a reduced model: rigid-body modes come out
+/// at zero to round-off, elastic ones to working precision. Dense O(n^3): reduced models only.
 Eigen::VectorXd small_pencil_eigenvalues(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M, int count);
 
 /// Frequency in Hz of an eigenvalue (negative round-off of rigid-body modes gives 0).
