@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <string>
 
-#include "export_text.hpp"
+#include "atomic_write.hpp"
 #include "seflex/common/error.hpp"
 
 namespace seflex::io {
@@ -139,7 +139,7 @@ std::string dmig_deck(const se::Superelement& s, const DmigExportOptions& option
 
 void write_dmig_deck(const se::Superelement& body, const std::filesystem::path& path,
                      const DmigExportOptions& options) {
-  detail::write_text_file(path, dmig_deck(body, options), options.overwrite);
+  detail::write_file_atomically(path, dmig_deck(body, options), options.overwrite);
 }
 
 }  // namespace seflex::io

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "export_text.hpp"
+#include "atomic_write.hpp"
 #include "seflex/common/error.hpp"
 
 namespace seflex::io {
@@ -82,7 +82,7 @@ std::vector<Op4Matrix> superelement_op4_matrices(const se::Superelement& body, b
 }
 
 void write_op4(const se::Superelement& body, const std::filesystem::path& path, const Op4ExportOptions& options) {
-  detail::write_text_file(path, op4_text(superelement_op4_matrices(body, options.recovery)), options.overwrite);
+  detail::write_file_atomically(path, op4_text(superelement_op4_matrices(body, options.recovery)), options.overwrite);
 }
 
 }  // namespace seflex::io

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <vector>
 
+#include "atomic_write.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/common/version.hpp"
 #include "seflex/io/sha256.hpp"
@@ -436,24 +437,9 @@ std::string serialize_superelement(const se::Superelement& s) {
 }
 
 void save_superelement(const se::Superelement& s, const std::filesystem::path& path, const SaveOptions& options) {
-  if (!options.overwrite && std::filesystem::exists(path))
+  if (!options.overwrite && std::filesystem::exists(path))  // before serialising a large body
     throw InputError(SourceRef{path.string(), 0}, "exists already; refusing to overwrite it (use --force to replace it)");
-  const std::string bytes = serialize_superelement(s);
-  std::filesystem::path tmp = path;
-  tmp += ".tmp-seflex";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(SourceRef{path.string(), 0}, "cannot be written (check the folder exists and is writable)");
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out) throw InputError(SourceRef{path.string(), 0}, "write failed (disk full?)");
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::filesystem::remove(tmp, ec);
-    throw InputError(SourceRef{path.string(), 0}, "cannot be replaced: " + ec.message());
-  }
+  detail::write_file_atomically(path, serialize_superelement(s), options.overwrite);
 }
 
 se::Superelement parse_superelement(const std::string& bytes, const std::string& name) {

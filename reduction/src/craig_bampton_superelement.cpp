@@ -143,20 +143,15 @@ std::vector<se::MeshCell> mesh_cells(const fem::Model& model) {
   std::vector<se::MeshCell> cells;
   cells.reserve(model.bars.size() + model.rods.size() + model.shells.size());
   auto node = [&](int id) { return static_cast<std::int32_t>(model.grid_index.at(id)); };
-  for (const fem::Bar& b : model.bars) {
+  auto line = [&](int ga, int gb, int id) {
     se::MeshCell c;
     c.type = se::MeshCell::Type::Line;
-    c.nodes = {node(b.ga), node(b.gb), -1, -1};
-    c.element_id = b.id;
+    c.nodes = {node(ga), node(gb), -1, -1};
+    c.element_id = id;
     cells.push_back(c);
-  }
-  for (const fem::Rod& r : model.rods) {
-    se::MeshCell c;
-    c.type = se::MeshCell::Type::Line;
-    c.nodes = {node(r.ga), node(r.gb), -1, -1};
-    c.element_id = r.id;
-    cells.push_back(c);
-  }
+  };
+  for (const fem::Bar& b : model.bars) line(b.ga, b.gb, b.id);
+  for (const fem::Rod& r : model.rods) line(r.ga, r.gb, r.id);
   for (const fem::Shell& s : model.shells) {
     se::MeshCell c;
     c.type = s.nnode == 4 ? se::MeshCell::Type::Quad : se::MeshCell::Type::Triangle;

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "craig_bampton_checks.hpp"
 #include "craig_bampton_models.hpp"
 #include "seflex/fem/mass_properties.hpp"
 #include "seflex/reduction/craig_bampton_superelement.hpp"
@@ -14,14 +15,10 @@ namespace seflex {
 namespace {
 
 using cbtest::box_frame;
+using cbtest::max_abs;
+using cbtest::skew;
 using reduction::reduce_to_superelement;
 using reduction::SuperelementOptions;
-
-Eigen::Matrix3d skew(const Eigen::Vector3d& a) {
-  Eigen::Matrix3d S;
-  S << 0, -a.z(), a.y(), a.z(), 0, -a.x(), -a.y(), a.x(), 0;
-  return S;
-}
 
 /// `block`: the fixed-interface modes from the block Lanczos on the factor of K_ii (used by default
 /// for interiors of 2000 dofs and more) instead of solve_eigenproblem.
@@ -38,8 +35,6 @@ std::vector<double> full_free_free(const fem::Model& m) {
   const auto d = cbtest::dense_system(m);
   return fem::test::dense_eigenvalues(d.K, d.M, 100.0);
 }
-
-double max_abs(const Eigen::MatrixXd& A) { return A.cwiseAbs().maxCoeff(); }
 
 // With every fixed-interface mode kept the Craig-Bampton basis spans the whole f-set (up to the
 // massless dofs, which static condensation handles exactly), so the reduced model has the full
@@ -71,37 +66,7 @@ TEST(CraigBampton, FormulationT1Identities) {
   const fem::Model m = box_frame();
   const se::Superelement s = reduce_to_superelement(m, options({1, 3, 7}, 5));
   ASSERT_TRUE(se::check_consistency(s).empty());
-  const int N = s.num_interfaces();
-  const Eigen::MatrixXd Phi_rig0 = reduction::interface_rigid_modes(s);
-  // Psi Phi_rig0 = Phi_rig^FE: the constraint modes reproduce rigid motion at every grid.
-  const auto nfe = static_cast<Eigen::Index>(s.fe_node_ids.size());
-  Eigen::MatrixXd Phi_rig_fe = Eigen::MatrixXd::Zero(6 * nfe, 6);
-  for (Eigen::Index i = 0; i < nfe; ++i) {
-    Phi_rig_fe.block<6, 6>(6 * i, 0).setIdentity();
-    Phi_rig_fe.block<3, 3>(6 * i, 3) = -skew(s.p_BoI_B.col(i));
-  }
-  const Eigen::MatrixXd Psi = s.recovery.leftCols(6 * N);
-  EXPECT_LT(max_abs(Psi * Phi_rig0 - Phi_rig_fe), 1e-10 * max_abs(Phi_rig_fe));
-  // Phi_f Phi_rig0 = I6.
-  const Eigen::MatrixXd A = s.Phi_f.leftCols(6 * N);
-  EXPECT_LT(max_abs(A * Phi_rig0 - Eigen::MatrixXd::Identity(6, 6)), 1e-10);
-  // K_el Phi_rig0 = 0.
-  const Eigen::MatrixXd K_el = s.K.topLeftCorner(6 * N, 6 * N);
-  EXPECT_LT(max_abs(K_el * Phi_rig0), 1e-10 * max_abs(K_el) * max_abs(Phi_rig0));
-  // Block sums of section 1.3.
-  Eigen::Matrix3d uu = Eigen::Matrix3d::Zero(), tu = uu, ut = uu, tt = uu;
-  for (int j = 0; j < N; ++j) {
-    const Eigen::Matrix<double, 6, 6> Aj = A.block<6, 6>(0, 6 * j);
-    const Eigen::Matrix3d x = skew(s.interfaces[static_cast<std::size_t>(j)].p_BoN_B);
-    uu += Aj.topLeftCorner<3, 3>();
-    tu += Aj.bottomLeftCorner<3, 3>();
-    ut += Aj.topRightCorner<3, 3>() - Aj.topLeftCorner<3, 3>() * x;
-    tt += Aj.bottomRightCorner<3, 3>() - Aj.bottomLeftCorner<3, 3>() * x;
-  }
-  EXPECT_LT(max_abs(uu - Eigen::Matrix3d::Identity()), 1e-10);
-  EXPECT_LT(max_abs(tu), 1e-10);
-  EXPECT_LT(max_abs(ut), 1e-10);
-  EXPECT_LT(max_abs(tt - Eigen::Matrix3d::Identity()), 1e-10);
+  cbtest::expect_t1_identities(s, "box frame {1, 3, 7}");
 }
 
 // Mass properties: the superelement's, and those of the reduced mass matrix, equal the grid point

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "../reduction/craig_bampton_checks.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/constraints.hpp"
 #include "seflex/fem/mass_properties.hpp"
@@ -18,13 +19,7 @@
 namespace seflex {
 namespace {
 
-double max_abs(const Eigen::MatrixXd& A) { return A.cwiseAbs().maxCoeff(); }
-
-Eigen::Matrix3d skew(const Eigen::Vector3d& a) {
-  Eigen::Matrix3d S;
-  S << 0, -a.z(), a.y(), a.z(), 0, -a.x(), -a.y(), a.x(), 0;
-  return S;
-}
+using cbtest::max_abs;
 
 /// The dense 11 x 11 block following `marker` in mystran17_run_CB_matrices.txt.
 Eigen::MatrixXd mystran_matrix(const std::string& text, const std::string& marker) {
@@ -134,32 +129,7 @@ TEST(CraigBamptonValidation, DemonstrationBodiesSatisfyT1) {
   for (const Case& cs : kCases) {
     const fem::Model m = mesh(cs.mesh);
     const se::Superelement s = reduction::reduce_to_superelement(m, options(cs.interfaces, 5, cs.frame));
-    const int N = s.num_interfaces();
-    const Eigen::MatrixXd R0 = reduction::interface_rigid_modes(s);
-    const auto nfe = static_cast<Eigen::Index>(s.fe_node_ids.size());
-    Eigen::MatrixXd R_fe = Eigen::MatrixXd::Zero(6 * nfe, 6);
-    for (Eigen::Index i = 0; i < nfe; ++i) {
-      R_fe.block<6, 6>(6 * i, 0).setIdentity();
-      R_fe.block<3, 3>(6 * i, 3) = -skew(s.p_BoI_B.col(i));
-    }
-    EXPECT_LT(max_abs(s.recovery.leftCols(6 * N) * R0 - R_fe), 1e-10 * max_abs(R_fe)) << label(cs);
-    const Eigen::MatrixXd A = s.Phi_f.leftCols(6 * N);
-    EXPECT_LT(max_abs(A * R0 - Eigen::MatrixXd::Identity(6, 6)), 1e-10) << label(cs);
-    const Eigen::MatrixXd K_el = s.K.topLeftCorner(6 * N, 6 * N);
-    EXPECT_LT(max_abs(K_el * R0), 1e-10 * max_abs(K_el) * max_abs(R0)) << label(cs);
-    Eigen::Matrix3d uu = Eigen::Matrix3d::Zero(), tu = uu, ut = uu, tt = uu;
-    for (int j = 0; j < N; ++j) {
-      const Eigen::Matrix<double, 6, 6> Aj = A.block<6, 6>(0, 6 * j);
-      const Eigen::Matrix3d x = skew(s.interfaces[static_cast<std::size_t>(j)].p_BoN_B);
-      uu += Aj.topLeftCorner<3, 3>();
-      tu += Aj.bottomLeftCorner<3, 3>();
-      ut += Aj.topRightCorner<3, 3>() - Aj.topLeftCorner<3, 3>() * x;
-      tt += Aj.bottomRightCorner<3, 3>() - Aj.bottomLeftCorner<3, 3>() * x;
-    }
-    EXPECT_LT(max_abs(uu - Eigen::Matrix3d::Identity()), 1e-10) << label(cs);
-    EXPECT_LT(max_abs(tu), 1e-10) << label(cs);
-    EXPECT_LT(max_abs(ut), 1e-10) << label(cs);
-    EXPECT_LT(max_abs(tt - Eigen::Matrix3d::Identity()), 1e-10) << label(cs);
+    cbtest::expect_t1_identities(s, label(cs));
   }
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-// Writing an exported text file (DMIG deck, OP4 matrices): refuse to overwrite unless asked, write
-// to a temporary file and rename it into place so that a failure never leaves half a file.
+// Writing an output file (superelement file, DMIG deck, OP4 matrices): refuse to overwrite unless
+// asked, write to a temporary file and rename it into place so that a failure never leaves half a file.
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -9,7 +9,7 @@
 
 namespace seflex::io::detail {
 
-inline void write_text_file(const std::filesystem::path& path, const std::string& text, bool overwrite) {
+inline void write_file_atomically(const std::filesystem::path& path, const std::string& bytes, bool overwrite) {
   if (!overwrite && std::filesystem::exists(path))
     throw InputError(SourceRef{path.string(), 0},
                      "exists already; refusing to overwrite it (use --force to replace it)");
@@ -19,7 +19,7 @@ inline void write_text_file(const std::filesystem::path& path, const std::string
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     if (!out)
       throw InputError(SourceRef{path.string(), 0}, "cannot be written (check the folder exists and is writable)");
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     out.close();
     if (!out) throw InputError(SourceRef{path.string(), 0}, "write failed (disk full?)");
   }
