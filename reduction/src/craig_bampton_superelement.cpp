@@ -8,6 +8,7 @@
 #include <unordered_set>
 
 #include "seflex/common/error.hpp"
+#include "seflex/common/so3.hpp"
 #include "seflex/common/version.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/components.hpp"
@@ -20,11 +21,6 @@ namespace {
 
 using Axes = std::vector<std::optional<Eigen::Matrix3d>>;
 
-Eigen::Matrix3d skew(const Eigen::Vector3d& a) {
-  Eigen::Matrix3d S;
-  S << 0, -a.z(), a.y(), a.z(), 0, -a.x(), -a.y(), a.x(), 0;
-  return S;
-}
 
 std::string deck_name(const fem::Model& model) { return model.files.empty() ? std::string("<model>") : model.files[0]; }
 
@@ -88,7 +84,7 @@ Eigen::MatrixXd rigid_modes_g(const fem::Model& model, const fem::DofMap& dofs, 
   Eigen::MatrixXd D = Eigen::MatrixXd::Zero(dofs.size(), 6);
   for (std::size_t i = 0; i < model.grids.size(); ++i) {
     Eigen::Matrix<double, 6, 6> B = Eigen::Matrix<double, 6, 6>::Identity();
-    B.block<3, 3>(0, 3) = -skew(model.grids[i].x_basic - p);
+    B.block<3, 3>(0, 3) = -so3::skew(model.grids[i].x_basic - p);
     if (axes[i]) {
       B.topRows<3>() = axes[i]->transpose() * B.topRows<3>();
       B.bottomRows<3>() = axes[i]->transpose() * B.bottomRows<3>();
@@ -115,7 +111,7 @@ RigidMass rigid_mass(const Eigen::Matrix<double, 6, 6>& M0, const Eigen::Vector3
     return r;
   }
   const Eigen::Matrix3d S = -M0.block<3, 3>(0, 3) / r.mass;  // skew(c - p)
-  const Eigen::Vector3d c(0.5 * (S(2, 1) - S(1, 2)), 0.5 * (S(0, 2) - S(2, 0)), 0.5 * (S(1, 0) - S(0, 1)));
+  const Eigen::Vector3d c = so3::vee(0.5 * (S - S.transpose()));
   r.cg = p + c;
   const Eigen::Matrix3d J = M0.bottomRightCorner<3, 3>();
   r.I_cg = J - r.mass * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
@@ -179,7 +175,7 @@ Eigen::MatrixXd interface_rigid_modes(const se::Superelement& body) {
   Eigen::MatrixXd R = Eigen::MatrixXd::Zero(6 * N, 6);
   for (int j = 0; j < N; ++j) {
     R.block<6, 6>(6 * j, 0).setIdentity();
-    R.block<3, 3>(6 * j, 3) = -skew(body.interfaces[static_cast<std::size_t>(j)].p_BoN_B);
+    R.block<3, 3>(6 * j, 3) = -so3::skew(body.interfaces[static_cast<std::size_t>(j)].p_BoN_B);
   }
   return R;
 }

@@ -5,16 +5,14 @@
 
 #include <string>
 
+#include "seflex/common/so3.hpp"
 #include "seflex/reduction/craig_bampton_superelement.hpp"
 #include "seflex/superelement/superelement.hpp"
 
 namespace seflex::cbtest {
 
-inline Eigen::Matrix3d skew(const Eigen::Vector3d& a) {
-  Eigen::Matrix3d S;
-  S << 0, -a.z(), a.y(), a.z(), 0, -a.x(), -a.y(), a.x(), 0;
-  return S;
-}
+using so3::skew;
+
 
 inline double max_abs(const Eigen::MatrixXd& A) { return A.cwiseAbs().maxCoeff(); }
 
