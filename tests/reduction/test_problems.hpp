@@ -79,8 +79,7 @@ inline std::vector<double> laplacian_plate_eigenvalues(int N) {
   std::vector<double> ev;
   for (int p = 1; p <= N; ++p)
     for (int q = 1; q <= N; ++q) {
-      const double a = std::sin(p * std::numbers::pi / (2.0 * (N + 1))),
-                   b = std::sin(q * std::numbers::pi / (2.0 * (N + 1)));
+      const double a = std::sin(p * std::numbers::pi / (2.0 * (N + 1))), b = std::sin(q * std::numbers::pi / (2.0 * (N + 1)));
       ev.push_back(4 * a * a + 4 * b * b);
     }
   std::sort(ev.begin(), ev.end());
@@ -175,8 +174,7 @@ inline Eigen::VectorXd condensed_reference_eigenvalues(const Pencil& p) {
   auto block = [](const Eigen::MatrixXd& A, const std::vector<int>& r, const std::vector<int>& c) {
     Eigen::MatrixXd B(r.size(), c.size());
     for (std::size_t i = 0; i < r.size(); ++i)
-      for (std::size_t j = 0; j < c.size(); ++j)
-        B(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = A(r[i], c[j]);
+      for (std::size_t j = 0; j < c.size(); ++j) B(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = A(r[i], c[j]);
     return B;
   };
   Eigen::MatrixXd Kc = block(K, a, a);
