@@ -13,9 +13,11 @@
 #include <vector>
 
 #include "command.hpp"
+#include "model_args.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/common/version.hpp"
-#include "seflex/io/nastran.hpp"
+#include "seflex/io/model_reader.hpp"
+#include "seflex/io/results_csv.hpp"
 #include "seflex/io/sha256.hpp"
 #include "seflex/io/superelement_file.hpp"
 #include "seflex/reduction/craig_bampton_superelement.hpp"
@@ -30,28 +32,45 @@ std::string lower(std::string s) {
   return s;
 }
 
-/// "1,3,4" -> ids; "aset" | "bset" | "suport" -> cards; anything else -> a named node set.
+/// "aset" | "bset" | "suport" -> the grids of those cards; otherwise a comma-separated list whose
+/// items are grid ids or names of node sets (gmsh physical groups), in that order: "1,3,4",
+/// "hinge1,hinge2", "hinges,7".
 std::vector<int> interface_ids(const seflex::fem::Model& model, const std::string& spec) {
   const std::string l = lower(spec);
   if (l == "aset") return red::interface_nodes_from_cards(model, red::InterfaceCards::Aset);
   if (l == "bset") return red::interface_nodes_from_cards(model, red::InterfaceCards::Bset);
   if (l == "suport" || l == "support") return red::interface_nodes_from_cards(model, red::InterfaceCards::Suport);
-  const bool numeric = !spec.empty() && spec.find_first_not_of("0123456789, ") == std::string::npos;
-  if (!numeric) return red::interface_nodes_from_set(model, spec);
   std::vector<int> ids;
   std::size_t pos = 0;
   while (pos <= spec.size()) {
     const std::size_t comma = std::min(spec.find(',', pos), spec.size());
     std::string item = spec.substr(pos, comma - pos);
     item.erase(std::remove(item.begin(), item.end(), ' '), item.end());
-    if (item.empty() || item.size() > 9)
-      throw UsageError("option --interface: '" + spec +
-                       "': expected grid ids separated by commas (e.g. 1,3,4), aset, bset, "
-                       "suport or the name of a node set");
-    ids.push_back(std::stoi(item));
     pos = comma + 1;
+    if (item.empty())
+      throw UsageError("option --interface: '" + spec +
+                       "': expected grid ids or node set names separated by commas "
+                       "(e.g. 1,3,4), or aset, bset or suport");
+    if (item.find_first_not_of("0123456789") == std::string::npos && item.size() <= 9) {
+      ids.push_back(std::stoi(item));
+    } else {
+      const std::vector<int> set = red::interface_nodes_from_set(model, item);
+      ids.insert(ids.end(), set.begin(), set.end());
+    }
   }
   return ids;
+}
+
+/// --frame: a grid id, or the name of a node set holding one grid.
+int frame_id(const seflex::fem::Model& model, const std::string& spec) {
+  if (!spec.empty() && spec.size() <= 9 && spec.find_first_not_of("0123456789") == std::string::npos)
+    return std::stoi(spec);
+  const std::vector<int> set = red::interface_nodes_from_set(model, spec);
+  if (set.size() != 1)
+    throw seflex::InputError(
+        seflex::SourceRef{model.files.empty() ? std::string() : model.files[0], 0},
+        "node set '" + spec + "' holds " + std::to_string(set.size()) + " nodes; expected one for --frame");
+  return set.front();
 }
 
 std::string iso_utc_now() {
@@ -144,12 +163,13 @@ int run_reduce(seflex::app::Args& args) {
   const auto spec = args.value("interface");
   const int modes = args.integer("modes", kAbsent);
   const double fmax = args.number("fmax", std::numeric_limits<double>::quiet_NaN());
-  const int frame = args.integer("frame", kAbsent);
+  const auto frame = args.value("frame");
   const auto name = args.value("name");
   const int compare = args.integer("compare", kAbsent);
   const std::string solver = args.value_or("eigensolver", "spectra");
   const bool no_mesh = args.flag("no-mesh");
   const bool force = args.flag("force");
+  const seflex::io::ModelReadOptions model_options = seflex::app::model_read_options(args);
   const std::string model_path = args.positional("MODEL");
   args.finish();
 
@@ -167,10 +187,10 @@ int run_reduce(seflex::app::Args& args) {
                              "exists already; refusing to overwrite it (use --force to replace it)");
 
   const auto t0 = std::chrono::steady_clock::now();
-  const seflex::fem::Model model = seflex::io::read_nastran(model_path);
+  const seflex::fem::Model model = seflex::io::read_model(model_path, model_options);
   red::SuperelementOptions o;
   o.interface_ids = interface_ids(model, *spec);
-  if (frame != kAbsent) o.frame_node = frame;
+  if (frame) o.frame_node = frame_id(model, *frame);
   if (!std::isnan(fmax))
     o.modes.fmax_hz = fmax;
   else
@@ -218,8 +238,9 @@ int run_reduce(seflex::app::Args& args) {
 }  // namespace
 
 SEFLEX_COMMAND(reduce,
-               "MODEL --interface IDS|aset|bset|suport|SET [--modes N | --fmax HZ] [--frame NODE] [--name NAME] "
-               "[--compare K] [--eigensolver spectra|arpack|dense] [--no-mesh] -o FILE.se [--force]",
+               "MODEL --interface IDS|SETS|aset|bset|suport [--modes N | --fmax HZ] [--frame NODE|SET] [--name NAME] "
+               "[--compare K] [--eigensolver spectra|arpack|dense] [--no-mesh] -o FILE.se [--force] "
+               "[--properties FILE] [--set NAME=VALUE]...",
                "Craig-Bampton reduction to an absolute-interface-coordinate superelement: constraint modes of all six "
                "dofs of the interface grids plus fixed-interface modes; prints mass properties, the truncation report "
                "and the reduced model's free-free frequencies (--compare K: against the full model's)",
