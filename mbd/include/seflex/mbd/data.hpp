@@ -1,0 +1,77 @@
+#pragma once
+// Scratch of the multibody algorithms (Model/State/Data split): node kinematics, per-body kernel
+// results, the assembled residual and matrices on a fixed sparse pattern, the sparse LU.
+// Made once per model (Data data(model)); every algorithm overwrites what it uses.
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
+#include <vector>
+
+#include "seflex/mbd/aic_element.hpp"
+#include "seflex/mbd/hinge_force.hpp"
+#include "seflex/mbd/model.hpp"
+
+namespace seflex::mbd {
+
+using Vector6d = Eigen::Matrix<double, 6, 1>;
+
+/// Pose, twist and acceleration of one node, the Jacobian of its pose with respect to the dofs in
+/// Model::node_dofs (columns [dr; dpi]), and the residual wrench accumulated on it.
+struct NodeKinematics {
+  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d p = Eigen::Vector3d::Zero();
+  Eigen::Vector3d v = Eigen::Vector3d::Zero(), w = Eigen::Vector3d::Zero();
+  Eigen::Vector3d a = Eigen::Vector3d::Zero(), alpha = Eigen::Vector3d::Zero();
+  std::vector<Vector6d> J;
+  Vector6d wrench = Vector6d::Zero();  ///< [force; moment about the node], world
+  Vector6d subtree = Vector6d::Zero(); ///< wrench of the node and its descendants, about the node
+};
+
+struct HingeKinematics {
+  Eigen::Vector3d axis_W = Eigen::Vector3d::UnitZ();
+  double phi = 0.0, phidot = 0.0, phiddot = 0.0;
+  double joint_torque = 0.0;  ///< torque the hinge transmits about its axis (driven: drive torque)
+};
+
+struct FlexibleBodyData {
+  AicKinematics kin;
+  Eigen::VectorXd f_el, f_in, f_damp;  ///< n each (world on the interface part)
+  double kinetic = 0.0, elastic = 0.0;
+};
+
+struct RigidBodyData {
+  Vector6d f = Vector6d::Zero();  ///< inertia wrench at the anchor
+  double kinetic = 0.0;
+  Eigen::Vector3d p_WCm = Eigen::Vector3d::Zero();
+};
+
+/// Sparse pattern made of dense cliques (body, node and force-element dof sets).
+struct CliquePattern {
+  std::vector<std::vector<int>> dofs;     ///< per clique, sorted
+  std::vector<std::vector<int>> offsets;  ///< per clique: value index of (dofs[a], dofs[b]) at a + n*b
+  Eigen::SparseMatrix<double> matrix;     ///< the pattern (values are scratch)
+};
+
+struct Data {
+  explicit Data(const Model& model);
+
+  std::vector<NodeKinematics> nodes;
+  std::vector<HingeKinematics> hinges;
+  std::vector<FlexibleBodyData> flex;
+  std::vector<RigidBodyData> rigid;
+  std::vector<HingeForceResult> forces;
+
+  // Assembly output.
+  Eigen::VectorXd residual;  ///< num_dofs: inertia + damping + internal - external
+  Eigen::VectorXd scale;     ///< num_dofs: sum of |contributions| (residual scale)
+  Eigen::VectorXd floor;     ///< num_dofs: round-off level of the residual (stiffness x eps x position)
+  CliquePattern pattern;
+  std::vector<int> clique_of_flex, clique_of_rigid, clique_of_node, clique_of_force;
+  std::vector<std::vector<std::vector<int>>> flex_node_pos;  ///< [body][interface][k] clique position of node_dofs[k]
+  std::vector<std::vector<int>> flex_eta_pos;                ///< [body][k] clique position of eta dof k
+  std::vector<double> K, C, M;  ///< values on the pattern
+  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
+  bool analyzed = false;
+};
+
+}  // namespace seflex::mbd

@@ -1,0 +1,76 @@
+#pragma once
+// What the solvers deliver at output times, through an Observer: time, hinge angles and rates,
+// every force element's torque and energy, lock states and latch times, energies, all node poses,
+// and each body's frame pose and local elastic coordinates (so io/ can animate the full FE mesh:
+// FE displacements in the body frame are U = recovery * xi).
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "seflex/mbd/data.hpp"
+#include "seflex/mbd/model.hpp"
+#include "seflex/mbd/state.hpp"
+
+namespace seflex::mbd {
+
+struct HingeSample {
+  double phi = 0.0, phidot = 0.0, phiddot = 0.0;
+  double drive_torque = 0.0;  ///< driven hinge: torque the drive applies; free hinge: residual (~0)
+};
+
+struct ElementSample {
+  double value = 0.0;                ///< spring/lock/damper torque [N m]; cable loop: net force T1 - T2 [N]
+  double energy = 0.0;               ///< stored energy [J]
+  std::vector<double> hinge_torques; ///< generalised force on each hinge it acts on [N m]
+  bool latched = false;              ///< locks
+  double t_latch = 0.0;              ///< locks, when latched
+};
+
+struct FlexibleBodySample {
+  Pose frame;           ///< floating frame B in W
+  Eigen::VectorXd xi;   ///< local elastic coordinates [q; eta] (superelement order)
+  double kinetic = 0.0, elastic = 0.0;
+};
+
+struct RigidBodySample {
+  Pose frame;  ///< body frame in W
+  double kinetic = 0.0;
+};
+
+struct Energies {
+  double kinetic = 0.0;
+  double elastic = 0.0;   ///< strain energy of the flexible bodies
+  double spring = 0.0;    ///< potential energy of the force elements
+  double gravity = 0.0;   ///< -m g . p_cm summed over bodies
+  double total() const { return kinetic + elastic + spring + gravity; }
+};
+
+struct Sample {
+  double t = 0.0;
+  double load_factor = 1.0;  ///< statics: the load factor of this load step
+  long step = 0;
+  bool event = false;        ///< a lock latched at this instant
+  std::vector<Pose> nodes;
+  std::vector<HingeSample> hinges;
+  std::vector<ElementSample> elements;
+  std::vector<FlexibleBodySample> flexible;
+  std::vector<RigidBodySample> rigid;
+  Energies energy;
+};
+
+/// Receives samples as the run goes (results are delivered before a failure is reported).
+class Observer {
+ public:
+  virtual ~Observer() = default;
+  virtual void on_sample(const Model& model, const Sample& sample) = 0;
+  /// Called after every accepted step (e.g. for a progress bar).
+  virtual void on_progress(double /*t*/, double /*t_end*/) {}
+};
+
+/// Build a sample from `state` and `data` assembled at that state.
+Sample make_sample(const Model& model, const State& state, const Data& data);
+
+/// Energies of `data` assembled at `state`.
+Energies energies(const Model& model, const State& state, const Data& data);
+
+}  // namespace seflex::mbd

@@ -1,0 +1,64 @@
+// Assembly contribution of one rigid body, as a wrench at its anchor node (moment about the node):
+//   c = vector anchor -> centre of mass, I = inertia about the centre of mass (world axes)
+//   F_t = m (a + alpha x c + w x (w x c) - g),   F_r = I alpha + w x I w + c x F_t
+// with the mass matrix [[m, -m c~], [m c~, I - m c~ c~]], the gyroscopic derivative and the
+// derivative with respect to the anchor's spatial rotation (c and I turn with the body).
+#include "assembly_detail.hpp"
+#include "seflex/common/so3.hpp"
+
+namespace seflex::mbd::detail {
+
+using Eigen::Matrix3d;
+using Eigen::MatrixXd;
+using Eigen::Vector3d;
+using so3::skew;
+
+void assemble_rigid(const Model& model, Data& data, const AssemblyOptions& opt, int bi) {
+  const RigidBody& b = model.rigid_bodies[static_cast<std::size_t>(bi)];
+  RigidBodyData& rd = data.rigid[static_cast<std::size_t>(bi)];
+  NodeKinematics& A = data.nodes[static_cast<std::size_t>(b.anchor.value)];
+  const Matrix3d R_WB = A.R * b.R_NB;
+  const Vector3d c = A.R * b.p_NBo_N + R_WB * b.p_BoCm_B;
+  const Matrix3d I = R_WB * b.I_Cm_B * R_WB.transpose();
+  const double m = b.mass;
+  const Vector3d g = opt.load_factor * model.gravity;
+  const Vector3d& w = A.w;
+  const Vector3d& al = A.alpha;
+  const Vector3d acm = A.a + al.cross(c) + w.cross(w.cross(c)) - g;
+  Vector6d F;
+  F.head<3>() = m * acm;
+  F.tail<3>() = I * al + w.cross(I * w) + c.cross(F.head<3>());
+  A.wrench += F;
+  rd.f = F;
+  rd.p_WCm = A.p + c;
+  const Vector3d vcm = A.v + w.cross(c);
+  rd.kinetic = opt.dynamics ? 0.5 * m * vcm.squaredNorm() + 0.5 * w.dot(I * w) : 0.0;
+
+  const int ci = data.clique_of_rigid[static_cast<std::size_t>(bi)];
+  const auto& cdofs = data.pattern.dofs[static_cast<std::size_t>(ci)];
+  const int nc = static_cast<int>(cdofs.size());
+  if (nc == 0) return;
+  MatrixXd J(6, nc);
+  for (int k = 0; k < nc; ++k) J.col(k) = A.J[static_cast<std::size_t>(k)];
+  const Eigen::VectorXd sc = (J.transpose() * F).cwiseAbs();
+  for (int k = 0; k < nc; ++k) data.scale[cdofs[static_cast<std::size_t>(k)]] += sc[k];
+  if (!opt.matrices) return;
+  const Matrix3d cx = skew(c), wx = skew(w), ax = skew(al);
+  const auto& off = data.pattern.offsets[static_cast<std::size_t>(ci)];
+  Eigen::Matrix<double, 6, 6> K6 = Eigen::Matrix<double, 6, 6>::Zero();
+  const Matrix3d dFt = -m * (ax + wx * wx) * cx;
+  K6.block<3, 3>(0, 3) = dFt;
+  K6.block<3, 3>(3, 3) = -skew(I * al) + I * ax + wx * (-skew(I * w) + I * wx) + skew(F.head<3>()) * cx + cx * dFt;
+  scatter(data.K, off, J.transpose() * K6 * J);
+  if (!opt.dynamics) return;
+  Eigen::Matrix<double, 6, 6> M6;
+  M6 << m * Matrix3d::Identity(), -m * cx, m * cx, I - m * cx * cx;
+  scatter(data.M, off, J.transpose() * M6 * J);
+  Eigen::Matrix<double, 6, 6> C6 = Eigen::Matrix<double, 6, 6>::Zero();
+  const Matrix3d dFt_dw = m * (-skew(w.cross(c)) - wx * cx);
+  C6.block<3, 3>(0, 3) = dFt_dw;
+  C6.block<3, 3>(3, 3) = wx * I - skew(I * w) + cx * dFt_dw;
+  scatter(data.C, off, J.transpose() * C6 * J);
+}
+
+}  // namespace seflex::mbd::detail
