@@ -1,0 +1,75 @@
+#pragma once
+// Small models shared by the multibody tests: rigid rods, flexible pendulum chains, and an
+// observer that keeps every sample.
+#include <Eigen/Dense>
+#include <vector>
+
+#include "beam_superelement.hpp"
+#include "seflex/mbd/integrator.hpp"
+#include "seflex/mbd/model.hpp"
+
+namespace seflex::test {
+
+/// A rigid uniform rod (no stiffness data): mass m, length L along x, interfaces at both ends,
+/// frame at the centre. Only a rigid body can use it.
+inline se::Superelement rod(double L, double m, const std::string& name = "rod") {
+  se::Superelement s;
+  s.name = name;
+  for (int j = 0; j < 2; ++j) {
+    se::InterfaceNode itf;
+    itf.id = j + 1;
+    itf.p_BoN_B = Eigen::Vector3d((j == 0 ? -0.5 : 0.5) * L, 0, 0);
+    s.interfaces.push_back(itf);
+  }
+  s.mass = m;
+  s.I_Cm_B = Eigen::Vector3d(1e-6 * m * L * L, m * L * L / 12, m * L * L / 12).asDiagonal();
+  return s;
+}
+
+/// Keeps every sample.
+struct Recorder : mbd::Observer {
+  std::vector<mbd::Sample> samples;
+  void on_sample(const mbd::Model&, const mbd::Sample& s) override { samples.push_back(s); }
+};
+
+struct ChainOptions {
+  int bodies = 2;
+  double length = 1.0;          ///< per body
+  int elements = 4;             ///< FE elements per body (frame at the middle node)
+  BeamSection section;
+  mbd::InertiaModel inertia = mbd::InertiaModel::Simplified;
+  bool rigid = false;           ///< rigid bodies of the same superelement
+  Eigen::Vector3d gravity{0, -9.81, 0};
+  Eigen::Vector3d axis{0, 0, 1};  ///< hinge axes (world)
+  int frame_node = -1;          ///< FE node of the floating frame (-1: middle)
+};
+
+/// A pendulum chain hanging from a ground hinge at the origin, bodies along +x (horizontal at
+/// t = 0), hinges between consecutive bodies. Returns the model; tip node = last node.
+inline mbd::Model pendulum_chain(const ChainOptions& o) {
+  using namespace mbd;
+  auto fe = straight_beam(o.length, o.elements, o.section);
+  const int f = o.frame_node >= 0 ? o.frame_node : o.elements / 2;
+  const se::Superelement s = craig_bampton(fe, {0, o.elements}, f, 0, "link");
+  ModelBuilder mb;
+  const auto sei = mb.add_superelement(s);
+  NodeIndex base = mb.add_ground("ground", Pose{});
+  for (int b = 0; b < o.bodies; ++b) {
+    const auto h = mb.add_hinge("H" + std::to_string(b + 1), base, o.axis);
+    const Pose X{Eigen::Matrix3d::Identity(), Eigen::Vector3d(b * o.length + fe.pts[f].x(), 0, 0)};
+    if (o.rigid) {
+      const auto rb = mb.add_rigid_body("link" + std::to_string(b + 1), sei, mb.hinge_child(h), 0, X);
+      base = mb.rigid_body(rb).nodes[1];
+    } else {
+      const auto tip = mb.add_node("n" + std::to_string(b + 1), Pose{Eigen::Matrix3d::Identity(), Eigen::Vector3d((b + 1) * o.length, 0, 0)});
+      FlexibleBodyOptions fo;
+      fo.inertia = o.inertia;
+      mb.add_flexible_body("link" + std::to_string(b + 1), sei, {mb.hinge_child(h), tip}, X, fo);
+      base = tip;
+    }
+  }
+  mb.set_gravity(o.gravity);
+  return mb.build();
+}
+
+}  // namespace seflex::test
