@@ -52,6 +52,7 @@ AicElement make_aic_element(const se::Superelement& s) {
   e.Phi_f = s.Phi_f;
   e.K = 0.5 * (s.K + s.K.transpose());
   e.M = 0.5 * (s.M + s.M.transpose());
+  e.K_abs_max = e.K.cwiseAbs().maxCoeff();
   double len = 1e-3;
   for (const auto& itf : s.interfaces) {
     e.x.push_back(itf.p_BoN_B);
@@ -241,10 +242,9 @@ VectorXd to_world(const AicElement& e, const Matrix3d& R_WB, const Eigen::Ref<co
 MatrixXd to_world_matrix(const AicElement& e, const Matrix3d& R_WB, const MatrixXd& A) {
   MatrixXd B = A;
   const int nr = 2 * e.N;
-  for (int i = 0; i < nr; ++i) B.middleRows<3>(3 * i) = R_WB * A.middleRows<3>(3 * i);
-  MatrixXd C = B;
-  for (int i = 0; i < nr; ++i) C.middleCols<3>(3 * i) = B.middleCols<3>(3 * i) * R_WB.transpose();
-  return C;
+  for (int i = 0; i < nr; ++i) B.middleRows<3>(3 * i) = R_WB * B.middleRows<3>(3 * i);  // products evaluate first
+  for (int i = 0; i < nr; ++i) B.middleCols<3>(3 * i) = B.middleCols<3>(3 * i) * R_WB.transpose();
+  return B;
 }
 
 namespace {

@@ -77,6 +77,84 @@ void tree_pass(const Model& model, Data& data, bool matrices) {
 
 }  // namespace
 
+namespace detail {
+
+bool convective_map(const ElementMap& map, const std::vector<const std::vector<Vector6d>*>& G, ElementMap& out) {
+  out = map;
+  out.J = G;
+  bool any = false;
+  for (std::size_t i = 0; i < G.size(); ++i) {
+    out.identity[i] = 0;
+    if (!map.identity[i]) any = true;
+  }
+  out.extra = nullptr;
+  return any;
+}
+
+void scatter_mapped(std::vector<double>& vals, const std::vector<int>& offsets, int nc, const ElementMap& map,
+                    const Eigen::MatrixXd& X, const ElementMap* right) {
+  const ElementMap& R = right ? *right : map;
+  const int nb = static_cast<int>(map.J.size());
+  const int ne = map.extra ? static_cast<int>(map.extra->size()) : 0;
+  const int ner = R.extra ? static_cast<int>(R.extra->size()) : 0;
+  // Column-mapped blocks Y_j = X(:, block j) J_j (rows: all node-space rows).
+  std::vector<Eigen::MatrixXd> Y(static_cast<std::size_t>(nb));
+  for (int j = 0; j < nb; ++j) {
+    const auto& Jj = *R.J[static_cast<std::size_t>(j)];
+    if (R.identity[static_cast<std::size_t>(j)]) {
+      Y[static_cast<std::size_t>(j)] = X.middleCols<6>(6 * j);
+      continue;
+    }
+    Eigen::Matrix<double, 6, Eigen::Dynamic> Jm(6, static_cast<Eigen::Index>(Jj.size()));
+    for (std::size_t c = 0; c < Jj.size(); ++c) Jm.col(static_cast<Eigen::Index>(c)) = Jj[c];
+    Y[static_cast<std::size_t>(j)] = X.middleCols<6>(6 * j) * Jm;
+  }
+  auto put = [&](int a, int b, double v) {
+    vals[static_cast<std::size_t>(offsets[static_cast<std::size_t>(a + nc * b)])] += v;
+  };
+  for (int i = 0; i < nb; ++i) {
+    const auto& Ji = *map.J[static_cast<std::size_t>(i)];
+    const auto& pi = *map.pos[static_cast<std::size_t>(i)];
+    const bool idi = map.identity[static_cast<std::size_t>(i)];
+    for (int j = 0; j < nb; ++j) {
+      const auto& Yj = Y[static_cast<std::size_t>(j)];
+      const auto& pj = *R.pos[static_cast<std::size_t>(j)];
+      for (Eigen::Index b = 0; b < Yj.cols(); ++b)
+        for (std::size_t a = 0; a < Ji.size(); ++a) {
+          const double v = idi ? Yj(6 * i + static_cast<Eigen::Index>(a), b) : Ji[a].dot(Yj.block<6, 1>(6 * i, b));
+          put(pi[a], pj[static_cast<std::size_t>(b)], v);
+        }
+    }
+    for (int k = 0; k < ner; ++k) {  // node rows, modal columns
+      const int pk = (*R.extra)[static_cast<std::size_t>(k)];
+      const auto col = X.block<6, 1>(6 * i, 6 * nb + k);
+      for (std::size_t a = 0; a < Ji.size(); ++a) put(pi[a], pk, idi ? col[static_cast<Eigen::Index>(a)] : Ji[a].dot(col));
+    }
+  }
+  for (int k = 0; k < ne; ++k) {
+    const int pk = (*map.extra)[static_cast<std::size_t>(k)];
+    for (int j = 0; j < nb; ++j) {  // modal rows, node columns
+      const auto& Yj = Y[static_cast<std::size_t>(j)];
+      const auto& pj = *R.pos[static_cast<std::size_t>(j)];
+      for (Eigen::Index b = 0; b < Yj.cols(); ++b) put(pk, pj[static_cast<std::size_t>(b)], Yj(6 * nb + k, b));
+    }
+    for (int l = 0; l < ner; ++l) put(pk, (*R.extra)[static_cast<std::size_t>(l)], X(6 * nb + k, 6 * nb + l));
+  }
+}
+
+void add_mapped_abs(Eigen::VectorXd& out, const ElementMap& map, const Eigen::VectorXd& f) {
+  const int nb = static_cast<int>(map.J.size());
+  for (int i = 0; i < nb; ++i) {
+    const auto& Ji = *map.J[static_cast<std::size_t>(i)];
+    const auto& pi = *map.pos[static_cast<std::size_t>(i)];
+    for (std::size_t a = 0; a < Ji.size(); ++a) out[pi[a]] += std::abs(Ji[a].dot(f.segment<6>(6 * i)));
+  }
+  if (map.extra)
+    for (std::size_t k = 0; k < map.extra->size(); ++k) out[(*map.extra)[k]] += std::abs(f[6 * nb + static_cast<Eigen::Index>(k)]);
+}
+
+}  // namespace detail
+
 void assemble(const Model& model, const State& s, Data& data, const AssemblyOptions& opt) {
   update_kinematics(model, s, data, opt.dynamics);
   for (auto& nk : data.nodes) nk.wrench.setZero();

@@ -15,6 +15,27 @@ inline void scatter(std::vector<double>& vals, const std::vector<int>& offsets, 
     for (Eigen::Index a = 0; a < nc; ++a) vals[static_cast<std::size_t>(offsets[static_cast<std::size_t>(a + nc * b)])] += G(a, b);
 }
 
+/// How the node-space rows of one element map onto its dof clique: per node block (6 rows) the
+/// node's Jacobian columns and their clique positions (identity for a Free node), then scalar rows
+/// (modal dofs) with their clique positions.
+struct ElementMap {
+  std::vector<const std::vector<Vector6d>*> J;
+  std::vector<const std::vector<int>*> pos;
+  std::vector<char> identity;
+  const std::vector<int>* extra = nullptr;
+  int rows() const { return 6 * static_cast<int>(J.size()) + (extra ? static_cast<int>(extra->size()) : 0); }
+};
+
+/// vals += J^T X J scattered into the clique (X: rows() x rows() in node space). With `right`,
+/// vals += J^T X J_right (J_right: same dofs, other columns, e.g. the convective Jacobians G).
+void scatter_mapped(std::vector<double>& vals, const std::vector<int>& offsets, int nc, const ElementMap& map,
+                    const Eigen::MatrixXd& X, const ElementMap* right = nullptr);
+/// The map of the convective Jacobians G (no identity blocks, no modal columns); false if all G
+/// vanish (every node Free).
+bool convective_map(const ElementMap& map, const std::vector<const std::vector<Vector6d>*>& G, ElementMap& out);
+/// out (clique-sized) += |J^T f|.
+void add_mapped_abs(Eigen::VectorXd& out, const ElementMap& map, const Eigen::VectorXd& f);
+
 /// Flexible body b: wrenches on its nodes, residual of its modes, matrices on its clique.
 void assemble_flexible(const Model& model, const State& s, Data& data, const AssemblyOptions& opt, int b);
 /// Rigid body b: inertia wrench on its anchor node and its matrices.

@@ -41,7 +41,10 @@ int position(const std::vector<int>& sorted, int dof) {
 
 Data::Data(const Model& model) {
   nodes.resize(model.nodes.size());
-  for (std::size_t k = 0; k < nodes.size(); ++k) nodes[k].J.assign(model.node_dofs[k].size(), Vector6d::Zero());
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    nodes[k].J.assign(model.node_dofs[k].size(), Vector6d::Zero());
+    nodes[k].G.assign(model.node_dofs[k].size(), Vector6d::Zero());
+  }
   hinges.resize(model.hinges.size());
   flex.resize(model.flexible_bodies.size());
   rigid.resize(model.rigid_bodies.size());

@@ -70,23 +70,27 @@ void assemble_flexible(const Model& model, const State& s, Data& data, const Ass
     data.nodes[static_cast<std::size_t>(body.nodes[static_cast<std::size_t>(j)].value)].wrench += f.segment<6>(6 * j);
   for (int k = 0; k < m; ++k) data.residual[body.eta_dof + k] += f[6 * N + k];
 
-  // Node-space -> clique Jacobian.
+  // Node-space -> clique map.
   const int ci = data.clique_of_flex[static_cast<std::size_t>(bi)];
   const auto& cdofs = data.pattern.dofs[static_cast<std::size_t>(ci)];
   const int nc = static_cast<int>(cdofs.size());
-  MatrixXd Jb = MatrixXd::Zero(n, nc);
+  ElementMap map;
   const auto& pos = data.flex_node_pos[static_cast<std::size_t>(bi)];
   for (int j = 0; j < N; ++j) {
-    const auto& J = data.nodes[static_cast<std::size_t>(body.nodes[static_cast<std::size_t>(j)].value)].J;
-    for (std::size_t c = 0; c < J.size(); ++c) Jb.block<6, 1>(6 * j, pos[static_cast<std::size_t>(j)][c]) = J[c];
+    const auto k = static_cast<std::size_t>(body.nodes[static_cast<std::size_t>(j)].value);
+    map.J.push_back(&data.nodes[k].J);
+    map.pos.push_back(&pos[static_cast<std::size_t>(j)]);
+    map.identity.push_back(model.nodes[k].kind == NodeKind::Free);
   }
-  for (int k = 0; k < m; ++k) Jb(6 * N + k, data.flex_eta_pos[static_cast<std::size_t>(bi)][static_cast<std::size_t>(k)]) = 1.0;
-  const VectorXd sc = (Jb.transpose() * fd.f_el).cwiseAbs() + (Jb.transpose() * fd.f_in).cwiseAbs() +
-                      (Jb.transpose() * fd.f_damp).cwiseAbs();
+  map.extra = &data.flex_eta_pos[static_cast<std::size_t>(bi)];
+  VectorXd sc = VectorXd::Zero(nc);
+  add_mapped_abs(sc, map, fd.f_el);
+  add_mapped_abs(sc, map, fd.f_in);
+  if (damped) add_mapped_abs(sc, map, fd.f_damp);
   // Round-off level of the elastic force: stiffness x (eps x absolute position).
   double pmax = e.length;
   for (const auto& pj : p_WI) pmax = std::max(pmax, pj.norm());
-  const double fl = 16.0 * std::numeric_limits<double>::epsilon() * e.K.cwiseAbs().maxCoeff() * pmax;
+  const double fl = 16.0 * std::numeric_limits<double>::epsilon() * e.K_abs_max * pmax;
   for (int c = 0; c < nc; ++c) {
     data.scale[cdofs[static_cast<std::size_t>(c)]] += sc[c];
     data.floor[cdofs[static_cast<std::size_t>(c)]] += fl;
@@ -94,12 +98,16 @@ void assemble_flexible(const Model& model, const State& s, Data& data, const Ass
   if (!opt.matrices) return;
   const auto& off = data.pattern.offsets[static_cast<std::size_t>(ci)];
   if (need_inertia) Kl += in.Kt;
-  scatter(data.K, off, Jb.transpose() * Kl * Jb);
+  scatter_mapped(data.K, off, nc, map, Kl);
   if (opt.dynamics) {
-    scatter(data.M, off, Jb.transpose() * in.Mt * Jb);
-    MatrixXd Cl = in.Ct;
-    if (damped) Cl += Cd;
-    scatter(data.C, off, Jb.transpose() * Cl * Jb);
+    scatter_mapped(data.M, off, nc, map, in.Mt);
+    if (damped) in.Ct += Cd;
+    scatter_mapped(data.C, off, nc, map, in.Ct);
+    // Convective terms of the node tree: C += J^T M0 G.
+    std::vector<const std::vector<Vector6d>*> G;
+    for (int j = 0; j < N; ++j) G.push_back(&data.nodes[static_cast<std::size_t>(body.nodes[static_cast<std::size_t>(j)].value)].G);
+    ElementMap gmap;
+    if (convective_map(map, G, gmap)) scatter_mapped(data.C, off, nc, map, in.Mt, &gmap);
   }
 }
 

@@ -29,6 +29,7 @@ struct Coefficients {
 struct StepResult {
   bool converged = false;
   int iterations = 0;
+  int factorizations = 0;
   double residual = 0.0, scale = 0.0;
   std::string why;
 };
@@ -66,8 +67,12 @@ StepResult newton_step(const Model& model, const State& s0, double h, const Coef
   Eigen::SparseMatrix<double> S;
   AssemblyOptions opt;
   double inc = std::numeric_limits<double>::infinity();
+  double r_prev = std::numeric_limits<double>::infinity();
+  bool fresh = false;  // the factorisation belongs to this step
   for (int it = 0; it <= st.newton_max_iterations; ++it) {
     configure(model, s0, c, h, hDq, s1);
+    // Modified Newton: keep the iteration matrix while the residual falls fast enough.
+    opt.matrices = !fresh || !st.reuse_iteration_matrix;
     try {
       assemble(model, s1, data, opt);
     } catch (const ConvergenceError& e) {
@@ -93,16 +98,31 @@ StepResult newton_step(const Model& model, const State& s0, double h, const Coef
       return out;
     }
     if (it == st.newton_max_iterations) break;
-    for (std::size_t r = 0; r < Jl.size(); ++r) Jl[r] = so3::jl(hDq.segment<3>(model.rotation_dof_starts[r]));
-    combine_matrices(model, data, 1.0, gp, bp, &Jl, S);
-    if (!data.analyzed) {
-      data.lu.analyzePattern(S);
-      data.analyzed = true;
+    if (!opt.matrices && out.residual > 0.1 * r_prev) {
+      // Slow: re-form the matrix at this iterate.
+      opt.matrices = true;
+      try {
+        assemble(model, s1, data, opt);
+      } catch (const ConvergenceError& e) {
+        out.why = e.what();
+        return out;
+      }
     }
-    data.lu.factorize(S);
-    if (data.lu.info() != Eigen::Success) {
-      out.why = "the iteration matrix is singular (" + detail::describe_singular(model, S) + ")";
-      return out;
+    r_prev = out.residual;
+    if (opt.matrices) {
+      for (std::size_t r = 0; r < Jl.size(); ++r) Jl[r] = so3::jl(hDq.segment<3>(model.rotation_dof_starts[r]));
+      combine_matrices(model, data, 1.0, gp, bp, &Jl, S);
+      if (!data.analyzed) {
+        data.lu.analyzePattern(S);
+        data.analyzed = true;
+      }
+      data.lu.factorize(S);
+      if (data.lu.info() != Eigen::Success) {
+        out.why = "the iteration matrix is singular (" + detail::describe_singular(model, S) + ")";
+        return out;
+      }
+      fresh = true;
+      ++out.factorizations;
     }
     const VectorXd d = data.lu.solve(-data.residual);
     inc = detail::weighted_norm(d, model.dof_weight);
@@ -120,15 +140,17 @@ StepResult newton_step(const Model& model, const State& s0, double h, const Coef
 
 double error_estimate(const Model& model, const State& s0, const State& s1, double h, const Coefficients& c,
                       const IntegratorSettings& st) {
-  double err = 0.0;
+  // Weighted RMS norm (as in SUNDIALS) of the local displacement error per dof.
+  double sum = 0.0;
   const double k = h * h * std::abs(c.beta - 1.0 / 6.0);
   for (int i = 0; i < model.num_dofs; ++i) {
     const char kind = model.dof_kind[static_cast<std::size_t>(i)];
     const double tol = (kind == 't' || kind == 'e') ? st.tol_position : st.tol_angle;
     const double e = k * std::abs(s1.vdot[i] - s0.vdot[i]) * model.dof_weight[i] / tol;
-    if (!(e <= err)) err = e;
+    sum += e * e;
   }
-  return err;
+  const double err = std::sqrt(sum / std::max(1, model.num_dofs));
+  return std::isfinite(err) ? err : std::numeric_limits<double>::infinity();
 }
 
 /// Hermite-interpolated crossing of g(theta) = side (phi(theta) - phi_lock) = 0 on [0, 1].
@@ -198,6 +220,7 @@ RunStats simulate(const Model& model, State& state, Data& data, const Integrator
   double next_out = st.output_interval > 0.0 ? state.t + st.output_interval : st.t_end;
   double h_nat = st.h_initial;
   int event_retries = 0;
+  bool just_rejected = false;  // the last attempt failed the error test: no growth on the next success
   double h_event = 0.0;  // > 0: the next attempt is an event retry with this step
   State trial;
   while (state.t < st.t_end - eps) {
@@ -240,6 +263,7 @@ RunStats simulate(const Model& model, State& state, Data& data, const Integrator
     const double err = st.adaptive ? error_estimate(model, state, trial, h, c, st) : 0.0;
     if (st.adaptive && err > 1.0 && h > st.h_min * 1.0001) {
       ++stats.rejected_error;
+      just_rejected = true;
       h_event = 0.0;
       h_nat = std::max(st.h_min, h * std::clamp(0.9 * std::pow(err, -1.0 / 3.0), 0.2, 0.9));
       continue;
@@ -273,6 +297,8 @@ RunStats simulate(const Model& model, State& state, Data& data, const Integrator
     }
     // Accept.
     const bool was_event_retry = h_event > 0.0;
+    const bool after_rejection = just_rejected;
+    just_rejected = false;
     h_event = 0.0;
     event_retries = 0;
     state = trial;
@@ -280,6 +306,7 @@ RunStats simulate(const Model& model, State& state, Data& data, const Integrator
     ++step;
     ++stats.steps;
     stats.newton_iterations += r.iterations;
+    stats.factorizations += r.factorizations;
     stats.max_newton_iterations = std::max(stats.max_newton_iterations, r.iterations);
     stats.h_last = h;
     bool latched_now = false;
@@ -293,7 +320,7 @@ RunStats simulate(const Model& model, State& state, Data& data, const Integrator
       }
     }
     if (latched_now) emit(true);
-    if (hits_output && !latched_now) emit(false);
+    if ((hits_output || st.output_interval <= 0.0) && !latched_now) emit(false);
     if (hits_output) next_out = st.output_interval > 0.0 ? next_out + st.output_interval : st.t_end;
     if (st.output_interval > 0.0)
       while (next_out <= state.t + eps) next_out += st.output_interval;
@@ -301,7 +328,7 @@ RunStats simulate(const Model& model, State& state, Data& data, const Integrator
     if (st.adaptive) {
       if (!was_event_retry && !hits_output) {
         const double f = err > 0.0 ? 0.9 * std::pow(err, -1.0 / 3.0) : 2.0;
-        h_nat = h * std::clamp(f, 0.2, 2.0);
+        h_nat = h * std::clamp(f, 0.2, after_rejection ? 1.0 : 1.5);
       }
       h_nat = std::max(h_nat, st.h_min);
     } else {

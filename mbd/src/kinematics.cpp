@@ -3,6 +3,9 @@
 //   v_c = v_P + w_P x d;              w_c = w_P + a_W phidot
 //   a_c = a_P + alpha_P x d + w_P x (w_P x d);  alpha_c = alpha_P + a_W phiddot + w_P x a_W phidot
 //   Jacobian columns: [J_r + J_w x d; J_w] for the parent's dofs, [0; a_W] for the hinge dof.
+//   Convective Jacobian G = d[a; alpha]/dv at fixed vdot (for the velocity matrix C):
+//   G_a = G_aP - d~ G_alphaP - ((w_P x d)~ + w_P~ d~) J_wP,  G_alpha = G_alphaP - (a_W phidot)~ J_wP,
+//   and for the hinge dof G = [0; w_P x a_W].
 #include "seflex/common/so3.hpp"
 #include "seflex/mbd/assembly.hpp"
 
@@ -66,10 +69,15 @@ void update_kinematics(const Model& model, const State& s, Data& data, bool dyna
         nk.w = P.w;
         nk.alpha = P.alpha;
         const std::size_t np = P.J.size();
+        const Eigen::Matrix3d dx = so3::skew(d);
+        const Eigen::Matrix3d Gw = -(so3::skew(P.w.cross(d)) + so3::skew(P.w) * dx);
         for (std::size_t c = 0; c < np; ++c) {
           const Vector6d& jp = P.J[c];
           nk.J[c].head<3>() = jp.head<3>() + jp.tail<3>().cross(d);
           nk.J[c].tail<3>() = jp.tail<3>();
+          const Vector6d& gp = P.G[c];
+          nk.G[c].head<3>() = gp.head<3>() - dx * gp.tail<3>() + Gw * jp.tail<3>();
+          nk.G[c].tail<3>() = gp.tail<3>();
         }
         if (n.hinge.valid()) {
           const Hinge& hg = model.hinge(n.hinge);
@@ -78,9 +86,13 @@ void update_kinematics(const Model& model, const State& s, Data& data, bool dyna
           nk.R = P.R * so3::exp(hk.phi * hg.axis_P) * n.R_PN;
           nk.w += hk.axis_W * hk.phidot;
           nk.alpha += hk.axis_W * hk.phiddot + P.w.cross(hk.axis_W) * hk.phidot;
+          const Eigen::Matrix3d ax = so3::skew(hk.axis_W * hk.phidot);
+          for (std::size_t c = 0; c < np; ++c) nk.G[c].tail<3>() -= ax * P.J[c].tail<3>();
           if (hg.dof >= 0) {
             nk.J[np].head<3>().setZero();
             nk.J[np].tail<3>() = hk.axis_W;
+            nk.G[np].head<3>().setZero();
+            nk.G[np].tail<3>() = P.w.cross(hk.axis_W);
           }
         } else {
           nk.R = P.R * n.R_PN;

@@ -58,7 +58,9 @@ void assemble_rigid(const Model& model, Data& data, const AssemblyOptions& opt, 
   const Matrix3d dFt_dw = m * (-skew(w.cross(c)) - wx * cx);
   C6.block<3, 3>(0, 3) = dFt_dw;
   C6.block<3, 3>(3, 3) = wx * I - skew(I * w) + cx * dFt_dw;
-  scatter(data.C, off, J.transpose() * C6 * J);
+  MatrixXd G(6, nc);  // convective terms of the node tree
+  for (int k = 0; k < nc; ++k) G.col(k) = A.G[static_cast<std::size_t>(k)];
+  scatter(data.C, off, J.transpose() * (C6 * J + M6 * G));
 }
 
 }  // namespace seflex::mbd::detail

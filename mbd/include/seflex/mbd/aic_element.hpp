@@ -40,6 +40,7 @@ struct AicElement {
   Eigen::MatrixXd Phi_f;           ///< 6 x n frame-node rows of the CB basis
   Eigen::MatrixXd K, M;            ///< n x n reduced stiffness and mass
   double length = 1.0;             ///< size of the body (max |x_j|, at least 1e-3): scales tolerances
+  double K_abs_max = 0.0;          ///< largest |K_ij| (round-off level of the elastic force)
 
   // Rigid-body mass properties implied by M (Phi_rig0^T M_bb Phi_rig0), about the frame origin, in B.
   double mass = 0.0;

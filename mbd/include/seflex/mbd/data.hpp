@@ -23,6 +23,7 @@ struct NodeKinematics {
   Eigen::Vector3d v = Eigen::Vector3d::Zero(), w = Eigen::Vector3d::Zero();
   Eigen::Vector3d a = Eigen::Vector3d::Zero(), alpha = Eigen::Vector3d::Zero();
   std::vector<Vector6d> J;
+  std::vector<Vector6d> G;             ///< d[a; alpha]/dv at fixed vdot (convective terms), same columns as J
   Vector6d wrench = Vector6d::Zero();  ///< [force; moment about the node], world
   Vector6d subtree = Vector6d::Zero(); ///< wrench of the node and its descendants, about the node
 };

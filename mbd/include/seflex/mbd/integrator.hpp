@@ -8,7 +8,8 @@
 //   r(q_{n+1}, v_{n+1}, vdot_{n+1}, t_{n+1}) = 0
 // alpha_m = (2 rho - 1)/(rho + 1), alpha_f = rho/(rho + 1), gamma = 1/2 + alpha_f - alpha_m,
 // beta = (gamma + 1/2)^2 / 4. Newton on h Dq with S = K J_l(h Dq) + gamma/(beta h) C + beta' M,
-// beta' = (1 - alpha_m)/((1 - alpha_f) beta h^2), converging on residual and increment.
+// beta' = (1 - alpha_m)/((1 - alpha_f) beta h^2), converging on residual and increment; the
+// matrix is kept over the iterations of a step while the residual falls by 10 per iteration.
 // Step-size control from the local error estimate h^2 |beta - 1/6| |vdot_{n+1} - vdot_n|; lock
 // crossings located by Hermite interpolation of the hinge angle and the step redone to end there.
 #include "seflex/mbd/data.hpp"
@@ -29,6 +30,7 @@ struct IntegratorSettings {
   int newton_max_iterations = 15;
   double newton_residual_tol = 1e-8;   ///< relative to the residual scale
   double newton_increment_tol = 1e-9;  ///< weighted (m / length scale, rad)
+  bool reuse_iteration_matrix = true;  ///< modified Newton: re-form only when convergence is slow
   double event_tol = 1e-9;        ///< located lock crossing: |phi - phi_lock| [rad]
 };
 
@@ -38,6 +40,7 @@ struct RunStats {
   long rejected_newton = 0;    ///< steps retried because Newton failed
   long event_retries = 0;      ///< steps redone to land on a lock crossing
   long newton_iterations = 0;  ///< over accepted steps
+  long factorizations = 0;     ///< iteration matrices formed and factorised, over accepted steps
   int max_newton_iterations = 0;
   double h_last = 0.0;
 };
