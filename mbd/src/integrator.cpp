@@ -213,6 +213,8 @@ RunStats simulate(const Model& model, State& state, Data& data, const Integrator
     Sample smp = make_sample(model, state, data);
     smp.step = step;
     smp.event = event;
+    smp.newton_iterations = stats.newton_iterations;
+    smp.step_size = stats.h_last;
     observer->on_sample(model, smp);
   };
   emit(false);
@@ -324,7 +326,13 @@ RunStats simulate(const Model& model, State& state, Data& data, const Integrator
     if (hits_output) next_out = st.output_interval > 0.0 ? next_out + st.output_interval : st.t_end;
     if (st.output_interval > 0.0)
       while (next_out <= state.t + eps) next_out += st.output_interval;
-    if (observer) observer->on_progress(state.t, st.t_end);
+    if (observer) {
+      observer->on_progress(state.t, st.t_end);
+      if (observer->stop_requested()) {
+        if (!(hits_output || st.output_interval <= 0.0) && !latched_now) emit(false);
+        break;
+      }
+    }
     if (st.adaptive) {
       if (!was_event_retry && !hits_output) {
         const double f = err > 0.0 ? 0.9 * std::pow(err, -1.0 / 3.0) : 2.0;

@@ -48,7 +48,8 @@ struct RunStats {
 /// Integrate from state.t to settings.t_end. Starts by computing consistent accelerations.
 /// Samples go to `observer` (may be null) at t0, every output time and every lock latch. On
 /// failure (Newton not converging at h_min) the last accepted state is sent and a
-/// ConvergenceError says when, where and why.
+/// ConvergenceError says when, where and why. Ends early (after a final sample) when the observer
+/// asks to stop (Observer::stop_requested).
 RunStats simulate(const Model& model, State& state, Data& data, const IntegratorSettings& settings,
                   Observer* observer = nullptr);
 

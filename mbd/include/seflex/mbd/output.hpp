@@ -50,6 +50,8 @@ struct Sample {
   double load_factor = 1.0;  ///< statics: the load factor of this load step
   long step = 0;
   bool event = false;        ///< a lock latched at this instant
+  long newton_iterations = 0;///< time integration: Newton iterations of all accepted steps so far
+  double step_size = 0.0;    ///< time integration: size of the last accepted step [s] (0 at the start)
   std::vector<Pose> nodes;
   std::vector<HingeSample> hinges;
   std::vector<ElementSample> elements;
@@ -65,6 +67,9 @@ class Observer {
   virtual void on_sample(const Model& model, const Sample& sample) = 0;
   /// Called after every accepted step (e.g. for a progress bar).
   virtual void on_progress(double /*t*/, double /*t_end*/) {}
+  /// Polled after every accepted step: true ends the run there (with a final sample), e.g. a
+  /// stop rule of the driver ("S seconds after the last lock latched").
+  virtual bool stop_requested() const { return false; }
 };
 
 /// Build a sample from `state` and `data` assembled at that state.

@@ -1,0 +1,153 @@
+// seflex run SCENE -o OUTDIR: simulate the mechanism of a scene file (docs/scenes.md) and write its
+// time histories, events, poses, animation and summary (io/run_output.hpp) as the run goes.
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <optional>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "command.hpp"
+#include "seflex/common/error.hpp"
+#include "seflex/io/run_output.hpp"
+#include "seflex/io/scene.hpp"
+#include "seflex/mbd/integrator.hpp"
+#include "seflex/mbd/state.hpp"
+
+namespace {
+
+using seflex::app::UsageError;
+namespace io = seflex::io;
+namespace mbd = seflex::mbd;
+
+/// Forwards to the run output and draws a progress bar on stderr (only when it is a terminal).
+class Progress : public mbd::Observer {
+ public:
+  explicit Progress(io::RunOutput& out) : out_(out), tty_(isatty(STDERR_FILENO) != 0) {}
+  ~Progress() override { done(); }
+  void on_sample(const mbd::Model& m, const mbd::Sample& s) override { out_.on_sample(m, s); }
+  bool stop_requested() const override { return out_.stop_requested(); }
+  void on_progress(double t, double t_end) override {
+    out_.on_progress(t, t_end);
+    if (!tty_) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (drawn_ && now - last_ < std::chrono::milliseconds(200)) return;
+    last_ = now;
+    drawn_ = true;
+    const double f = t_end > 0 ? std::clamp(t / t_end, 0.0, 1.0) : 1.0;
+    const int width = 40, fill = static_cast<int>(std::lround(f * width));
+    std::fprintf(stderr, "\r[%s%s] %5.1f%%  t = %.4g s", std::string(static_cast<std::size_t>(fill), '#').c_str(),
+                 std::string(static_cast<std::size_t>(width - fill), ' ').c_str(), 100.0 * f, t);
+    std::fflush(stderr);
+  }
+  void done() {
+    if (drawn_) std::fprintf(stderr, "\n");
+    drawn_ = false;
+  }
+
+ private:
+  io::RunOutput& out_;
+  bool tty_;
+  bool drawn_ = false;
+  std::chrono::steady_clock::time_point last_{};
+};
+
+/// The seam where the solvers of seflex are chosen (`--formulation` will select the floating-frame
+/// and rigid-body baselines with Lagrange multipliers here); every solver reports to the same observer.
+mbd::RunStats solve(const io::Scene& scene, const mbd::IntegratorSettings& settings, mbd::Observer* observer) {
+  mbd::State state = mbd::initial_state(scene.model);
+  mbd::Data data(scene.model);
+  return mbd::simulate(scene.model, state, data, settings, observer);
+}
+
+int run_run(seflex::app::Args& args) {
+  std::optional<std::string> out = args.value("-o");
+  if (!out) out = args.value("output");
+  const bool force = args.flag("force");
+  const auto t_end = args.value("t-end");
+  const auto step = args.value("step");
+  const auto inertia = args.value("inertia");
+  const auto fidelity = args.value("fidelity");
+  const bool no_animation = args.flag("no-animation");
+  const std::string scene_path = args.positional("SCENE");
+  args.finish();
+  if (!out) throw UsageError("missing -o OUTDIR (the folder for the results)");
+  auto positive = [](const std::string& opt, const std::string& v) {
+    std::size_t pos = 0;
+    double x = 0;
+    try {
+      x = std::stod(v, &pos);
+    } catch (const std::exception&) {
+      pos = 0;
+    }
+    if (pos == 0 || pos != v.size() || !(x > 0) || !std::isfinite(x))
+      throw UsageError("option --" + opt + " expects a time > 0 in seconds, got '" + v + "'");
+    return x;
+  };
+  if (inertia && *inertia != "simplified" && *inertia != "full")
+    throw UsageError("option --inertia expects simplified or full, got '" + *inertia + "'");
+  if (fidelity && *fidelity != "rigid" && *fidelity != "flexible")
+    throw UsageError("option --fidelity expects rigid or flexible, got '" + *fidelity + "'");
+  io::RunOutput::check_folder(*out, force);  // before the work, not after it
+
+  io::SceneDescription d = io::read_scene(scene_path);
+  if (t_end) d.integrator.t_end = positive("t-end", *t_end);
+  if (step) {
+    d.integrator.h_initial = positive("step", *step);
+    d.integrator.h_min = std::min(d.integrator.h_min, d.integrator.h_initial);
+  }
+  for (auto& b : d.bodies) {
+    if (inertia) b.inertia = *inertia == "full" ? mbd::InertiaModel::Full : mbd::InertiaModel::Simplified;
+    if (fidelity) b.fidelity = *fidelity == "rigid" ? io::Fidelity::Rigid : io::Fidelity::Flexible;
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  const io::Scene scene = io::build_scene(d);
+  std::printf("seflex run %s -> %s\n  %s\n  %zu bodies, %zu hinges, %zu force elements, %d dofs; t_end = %g s\n",
+              scene_path.c_str(), out->c_str(), d.title.c_str(), d.bodies.size(), scene.model.hinges.size(),
+              scene.model.force_elements.size(), scene.model.num_dofs, d.integrator.t_end);
+  std::fflush(stdout);
+
+  io::RunOutputOptions oo;
+  oo.folder = *out;
+  oo.overwrite = force;
+  oo.animation = !no_animation;
+  io::RunOutput output(scene, oo);
+  Progress progress(output);
+  io::RunEnd end;
+  const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  try {
+    end.stats = solve(scene, d.integrator, &progress);
+  } catch (const seflex::Error& e) {
+    // Everything computed so far is on disk; say where it stopped and why.
+    progress.done();
+    end.ok = false;
+    end.message = e.what();
+    end.wall_seconds = seconds();
+    output.finish(end);
+    std::fprintf(stderr, "the results up to t = %g s are in %s (summary.txt, history.csv)\n", output.t_last(), out->c_str());
+    if (dynamic_cast<const seflex::ConvergenceError*>(&e)) {
+      std::fprintf(stderr, "error: %s\n", e.what());
+      return seflex::app::kNotConverged;
+    }
+    throw;
+  }
+  progress.done();
+  end.wall_seconds = seconds();
+  output.finish(end);
+  const mbd::RunStats& st = *end.stats;
+  std::printf("done: t = %g s in %.2f s wall; %ld steps (%ld rejected), %ld Newton iterations; results in %s\n",
+              output.t_last(), end.wall_seconds, st.steps, st.rejected_error + st.rejected_newton, st.newton_iterations,
+              out->c_str());
+  return seflex::app::kOk;
+}
+
+}  // namespace
+
+SEFLEX_COMMAND(run,
+               "SCENE -o OUTDIR [--force] [--t-end T] [--step H] [--inertia simplified|full] "
+               "[--fidelity rigid|flexible] [--no-animation]",
+               "simulate the mechanism of a scene file (YAML, docs/scenes.md); writes history.csv, events.csv, "
+               "poses.csv, animation.pvd and summary.txt/json to OUTDIR as the run goes (options override the scene)",
+               run_run);

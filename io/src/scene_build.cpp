@@ -1,0 +1,360 @@
+// Scene -> mbd::Model: loads the superelement files, merges interface nodes (connections, ground),
+// and creates nodes, hinges and bodies in an order the node forest accepts (parents first).
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <map>
+#include <numeric>
+#include <sstream>
+
+#include "seflex/io/scene.hpp"
+#include "seflex/io/superelement_file.hpp"
+
+namespace seflex::io {
+
+namespace {
+
+constexpr double kCoincidence = 1e-6;  // [m] interface nodes that are one node / a hinge's two nodes
+
+std::string fmt(const Eigen::Vector3d& p) {
+  std::ostringstream os;
+  os.precision(9);
+  os << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
+  return os.str();
+}
+
+/// Re-throw an InputError of the builder or the file reader with the scene item's location.
+template <class Fn>
+auto at(const SceneWhere& w, Fn&& fn) {
+  try {
+    return fn();
+  } catch (const InputError& e) {
+    throw InputError(w.prefix() + e.what());
+  }
+}
+
+struct Builder {
+  const SceneDescription& d;
+  Scene scene;
+  mbd::ModelBuilder mb;
+  std::vector<mbd::Pose> X_WB;                       // per body
+  std::vector<int> first;                            // per body: first slot of its interfaces
+  std::vector<int> uf;                               // union-find over slots
+  std::vector<std::pair<int, int>> slot_of;          // slot -> (body, interface)
+  std::map<int, mbd::NodeIndex> created;             // class root -> node
+  std::map<int, int> child_of_hinge;                 // class root -> hinge
+  std::map<int, SceneWhere> grounded;                // class root -> where
+  std::vector<mbd::HingeIndex> hinge_ids;
+  std::map<std::pair<std::string, int>, mbd::SuperelementIndex> se_ids;  // shared AIC data
+
+  explicit Builder(const SceneDescription& desc) : d(desc) { scene.description = desc; }
+
+  int find(int s) { return uf[static_cast<std::size_t>(s)] == s ? s : uf[static_cast<std::size_t>(s)] = find(uf[static_cast<std::size_t>(s)]); }
+  const se::Superelement& se_of(int b) const { return scene.superelements[static_cast<std::size_t>(b)]; }
+  int body_of(const std::string& name) const {
+    for (std::size_t b = 0; b < d.bodies.size(); ++b)
+      if (d.bodies[b].name == name) return static_cast<int>(b);
+    return -1;
+  }
+  mbd::Pose pose(int slot) const {
+    const auto [b, j] = slot_of[static_cast<std::size_t>(slot)];
+    return mbd::interface_pose(se_of(b), j, X_WB[static_cast<std::size_t>(b)]);
+  }
+  std::string slot_name(int slot) const {
+    const auto [b, j] = slot_of[static_cast<std::size_t>(slot)];
+    return d.bodies[static_cast<std::size_t>(b)].name + "." + std::to_string(se_of(b).interfaces[static_cast<std::size_t>(j)].id);
+  }
+
+  /// The slot of `body.node`; error naming the body's interface grids when the grid is not one.
+  int slot(const SceneNodeRef& r) const {
+    const int b = body_of(r.body);
+    SEFLEX_DEMAND(b >= 0, "body references are checked when reading");
+    const se::Superelement& s = se_of(b);
+    std::string ids;
+    for (int j = 0; j < s.num_interfaces(); ++j) {
+      if (s.interfaces[static_cast<std::size_t>(j)].id == r.grid) return first[static_cast<std::size_t>(b)] + j;
+      ids += (j ? ", " : "") + std::to_string(s.interfaces[static_cast<std::size_t>(j)].id);
+    }
+    r.where.fail("grid " + std::to_string(r.grid) + " is not an interface node of body '" + r.body + "' (its interface grids: " + ids + ")");
+  }
+
+  void load_bodies() {
+    std::map<std::string, se::Superelement> files;
+    for (const SceneBody& b : d.bodies) {
+      const std::string key = b.superelement.string();
+      if (!files.count(key)) files[key] = at(b.where, [&] { return load_superelement(b.superelement); });
+      const se::Superelement& full = files[key];
+      int m = full.num_modes;
+      if (b.internal_modes >= 0 && b.fidelity == Fidelity::Flexible) {
+        if (b.internal_modes > full.num_modes)
+          b.where.fail("internal_modes: " + std::to_string(b.internal_modes) + " asked, but " + key + " has only " +
+                       std::to_string(full.num_modes) + " fixed-interface modes");
+        m = b.internal_modes;
+      }
+      scene.superelements.push_back(m == full.num_modes ? full : keep_internal_modes(full, m));
+      const se::Superelement& s = scene.superelements.back();
+      X_WB.push_back(mbd::Pose{b.X_WF.R, b.X_WF.p + b.X_WF.R * s.p_OBo});
+      first.push_back(static_cast<int>(slot_of.size()));
+      for (int j = 0; j < s.num_interfaces(); ++j) slot_of.emplace_back(static_cast<int>(X_WB.size()) - 1, j);
+    }
+    uf.resize(slot_of.size());
+    std::iota(uf.begin(), uf.end(), 0);
+  }
+
+  void check_coincident(int a, int b, const SceneWhere& w, const std::string& what) const {
+    const double dist = (pose(a).p - pose(b).p).norm();
+    if (!(dist <= kCoincidence))
+      w.fail(slot_name(b) + " is at " + fmt(pose(b).p) + " but " + slot_name(a) + " at " + fmt(pose(a).p) + " (" +
+             std::to_string(dist) + " m apart); " + what + " must coincide within 1e-6 m");
+  }
+
+  void merge_nodes() {
+    for (const auto& group : d.connections) {
+      const int s0 = slot(group[0]);
+      for (std::size_t k = 1; k < group.size(); ++k) {
+        const int s = slot(group[k]);
+        check_coincident(s0, s, group[k].where, "connected nodes");
+        uf[static_cast<std::size_t>(find(s))] = find(s0);
+      }
+    }
+    for (const auto& g : d.ground) grounded.emplace(find(slot(g)), g.where);
+    for (std::size_t h = 0; h < d.hinges.size(); ++h) {
+      const SceneHinge& hg = d.hinges[h];
+      const int c = find(slot(hg.child));
+      if (grounded.count(c)) hg.child.where.fail(hg.child.str() + " is welded to ground; a hinge's child must be free to turn");
+      if (child_of_hinge.count(c))
+        hg.child.where.fail(hg.child.str() + " is already the child of hinge '" + d.hinges[static_cast<std::size_t>(child_of_hinge[c])].name +
+                            "'; a node turns about one parent only");
+      if (!hg.parent.ground) {
+        const int p = slot(hg.parent);
+        if (find(p) == c) hg.child.where.fail(hg.child.str() + " and the parent " + hg.parent.str() + " are the same node");
+        check_coincident(p, slot(hg.child), hg.child.where, "a hinge's parent and child nodes");
+      }
+      child_of_hinge[c] = static_cast<int>(h);
+    }
+  }
+
+  mbd::HingeOptions hinge_options(const SceneHinge& hg) const {
+    mbd::HingeOptions o;
+    o.phi0 = hg.phi0;
+    o.phidot0 = hg.phidot0;
+    for (const SceneDrive& dr : d.drives) {
+      if (dr.hinge != hg.name) continue;
+      const double w = dr.rate, T = dr.ramp_time;
+      if (dr.kind == "spin_up") o.drive = [w, T](double t) { return spin_up_drive(w, T, t); };
+      else o.drive = [w](double t) { return mbd::DriveValue{w * t, w, 0.0}; };
+    }
+    return o;
+  }
+
+  bool has(int cls) const { return created.count(cls) > 0; }
+
+  void build_nodes_and_bodies() {
+    for (const auto& [cls, w] : grounded)
+      created[cls] = at(w, [&] { return mb.add_ground(slot_name(cls), pose(cls)); });
+    const std::size_t nb = d.bodies.size();
+    std::vector<bool> hinge_done(d.hinges.size(), false), body_done(nb, false);
+    hinge_ids.assign(d.hinges.size(), mbd::HingeIndex());
+    scene.bodies.assign(nb, SceneBodyRef{});
+    auto slots = [&](std::size_t b) {
+      std::vector<int> v;
+      for (int j = 0; j < se_of(static_cast<int>(b)).num_interfaces(); ++j) v.push_back(find(first[b] + j));
+      return v;
+    };
+    for (;;) {
+      bool progress = true;
+      while (progress) {
+        progress = false;
+        for (std::size_t h = 0; h < d.hinges.size(); ++h) {
+          const SceneHinge& hg = d.hinges[h];
+          if (hinge_done[h]) continue;
+          const int c = find(slot(hg.child));
+          if (!hg.parent.ground && !has(find(slot(hg.parent)))) continue;
+          if (has(c))
+            hg.where.fail("closes a kinematic loop: " + hg.child.str() + " is already placed by a rigid body; use flexible bodies in loops");
+          at(hg.where, [&] {
+            const mbd::NodeIndex parent = hg.parent.ground ? mb.add_ground("ground:" + hg.name, mbd::Pose{Eigen::Matrix3d::Identity(), pose(c).p})
+                                                           : created[find(slot(hg.parent))];
+            hinge_ids[h] = mb.add_hinge(hg.name, parent, hg.axis_W, pose(c).R, hinge_options(hg));
+            return 0;
+          });
+          created[c] = mb.hinge_child(hinge_ids[h]);
+          hinge_done[h] = progress = true;
+        }
+        for (std::size_t b = 0; b < nb; ++b) {
+          if (body_done[b]) continue;
+          const SceneBody& body = d.bodies[b];
+          const std::vector<int> cls = slots(b);
+          if (body.fidelity == Fidelity::Rigid) {
+            int anchor = -1;
+            for (std::size_t j = 0; j < cls.size() && anchor < 0; ++j)
+              if (has(cls[j])) anchor = static_cast<int>(j);
+            if (anchor < 0) continue;
+            add_rigid(b, anchor, cls);
+          } else {
+            bool ready = true;
+            for (int c : cls) ready = ready && has(c);
+            if (!ready) continue;
+            add_flexible(b, cls);
+          }
+          body_done[b] = progress = true;
+        }
+      }
+      if (std::all_of(body_done.begin(), body_done.end(), [](bool x) { return x; }) &&
+          std::all_of(hinge_done.begin(), hinge_done.end(), [](bool x) { return x; }))
+        break;
+      if (!seed_free_node(body_done, slots)) {
+        for (std::size_t h = 0; h < d.hinges.size(); ++h)
+          if (!hinge_done[h])
+            d.hinges[h].where.fail("cannot be placed: its parent " + d.hinges[h].parent.str() +
+                                   " belongs to no body that can be placed first (hinges form a loop)");
+        SEFLEX_DEMAND(false, "scene ordering made no progress");
+      }
+    }
+  }
+
+  /// A free node where the tree can grow: the first interface of a rigid body none of whose nodes
+  /// a hinge places, else the free interface nodes of a flexible body (not those of a rigid body
+  /// still to come, which will place them).
+  template <class Slots>
+  bool seed_free_node(const std::vector<bool>& body_done, Slots&& slots) {
+    std::set<int> rigid_pending;
+    for (std::size_t b = 0; b < body_done.size(); ++b)
+      if (!body_done[b] && d.bodies[b].fidelity == Fidelity::Rigid)
+        for (int c : slots(b)) rigid_pending.insert(c);
+    for (std::size_t b = 0; b < body_done.size(); ++b) {
+      if (body_done[b] || d.bodies[b].fidelity != Fidelity::Rigid) continue;
+      const std::vector<int> cls = slots(b);
+      if (std::any_of(cls.begin(), cls.end(), [&](int c) { return child_of_hinge.count(c) > 0; })) continue;
+      created[cls[0]] = at(d.bodies[b].where, [&] { return mb.add_node(slot_name(cls[0]), pose(cls[0])); });
+      return true;
+    }
+    bool seeded = false;
+    for (std::size_t b = 0; b < body_done.size() && !seeded; ++b) {
+      if (body_done[b] || d.bodies[b].fidelity == Fidelity::Rigid) continue;
+      for (int c : slots(b)) {
+        if (has(c) || child_of_hinge.count(c) || rigid_pending.count(c)) continue;
+        created[c] = at(d.bodies[b].where, [&] { return mb.add_node(slot_name(c), pose(c)); });
+        seeded = true;
+      }
+    }
+    return seeded;
+  }
+
+  mbd::SuperelementIndex se_index(std::size_t b) {
+    const auto key = std::make_pair(d.bodies[b].superelement.string(), se_of(static_cast<int>(b)).num_modes);
+    auto it = se_ids.find(key);
+    if (it == se_ids.end()) it = se_ids.emplace(key, mb.add_superelement(se_of(static_cast<int>(b)))).first;
+    return it->second;
+  }
+
+  void add_rigid(std::size_t b, int anchor, const std::vector<int>& cls) {
+    const SceneBody& body = d.bodies[b];
+    for (std::size_t j = 0; j < cls.size(); ++j) {
+      if (static_cast<int>(j) == anchor) continue;
+      if (has(cls[j]) || child_of_hinge.count(cls[j]))
+        body.where.fail("rigid body '" + body.name + "' is attached at both " + slot_name(cls[static_cast<std::size_t>(anchor)]) +
+                        " and " + slot_name(cls[j]) + ": a closed kinematic loop of rigid bodies is not supported (make one body flexible)");
+    }
+    const mbd::SuperelementIndex sei = se_index(b);
+    const mbd::RigidBodyIndex rb = at(body.where, [&] {
+      return mb.add_rigid_body(body.name, sei, created[cls[static_cast<std::size_t>(anchor)]], anchor, X_WB[b]);
+    });
+    for (std::size_t j = 0; j < cls.size(); ++j) created[cls[j]] = mb.rigid_body(rb).nodes[j];
+    scene.bodies[b] = SceneBodyRef{true, rb.value};
+  }
+
+  void add_flexible(std::size_t b, const std::vector<int>& cls) {
+    const SceneBody& body = d.bodies[b];
+    std::vector<mbd::NodeIndex> nodes;
+    for (int c : cls) nodes.push_back(created[c]);
+    mbd::FlexibleBodyOptions o;
+    o.inertia = body.inertia;
+    o.stiffness_damping = body.stiffness_damping;
+    o.modal_damping = body.modal_damping;
+    const mbd::FlexibleBodyIndex fb = at(body.where, [&] {
+      return mb.add_flexible_body(body.name, se_index(b), nodes, X_WB[b], o);
+    });
+    scene.bodies[b] = SceneBodyRef{false, fb.value};
+  }
+
+  mbd::HingeIndex hinge_id(const std::string& name) const {
+    for (std::size_t h = 0; h < d.hinges.size(); ++h)
+      if (d.hinges[h].name == name) return hinge_ids[h];
+    SEFLEX_DEMAND(false, "hinge references are checked when reading");
+    return {};
+  }
+
+  void add_forces_and_loads() {
+    for (const SceneForce& f : d.forces) {
+      mbd::ForceElement e = f.element;
+      std::visit(
+          [&](auto& el) {
+            using T = std::decay_t<decltype(el)>;
+            if constexpr (std::is_same_v<T, mbd::CableLoop>) {
+              el.hinges_a.clear();
+              el.hinges_b.clear();
+              for (std::size_t k = 0; k < f.hinges.size(); ++k)
+                (static_cast<int>(k) < f.hinges_a ? el.hinges_a : el.hinges_b).push_back(hinge_id(f.hinges[k]));
+            } else {
+              el.hinge = hinge_id(f.hinges.at(0));
+            }
+          },
+          e);
+      at(f.where, [&] { return mb.add_force_element(f.name, e); });
+    }
+    for (const SceneLoad& l : d.loads) {
+      mbd::NodeLoad nl;
+      nl.name = l.name;
+      nl.node = created.at(find(slot(l.node)));
+      nl.force = l.force;
+      nl.moment = l.moment;
+      nl.follower = l.follower;
+      at(l.where, [&] { return mb.add_load(nl); });
+    }
+    mb.set_gravity(d.gravity);
+  }
+};
+
+}  // namespace
+
+se::Superelement keep_internal_modes(const se::Superelement& s, int modes) {
+  SEFLEX_DEMAND(modes >= 0 && modes <= s.num_modes, "mode count out of range");
+  se::Superelement r = s;
+  const Eigen::Index n = 6 * s.num_interfaces() + modes;
+  r.num_modes = modes;
+  r.K = s.K.topLeftCorner(n, n);
+  r.M = s.M.topLeftCorner(n, n);
+  r.Phi_f = s.Phi_f.leftCols(n);
+  if (s.recovery.size() != 0) r.recovery = s.recovery.leftCols(n);
+  r.mode_frequencies_hz = s.mode_frequencies_hz.head(modes);
+  if (modes < s.num_modes) r.truncation.first_neglected_hz = s.mode_frequencies_hz(modes);
+  r.truncation.max_kept_hz = modes > 0 ? s.mode_frequencies_hz(modes - 1) : 0.0;
+  return r;
+}
+
+mbd::DriveValue spin_up_drive(double w, double T, double t) {
+  mbd::DriveValue v;
+  const double c = 2.0 * M_PI / T;
+  if (t < T) {
+    v.phi = w / T * (t * t / 2.0 + (std::cos(c * t) - 1.0) / (c * c));
+    v.phidot = w / T * (t - std::sin(c * t) / c);
+    v.phiddot = w / T * (1.0 - std::cos(c * t));
+  } else {
+    v.phi = w * (t - T / 2.0);
+    v.phidot = w;
+  }
+  return v;
+}
+
+Scene build_scene(const SceneDescription& d) {
+  Builder b(d);
+  b.load_bodies();
+  b.merge_nodes();
+  b.build_nodes_and_bodies();
+  b.add_forces_and_loads();
+  b.scene.model = at(SceneWhere{SourceRef{d.file.string(), 0}, ""}, [&] { return b.mb.build(); });
+  return std::move(b.scene);
+}
+
+}  // namespace seflex::io
