@@ -82,7 +82,7 @@ struct Builder {
     std::map<std::string, se::Superelement> files;
     for (const SceneBody& b : d.bodies) {
       const std::string key = b.superelement.string();
-      if (!files.count(key)) files[key] = at(b.where, [&] { return load_superelement(b.superelement); });
+      if (!files.count(key)) files[key] = at(b.file_where, [&] { return load_superelement(b.superelement); });
       const se::Superelement& full = files[key];
       int m = full.num_modes;
       if (b.internal_modes >= 0 && b.fidelity == Fidelity::Flexible) {

@@ -93,6 +93,7 @@ struct Reader {
     if (body_index.count(b.name)) name.fail("body '" + b.name + "' is defined twice");
     const YamlField file = f.required("superelement", "the path of a superelement file (.se)");
     b.superelement = file.text();
+    b.file_where = where_of(file);
     if (b.superelement.is_relative()) b.superelement = d.file.parent_path() / b.superelement;
     const std::string fid = f.text_or("fidelity", "flexible");
     if (fid == "rigid") b.fidelity = Fidelity::Rigid;

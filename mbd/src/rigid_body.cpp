@@ -40,7 +40,13 @@ void assemble_rigid(const Model& model, Data& data, const AssemblyOptions& opt, 
   if (nc == 0) return;
   MatrixXd J(6, nc);
   for (int k = 0; k < nc; ++k) J.col(k) = A.J[static_cast<std::size_t>(k)];
-  const Eigen::VectorXd sc = (J.transpose() * F).cwiseAbs();
+  // Residual scale: magnitudes of the inertia and gravity parts before they cancel (|J^T F| alone
+  // vanishes with the residual itself for a body on a single hinge, leaving no relative scale).
+  Vector6d F_mag;
+  const Vector3d Ft_mag = (m * (A.a + al.cross(c) + w.cross(w.cross(c)))).cwiseAbs() + (m * g).cwiseAbs();
+  F_mag.head<3>() = Ft_mag;
+  F_mag.tail<3>() = (I * al).cwiseAbs() + w.cross(I * w).cwiseAbs() + Vector3d::Constant(c.norm() * Ft_mag.norm());
+  const Eigen::VectorXd sc = J.cwiseAbs().transpose() * F_mag;
   for (int k = 0; k < nc; ++k) data.scale[cdofs[static_cast<std::size_t>(k)]] += sc[k];
   if (!opt.matrices) return;
   const Matrix3d cx = skew(c), wx = skew(w), ax = skew(al);

@@ -50,6 +50,7 @@ struct SceneBody {
   double stiffness_damping = 0.0;       ///< [s] D = beta K
   double modal_damping = 0.0;           ///< damping ratio of the internal modes
   SceneWhere where;
+  SceneWhere file_where;                ///< where the superelement file was named
 };
 
 struct SceneHinge {
