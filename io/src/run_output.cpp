@@ -105,6 +105,8 @@ RunOutput::RunOutput(const Scene& scene, const RunOutputOptions& o) : scene_(sce
 
   events_ = open(folder_ / "events.csv");
   events_ << "t,kind,name,detail\n";
+  if (scene.description.stop_after_all_locked && lock_elements_.empty())
+    event(0.0, "warning", "after_all_locked", "the scene has no locks; the stop rule never applies");
   events_.flush();
 
   for (const auto& s : scene.superelements) max_q_ = std::max(max_q_, s.size());
