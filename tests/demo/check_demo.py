@@ -1,0 +1,78 @@
+#!/usr/bin/python3
+"""Checks of the solar-array demo's results (issue 8), run by tests/demo/run_demo_test.sh.
+
+    /usr/bin/python3 tests/demo/check_demo.py OUTDIR
+
+Asserts on OUTDIR/metrics.json (scripts/plot_solar_array.py) what the issue requires:
+  - every case locks all three hinge lines, and the unsynchronised hinges lock at distinct times
+    (pairwise more than 0.05 s apart);
+  - synchronised: max|phi2 - 2 phi1| and max|phi3 - phi2| before the locks at least 5x smaller, and
+    the lock-time spread at least 3x smaller, than unsynchronised (beam-like and 3D each);
+  - beam-like and 3D hinge angles within 0.5 deg up to the first lock (unsync and sync);
+  - the lock latched at its lock angle: the hinge-line angle at its lock instant is within 0.05 deg
+    of 90 / 180 deg (history.csv, interpolated to the instant);
+  - the plots exist and are PNG files.
+Prints every number it checks; exits 1 on the first failed group with all failures listed.
+"""
+import csv
+import json
+import os
+import sys
+
+out = sys.argv[1]
+with open(os.path.join(out, "metrics.json")) as f:
+    m = json.load(f)
+failures = []
+
+
+def check(ok, what):
+    print(("ok    " if ok else "FAIL  ") + what)
+    if not ok:
+        failures.append(what)
+
+
+cases = m["cases"]
+for name, c in cases.items():
+    check(c["all_locked"], "%s: all hinge lines lock (lock times %s)" % (name, c["lock_time_s"]))
+for model in ("beam", "3d"):
+    t = cases["unsync-" + model]["lock_time_s"]
+    if None in t.values():
+        continue
+    v = sorted(t.values())
+    check(min(b - a for a, b in zip(v, v[1:])) > 0.05, "unsync-%s: distinct lock times %s" % (model, t))
+for model in ("beam", "3d"):
+    u, s = cases["unsync-" + model], cases["sync-" + model]
+    for key, factor in (("max_sync_error_21_deg", 5), ("max_sync_error_32_deg", 5), ("lock_time_spread_s", 3)):
+        a, b = u[key], s[key]
+        ok = a is not None and b is not None and b * factor <= a
+        check(ok, "%s: %s sync %s <= unsync %s / %d" % (model, key, b, a, factor))
+for kind in ("unsync", "sync"):
+    d = m["comparisons"]["beam_vs_3d_" + kind]
+    check(d["max_angle_difference_deg"] <= 0.5,
+          "%s: beam-like vs 3D max angle difference %.4f deg <= 0.5 deg up to t = %.3f s" % (kind, d["max_angle_difference_deg"], d["up_to_s"]))
+
+lock_deg = {"HL1": 90.0, "HL2": 180.0, "HL3": 180.0}
+for name in cases:
+    with open(os.path.join(out, name, "history.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    for hinge, t_latch in cases[name]["lock_time_per_hinge_s"].items():
+        if t_latch is None:
+            continue
+        line = hinge[:3]
+        ts = [float(r["t"]) for r in rows]
+        phis = [float(r[hinge + ".phi_deg"]) for r in rows]
+        k = next(i for i, t in enumerate(ts) if t >= t_latch)
+        w = 0.0 if ts[k] == t_latch else (t_latch - ts[k - 1]) / (ts[k] - ts[k - 1])
+        phi = phis[k] if w == 0.0 else (1 - w) * phis[k - 1] + w * phis[k]
+        check(abs(phi - lock_deg[line]) < 0.05,
+              "%s: %s at its latch instant t = %.6f s: angle %.4f deg (lock %g)" % (name, hinge, t_latch, phi, lock_deg[line]))
+
+for png in [n + ".png" for n in cases] + ["beam-vs-3d.png"]:
+    p = os.path.join(out, "plots", png)
+    ok = os.path.exists(p) and open(p, "rb").read(4) == b"\x89PNG" and os.path.getsize(p) > 10000
+    check(ok, "plot %s" % p)
+
+if failures:
+    print("%d check(s) failed" % len(failures))
+    sys.exit(1)
+print("all demo checks passed")
