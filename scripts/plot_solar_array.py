@@ -199,7 +199,7 @@ def plot_case(plt, c, path):
         ax[2].grid(alpha=0.3)
     ax[-1].set_xlabel("time [s]")
     fig.tight_layout()
-    fig.savefig(path, dpi=90)
+    fig.savefig(path, dpi=72)
     plt.close(fig)
 
 
@@ -224,7 +224,7 @@ def plot_overlay(plt, cases, path):
         ax[1, j].grid(alpha=0.3)
         ax[1, j].legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(path, dpi=80)
+    fig.savefig(path, dpi=66)
     plt.close(fig)
 
 
