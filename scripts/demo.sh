@@ -3,6 +3,7 @@
 # of seflex, run by `scripts/bootstrap.sh demo`.
 #
 #   scripts/demo.sh [OUTDIR] [--force] [--bin SEFLEX] [--t-end T] [--no-plots] [--jobs N]
+#   (--jobs: runs and reductions at a time, default $SEFLEX_JOBS or 2)
 #
 # 1. reduces meshes/yoke.bdf and meshes/panel.bdf to the four Craig-Bampton superelements
 #    (beam-like: yoke {1,5}, panel {5,6}; 3D: yoke {1,3,4}, panel {1,2,3,4}) in OUTDIR/superelements/;
@@ -104,10 +105,10 @@ echo "runs (4 cases, $jobs at a time) $(elapsed "$t0") s" | tee -a "$timings"
 grep '^run ' "$timings" | sed 's/^/  /'
 
 # 4. Plots, metrics, results table.
-if [ "$plots" = 1 ]; then
-  t0=$(now)
-  "$python" "$root/scripts/plot_solar_array.py" "$out"
-  echo "plots and metrics $(elapsed "$t0") s" | tee -a "$timings"
-fi
+t0=$(now)
+plot_args=()
+[ "$plots" = 1 ] || plot_args=(--no-plots)
+"$python" "$root/scripts/plot_solar_array.py" "$out" "${plot_args[@]}"
+echo "metrics$([ "$plots" = 1 ] && echo " and plots") $(elapsed "$t0") s" | tee -a "$timings"
 echo "demo total $(elapsed "$t_demo") s" | tee -a "$timings"
 echo "results in $out (plots/, metrics.json; animations: paraview $out/<case>/animation.pvd)"
