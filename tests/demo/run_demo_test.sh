@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # CTest `demo_solar_array` (tests/CMakeLists.txt): runs the solar-array demo end to end at its
-# production settings (scripts/demo.sh: 4 reductions, 4 runs, plots, metrics), reruns sync-beam with
-# 100x stiffer cables, checks the issue's required results (tests/demo/check_demo.py), and renders the last frame of the sync-3d animation
-# with ParaView's own Python (scripts/pvrender.sh), checking the point and cell counts ParaView read
-# against the FE decks (all grids and elements of the yoke and twice the panel).
+# production settings (scripts/demo.sh: 4 reductions, 4 runs, plots, metrics), reruns sync-beam
+# with 100x stiffer cables, checks the issue's required results (tests/demo/check_demo.py), and
+# renders the last frame of the sync-3d animation with ParaView's own Python (scripts/pvrender.sh),
+# checking the point and cell counts ParaView read against the FE decks (all grids and elements of
+# the yoke and twice the panel).
 #   tests/demo/run_demo_test.sh SEFLEX OUTDIR
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
