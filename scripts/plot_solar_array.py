@@ -8,8 +8,9 @@ written by `seflex run`, and writes
   OUTDIR/plots/<case>.png       hinge angles with the lock instants, lock torques after locking,
                                 (sync) cable torques: the content of the seed's figures 8-13
   OUTDIR/plots/beam-vs-3d.png   beam-like against 3D, and their difference up to the first lock
-  OUTDIR/metrics.json           lock times, peak lock torques, synchronisation errors before the
-                                locks, lock-time spread, beam-vs-3D difference, ratios unsync/sync
+  OUTDIR/metrics.json           lock times, peak lock torques (from the latch to the end, and in the
+                                first 0.3 s: the impact), synchronisation errors before the first
+                                lock, lock-time spread, beam-vs-3D difference, ratios unsync/sync
   OUTDIR/results.txt            the table printed at the end
 Hinge lines: HL1, HL2, HL3. In the 3D cases a line is two hinges (HL2a, HL2b): its angle is their
 mean, its lock time the later latch of the two, its lock torque the sum of the two.
@@ -27,6 +28,7 @@ import numpy as np
 CASES = ["unsync-beam", "unsync-3d", "sync-beam", "sync-3d"]
 LINES = ["HL1", "HL2", "HL3"]
 LOCK_DEG = {"HL1": 90.0, "HL2": 180.0, "HL3": 180.0}
+IMPACT_WINDOW = 0.3  # [s] after latching: the first impact (the peak over the whole run rings on)
 
 
 def line_of(hinge):
@@ -103,11 +105,13 @@ class Case:
         pre = self.before_first_lock()
         e21 = np.abs(self.phi["HL2"] - 2 * self.phi["HL1"])[pre]
         e32 = np.abs(self.phi["HL3"] - self.phi["HL2"])[pre]
-        peak = {}
+        peak, impact = {}, {}
         for ln in LINES:
-            tl = self.t_lock[ln]
             first = min([self.t_latch[x] for x in self.members[ln] if self.t_latch.get(x) is not None], default=None)
-            peak[ln] = None if first is None else float(np.max(np.abs(self.lock_torque[ln][self.t >= first])))
+            after = None if first is None else np.abs(self.lock_torque[ln][self.t >= first])
+            peak[ln] = None if first is None else float(np.max(after))
+            win = None if first is None else (self.t >= first) & (self.t <= first + IMPACT_WINDOW)
+            impact[ln] = None if first is None else float(np.max(np.abs(self.lock_torque[ln][win])))
         known = [v for v in self.t_lock.values() if v is not None]
         res = {
             "lock_time_s": self.t_lock,
@@ -115,6 +119,7 @@ class Case:
             "all_locked": self.all_locked,
             "lock_time_spread_s": (max(known) - min(known)) if self.all_locked else None,
             "peak_lock_torque_Nm": peak,
+            "impact_lock_torque_Nm": impact,
             "max_sync_error_21_deg": float(e21.max()) if e21.size else 0.0,
             "max_sync_error_32_deg": float(e32.max()) if e32.size else 0.0,
             "sync_error_window_s": [float(self.t[0]), self.t_first],
