@@ -18,6 +18,9 @@ Asserts on OUTDIR/metrics.json (scripts/plot_solar_array.py) what the issue requ
   - beam-like and 3D hinge angles within 0.5 deg up to the first lock (unsync and sync);
   - the lock latched at its lock angle: the hinge-line angle at its lock instant is within 0.05 deg
     of 90 / 180 deg (history.csv, interpolated to the instant);
+  - passivity (springs, locks and cables store energy, damping only dissipates): E_total never
+    rises between samples by more than 1e-4 of the largest kinetic energy, and the energy lost
+    before the first lock is below 1 % of the kinetic energy there (the structural damping is light);
   - the plots exist and are PNG files.
 Prints every number it checks; exits 1 on the first failed group with all failures listed.
 """
@@ -86,6 +89,18 @@ for name in cases:
         phi = phis[k] if w == 0.0 else (1 - w) * phis[k - 1] + w * phis[k]
         check(abs(phi - lock_deg[line]) < 0.05,
               "%s: %s at its latch instant t = %.6f s: angle %.4f deg (lock %g)" % (name, hinge, t_latch, phi, lock_deg[line]))
+
+for name in cases:
+    with open(os.path.join(out, name, "history.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    t = [float(r["t"]) for r in rows]
+    e = [float(r["E_total"]) for r in rows]
+    ek = [float(r["E_kinetic"]) for r in rows]
+    rise = max(b - a for a, b in zip(e, e[1:]))
+    check(rise <= 1e-4 * max(ek), "%s: E_total rises at most %.2e J between samples (largest kinetic energy %.1f J)" % (name, rise, max(ek)))
+    first = cases[name]["sync_error_window_s"][1]
+    k = max(i for i in range(len(t)) if t[i] <= first)
+    check(e[0] - e[k] < 0.01 * ek[k], "%s: energy dissipated before the first lock %.4f J < 1 %% of the kinetic energy %.2f J" % (name, e[0] - e[k], ek[k]))
 
 for png in [n + ".png" for n in cases] + ["beam-vs-3d.png"]:
     p = os.path.join(out, "plots", png)
