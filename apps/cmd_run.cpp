@@ -13,6 +13,7 @@
 #include "seflex/common/error.hpp"
 #include "seflex/io/run_output.hpp"
 #include "seflex/io/scene.hpp"
+#include "seflex/io/solve_scene.hpp"
 #include "seflex/mbd/integrator.hpp"
 #include "seflex/mbd/state.hpp"
 
@@ -57,9 +58,7 @@ class Progress : public mbd::Observer {
 /// The seam where the solvers of seflex are chosen (`--formulation` will select the floating-frame
 /// and rigid-body baselines with Lagrange multipliers here); every solver reports to the same observer.
 mbd::RunStats solve(const io::Scene& scene, const mbd::IntegratorSettings& settings, mbd::Observer* observer) {
-  mbd::State state = mbd::initial_state(scene.model);
-  mbd::Data data(scene.model);
-  return mbd::simulate(scene.model, state, data, settings, observer);
+  return io::solve_scene(scene, settings, observer);  // the scene's integrator.method
 }
 
 int run_run(seflex::app::Args& args) {

@@ -31,6 +31,10 @@ struct SceneWhere {
 
 enum class Fidelity { Flexible, Rigid };
 
+/// `integrator.method`: the implicit Lie-group generalized-alpha (mbd/integrator.hpp) or the
+/// explicit Runge-Kutta-Munthe-Kaas 4 with a constant step (mbd/explicit_integrator.hpp).
+enum class IntegratorMethod { GeneralizedAlpha, Rk4 };
+
 /// `ground` or `body.node` (node = FE grid id of one of the body's interface nodes).
 struct SceneNodeRef {
   bool ground = false;
@@ -106,6 +110,7 @@ struct SceneDescription {
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
   std::vector<SceneDrive> drives;
   mbd::IntegratorSettings integrator;
+  IntegratorMethod method = IntegratorMethod::GeneralizedAlpha;
   std::optional<double> stop_after_all_locked;  ///< [s]
   SceneOutput output;
 };
