@@ -70,7 +70,7 @@ TEST(SceneInput, BadValuesNameLineKeyAndExpectation) {
   expect_parts(scene_error(edit(4, "    superelement: link.se\n    fidelity: elastic")),
                {"scene.yaml:5: bodies[0].fidelity: expected flexible or rigid, got 'elastic'"});
   expect_parts(scene_error(edit(13, "integrator:\n  method: euler")),
-               {"scene.yaml:14: integrator.method: expected generalized-alpha, got 'euler'"});
+               {"scene.yaml:14: integrator.method: expected generalized-alpha or rk4, got 'euler'"});
   expect_parts(scene_error(edit(14, "  rho_inf: 0.5")), {"integrator.t_end: missing (expected the end time [s])"});
 }
 
