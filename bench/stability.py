@@ -1,0 +1,135 @@
+#!/usr/bin/python3
+"""Where methods fail (issue 7, docs/stability.md): largest stable constant step of the explicit RK4
+foil and of the implicit generalized-alpha, with and without a lock; Newton failures at a lock with
+large steps; the simplified mass against the full inertia as the spin rate of the spin-up beam grows.
+
+  /usr/bin/python3 bench/stability.py [--bin build/apps/seflex] [--out stability-output] [--img docs/img]
+
+Models: bench/study/link_lock.yaml (flexible link of examples/scenes/link.bdf, 3 modes, falling 1 s;
+"without lock": the lock removed) and bench/study/spinup.yaml (10 m spin-up beam, 6 modes).
+A run is "stable" when it reaches t_end with status ok (RK4 stops itself on blow-up, exit 4).
+"""
+import argparse, os, re, shutil, subprocess, sys, time, json
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from study import edit_scene, spinup_lag  # noqa: E402
+
+
+def run(binary, text, folder, extra=()):
+    scene = folder + ".yaml"
+    open(scene, "w").write(text)
+    r = subprocess.run([binary, "run", scene, "-o", folder, "--force", "--no-animation", *extra], capture_output=True, text=True)
+    s = json.load(open(os.path.join(folder, "summary.json")))
+    return s
+
+
+def fixed(text, method, h):
+    if method == "rk4":
+        return edit_scene(text, method="rk4", step=h)
+    t = re.sub(r"step: [0-9.eE+-]+", f"step: {h:g}, adaptive: false, min_step: {h:g}", text, count=1)
+    return t
+
+
+def largest_stable(binary, text, method, folder, lo, hi, n=7):
+    """Bisection in log h between a stable lo and an unstable hi (checked first)."""
+    ok = lambda h: run(binary, fixed(text, method, h), folder)["status"] == "ok"
+    if not ok(lo):
+        return None, lo
+    if ok(hi):
+        return hi, None
+    for _ in range(n):
+        mid = np.sqrt(lo * hi)
+        lo, hi = (mid, hi) if ok(mid) else (lo, mid)
+    return lo, hi
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--bin", default=os.path.join(ROOT, "build", "apps", "seflex"))
+    ap.add_argument("--out", default="stability-output")
+    ap.add_argument("--img", default=None)
+    a = ap.parse_args()
+    b = os.path.abspath(a.bin)
+    os.makedirs(a.out, exist_ok=True)
+    cmd = "/usr/bin/python3 bench/stability.py " + " ".join(sys.argv[1:])
+    print(f"seflex stability, {time.strftime('%Y-%m-%d')}: {cmd}")
+    for f in ("spinup_beam.bdf", "spinup.yaml", "link_lock.yaml"):
+        shutil.copy(os.path.join(ROOT, "bench", "study", f), a.out)
+    shutil.copy(os.path.join(ROOT, "examples", "scenes", "link.bdf"), a.out)
+    for deck, iface, modes, se in (("spinup_beam.bdf", "1,11", "6", "spinup_beam.se"), ("link.bdf", "1,5", "3", "link.se")):
+        subprocess.run([b, "reduce", os.path.join(a.out, deck), "--interface", iface, "--modes", modes, "-o", os.path.join(a.out, se), "--force"],
+                       check=True, capture_output=True)
+    link = open(os.path.join(a.out, "link_lock.yaml")).read()
+    nolock = re.sub(r"locks:\n  - [^\n]+\n", "", link)
+    spin = edit_scene(open(os.path.join(a.out, "spinup.yaml")).read(), t_end=4.0)
+    d = lambda n: os.path.join(a.out, n)
+    # 1. Largest stable constant step.
+    table = []
+    for name, text in (("link, no lock", nolock), ("link, lock", link), ("spin-up beam 0-4 s", spin)):
+        for method, lo, hi in (("rk4", 1e-5, 1e-2), ("generalized-alpha", 1e-4, 5e-2)):
+            s, u = largest_stable(b, text, method, d("bisect"), lo, hi)
+            table.append((name, method, s, u))
+            print(f"  {name:20s} {method:18s} largest stable step {s if s else float('nan'):.3g} s (unstable at {u if u else float('nan'):.3g} s)", flush=True)
+    # 2. Implicit at large steps through the lock: rejected (Newton) steps and the located lock time.
+    lock_rows = []
+    for h in (1e-3, 5e-3, 2e-2, 5e-2):
+        s = run(b, re.sub(r"step: [0-9.eE+-]+", f"step: {h:g}", link, count=1), d("lockstep"))
+        ev = open(os.path.join(d("lockstep"), "events.csv")).read()
+        lock_rows.append((h, s["status"], s["steps"], s["rejected_steps"], s["locks"]["lock.H1"]["t_latch"], s["locks"]["lock.H1"]["peak_abs_torque_after_latch"]))
+        print(f"  implicit link with lock, initial/max step {h:g}: {s['status']}, {s['steps']} steps, {s['rejected_steps']} rejected, "
+              f"t_latch {s['locks']['lock.H1']['t_latch']}, peak lock torque {s['locks']['lock.H1']['peak_abs_torque_after_latch']:.4g}", flush=True)
+    # 3. Simplified mass against full inertia as the spin rate grows (lag of the beam behind the hub).
+    spin_rows = []
+    for rate in (1.5, 3.0, 6.0, 9.0, 12.0):
+        text = re.sub(r"rate_deg_s: [0-9.eE+-]+", f"rate_deg_s: {np.degrees(rate):.10g}", open(os.path.join(a.out, "spinup.yaml")).read())
+        lags = {}
+        for inertia in ("full", "simplified"):
+            s = run(b, text, d(f"spin-{inertia}"), ["--inertia", inertia])
+            lags[inertia] = spinup_lag(d(f"spin-{inertia}")) if s["status"] == "ok" else None
+        t, lf = lags["full"]
+        if lags["simplified"] is None:
+            spin_rows.append((rate, float(np.max(np.abs(lf))), np.inf, np.inf))
+        else:
+            ts, ls = lags["simplified"]
+            spin_rows.append((rate, float(np.max(np.abs(lf))), float(np.max(np.abs(ls))), float(np.max(np.abs(np.interp(t, ts, ls) - lf)))))
+        print(f"  spin-up to {rate:g} rad/s: max lag full {spin_rows[-1][1]:.3g} deg, simplified {spin_rows[-1][2]:.3g} deg, "
+              f"max difference {spin_rows[-1][3]:.3g} deg", flush=True)
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(1, 3, figsize=(15, 4.2))
+    labels = [f"{n}\n{m}" for n, m, _, _ in table]
+    ax[0].bar(range(len(table)), [s or 0 for _, _, s, _ in table], color=["C0" if m == "rk4" else "C1" for _, m, _, _ in table])
+    ax[0].set_xticks(range(len(table)), labels, fontsize=6)
+    ax[0].set_yscale("log")
+    ax[0].set_ylabel("largest stable constant step [s]")
+    ax[0].set_title("stable steps (bars at the upper bracket mean: stable at the largest step tried)", fontsize=7)
+    hs = [r[0] for r in lock_rows]
+    ax[1].semilogx(hs, [r[3] for r in lock_rows], "o-", label="rejected steps")
+    ax[1].set_xlabel("initial and largest step [s]")
+    ax[1].set_ylabel("rejected steps (Newton or error test)")
+    ax2 = ax[1].twinx()
+    ax2.semilogx(hs, [r[5] for r in lock_rows], "s--", color="C3", label="peak lock torque")
+    ax2.set_ylabel("peak lock torque [N m]")
+    ax[1].set_title("implicit through a stiff lock, large steps", fontsize=8)
+    r = np.array([x[0] for x in spin_rows])
+    ax[2].plot(r, [x[1] for x in spin_rows], "o-", label="lag, full inertia")
+    ax[2].plot(r, [x[2] for x in spin_rows], "s-", label="lag, simplified mass")
+    ax[2].plot(r, [x[3] for x in spin_rows], "^--", label="difference")
+    ax[2].set_xlabel("final spin rate [rad/s] (ramp 15 s)")
+    ax[2].set_ylabel("max lag of the beam behind the hub [deg]")
+    ax[2].legend(fontsize=7)
+    ax[2].set_title("spin-up beam: simplified mass vs full inertia", fontsize=8)
+    fig.text(0.01, 0.01, cmd, fontsize=6)
+    fig.tight_layout(rect=(0, 0.03, 1, 1))
+    png = os.path.join(a.out, "stability.png")
+    fig.savefig(png, dpi=110)
+    if a.img:
+        shutil.copy(png, a.img)
+    print(f"wrote {png}\ncommand: {cmd}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,287 @@
+#!/usr/bin/python3
+"""Speed against accuracy (issue 7): a grid of seflex runs, each timed (summary.json run_time_s) and
+compared with a converged reference, written to a CSV and charted (log-log error against CPU time,
+one curve per formulation, Pareto front).
+
+  /usr/bin/python3 bench/study.py [--quick] [--bin build/apps/seflex] [--out study-output] [--no-solar]
+
+Cases and formulations:
+  spin-up beam (bench/study/spinup.yaml, Simo and Vu-Quoc): AIC full inertia (local error 1e-4..1e-6),
+    AIC simplified mass, rigid, RK4 (explicit, constant steps); error: max |lag - lag_ref| of the
+    beam's floating frame behind the hub [deg] (the deflection; rigid: the whole lag).
+  solar array, sync and unsync (examples/solar_array, superelements reduced as scripts/demo.sh does):
+    AIC full inertia and simplified mass on the 3D and beam-like reductions (local error 1e-4, 1e-5),
+    rigid; errors: max hinge-line angle difference up to the reference's last lock [deg], largest
+    lock-time difference [s], largest relative peak lock-torque difference.
+  FFRF-LM (seflex run --formulation ffrf-lm) and rigid-LM are included when the binary offers them
+    (otherwise skipped, and said so).
+Reference: the finest AIC full-inertia run (3D, local error 1e-6); cross-checked against the finest
+FFRF-LM run when there is one. --quick: the spin-up beam only, 3 s, four runs (a CTest).
+"""
+import argparse, csv, json, os, re, shutil, subprocess, sys, time
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def sh(cmd):
+    r = subprocess.run(cmd, capture_output=True, text=True)
+    return r.returncode, r.stdout + r.stderr
+
+
+def read_history(path):
+    with open(path) as f:
+        rows = list(csv.reader(f))
+    names = rows[0]
+    data = np.array([[float(x) if x else np.nan for x in r] for r in rows[1:]])
+    return {n: data[:, i] for i, n in enumerate(names)}
+
+
+def edit_scene(text, tol=None, method=None, step=None, stop=None, t_end=None):
+    if tol is not None:
+        text = re.sub(r"tolerance: \{position: [^,]+, angle: [^}]+\}", f"tolerance: {{position: {tol:g}, angle: {tol:g}}}", text)
+    if stop is not None:
+        text = re.sub(r"stop: \{after_all_locked: [^}]+\}", f"stop: {{after_all_locked: {stop:g}}}", text)
+    if method == "rk4":
+        text = re.sub(r"method: generalized-alpha\n", "", text)
+        text = re.sub(r"integrator: \{", "integrator: {method: rk4, ", text) if "integrator: {" in text else text.replace("integrator:\n", "integrator:\n  method: rk4\n")
+        text = re.sub(r"step: [0-9.eE+-]+", f"step: {step:g}", text, count=1)
+    if t_end is not None:
+        text = re.sub(r"t_end: [0-9.eE+-]+", f"t_end: {t_end:g}", text, count=1)
+    return text
+
+
+class Study:
+    def __init__(self, args):
+        self.bin, self.out, self.rows = args.bin, args.out, []
+        code, text = sh([self.bin, "run", "--help"])
+        self.formulations = re.findall(r"--formulation ([a-z0-9|-]+)", text)
+        self.has_ffrf = bool(self.formulations) and "ffrf-lm" in self.formulations[0]
+        self.notes = []
+
+    def run(self, case, formulation, variant, scene_text, scene_dir, extra=()):
+        name = re.sub(r"[^a-z0-9]+", "-", f"{case} {formulation} {variant}".lower()).strip("-")
+        scene = os.path.join(scene_dir, name + ".yaml")
+        with open(scene, "w") as f:
+            f.write(scene_text)
+        folder = os.path.join(self.out, "runs", name)
+        code, text = sh([self.bin, "run", scene, "-o", folder, "--force", "--no-animation", *extra])
+        s = json.load(open(os.path.join(folder, "summary.json"))) if os.path.exists(os.path.join(folder, "summary.json")) else {}
+        r = dict(case=case, formulation=formulation, variant=variant, folder=folder, status=s.get("status", "failed"),
+                 cpu_s=s.get("run_time_s", float("nan")), steps=s.get("steps", 0), dofs=s.get("dofs", 0),
+                 locks=s.get("locks", {}), message=(s.get("message") or ("" if code == 0 else text.strip()[-300:])))
+        self.rows.append(r)
+        print(f"  {case:8s} {formulation:16s} {variant:22s} {r['status']:6s} {r['cpu_s']:8.3f} s  {r['steps']:6d} steps", flush=True)
+        return r
+
+
+def lines_of(hist):
+    """Hinge-line angles [deg]: 3D hinge pairs HLna/HLnb averaged into HLn."""
+    out = {}
+    for k, v in hist.items():
+        m = re.match(r"(.+?)([ab]?)\.phi_deg$", k)
+        if m and k.endswith(".phi_deg"):
+            out.setdefault(m.group(1), []).append(v)
+    return {k: np.mean(v, axis=0) for k, v in out.items()}
+
+
+def lock_lines(locks):
+    """Per hinge line: first latch time, sum of the peak torques (3D: two locks share a line)."""
+    out = {}
+    for name, l in locks.items():
+        line = re.sub(r"^lock\.", "", name)
+        line = re.sub(r"(HL\d)[ab]$", r"\1", line)
+        t, p = out.get(line, (None, 0.0))
+        if l["t_latch"] is not None:
+            t = l["t_latch"] if t is None else min(t, l["t_latch"])
+            p += l["peak_abs_torque_after_latch"]
+        out[line] = (t, p)
+    return out
+
+
+def spinup_lag(folder):
+    h = read_history(os.path.join(folder, "history.csv"))
+    t_h, hub = h["t"], np.radians(h["hub.phi_deg"])
+    with open(os.path.join(folder, "poses.csv")) as f:
+        rows = list(csv.reader(f))[1:]
+    t = np.array([float(r[0]) for r in rows])
+    ang = np.unwrap(np.array([np.arctan2(float(r[5]), float(r[2])) for r in rows]))  # R10, R00
+    return t, np.degrees(ang - np.interp(t, t_h, hub))
+
+
+def errors_spinup(r, ref):
+    if r["status"] != "ok":
+        return dict(angle_err_deg=np.inf)
+    t0, l0 = ref
+    t, l = spinup_lag(r["folder"])
+    T = min(t[-1], t0[-1])
+    g = t0[t0 <= T]
+    return dict(angle_err_deg=float(np.max(np.abs(np.interp(g, t, l) - np.interp(g, t0, l0)))), ref_scale_deg=float(np.max(np.abs(l0))))
+
+
+def errors_solar(r, ref_r):
+    if r["status"] != "ok":
+        return dict(angle_err_deg=np.inf, lock_time_err_s=np.inf, lock_torque_rel_err=np.inf)
+    h0, h = read_history(os.path.join(ref_r["folder"], "history.csv")), read_history(os.path.join(r["folder"], "history.csv"))
+    L0, L = lines_of(h0), lines_of(h)
+    k0, k = lock_lines(ref_r["locks"]), lock_lines(r["locks"])
+    T = max(t for t, _ in k0.values() if t is not None)  # up to the reference's last lock
+    g = h0["t"][h0["t"] <= T]
+    ang = max(float(np.max(np.abs(np.interp(g, h["t"], L[n]) - np.interp(g, h0["t"], L0[n])))) for n in L0 if n in L)
+    lt = max(abs((k[n][0] if k.get(n, (None,))[0] is not None else np.inf) - k0[n][0]) for n in k0)
+    lq = max(abs(k[n][1] - k0[n][1]) / k0[n][1] if n in k else np.inf for n in k0)
+    return dict(angle_err_deg=ang, lock_time_err_s=lt, lock_torque_rel_err=lq)
+
+
+def pareto(points):
+    """Indices of the points no other point beats in both cost and error."""
+    idx = sorted(range(len(points)), key=lambda i: (points[i][0], points[i][1]))
+    front, best = [], np.inf
+    for i in idx:
+        if points[i][1] < best:
+            front.append(i)
+            best = points[i][1]
+    return front
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--bin", default=os.path.join(ROOT, "build", "apps", "seflex"))
+    ap.add_argument("--out", default="study-output")
+    ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--no-solar", action="store_true")
+    ap.add_argument("--img", default=None, help="also copy the charts here (e.g. docs/img)")
+    a = ap.parse_args()
+    a.bin = os.path.abspath(a.bin)
+    if not os.access(a.bin, os.X_OK):
+        sys.exit(f"study: no seflex binary at {a.bin} (build the target seflex or pass --bin)")
+    os.makedirs(os.path.join(a.out, "runs"), exist_ok=True)
+    st = Study(a)
+    cmd = "/usr/bin/python3 bench/study.py " + " ".join(sys.argv[1:])
+    print(f"seflex study, {time.strftime('%Y-%m-%d')}: {cmd}")
+    if not st.has_ffrf:
+        st.notes.append("FFRF-LM: skipped (this seflex has no `run --formulation ffrf-lm`)")
+        print("  " + st.notes[-1])
+
+    # Spin-up beam.
+    sd = os.path.join(a.out, "spinup")
+    os.makedirs(sd, exist_ok=True)
+    for f in ("spinup_beam.bdf", "spinup.yaml"):
+        shutil.copy(os.path.join(ROOT, "bench", "study", f), sd)
+    code, text = sh([a.bin, "reduce", os.path.join(sd, "spinup_beam.bdf"), "--interface", "1,11", "--modes", "6", "-o", os.path.join(sd, "spinup_beam.se"), "--force"])
+    if code:
+        sys.exit("study: seflex reduce failed:\n" + text)
+    base = open(os.path.join(sd, "spinup.yaml")).read()
+    if a.quick:
+        base = edit_scene(base, t_end=3.0)
+    tols = [1e-7, 1e-5] if a.quick else [1e-7, 1e-6, 1e-5, 1e-4]
+    runs = []
+    for tol in tols:
+        runs.append(st.run("spinup", "AIC full", f"tol {tol:g}", edit_scene(base, tol=tol), sd, ["--inertia", "full"]))
+    ref = runs[0]
+    for tol in ([1e-5] if a.quick else [1e-6, 1e-5, 1e-4]):
+        st.run("spinup", "AIC simplified", f"tol {tol:g}", edit_scene(base, tol=tol), sd, ["--inertia", "simplified"])
+    if not a.quick:
+        for h in (2e-3, 1e-3, 5e-4):
+            st.run("spinup", "RK4", f"h {h:g}", edit_scene(base, method="rk4", step=h), sd, ["--inertia", "full"])
+        st.run("spinup", "rigid", "tol 1e-6", edit_scene(base, tol=1e-6), sd, ["--fidelity", "rigid"])
+        if st.has_ffrf:
+            for tol in (1e-6, 1e-5, 1e-4):
+                st.run("spinup", "FFRF-LM", f"tol {tol:g}", edit_scene(base, tol=tol), sd, ["--formulation", "ffrf-lm"])
+    if ref["status"] != "ok":
+        sys.exit("study: the spin-up reference run failed: " + ref["message"])
+    lag_ref = spinup_lag(ref["folder"])
+    for r in st.rows:
+        if r["case"] == "spinup":
+            r.update(errors_spinup(r, lag_ref))
+
+    # Solar array (the demo's scenes and reductions).
+    have_solar = os.path.exists(os.path.join(ROOT, "examples", "solar_array", "sync-3d.yaml"))
+    if a.quick or a.no_solar or not have_solar:
+        st.notes.append("solar array: skipped (" + ("--quick" if a.quick else "--no-solar" if a.no_solar else "examples/solar_array/ not found") + ")")
+        print("  " + st.notes[-1])
+    else:
+        od = os.path.join(a.out, "solar")
+        os.makedirs(os.path.join(od, "superelements"), exist_ok=True)
+        for body, iface, tag in (("yoke", "1,5", "beam"), ("panel", "5,6", "beam"), ("yoke", "1,3,4", "3d"), ("panel", "1,2,3,4", "3d")):
+            se = os.path.join(od, "superelements", f"{body}-{tag}.se")
+            if not os.path.exists(se):
+                code, text = sh([a.bin, "reduce", os.path.join(ROOT, "meshes", body + ".bdf"), "--interface", iface, "--modes", "10", "--name", f"{body}-{tag}", "-o", se, "--force"])
+                if code:
+                    sys.exit("study: seflex reduce failed:\n" + text)
+        for case in ("unsync", "sync"):
+            sc = {k: edit_scene(open(os.path.join(ROOT, "examples", "solar_array", f"{case}-{k}.yaml")).read(), stop=0.3) for k in ("3d", "beam")}
+            ref_r = st.run(case, "AIC full", "3D tol 1e-6", edit_scene(sc["3d"], tol=1e-6), od, ["--inertia", "full"])
+            st.run(case, "AIC full", "3D tol 1e-4", edit_scene(sc["3d"], tol=1e-4), od, ["--inertia", "full"])
+            st.run(case, "AIC full", "beam tol 1e-5", edit_scene(sc["beam"], tol=1e-5), od, ["--inertia", "full"])
+            st.run(case, "AIC full", "beam tol 1e-4", edit_scene(sc["beam"], tol=1e-4), od, ["--inertia", "full"])
+            st.run(case, "AIC simplified", "3D tol 1e-5", edit_scene(sc["3d"], tol=1e-5), od, ["--inertia", "simplified"])
+            st.run(case, "AIC simplified", "beam tol 1e-4", edit_scene(sc["beam"], tol=1e-4), od, ["--inertia", "simplified"])
+            st.run(case, "rigid", "tol 1e-5", edit_scene(sc["beam"], tol=1e-5), od, ["--fidelity", "rigid"])
+            st.run(case, "rigid", "tol 1e-4", edit_scene(sc["beam"], tol=1e-4), od, ["--fidelity", "rigid"])
+            if st.has_ffrf:
+                st.run(case, "FFRF-LM", "3D tol 1e-5", edit_scene(sc["3d"], tol=1e-5), od, ["--formulation", "ffrf-lm"])
+                st.run(case, "FFRF-LM", "beam tol 1e-4", edit_scene(sc["beam"], tol=1e-4), od, ["--formulation", "ffrf-lm"])
+            if ref_r["status"] != "ok":
+                sys.exit(f"study: the {case} reference run failed: " + ref_r["message"])
+            for r in st.rows:
+                if r["case"] == case:
+                    r.update(errors_solar(r, ref_r))
+
+    # CSV and charts.
+    fields = ["case", "formulation", "variant", "status", "cpu_s", "steps", "dofs", "angle_err_deg", "lock_time_err_s", "lock_torque_rel_err", "message"]
+    with open(os.path.join(a.out, "study.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields, extrasaction="ignore")
+        w.writeheader()
+        for r in st.rows:
+            w.writerow(r)
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    cases = [c for c in ("spinup", "unsync", "sync") if any(r["case"] == c for r in st.rows)]
+    titles = {"spinup": "spin-up beam: frame lag error [deg]", "unsync": "unsynchronised array: hinge-angle error [deg]",
+              "sync": "synchronised array: hinge-angle error [deg]"}
+    fig, axes = plt.subplots(1, len(cases), figsize=(5.2 * len(cases), 4.3), squeeze=False)
+    for ax, c in zip(axes[0], cases):
+        rows = [r for r in st.rows if r["case"] == c and r is not None]
+        floor = 1e-6
+        for fm in dict.fromkeys(r["formulation"] for r in rows):
+            pts = sorted((r["cpu_s"], max(r.get("angle_err_deg", np.inf), floor), r["variant"]) for r in rows
+                         if r["formulation"] == fm and r["status"] == "ok" and r.get("angle_err_deg", 0) > 0)
+            if pts:
+                ax.loglog([p[0] for p in pts], [p[1] for p in pts], "o-", label=fm)
+                for p in pts:
+                    ax.annotate(p[2], (p[0], p[1]), fontsize=6, alpha=0.7)
+            bad = [r for r in rows if r["formulation"] == fm and r["status"] != "ok"]
+            for r in bad:
+                ax.annotate(f"{fm} {r['variant']}: failed", (0.02, 0.02 + 0.05 * bad.index(r)), xycoords="axes fraction", fontsize=6, color="red")
+        ok = [(r["cpu_s"], r["angle_err_deg"]) for r in rows if r["status"] == "ok" and 0 < r.get("angle_err_deg", 0) < np.inf]
+        front = pareto(ok)
+        if front:
+            ax.loglog([ok[i][0] for i in front], [ok[i][1] for i in front], "k--", lw=0.8, label="Pareto front")
+        ax.set_xlabel("CPU time [s]")
+        ax.set_title(titles[c], fontsize=9)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7)
+    fig.text(0.01, 0.01, cmd, fontsize=6)
+    fig.tight_layout(rect=(0, 0.03, 1, 1))
+    png = os.path.join(a.out, "speed-vs-accuracy.png")
+    fig.savefig(png, dpi=110)
+    if a.img:
+        shutil.copy(png, a.img)
+    print(f"\n{'case':8s} {'formulation':16s} {'variant':22s} {'CPU [s]':>9s} {'angle err':>10s} {'lock t err':>10s} {'torque err':>10s}")
+    for r in st.rows:
+        print(f"{r['case']:8s} {r['formulation']:16s} {r['variant']:22s} {r['cpu_s']:9.3f} {r.get('angle_err_deg', np.nan):10.3g} "
+              f"{r.get('lock_time_err_s', np.nan):10.3g} {r.get('lock_torque_rel_err', np.nan):10.3g}")
+    for n in st.notes:
+        print("note: " + n)
+    print(f"wrote {os.path.join(a.out, 'study.csv')} and {png}\ncommand: {cmd}")
+    # End-to-end check (the CTest runs --quick): every run finished, every error is a finite number,
+    # the reference has zero error, and the CSV and the chart exist.
+    bad = [r for r in st.rows if r["status"] != "ok" or not np.isfinite(r.get("angle_err_deg", np.nan))]
+    if a.quick and (bad or st.rows[0].get("angle_err_deg") != 0.0 or not os.path.getsize(png)):
+        sys.exit("study --quick: check failed: " + ", ".join(f"{r['formulation']} {r['variant']}: {r['status']}" for r in bad))
+
+
+if __name__ == "__main__":
+    main()
