@@ -14,7 +14,7 @@ import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from study import edit_scene, spinup_lag  # noqa: E402
+from study import edit_scene, save_figure, spinup_lag  # noqa: E402
 
 
 def run(binary, text, folder, extra=()):
@@ -122,12 +122,7 @@ def main():
     ax[2].set_ylabel("max lag of the beam behind the hub [deg]")
     ax[2].legend(fontsize=7)
     ax[2].set_title("spin-up beam: simplified mass vs full inertia", fontsize=8)
-    fig.text(0.01, 0.01, cmd, fontsize=6)
-    fig.tight_layout(rect=(0, 0.03, 1, 1))
-    png = os.path.join(a.out, "stability.png")
-    fig.savefig(png, dpi=110)
-    if a.img:
-        shutil.copy(png, a.img)
+    png = save_figure(fig, a.out, "stability.png", a.img, cmd)
     print(f"wrote {png}\ncommand: {cmd}")
 
 

@@ -133,6 +133,17 @@ def errors_solar(r, ref_r):
     return dict(angle_err_deg=ang, lock_time_err_s=lt, lock_torque_rel_err=lq)
 
 
+def save_figure(fig, out, name, img, cmd):
+    """Save a chart with the command that made it under out/ (and a copy in img/ if given)."""
+    fig.text(0.01, 0.01, cmd, fontsize=6)
+    fig.tight_layout(rect=(0, 0.03, 1, 1))
+    png = os.path.join(out, name)
+    fig.savefig(png, dpi=110)
+    if img:
+        shutil.copy(png, img)
+    return png
+
+
 def pareto(points):
     """Indices of the points no other point beats in both cost and error."""
     idx = sorted(range(len(points)), key=lambda i: (points[i][0], points[i][1]))
@@ -263,12 +274,7 @@ def main():
         ax.set_title(titles[c], fontsize=9)
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=7)
-    fig.text(0.01, 0.01, cmd, fontsize=6)
-    fig.tight_layout(rect=(0, 0.03, 1, 1))
-    png = os.path.join(a.out, "speed-vs-accuracy.png")
-    fig.savefig(png, dpi=110)
-    if a.img:
-        shutil.copy(png, a.img)
+    png = save_figure(fig, a.out, "speed-vs-accuracy.png", a.img, cmd)
     print(f"\n{'case':8s} {'formulation':16s} {'variant':22s} {'CPU [s]':>9s} {'angle err':>10s} {'lock t err':>10s} {'torque err':>10s}")
     for r in st.rows:
         print(f"{r['case']:8s} {r['formulation']:16s} {r['variant']:22s} {r['cpu_s']:9.3f} {r.get('angle_err_deg', np.nan):10.3g} "
