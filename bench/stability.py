@@ -88,6 +88,10 @@ def main():
         for inertia in ("full", "simplified"):
             s = run(b, text, d(f"spin-{inertia}"), ["--inertia", inertia])
             lags[inertia] = spinup_lag(d(f"spin-{inertia}")) if s["status"] == "ok" else None
+        if lags["full"] is None:  # the reference itself failed (reported, the sweep goes on)
+            spin_rows.append((rate, np.nan, np.nan, np.nan))
+            print(f"  spin-up to {rate:g} rad/s: the full-inertia run failed (see {d('spin-full')}/summary.txt)", flush=True)
+            continue
         t, lf = lags["full"]
         if lags["simplified"] is None:
             spin_rows.append((rate, float(np.max(np.abs(lf))), np.inf, np.inf))
