@@ -9,6 +9,7 @@
 #include "seflex/common/error.hpp"
 #include "seflex/common/so3.hpp"
 #include "seflex/mbd/assembly.hpp"
+#include "step_control.hpp"
 
 namespace seflex::mbd {
 
@@ -16,23 +17,8 @@ using Eigen::VectorXd;
 
 namespace {
 
-struct Coefficients {
-  double am, af, gamma, beta;
-  explicit Coefficients(double rho) {
-    am = (2.0 * rho - 1.0) / (rho + 1.0);
-    af = rho / (rho + 1.0);
-    gamma = 0.5 + af - am;
-    beta = 0.25 * (gamma + 0.5) * (gamma + 0.5);
-  }
-};
-
-struct StepResult {
-  bool converged = false;
-  int iterations = 0;
-  int factorizations = 0;
-  double residual = 0.0, scale = 0.0;
-  std::string why;
-};
+using Coefficients = detail::AlphaCoefficients;
+using detail::StepResult;
 
 /// Configuration and motion at t0 + h for the step increment hDq.
 void configure(const Model& model, const State& s0, const Coefficients& c, double h, const VectorXd& hDq, State& s1) {
@@ -140,47 +126,44 @@ StepResult newton_step(const Model& model, const State& s0, double h, const Coef
 
 double error_estimate(const Model& model, const State& s0, const State& s1, double h, const Coefficients& c,
                       const IntegratorSettings& st) {
-  // Weighted RMS norm (as in SUNDIALS) of the local displacement error per dof.
-  double sum = 0.0;
-  const double k = h * h * std::abs(c.beta - 1.0 / 6.0);
+  Eigen::VectorXd w(model.num_dofs);
   for (int i = 0; i < model.num_dofs; ++i) {
     const char kind = model.dof_kind[static_cast<std::size_t>(i)];
-    const double tol = (kind == 't' || kind == 'e') ? st.tol_position : st.tol_angle;
-    const double e = k * std::abs(s1.vdot[i] - s0.vdot[i]) * model.dof_weight[i] / tol;
-    sum += e * e;
+    w[i] = model.dof_weight[i] / ((kind == 't' || kind == 'e') ? st.tol_position : st.tol_angle);
   }
-  const double err = std::sqrt(sum / std::max(1, model.num_dofs));
-  return std::isfinite(err) ? err : std::numeric_limits<double>::infinity();
+  return detail::wrms_error(s1.vdot - s0.vdot, w, h, c);
 }
 
-/// Hermite-interpolated crossing of g(theta) = side (phi(theta) - phi_lock) = 0 on [0, 1].
-double crossing_fraction(double p0, double d0, double p1, double d1, double h, double target, double side) {
-  auto g = [&](double th) {
-    const double t2 = th * th, t3 = t2 * th;
-    const double phi = (2 * t3 - 3 * t2 + 1) * p0 + (t3 - 2 * t2 + th) * h * d0 + (-2 * t3 + 3 * t2) * p1 + (t3 - t2) * h * d1;
-    return side * (phi - target);
-  };
-  double lo = 0.0, hi = 1.0;
-  if (g(lo) >= 0.0) return 0.0;
-  for (int i = 0; i < 80; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (g(mid) >= 0.0 ? hi : lo) = mid;
+/// The AIC formulation as seen by the step driver.
+class AicStepper final : public detail::Stepper {
+ public:
+  AicStepper(const Model& model, State& state, Data& data, const IntegratorSettings& st)
+      : model_(model), state_(state), data_(data), st_(st), c_(st.rho_inf) {}
+  double time() const override { return state_.t; }
+  StepResult attempt(double h) override { return newton_step(model_, state_, h, c_, st_, data_, trial_); }
+  double error_estimate(double h) const override { return mbd::error_estimate(model_, state_, trial_, h, c_, st_); }
+  double hinge_angle(int hinge, bool trial) const override { return (trial ? trial_ : state_).phi[hinge]; }
+  double hinge_rate(int hinge, bool trial) const override {
+    const int dof = model_.hinges[static_cast<std::size_t>(hinge)].dof;
+    return dof >= 0 ? (trial ? trial_ : state_).v[dof] : data_.hinges[static_cast<std::size_t>(hinge)].phidot;
   }
-  return 0.5 * (lo + hi);
-}
+  std::vector<LockState>& locks() override { return state_.locks; }
+  void accept() override {
+    state_ = trial_;
+    store_derived(model_, data_, state_);
+  }
+  Sample sample() override { return make_sample(model_, state_, data_); }
+  void prepare_failure_sample() override { assemble(model_, state_, data_, AssemblyOptions{false, true, 1.0}); }
+  std::string describe_residual() const override { return detail::describe_residual(model_, data_); }
 
-void validate(const IntegratorSettings& st, double t0) {
-  auto bad = [](const std::string& what) { throw InputError("integrator settings: " + what); };
-  if (!(st.t_end > t0)) bad("end time must be after the start time");
-  if (!(st.h_initial > 0.0) || !(st.h_min > 0.0) || !(st.h_min <= st.h_initial)) bad("steps must satisfy 0 < h_min <= h_initial");
-  if (!(st.h_max >= 0.0)) bad("h_max must be >= 0");
-  if (!(st.rho_inf >= 0.0 && st.rho_inf <= 1.0)) bad("rho_inf must lie in [0, 1]");
-  if (!(st.tol_position > 0.0) || !(st.tol_angle > 0.0)) bad("error tolerances must be positive");
-  if (!(st.output_interval >= 0.0)) bad("output interval must be >= 0");
-  if (st.newton_max_iterations < 1 || !(st.newton_residual_tol > 0.0) || !(st.newton_increment_tol > 0.0))
-    bad("Newton iterations must be >= 1 and tolerances positive");
-  if (!(st.event_tol > 0.0)) bad("event tolerance must be positive");
-}
+ private:
+  const Model& model_;
+  State& state_;
+  Data& data_;
+  const IntegratorSettings& st_;
+  Coefficients c_;
+  State trial_;
+};
 
 }  // namespace
 
@@ -203,147 +186,10 @@ void initial_accelerations(const Model& model, State& s, Data& data) {
 }
 
 RunStats simulate(const Model& model, State& state, Data& data, const IntegratorSettings& st, Observer* observer) {
-  validate(st, state.t);
-  const Coefficients c(st.rho_inf);
-  RunStats stats;
+  detail::validate_settings(st, state.t);
   initial_accelerations(model, state, data);
-  long step = 0;
-  auto emit = [&](bool event) {
-    if (!observer) return;
-    Sample smp = make_sample(model, state, data);
-    smp.step = step;
-    smp.event = event;
-    smp.newton_iterations = stats.newton_iterations;
-    smp.step_size = stats.h_last;
-    observer->on_sample(model, smp);
-  };
-  emit(false);
-  const double eps = 1e-12 * std::max(1.0, std::abs(st.t_end));
-  double next_out = st.output_interval > 0.0 ? state.t + st.output_interval : st.t_end;
-  double h_nat = st.h_initial;
-  int event_retries = 0;
-  bool just_rejected = false;  // the last attempt failed the error test: no growth on the next success
-  double h_event = 0.0;  // > 0: the next attempt is an event retry with this step
-  State trial;
-  while (state.t < st.t_end - eps) {
-    double h = h_event > 0.0 ? h_event : h_nat;
-    if (st.h_max > 0.0) h = std::min(h, st.h_max);
-    bool hits_output = false;
-    const double to_out = std::min(next_out, st.t_end) - state.t;
-    if (h >= to_out / 1.05) {  // stretch a little rather than leave a sliver
-      h = to_out;
-      hits_output = true;
-    } else if (h > 0.5 * to_out) {
-      h = 0.5 * to_out;
-    }
-    const StepResult r = newton_step(model, state, h, c, st, data, trial);
-    if (!r.converged) {
-      ++stats.rejected_newton;
-      h_event = 0.0;
-      h_nat = h * 0.25;
-      if (h_nat < st.h_min) {
-        std::ostringstream os;
-        os.precision(6);
-        os << "time integration stopped at t = " << state.t << " s (step " << step + 1 << ", h = " << h
-           << " s, minimum step " << st.h_min << " s reached): " << r.why;
-        os.precision(3);
-        os << "; residual norm " << r.residual << " (relative " << (r.scale > 0 ? r.residual / r.scale : r.residual)
-           << ", tolerance " << st.newton_residual_tol << ") after " << r.iterations << " iterations; largest residuals: "
-           << detail::describe_residual(model, data);
-        // Deliver the last accepted state before reporting.
-        if (observer) {
-          try {
-            assemble(model, state, data, AssemblyOptions{false, true, 1.0});
-            emit(false);
-          } catch (const Error&) {
-          }
-        }
-        throw ConvergenceError(os.str());
-      }
-      continue;
-    }
-    const double err = st.adaptive ? error_estimate(model, state, trial, h, c, st) : 0.0;
-    if (st.adaptive && err > 1.0 && h > st.h_min * 1.0001) {
-      ++stats.rejected_error;
-      just_rejected = true;
-      h_event = 0.0;
-      h_nat = std::max(st.h_min, h * std::clamp(0.9 * std::pow(err, -1.0 / 3.0), 0.2, 0.9));
-      continue;
-    }
-    // Lock events.
-    double theta = 1.0;
-    bool crossing = false, land = false;
-    for (std::size_t i = 0; i < model.force_elements.size(); ++i) {
-      const auto* l = std::get_if<HingeLock>(&model.force_elements[i].element);
-      if (!l || state.locks[i].latched) continue;
-      const double side = state.locks[i].side;
-      const auto hi = static_cast<Eigen::Index>(l->hinge.value);
-      const double g1 = side * (trial.phi[hi] - l->phi_lock);
-      if (g1 < -st.event_tol) continue;
-      crossing = true;
-      if (g1 <= st.event_tol) {
-        land = true;
-        continue;
-      }
-      const int dof = model.hinge(l->hinge).dof;
-      const double d0 = dof >= 0 ? state.v[dof] : data.hinges[static_cast<std::size_t>(hi)].phidot;
-      const double d1 = dof >= 0 ? trial.v[dof] : d0;
-      theta = std::min(theta, crossing_fraction(state.phi[hi], d0, trial.phi[hi], d1, h, l->phi_lock, side));
-    }
-    if (crossing && !land && event_retries < 30 && theta * h > st.h_min) {
-      ++stats.event_retries;
-      ++event_retries;
-      h_event = theta * h;
-      if (h_event >= h) h_event = 0.5 * h;
-      continue;
-    }
-    // Accept.
-    const bool was_event_retry = h_event > 0.0;
-    const bool after_rejection = just_rejected;
-    just_rejected = false;
-    h_event = 0.0;
-    event_retries = 0;
-    state = trial;
-    store_derived(model, data, state);
-    ++step;
-    ++stats.steps;
-    stats.newton_iterations += r.iterations;
-    stats.factorizations += r.factorizations;
-    stats.max_newton_iterations = std::max(stats.max_newton_iterations, r.iterations);
-    stats.h_last = h;
-    bool latched_now = false;
-    for (std::size_t i = 0; i < model.force_elements.size(); ++i) {
-      const auto* l = std::get_if<HingeLock>(&model.force_elements[i].element);
-      if (!l || state.locks[i].latched) continue;
-      if (state.locks[i].side * (state.phi[l->hinge.value] - l->phi_lock) >= -st.event_tol) {
-        state.locks[i].latched = true;
-        state.locks[i].t_latch = state.t;
-        latched_now = true;
-      }
-    }
-    if (latched_now) emit(true);
-    if ((hits_output || st.output_interval <= 0.0) && !latched_now) emit(false);
-    if (hits_output) next_out = st.output_interval > 0.0 ? next_out + st.output_interval : st.t_end;
-    if (st.output_interval > 0.0)
-      while (next_out <= state.t + eps) next_out += st.output_interval;
-    if (observer) {
-      observer->on_progress(state.t, st.t_end);
-      if (observer->stop_requested()) {
-        if (!(hits_output || st.output_interval <= 0.0) && !latched_now) emit(false);
-        break;
-      }
-    }
-    if (st.adaptive) {
-      if (!was_event_retry && !hits_output) {
-        const double f = err > 0.0 ? 0.9 * std::pow(err, -1.0 / 3.0) : 2.0;
-        h_nat = h * std::clamp(f, 0.2, after_rejection ? 1.0 : 1.5);
-      }
-      h_nat = std::max(h_nat, st.h_min);
-    } else {
-      h_nat = st.h_initial;
-    }
-  }
-  return stats;
+  AicStepper stepper(model, state, data, st);
+  return detail::drive_steps(model, st, stepper, observer);
 }
 
 }  // namespace seflex::mbd

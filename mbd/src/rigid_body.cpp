@@ -4,6 +4,7 @@
 // with the mass matrix [[m, -m c~], [m c~, I - m c~ c~]], the gyroscopic derivative and the
 // derivative with respect to the anchor's spatial rotation (c and I turn with the body).
 #include "assembly_detail.hpp"
+#include "rigid_inertia.hpp"
 #include "seflex/common/so3.hpp"
 
 namespace seflex::mbd::detail {
@@ -24,15 +25,12 @@ void assemble_rigid(const Model& model, Data& data, const AssemblyOptions& opt, 
   const Vector3d g = opt.load_factor * model.gravity;
   const Vector3d& w = A.w;
   const Vector3d& al = A.alpha;
-  const Vector3d acm = A.a + al.cross(c) + w.cross(w.cross(c)) - g;
-  Vector6d F;
-  F.head<3>() = m * acm;
-  F.tail<3>() = I * al + w.cross(I * w) + c.cross(F.head<3>());
+  const RigidWrench rw = rigid_wrench(m, c, I, A.v, w, A.a - g, al);
+  const Vector6d& F = rw.F;
   A.wrench += F;
   rd.f = F;
   rd.p_WCm = A.p + c;
-  const Vector3d vcm = A.v + w.cross(c);
-  rd.kinetic = opt.dynamics ? 0.5 * m * vcm.squaredNorm() + 0.5 * w.dot(I * w) : 0.0;
+  rd.kinetic = opt.dynamics ? rw.kinetic : 0.0;
 
   const int ci = data.clique_of_rigid[static_cast<std::size_t>(bi)];
   const auto& cdofs = data.pattern.dofs[static_cast<std::size_t>(ci)];
@@ -57,8 +55,7 @@ void assemble_rigid(const Model& model, Data& data, const AssemblyOptions& opt, 
   K6.block<3, 3>(3, 3) = -skew(I * al) + I * ax + wx * (-skew(I * w) + I * wx) + skew(F.head<3>()) * cx + cx * dFt;
   scatter(data.K, off, J.transpose() * K6 * J);
   if (!opt.dynamics) return;
-  Eigen::Matrix<double, 6, 6> M6;
-  M6 << m * Matrix3d::Identity(), -m * cx, m * cx, I - m * cx * cx;
+  const Eigen::Matrix<double, 6, 6>& M6 = rw.M6;
   scatter(data.M, off, J.transpose() * M6 * J);
   Eigen::Matrix<double, 6, 6> C6 = Eigen::Matrix<double, 6, 6>::Zero();
   const Matrix3d dFt_dw = m * (-skew(w.cross(c)) - wx * cx);

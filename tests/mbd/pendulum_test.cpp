@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "mbd_models.hpp"
+#include "pendulum_reference.hpp"
 #include "seflex/mbd/explicit_integrator.hpp"
 #include "seflex/mbd/integrator.hpp"
 #include "test_support.hpp"
@@ -16,42 +17,8 @@ using namespace seflex::mbd;
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
-namespace {
-
-struct RefRow {
-  double t, phi1, phi2, w1, w2, energy;
-};
-
-std::vector<RefRow> read_reference(const std::string& file) {
-  std::ifstream in(test::data_dir() / "mbd" / file);
-  std::vector<RefRow> rows;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::replace(line.begin(), line.end(), ',', ' ');
-    std::istringstream is(line);
-    RefRow r{};
-    is >> r.t >> r.phi1 >> r.phi2 >> r.w1 >> r.w2 >> r.energy;
-    rows.push_back(r);
-  }
-  return rows;
-}
-
-Model double_pendulum() {
-  ModelBuilder mb;
-  const auto rod = mb.add_superelement(test::rod(1.0, 1.0));
-  const auto g = mb.add_ground("pivot", Pose{});
-  const auto h1 = mb.add_hinge("H1", g, Vector3d::UnitZ());
-  const auto r1 = mb.add_rigid_body("rod1", rod, mb.hinge_child(h1), 0, Pose{Matrix3d::Identity(), Vector3d(0.5, 0, 0)});
-  HingeOptions ho;
-  ho.phidot0 = 0.5;
-  const auto h2 = mb.add_hinge("H2", mb.rigid_body(r1).nodes[1], Vector3d::UnitZ(), ho);
-  mb.add_rigid_body("rod2", rod, mb.hinge_child(h2), 0, Pose{Matrix3d::Identity(), Vector3d(1.5, 0, 0)});
-  mb.set_gravity(Vector3d(0, -9.81, 0));
-  return mb.build();
-}
-
-}  // namespace
+using test::double_pendulum;
+using test::read_reference;
 
 // Reference: tests/data/mbd/double_pendulum_reference.csv (double_pendulum_reference.py: Lagrange's
 // equations in absolute angles, scipy DOP853 at rtol = atol = 1e-12; independent of seflex).

@@ -1,0 +1,48 @@
+// Rigid bodies with Lagrange multipliers (rigid-LM) on the rigid double pendulum against the same
+// independent reference as the AIC test, and rigid-LM against AIC rigid bodies on a chain.
+#include <gtest/gtest.h>
+
+#include "mbd_models.hpp"
+#include "pendulum_reference.hpp"
+#include "seflex/mbd/ffrf.hpp"
+
+using namespace seflex;
+using namespace seflex::mbd;
+
+// Reference and tolerances as Pendulum.RigidDoublePendulumMatchesReference (pendulum_reference.hpp):
+// angles 2e-5 rad, rates 2e-4 rad/s, energy 2e-6 of (m1 + m2) g L. Each rod is a 6-dof body here,
+// its hinges 6 constraint equations each plus the hinge angle: 14 coordinates, 12 multipliers.
+TEST(FfrfPendulum, RigidLmDoublePendulumMatchesReference) {
+  const auto ref = test::read_reference("double_pendulum_reference.csv");
+  ASSERT_EQ(ref.size(), 201u);
+  const Model model = test::double_pendulum();
+  IntegratorSettings st;
+  st.t_end = 2.0;
+  st.output_interval = 0.01;
+  st.h_initial = 1e-3;
+  st.tol_angle = st.tol_position = 1e-9;
+  st.rho_inf = 0.9;
+  test::Recorder rec;
+  const FfrfStats stats = simulate_ffrf(model, st, FfrfOptions{}, &rec);
+  EXPECT_EQ(stats.coordinates, 14);
+  EXPECT_EQ(stats.constraints, 12);
+  ASSERT_EQ(rec.samples.size(), ref.size());
+  double e_phi = 0, e_w = 0, e_E = 0;
+  for (std::size_t k = 0; k < ref.size(); ++k) {
+    const Sample& smp = rec.samples[k];
+    ASSERT_NEAR(smp.t, ref[k].t, 1e-12);
+    e_phi = std::max({e_phi, std::abs(smp.hinges[0].phi - ref[k].phi1), std::abs(smp.hinges[1].phi - ref[k].phi2)});
+    e_w = std::max({e_w, std::abs(smp.hinges[0].phidot - ref[k].w1), std::abs(smp.hinges[1].phidot - ref[k].w2)});
+    e_E = std::max(e_E, std::abs(smp.energy.total() - ref[k].energy) / (2 * 9.81));
+  }
+  std::printf("rigid-LM double pendulum: max errors phi %.2e rad, rate %.2e rad/s, energy %.2e; %ld steps, %ld Newton its; "
+              "drift %.1e m %.1e rad, %.1e m/s\n",
+              e_phi, e_w, e_E, stats.run.steps, stats.run.newton_iterations, stats.drift_position, stats.drift_rotation,
+              stats.drift_velocity);
+  EXPECT_LT(e_phi, 2e-5);
+  EXPECT_LT(e_w, 2e-4);
+  EXPECT_LT(e_E, 2e-6);
+  // Index 3: positions are enforced to the Newton tolerance (increment tolerance 1e-9 x 2 m).
+  EXPECT_LT(stats.drift_position, 1e-8);
+  EXPECT_LT(stats.drift_rotation, 1e-8);
+}
