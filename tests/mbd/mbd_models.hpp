@@ -2,6 +2,7 @@
 // Small models shared by the multibody tests: rigid rods, flexible pendulum chains, and an
 // observer that keeps every sample.
 #include <Eigen/Dense>
+#include <functional>
 #include <vector>
 
 #include "beam_superelement.hpp"
@@ -42,6 +43,8 @@ struct ChainOptions {
   Eigen::Vector3d gravity{0, -9.81, 0};
   Eigen::Vector3d axis{0, 0, 1};  ///< hinge axes (world)
   int frame_node = -1;          ///< FE node of the floating frame (-1: middle)
+  /// Called before build() with the hinges H1..Hn (e.g. to add force elements).
+  std::function<void(mbd::ModelBuilder&, const std::vector<mbd::HingeIndex>&)> extra;
 };
 
 /// A pendulum chain hanging from a ground hinge at the origin, bodies along +x (horizontal at
@@ -54,8 +57,10 @@ inline mbd::Model pendulum_chain(const ChainOptions& o) {
   ModelBuilder mb;
   const auto sei = mb.add_superelement(s);
   NodeIndex base = mb.add_ground("ground", Pose{});
+  std::vector<HingeIndex> hinges;
   for (int b = 0; b < o.bodies; ++b) {
     const auto h = mb.add_hinge("H" + std::to_string(b + 1), base, o.axis);
+    hinges.push_back(h);
     const Pose X{Eigen::Matrix3d::Identity(), Eigen::Vector3d(b * o.length + fe.pts[f].x(), 0, 0)};
     if (o.rigid) {
       const auto rb = mb.add_rigid_body("link" + std::to_string(b + 1), sei, mb.hinge_child(h), 0, X);
@@ -69,6 +74,7 @@ inline mbd::Model pendulum_chain(const ChainOptions& o) {
     }
   }
   mb.set_gravity(o.gravity);
+  if (o.extra) o.extra(mb, hinges);
   return mb.build();
 }
 
