@@ -14,6 +14,7 @@
 #include "seflex/io/run_output.hpp"
 #include "seflex/io/scene.hpp"
 #include "seflex/io/solve_scene.hpp"
+#include "seflex/mbd/ffrf.hpp"
 #include "seflex/mbd/integrator.hpp"
 #include "seflex/mbd/state.hpp"
 
@@ -55,10 +56,18 @@ class Progress : public mbd::Observer {
   std::chrono::steady_clock::time_point last_{};
 };
 
-/// The seam where the solvers of seflex are chosen (`--formulation` will select the floating-frame
-/// and rigid-body baselines with Lagrange multipliers here); every solver reports to the same observer.
-mbd::RunStats solve(const io::Scene& scene, const mbd::IntegratorSettings& settings, mbd::Observer* observer) {
-  return io::solve_scene(scene, settings, observer);  // the scene's integrator.method
+/// The seam where the solvers of seflex are chosen (`--formulation`: aic with the scene's
+/// integrator.method, or the floating-frame and rigid-body baselines with Lagrange multipliers);
+/// every solver reports to the same observer.
+mbd::RunStats solve(const io::Scene& scene, const mbd::IntegratorSettings& settings, const std::string& formulation,
+                    mbd::Observer* observer) {
+  if (formulation == "aic") return io::solve_scene(scene, settings, observer);
+  mbd::FfrfOptions fo;
+  fo.rigid = formulation == "rigid-lm";
+  const mbd::FfrfStats st = mbd::simulate_ffrf(scene.model, settings, fo, observer);
+  std::printf("  %s: %d coordinates, %d multipliers; largest constraint drift %.2e m, %.2e rad (%.2e m/s)\n",
+              formulation.c_str(), st.coordinates, st.constraints, st.drift_position, st.drift_rotation, st.drift_velocity);
+  return st.run;
 }
 
 int run_run(seflex::app::Args& args) {
@@ -69,6 +78,7 @@ int run_run(seflex::app::Args& args) {
   const auto step = args.value("step");
   const auto inertia = args.value("inertia");
   const auto fidelity = args.value("fidelity");
+  const std::string formulation = args.value("formulation").value_or("aic");
   const bool no_animation = args.flag("no-animation");
   const std::string scene_path = args.positional("SCENE");
   args.finish();
@@ -89,9 +99,13 @@ int run_run(seflex::app::Args& args) {
     throw UsageError("option --inertia expects simplified or full, got '" + *inertia + "'");
   if (fidelity && *fidelity != "rigid" && *fidelity != "flexible")
     throw UsageError("option --fidelity expects rigid or flexible, got '" + *fidelity + "'");
+  if (formulation != "aic" && formulation != "ffrf-lm" && formulation != "rigid-lm")
+    throw UsageError("option --formulation expects aic, ffrf-lm or rigid-lm, got '" + formulation + "'");
   io::RunOutput::check_folder(*out, force);  // before the work, not after it
 
   io::SceneDescription d = io::read_scene(scene_path);
+  if (formulation != "aic" && d.method != io::IntegratorMethod::GeneralizedAlpha)
+    throw UsageError("option --formulation " + formulation + " integrates with generalized-alpha only; the scene asks for integrator.method rk4");
   if (t_end) d.integrator.t_end = positive("t-end", *t_end);
   if (step) {
     d.integrator.h_initial = positive("step", *step);
@@ -117,7 +131,7 @@ int run_run(seflex::app::Args& args) {
   io::RunEnd end;
   const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   try {
-    end.stats = solve(scene, d.integrator, &progress);
+    end.stats = solve(scene, d.integrator, formulation, &progress);
   } catch (const seflex::Error& e) {
     // Everything computed so far is on disk; say where it stopped and why.
     progress.done();
@@ -146,7 +160,9 @@ int run_run(seflex::app::Args& args) {
 
 SEFLEX_COMMAND(run,
                "SCENE -o OUTDIR [--force] [--t-end T] [--step H] [--inertia simplified|full] "
-               "[--fidelity rigid|flexible] [--no-animation]",
+               "[--fidelity rigid|flexible] [--formulation aic|ffrf-lm|rigid-lm] [--no-animation]",
                "simulate the mechanism of a scene file (YAML, docs/scenes.md); writes history.csv, events.csv, "
-               "poses.csv, animation.pvd and summary.txt/json to OUTDIR as the run goes (options override the scene)",
+               "poses.csv, animation.pvd and summary.txt/json to OUTDIR as the run goes (options override the scene; "
+               "--formulation: the AIC superelements (default), the classic floating frame or rigid bodies with "
+               "Lagrange multipliers, docs/ffrf.md)",
                run_run);
