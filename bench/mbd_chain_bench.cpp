@@ -5,6 +5,10 @@
 // sparse LU the cost per step should grow linearly in N.
 //
 //   build/bench/mbd_chain_bench [--t-end 10] [--step 2e-3] [--repeat 3] [--full] [--sizes 2,5,10,...]
+//                               [--formulation aic|ffrf-lm|rigid-lm]
+// --formulation ffrf-lm runs the same model with the classic floating frame and Lagrange
+// multipliers (mbd/ffrf.hpp; all frame-clamped modes, full FE nodal inertia), rigid-lm with rigid
+// bodies and multipliers; "dofs" is then coordinates + multipliers.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -15,6 +19,7 @@
 #include <vector>
 
 #include "../tests/mbd/beam_superelement.hpp"  // test-only beam Craig-Bampton builder (until reduction/ has one)
+#include "seflex/mbd/ffrf.hpp"
 #include "seflex/mbd/integrator.hpp"
 
 using namespace seflex;
@@ -43,12 +48,19 @@ Model chain(int n, InertiaModel inertia) {
   return mb.build();
 }
 
+/// Keeps the last sample.
+struct LastSample : Observer {
+  Sample sample;
+  void on_sample(const Model&, const Sample& s) override { sample = s; }
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
   double t_end = 10.0, step = 2e-3;
   int repeat = 3;
   bool full = false;
+  std::string formulation = "aic";
   std::vector<int> sizes{2, 5, 10, 20, 50, 100, 200};
   std::string cmd = argv[0];
   for (int i = 1; i < argc; ++i) {
@@ -59,20 +71,25 @@ int main(int argc, char** argv) {
     else if (a == "--step") step = std::atof(next().c_str());
     else if (a == "--repeat") repeat = std::atoi(next().c_str());
     else if (a == "--full") full = true;
+    else if (a == "--formulation") formulation = next();
     else if (a == "--sizes") {
       sizes.clear();
       std::stringstream ss(next());
       std::string tok;
       while (std::getline(ss, tok, ',')) sizes.push_back(std::atoi(tok.c_str()));
     } else {
-      std::fprintf(stderr, "usage: %s [--t-end T] [--step h] [--repeat k] [--full] [--sizes 2,5,...]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--t-end T] [--step h] [--repeat k] [--full] [--sizes 2,5,...] [--formulation aic|ffrf-lm|rigid-lm]\n", argv[0]);
       return 2;
     }
   }
+  if (formulation != "aic" && formulation != "ffrf-lm" && formulation != "rigid-lm") {
+    std::fprintf(stderr, "--formulation expects aic, ffrf-lm or rigid-lm\n");
+    return 2;
+  }
   std::printf("# %s\n", cmd.c_str());
-  std::printf("# chain of N flexible AIC beams (0.1 m, 2 FE elements each), %s inertia, %.3g s at constant h = %.3g s, "
+  std::printf("# chain of N flexible beams (0.1 m, 2 FE elements each), formulation %s, %s inertia, %.3g s at constant h = %.3g s, "
               "generalized-alpha rho_inf 0.8, median of %d runs\n",
-              full ? "full" : "simplified", t_end, step, repeat);
+              formulation.c_str(), formulation != "aic" ? "FE nodal" : full ? "full" : "simplified", t_end, step, repeat);
   std::printf("%6s %6s %7s %9s %9s %10s %10s %12s %12s\n", "N", "dofs", "steps", "its/step", "LU/step", "wall [s]", "ms/step",
               "us/step/body", "tip y [m]");
   double base_per_body = 0;
@@ -81,25 +98,39 @@ int main(int argc, char** argv) {
     std::vector<double> walls;
     RunStats stats;
     double tip_y = 0;
+    int dofs = model.num_dofs;
     for (int r = 0; r < repeat; ++r) {
-      State s = initial_state(model);
-      Data data(model);
       IntegratorSettings st;
       st.t_end = t_end;
       st.h_initial = step;
       st.adaptive = false;
       st.rho_inf = 0.8;
-      const auto t0 = std::chrono::steady_clock::now();
-      stats = simulate(model, s, data, st);
-      walls.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-      tip_y = s.p_WN.back().y();
+      if (formulation == "aic") {
+        State s = initial_state(model);
+        Data data(model);
+        const auto t0 = std::chrono::steady_clock::now();
+        stats = simulate(model, s, data, st);
+        walls.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        tip_y = s.p_WN.back().y();
+      } else {
+        st.output_interval = t_end;  // samples at the start and the end only
+        LastSample last;
+        FfrfOptions fo;
+        fo.rigid = formulation == "rigid-lm";
+        const auto t0 = std::chrono::steady_clock::now();
+        const FfrfStats fs = simulate_ffrf(model, st, fo, &last);
+        walls.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        stats = fs.run;
+        dofs = fs.coordinates + fs.constraints;
+        tip_y = last.sample.nodes.back().p.y();
+      }
     }
     std::sort(walls.begin(), walls.end());
     const double wall = walls[walls.size() / 2];
     const double per_step = 1e3 * wall / static_cast<double>(stats.steps);
     const double per_body = 1e3 * per_step / n;
     if (base_per_body == 0) base_per_body = per_body;
-    std::printf("%6d %6d %7ld %9.2f %9.2f %10.3f %10.3f %12.1f %12.4f\n", n, model.num_dofs, stats.steps,
+    std::printf("%6d %6d %7ld %9.2f %9.2f %10.3f %10.3f %12.1f %12.4f\n", n, dofs, stats.steps,
                 static_cast<double>(stats.newton_iterations) / static_cast<double>(stats.steps),
                 static_cast<double>(stats.factorizations) / static_cast<double>(stats.steps), wall, per_step, per_body, tip_y);
     std::fflush(stdout);
