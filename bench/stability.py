@@ -25,11 +25,40 @@ def run(binary, text, folder, extra=()):
     return s
 
 
+def sample_every(text, h):
+    """The integrator lands on every output sample, so output.interval caps the step: sample at h."""
+    return re.sub(r"interval: [0-9.eE+-]+", f"interval: {max(h, 1e-3):g}", text, count=1)
+
+
 def fixed(text, method, h):
     if method == "rk4":
-        return edit_scene(text, method="rk4", step=h)
-    t = re.sub(r"step: [0-9.eE+-]+", f"step: {h:g}, adaptive: false, min_step: {h:g}", text, count=1)
+        return sample_every(edit_scene(text, method="rk4", step=h), h)
+    t = re.sub(r", max_step: [0-9.eE+-]+", "", text)
+    t = re.sub(r"step: [0-9.eE+-]+", f"step: {h:g}, adaptive: false, min_step: {h:g}", t, count=1)
+    return sample_every(t, h)
+
+
+def capped(text, h):
+    """Adaptive generalized-alpha with initial and largest step h (a flow-style integrator map)."""
+    t = re.sub(r"max_step: [0-9.eE+-]+, ", "", text)
+    return sample_every(re.sub(r"step: [0-9.eE+-]+", f"step: {h:g}, max_step: {h:g}", t, count=1), h)
+
+
+def solar(text, h, adaptive):
+    """examples/solar_array scene (block-style integrator) with a fixed step h or a largest step h."""
+    t = re.sub(r"\n  step: [0-9.eE+-]+", f"\n  step: {h:g}", text)
+    t = re.sub(r"max_step: [0-9.eE+-]+", f"max_step: {h:g}", t)
+    t = re.sub(r"after_all_locked: [0-9.eE+-]+", "after_all_locked: 0.5", t)
+    t = re.sub(r"  interval: [0-9.eE+-]+\n  animation: [^\n]+", f"  interval: {max(h, 5e-3):g}", t)
+    if not adaptive:
+        t = re.sub(r"min_step: [0-9.eE+-]+", f"min_step: {h:g}", t).replace("adaptive: true", "adaptive: false")
     return t
+
+
+def failure(folder):
+    ev = open(os.path.join(folder, "events.csv")).read()
+    m = re.search(r"stopped at t = ([0-9.eE+-]+) s.*?\): ([^;]+)", ev)
+    return (float(m.group(1)), m.group(2)) if m else (None, "")
 
 
 def largest_stable(binary, text, method, folder, lo, hi, n=7):
@@ -72,17 +101,36 @@ def main():
             s, u = largest_stable(b, text, method, d("bisect"), lo, hi)
             table.append((name, method, s, u))
             print(f"  {name:20s} {method:18s} largest stable step {s if s else float('nan'):.3g} s (unstable at {u if u else float('nan'):.3g} s)", flush=True)
-    # 2. Implicit at large steps through the lock: rejected (Newton) steps and the located lock time.
+    # 2. Implicit at large steps through the locks: fixed step (Newton must converge on the latching
+    #    step) and adaptive with that step as the largest (rejected steps, Newton retries).
     lock_rows = []
-    for h in (1e-3, 5e-3, 2e-2, 5e-2):
-        s = run(b, re.sub(r"step: [0-9.eE+-]+", f"step: {h:g}", link, count=1), d("lockstep"))
-        ev = open(os.path.join(d("lockstep"), "events.csv")).read()
-        lock_rows.append((h, s["status"], s["steps"], s["rejected_steps"], s["locks"]["lock.H1"]["t_latch"], s["locks"]["lock.H1"]["peak_abs_torque_after_latch"]))
-        print(f"  implicit link with lock, initial/max step {h:g}: {s['status']}, {s['steps']} steps, {s['rejected_steps']} rejected, "
-              f"t_latch {s['locks']['lock.H1']['t_latch']}, peak lock torque {s['locks']['lock.H1']['peak_abs_torque_after_latch']:.4g}", flush=True)
+    for h in (1e-3, 2e-3, 4e-3, 5e-3, 1e-2, 2e-2, 5e-2):
+        sf = run(b, fixed(link, "generalized-alpha", h), d("lockfixed"))
+        tf, why = failure(d("lockfixed"))
+        sa = run(b, capped(link, h), d("lockstep"))
+        lk = sa["locks"]["lock.H1"]
+        lock_rows.append((h, sf["status"], tf, sa["status"], sa["steps"], sa["rejected_steps"], lk["t_latch"], lk["peak_abs_torque_after_latch"]))
+        print(f"  link with lock, h = {h:g}: fixed step {sf['status']}" + (f" (t = {tf:.4g} s: {why})" if tf is not None else "") +
+              f"; adaptive, max step h: {sa['status']}, {sa['steps']} steps, {sa['rejected_steps']} rejected, t_latch {lk['t_latch']}, "
+              f"peak lock torque {lk['peak_abs_torque_after_latch']:.4g} N m", flush=True)
+    # Solar array (beam-like, synchronised; superelements as scripts/demo.sh makes them).
+    os.makedirs(d("superelements"), exist_ok=True)
+    for body, iface in (("yoke", "1,5"), ("panel", "5,6")):
+        subprocess.run([b, "reduce", os.path.join(ROOT, "meshes", body + ".bdf"), "--interface", iface, "--modes", "10", "--name", body + "-beam",
+                        "-o", d(f"superelements/{body}-beam.se"), "--force"], check=True, capture_output=True)
+    sa_text = open(os.path.join(ROOT, "examples", "solar_array", "sync-beam.yaml")).read()
+    solar_rows = []
+    for h in (2e-3, 5e-3, 6e-3, 1e-2, 2e-2):
+        for adaptive in (False, True):
+            s = run(b, solar(sa_text, h, adaptive), d("solar"))
+            tf, why = failure(d("solar"))
+            latches = {k: v["t_latch"] for k, v in s["locks"].items()}
+            solar_rows.append((h, adaptive, s["status"], tf, s["steps"], s["rejected_steps"], latches))
+            print(f"  sync-beam solar array, {'adaptive, max' if adaptive else 'fixed'} step {h:g}: {s['status']}" +
+                  (f" at t = {tf:.4g} s ({why})" if tf is not None else "") + f", {s['steps']} steps, {s['rejected_steps']} rejected, latches {latches}", flush=True)
     # 3. Simplified mass against full inertia as the spin rate grows (lag of the beam behind the hub).
     spin_rows = []
-    for rate in (1.5, 3.0, 6.0, 9.0, 12.0):
+    for rate in (1.5, 3.0, 6.0, 6.5, 6.8, 9.0):
         text = re.sub(r"rate_deg_s: [0-9.eE+-]+", f"rate_deg_s: {np.degrees(rate):.10g}", open(os.path.join(a.out, "spinup.yaml")).read())
         lags = {}
         for inertia in ("full", "simplified"):
@@ -111,13 +159,17 @@ def main():
     ax[0].set_ylabel("largest stable constant step [s]")
     ax[0].set_title("stable steps (bars at the upper bracket mean: stable at the largest step tried)", fontsize=7)
     hs = [r[0] for r in lock_rows]
-    ax[1].semilogx(hs, [r[3] for r in lock_rows], "o-", label="rejected steps")
-    ax[1].set_xlabel("initial and largest step [s]")
+    ax[1].semilogx(hs, [r[5] for r in lock_rows], "o-", label="link, adaptive: rejected steps")
+    fail = [r[0] for r in lock_rows if r[1] != "ok"]
+    ax[1].semilogx(fail, [0.5] * len(fail), "rx", ms=9, label="link, fixed step: Newton fails at the latch")
+    sr = [r for r in solar_rows if r[1]]
+    ax[1].semilogx([r[0] for r in sr], [r[5] for r in sr], "s-", label="solar array, adaptive: rejected steps")
+    sf = [r[0] for r in solar_rows if not r[1] and r[2] != "ok"]
+    ax[1].semilogx(sf, [1.0] * len(sf), "m+", ms=11, label="solar array, fixed step: fails in the first steps")
+    ax[1].set_xlabel("fixed step, or largest step of the adaptive run [s]")
     ax[1].set_ylabel("rejected steps (Newton or error test)")
-    ax2 = ax[1].twinx()
-    ax2.semilogx(hs, [r[5] for r in lock_rows], "s--", color="C3", label="peak lock torque")
-    ax2.set_ylabel("peak lock torque [N m]")
-    ax[1].set_title("implicit through a stiff lock, large steps", fontsize=8)
+    ax[1].legend(fontsize=6)
+    ax[1].set_title("implicit generalized-alpha through the locks, large steps", fontsize=8)
     r = np.array([x[0] for x in spin_rows])
     ax[2].plot(r, [x[1] for x in spin_rows], "o-", label="lag, full inertia")
     ax[2].plot(r, [x[2] for x in spin_rows], "s-", label="lag, simplified mass")
