@@ -24,15 +24,8 @@ Sample ffrf_sample(const FfrfSystem& sys, const FfrfState& state) {
     out.hinges.push_back(HingeSample{phi[hi], phidot[hi], phidd, ev.joint_torque[hi]});
   }
   for (std::size_t i = 0; i < model.force_elements.size(); ++i) {
-    const HingeForceResult& r = ev.forces[i];
-    ElementSample es;
-    es.value = r.value;
-    es.energy = r.energy;
-    es.hinge_torques.assign(r.tau.data(), r.tau.data() + r.tau.size());
-    es.latched = s.locks[i].latched;
-    es.t_latch = s.locks[i].t_latch;
-    out.elements.push_back(std::move(es));
-    out.energy.spring += r.energy;
+    out.elements.push_back(element_sample(ev.forces[i], &s.locks[i]));
+    out.energy.spring += ev.forces[i].energy;
   }
   const Eigen::Vector3d& g = model.gravity;
   for (std::size_t b = 0; b < sys.bodies.size(); ++b) {

@@ -24,23 +24,25 @@ Energies energies(const Model& model, const State& s, const Data& data) {
   return E;
 }
 
+ElementSample element_sample(const HingeForceResult& r, const LockState* lock) {
+  ElementSample es;
+  es.value = r.value;
+  es.energy = r.energy;
+  es.hinge_torques.assign(r.tau.data(), r.tau.data() + r.tau.size());
+  if (lock) {
+    es.latched = lock->latched;
+    es.t_latch = lock->t_latch;
+  }
+  return es;
+}
+
 Sample make_sample(const Model& model, const State& s, const Data& data) {
   Sample out;
   out.t = s.t;
   for (const auto& nk : data.nodes) out.nodes.push_back(Pose{nk.R, nk.p});
   for (const auto& hk : data.hinges) out.hinges.push_back(HingeSample{hk.phi, hk.phidot, hk.phiddot, hk.joint_torque});
-  for (std::size_t i = 0; i < model.force_elements.size(); ++i) {
-    const HingeForceResult& r = data.forces[i];
-    ElementSample es;
-    es.value = r.value;
-    es.energy = r.energy;
-    es.hinge_torques.assign(r.tau.data(), r.tau.data() + r.tau.size());
-    if (i < s.locks.size()) {
-      es.latched = s.locks[i].latched;
-      es.t_latch = s.locks[i].t_latch;
-    }
-    out.elements.push_back(std::move(es));
-  }
+  for (std::size_t i = 0; i < model.force_elements.size(); ++i)
+    out.elements.push_back(element_sample(data.forces[i], i < s.locks.size() ? &s.locks[i] : nullptr));
   for (const auto& fd : data.flex)
     out.flexible.push_back(FlexibleBodySample{Pose{fd.kin.frame.R_WB, fd.kin.frame.p_WBo}, fd.kin.xi, fd.kinetic, fd.elastic});
   for (std::size_t b = 0; b < model.rigid_bodies.size(); ++b) {

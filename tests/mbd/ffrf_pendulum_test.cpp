@@ -27,14 +27,8 @@ TEST(FfrfPendulum, RigidLmDoublePendulumMatchesReference) {
   EXPECT_EQ(stats.coordinates, 14);
   EXPECT_EQ(stats.constraints, 12);
   ASSERT_EQ(rec.samples.size(), ref.size());
-  double e_phi = 0, e_w = 0, e_E = 0;
-  for (std::size_t k = 0; k < ref.size(); ++k) {
-    const Sample& smp = rec.samples[k];
-    ASSERT_NEAR(smp.t, ref[k].t, 1e-12);
-    e_phi = std::max({e_phi, std::abs(smp.hinges[0].phi - ref[k].phi1), std::abs(smp.hinges[1].phi - ref[k].phi2)});
-    e_w = std::max({e_w, std::abs(smp.hinges[0].phidot - ref[k].w1), std::abs(smp.hinges[1].phidot - ref[k].w2)});
-    e_E = std::max(e_E, std::abs(smp.energy.total() - ref[k].energy) / (2 * 9.81));
-  }
+  const test::ReferenceErrors err = test::reference_errors(rec.samples, ref);
+  const double e_phi = err.phi, e_w = err.rate, e_E = err.energy;
   std::printf("rigid-LM double pendulum: max errors phi %.2e rad, rate %.2e rad/s, energy %.2e; %ld steps, %ld Newton its; "
               "drift %.1e m %.1e rad, %.1e m/s\n",
               e_phi, e_w, e_E, stats.run.steps, stats.run.newton_iterations, stats.drift_position, stats.drift_rotation,

@@ -2,7 +2,10 @@
 // The rigid double pendulum of the multibody tests and its independent reference time history
 // (tests/data/mbd/double_pendulum_reference.csv, written by double_pendulum_reference.py: Lagrange's
 // equations in absolute angles, scipy DOP853 at rtol = atol = 1e-12; independent of seflex).
+#include <gtest/gtest.h>
+
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -50,5 +53,22 @@ inline mbd::Model double_pendulum() {
   return mb.build();
 }
 
+/// Largest errors of samples against the reference rows: angles, rates, and total energy relative
+/// to the potential-energy scale (m1 + m2) g L = 2 x 9.81 J. Samples must be at the reference times.
+struct ReferenceErrors {
+  double phi = 0.0, rate = 0.0, energy = 0.0;
+};
+inline ReferenceErrors reference_errors(const std::vector<mbd::Sample>& samples, const std::vector<RefRow>& ref) {
+  ReferenceErrors e;
+  EXPECT_EQ(samples.size(), ref.size());
+  for (std::size_t k = 0; k < std::min(samples.size(), ref.size()); ++k) {
+    const mbd::Sample& smp = samples[k];
+    EXPECT_NEAR(smp.t, ref[k].t, 1e-12);
+    e.phi = std::max({e.phi, std::abs(smp.hinges[0].phi - ref[k].phi1), std::abs(smp.hinges[1].phi - ref[k].phi2)});
+    e.rate = std::max({e.rate, std::abs(smp.hinges[0].phidot - ref[k].w1), std::abs(smp.hinges[1].phidot - ref[k].w2)});
+    e.energy = std::max(e.energy, std::abs(smp.energy.total() - ref[k].energy) / (2 * 9.81));
+  }
+  return e;
+}
 
 }  // namespace seflex::test

@@ -72,6 +72,9 @@ class Observer {
   virtual bool stop_requested() const { return false; }
 };
 
+/// The sample of one force element from its evaluation and (locks) its latch state (may be null).
+ElementSample element_sample(const HingeForceResult& r, const LockState* lock);
+
 /// Build a sample from `state` and `data` assembled at that state.
 Sample make_sample(const Model& model, const State& state, const Data& data);
 
