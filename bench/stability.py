@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Where methods fail (issue 7, docs/stability.md): largest stable constant step of the explicit RK4
-foil and of the implicit generalized-alpha, with and without a lock; Newton failures at a lock with
+foil, of the implicit generalized-alpha (AIC) and of FFRF-LM (seflex run --formulation ffrf-lm), with
+and without a lock; FFRF-LM constraint drift (printed by seflex run) at fixed and adaptive steps; Newton failures at a lock with
 large steps; the simplified mass against the full inertia as the spin rate of the spin-up beam grows.
 
   /usr/bin/python3 bench/stability.py [--bin build/apps/seflex] [--out stability-output] [--img docs/img]
@@ -22,6 +23,10 @@ def run(binary, text, folder, extra=()):
     open(scene, "w").write(text)
     r = subprocess.run([binary, "run", scene, "-o", folder, "--force", "--no-animation", *extra], capture_output=True, text=True)
     s = json.load(open(os.path.join(folder, "summary.json")))
+    # FFRF-LM / rigid-LM: `seflex run` prints the largest constraint drift (mbd::FfrfStats).
+    m = re.search(r"largest constraint drift ([0-9.eE+-]+) m, ([0-9.eE+-]+) rad \(([0-9.eE+-]+) m/s\)", r.stdout)
+    if m:
+        s["drift"] = tuple(float(x) for x in m.groups())
     return s
 
 
@@ -62,8 +67,10 @@ def failure(folder):
 
 
 def largest_stable(binary, text, method, folder, lo, hi, n=7):
-    """Bisection in log h between a stable lo and an unstable hi (checked first)."""
-    ok = lambda h: run(binary, fixed(text, method, h), folder)["status"] == "ok"
+    """Bisection in log h between a stable lo and an unstable hi (checked first). method "ffrf-lm":
+    generalized-alpha on the floating frame with Lagrange multipliers (seflex run --formulation ffrf-lm)."""
+    extra = ["--formulation", "ffrf-lm"] if method == "ffrf-lm" else []
+    ok = lambda h: run(binary, fixed(text, "generalized-alpha" if method == "ffrf-lm" else method, h), folder, extra)["status"] == "ok"
     if not ok(lo):
         return None, lo
     if ok(hi):
@@ -97,10 +104,24 @@ def main():
     # 1. Largest stable constant step.
     table = []
     for name, text in (("link, no lock", nolock), ("link, lock", link), ("spin-up beam 0-4 s", spin)):
-        for method, lo, hi in (("rk4", 1e-5, 1e-2), ("generalized-alpha", 1e-4, 5e-2)):
+        for method, lo, hi in (("rk4", 1e-5, 1e-2), ("generalized-alpha", 1e-4, 5e-2), ("ffrf-lm", 1e-4, 2e-1)):
+            if method == "ffrf-lm" and name.startswith("spin"):
+                continue  # FFRF-LM fails on the spin-up beam at every step (docs/stability.md)
             s, u = largest_stable(b, text, method, d("bisect"), lo, hi)
             table.append((name, method, s, u))
             print(f"  {name:20s} {method:18s} largest stable step {s if s else float('nan'):.3g} s (unstable at {u if u else float('nan'):.3g} s)", flush=True)
+    # 1b. FFRF-LM constraint drift on the link (index 3: positions to the Newton tolerance, velocities not).
+    drift_rows = []
+    for name, text in (("link, no lock", nolock), ("link, lock", link)):
+        for h in (1e-3, 1e-2):
+            for mode, t in (("fixed", fixed(text, "generalized-alpha", h)), ("adaptive", capped(text, h))):
+                s = run(b, t, d("ffrfdrift"), ["--formulation", "ffrf-lm"])
+                dr = s.get("drift", (np.nan,) * 3)
+                lk = s["locks"].get("lock.H1", {})
+                drift_rows.append((name, h, mode, s["status"], s["steps"]) + dr)
+                print(f"  FFRF-LM {name:14s} {mode:8s} h {h:g}: {s['status']}, {s['steps']} steps; drift {dr[0]:.2e} m, {dr[1]:.2e} rad, "
+                      f"{dr[2]:.2e} m/s" + (f"; t_latch {lk.get('t_latch')}, peak lock torque {lk.get('peak_abs_torque_after_latch', 0):.4g} N m" if lk else ""),
+                      flush=True)
     # 2. Implicit at large steps through the locks: fixed step (Newton must converge on the latching
     #    step) and adaptive with that step as the largest (rejected steps, Newton retries).
     lock_rows = []
@@ -153,15 +174,20 @@ def main():
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(1, 3, figsize=(15, 4.2))
     labels = [f"{n}\n{m}" for n, m, _, _ in table]
-    ax[0].bar(range(len(table)), [s or 0 for _, _, s, _ in table], color=["C0" if m == "rk4" else "C1" for _, m, _, _ in table])
+    ax[0].bar(range(len(table)), [s or 0 for _, _, s, _ in table], color=[{"rk4": "C0", "ffrf-lm": "C2"}.get(m, "C1") for _, m, _, _ in table])
     ax[0].set_xticks(range(len(table)), labels, fontsize=6)
     ax[0].set_yscale("log")
     ax[0].set_ylabel("largest stable constant step [s]")
     ax[0].set_title("stable steps (bars at the upper bracket mean: stable at the largest step tried)", fontsize=7)
     hs = [r[0] for r in lock_rows]
     ax[1].semilogx(hs, [r[5] for r in lock_rows], "o-", label="link, adaptive: rejected steps")
-    fail = [r[0] for r in lock_rows if r[1] != "ok"]
-    ax[1].semilogx(fail, [0.5] * len(fail), "rx", ms=9, label="link, fixed step: Newton fails at the latch")
+    fail = [r for r in lock_rows if r[1] != "ok"]
+    t_latch = next((r[6] for r in lock_rows if r[3] == "ok" and r[6] is not None), None)
+    after = [r[0] for r in fail if t_latch is None or r[2] is None or r[2] >= t_latch]
+    before = [r[0] for r in fail if not (t_latch is None or r[2] is None or r[2] >= t_latch)]
+    ax[1].semilogx(after, [0.5] * len(after), "rx", ms=9, label="link, fixed step: Newton fails after the latch")
+    if before:
+        ax[1].semilogx(before, [0.5] * len(before), "kx", ms=9, label="link, fixed step: Newton fails before the latch (free fall)")
     sr = [r for r in solar_rows if r[1]]
     ax[1].semilogx([r[0] for r in sr], [r[5] for r in sr], "s-", label="solar array, adaptive: rejected steps")
     sf = [r[0] for r in solar_rows if not r[1] and r[2] != "ok"]

@@ -13,10 +13,11 @@ Cases and formulations:
     AIC full inertia and simplified mass on the 3D and beam-like reductions (local error 1e-4, 1e-5),
     rigid; errors: max hinge-line angle difference up to the reference's last lock [deg], largest
     lock-time difference [s], largest relative peak lock-torque difference.
-  FFRF-LM (seflex run --formulation ffrf-lm) and rigid-LM are included when the binary offers them
-    (otherwise skipped, and said so).
+  FFRF-LM (seflex run --formulation ffrf-lm; spin-up: local error 1e-4..1e-7; arrays: 3D 1e-4..1e-6 and
+    beam-like 1e-4) and rigid-LM (arrays, 1e-4 and 1e-5) are included when the binary offers them
+    (otherwise skipped, and said so). A run longer than --timeout (300 s) is stopped: status timeout.
 Reference: the finest AIC full-inertia run (3D, local error 1e-6); cross-checked against the finest
-FFRF-LM run when there is one. --quick: the spin-up beam only, 3 s, four runs (a CTest).
+FFRF-LM run when there is one (printed as a note: its errors, and FFRF-LM's next run against it). --quick: the spin-up beam only, 3 s, four runs (a CTest).
 """
 import argparse, csv, json, os, re, shutil, subprocess, sys, time
 import numpy as np
@@ -24,8 +25,11 @@ import numpy as np
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
-def sh(cmd):
-    r = subprocess.run(cmd, capture_output=True, text=True)
+def sh(cmd, timeout=None):
+    try:
+        r = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return None, f"killed after {timeout:g} s (--timeout)"
     return r.returncode, r.stdout + r.stderr
 
 
@@ -53,7 +57,7 @@ def edit_scene(text, tol=None, method=None, step=None, stop=None, t_end=None):
 
 class Study:
     def __init__(self, args):
-        self.bin, self.out, self.rows = args.bin, args.out, []
+        self.bin, self.out, self.rows, self.timeout = args.bin, args.out, [], args.timeout
         code, text = sh([self.bin, "run", "--help"])
         self.formulations = re.findall(r"--formulation ([a-z0-9|-]+)", text)
         self.has_ffrf = bool(self.formulations) and "ffrf-lm" in self.formulations[0]
@@ -65,8 +69,12 @@ class Study:
         with open(scene, "w") as f:
             f.write(scene_text)
         folder = os.path.join(self.out, "runs", name)
-        code, text = sh([self.bin, "run", scene, "-o", folder, "--force", "--no-animation", *extra])
-        s = json.load(open(os.path.join(folder, "summary.json"))) if os.path.exists(os.path.join(folder, "summary.json")) else {}
+        if os.path.exists(os.path.join(folder, "summary.json")):
+            os.remove(os.path.join(folder, "summary.json"))
+        code, text = sh([self.bin, "run", scene, "-o", folder, "--force", "--no-animation", *extra], self.timeout)
+        s = json.load(open(os.path.join(folder, "summary.json"))) if code is not None and os.path.exists(os.path.join(folder, "summary.json")) else {}
+        if code is None:
+            s = dict(status="timeout", message=text, run_time_s=self.timeout)
         r = dict(case=case, formulation=formulation, variant=variant, folder=folder, status=s.get("status", "failed"),
                  cpu_s=s.get("run_time_s", float("nan")), steps=s.get("steps", 0), dofs=s.get("dofs", 0),
                  locks=s.get("locks", {}), message=(s.get("message") or ("" if code == 0 else text.strip()[-300:])))
@@ -162,6 +170,7 @@ def main():
     ap.add_argument("--quick", action="store_true")
     ap.add_argument("--no-solar", action="store_true")
     ap.add_argument("--img", default=None, help="also copy the charts here (e.g. docs/img)")
+    ap.add_argument("--timeout", type=float, default=300.0, help="stop a run after this many seconds (status timeout)")
     a = ap.parse_args()
     a.bin = os.path.abspath(a.bin)
     if not os.access(a.bin, os.X_OK):
@@ -197,7 +206,7 @@ def main():
             st.run("spinup", "RK4", f"h {h:g}", edit_scene(base, method="rk4", step=h), sd, ["--inertia", "full"])
         st.run("spinup", "rigid", "tol 1e-6", edit_scene(base, tol=1e-6), sd, ["--fidelity", "rigid"])
         if st.has_ffrf:
-            for tol in (1e-6, 1e-5, 1e-4):
+            for tol in (1e-7, 1e-6, 1e-5, 1e-4):
                 st.run("spinup", "FFRF-LM", f"tol {tol:g}", edit_scene(base, tol=tol), sd, ["--formulation", "ffrf-lm"])
     if ref["status"] != "ok":
         sys.exit("study: the spin-up reference run failed: " + ref["message"])
@@ -231,13 +240,29 @@ def main():
             st.run(case, "rigid", "tol 1e-5", edit_scene(sc["beam"], tol=1e-5), od, ["--fidelity", "rigid"])
             st.run(case, "rigid", "tol 1e-4", edit_scene(sc["beam"], tol=1e-4), od, ["--fidelity", "rigid"])
             if st.has_ffrf:
-                st.run(case, "FFRF-LM", "3D tol 1e-5", edit_scene(sc["3d"], tol=1e-5), od, ["--formulation", "ffrf-lm"])
+                for tol in (1e-6, 1e-5, 1e-4):
+                    st.run(case, "FFRF-LM", f"3D tol {tol:g}", edit_scene(sc["3d"], tol=tol), od, ["--formulation", "ffrf-lm"])
                 st.run(case, "FFRF-LM", "beam tol 1e-4", edit_scene(sc["beam"], tol=1e-4), od, ["--formulation", "ffrf-lm"])
+                for tol in (1e-5, 1e-4):
+                    st.run(case, "rigid-LM", f"tol {tol:g}", edit_scene(sc["beam"], tol=tol), od, ["--formulation", "rigid-lm"])
             if ref_r["status"] != "ok":
                 sys.exit(f"study: the {case} reference run failed: " + ref_r["message"])
             for r in st.rows:
                 if r["case"] == case:
                     r.update(errors_solar(r, ref_r))
+
+    # Cross-check of each reference against the finest FFRF-LM run that finished (its error row) and
+    # the self-convergence of FFRF-LM (finest against the next finest, same error measure).
+    for c in ("spinup", "unsync", "sync"):
+        ff = [r for r in st.rows if r["case"] == c and r["formulation"] == "FFRF-LM" and r["status"] == "ok" and "beam" not in r["variant"]]
+        if len(ff) >= 1:
+            note = f"cross-check {c}: AIC reference against the finest FFRF-LM run ({ff[0]['variant']}): angle {ff[0]['angle_err_deg']:.3g} deg"
+            if c != "spinup":
+                note += f", lock time {ff[0]['lock_time_err_s']:.3g} s, peak torque {ff[0]['lock_torque_rel_err']:.3g}"
+            if len(ff) >= 2:
+                e = (errors_spinup(ff[1], spinup_lag(ff[0]["folder"])) if c == "spinup" else errors_solar(ff[1], ff[0]))
+                note += f"; FFRF-LM {ff[1]['variant']} against its finest run: {e['angle_err_deg']:.3g} deg"
+            st.notes.append(note)
 
     # CSV and charts.
     fields = ["case", "formulation", "variant", "status", "cpu_s", "steps", "dofs", "angle_err_deg", "lock_time_err_s", "lock_torque_rel_err", "message"]
@@ -255,7 +280,7 @@ def main():
     fig, axes = plt.subplots(1, len(cases), figsize=(5.2 * len(cases), 4.3), squeeze=False)
     for ax, c in zip(axes[0], cases):
         rows = [r for r in st.rows if r["case"] == c and r is not None]
-        floor = 1e-6
+        floor, n_bad = 1e-6, 0
         for fm in dict.fromkeys(r["formulation"] for r in rows):
             pts = sorted((r["cpu_s"], max(r.get("angle_err_deg", np.inf), floor), r["variant"]) for r in rows
                          if r["formulation"] == fm and r["status"] == "ok" and r.get("angle_err_deg", 0) > 0)
@@ -264,8 +289,12 @@ def main():
                 for p in pts:
                     ax.annotate(p[2], (p[0], p[1]), fontsize=6, alpha=0.7)
             bad = [r for r in rows if r["formulation"] == fm and r["status"] != "ok"]
-            for r in bad:
-                ax.annotate(f"{fm} {r['variant']}: failed", (0.02, 0.02 + 0.05 * bad.index(r)), xycoords="axes fraction", fontsize=6, color="red")
+            if bad:  # one line per formulation: which runs failed and when
+                ts = [float(m.group(1)) for r in bad for m in [re.search(r"stopped at t = ([0-9.eE+-]+) s", r["message"])] if m]
+                when = f" at t = {min(ts):.3g}-{max(ts):.3g} s" if ts else ""
+                ax.annotate(f"{fm} ({', '.join(r['variant'] for r in bad)}): {bad[0]['status']}{when}", (0.02, 0.02 + 0.05 * n_bad),
+                            xycoords="axes fraction", fontsize=6, color="red")
+                n_bad += 1
         ok = [(r["cpu_s"], r["angle_err_deg"]) for r in rows if r["status"] == "ok" and 0 < r.get("angle_err_deg", 0) < np.inf]
         front = pareto(ok)
         if front:
