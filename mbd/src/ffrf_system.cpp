@@ -2,6 +2,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <cmath>
 
 #include "ffrf_detail.hpp"
 #include "seflex/common/error.hpp"
@@ -17,15 +18,34 @@ Pose relative(const Pose& X_WA, const Pose& X_WB) {  // X_AB = X_WA^-1 X_WB
 }
 
 /// Frame-clamped modes: the null space of Phi_f (frame node held), diagonalised with K and M.
+/// The pencil is solved as Mq x = mu Kq x with the stiffness as the metric: with the frame node held
+/// Kq is positive definite, whereas Mq is only semi-definite when the FE mass lumps translations
+/// (Nastran CBAR/CBEAM default: no rotational inertia), e.g. the antisymmetric twist of a bar whose
+/// only torsional inertia is a CONM2 at mid-span. Such massless directions (mu = 0, infinite
+/// frequency) cannot be mass-normalised and are left out, as truncation would drop them first;
+/// the remaining modes are the finite-frequency ones, lowest first (omega^2 = 1 / mu).
 void frame_clamped_modes(const AicElement& e, int modes, FfrfBody& b) {
   Eigen::JacobiSVD<MatrixXd> svd(e.Phi_f, Eigen::ComputeFullV);
   const MatrixXd Q = svd.matrixV().rightCols(e.n - 6);  // Phi_f Q = 0 (Phi_f has full row rank)
   const MatrixXd Kq = Q.transpose() * e.K * Q, Mq = Q.transpose() * e.M * Q;
-  Eigen::GeneralizedSelfAdjointEigenSolver<MatrixXd> es(0.5 * (Kq + Kq.transpose()), 0.5 * (Mq + Mq.transpose()));
+  const MatrixXd Ks = 0.5 * (Kq + Kq.transpose()), Ms = 0.5 * (Mq + Mq.transpose());
+  SEFLEX_DEMAND(Eigen::LLT<MatrixXd>(Ks).info() == Eigen::Success,
+                "superelement " + e.name + ": the stiffness with the frame node held is not positive definite");
+  Eigen::GeneralizedSelfAdjointEigenSolver<MatrixXd> es(Ms, Ks);  // x^T Ks x = 1, mu ascending
   SEFLEX_DEMAND(es.info() == Eigen::Success, "frame-clamped eigenproblem of superelement " + e.name);
-  b.k = modes < 0 ? e.n - 6 : std::min(modes, e.n - 6);
-  b.V = Q * es.eigenvectors().leftCols(b.k);
-  b.omega2 = es.eigenvalues().head(b.k).cwiseMax(0.0);
+  const Eigen::VectorXd& mu = es.eigenvalues();
+  const Eigen::Index nq = mu.size();
+  const double mu_max = nq > 0 ? std::max(mu[nq - 1], 0.0) : 0.0;
+  int finite = 0;
+  while (finite < nq && mu[nq - 1 - finite] > 1e-12 * mu_max) ++finite;
+  b.k = modes < 0 ? finite : std::min(modes, finite);
+  b.V.resize(e.n, b.k);
+  b.omega2.resize(b.k);
+  for (int i = 0; i < b.k; ++i) {
+    const Eigen::Index c = nq - 1 - i;                                    // largest mu: lowest frequency
+    b.V.col(i) = Q * es.eigenvectors().col(c) / std::sqrt(mu[c]);  // x^T Mq x = mu
+    b.omega2[i] = 1.0 / mu[c];
+  }
   b.PV = e.Psi * b.V;
 }
 

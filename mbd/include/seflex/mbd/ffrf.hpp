@@ -6,7 +6,7 @@
 // Coordinates: per body a floating frame (p_WB; R_WB on SO(3), spatial rotation increments) and,
 // for a flexible body, k modal coordinates z of the superelement's Craig-Bampton basis with the
 // frame node clamped (the n - 6 dimensional null space of Phi_f, diagonalised: the lowest k
-// "frame-clamped" normal modes, mass-normalised), so that the local elastic coordinates of the
+// "frame-clamped" normal modes with mass, mass-normalised), so that the local elastic coordinates of the
 // superelement are xi = V z; per undriven hinge its angle (never wrapped). Joints: every body
 // interface is constrained to the node it sits on (6 equations), where a node is given by the first
 // body that carries it, by ground, or through its parent node and hinge (R_WC = R_WP exp(phi a~) R_PC).
@@ -29,7 +29,7 @@ namespace seflex::mbd {
 
 struct FfrfOptions {
   bool rigid = false;              ///< every flexible body rigid (mass properties only): rigid-LM
-  int modes = -1;                  ///< frame-clamped modes kept per flexible body (-1: all n - 6)
+  int modes = -1;                  ///< frame-clamped modes kept per flexible body (-1: all n - 6 that carry mass)
   bool scale_constraints = true;   ///< beta h^2 scaling of the equations of motion and multipliers
   bool condition_estimate = false; ///< 2-norm condition number of each iteration matrix (dense SVD: small models)
 };
