@@ -16,19 +16,6 @@ namespace {
 using seflex::app::UsageError;
 namespace io = seflex::io;
 
-double number_option(const std::string& opt, const std::string& v, bool positive) {
-  std::size_t pos = 0;
-  double x = 0;
-  try {
-    x = std::stod(v, &pos);
-  } catch (const std::exception&) {
-    pos = 0;
-  }
-  if (pos == 0 || pos != v.size() || !std::isfinite(x) || (positive && !(x > 0)))
-    throw UsageError("option --" + opt + " expects a number > 0, got '" + v + "'");
-  return x;
-}
-
 std::vector<int> mode_list(const std::string& v) {
   std::vector<int> out;
   std::istringstream in(v);
@@ -56,8 +43,8 @@ int run_advise(seflex::app::Args& args) {
   args.finish();
   if (!tol) throw UsageError("missing --tol ANGLE_DEG (the largest acceptable hinge-angle error, degrees)");
   io::AdviseOptions o;
-  o.tolerance = number_option("tol", *tol, true) * std::numbers::pi / 180.0;
-  if (t_end) o.t_end = number_option("t-end", *t_end, true);
+  o.tolerance = seflex::app::positive_number("tol", *tol, "a number > 0") * std::numbers::pi / 180.0;
+  if (t_end) o.t_end = seflex::app::positive_number("t-end", *t_end, "a number > 0");
   if (modes) o.few_modes = mode_list(*modes);
   const io::SceneDescription d = io::read_scene(scene_path);
   if (alternative) o.alternative = io::read_scene(*alternative);

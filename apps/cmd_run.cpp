@@ -83,18 +83,6 @@ int run_run(seflex::app::Args& args) {
   const std::string scene_path = args.positional("SCENE");
   args.finish();
   if (!out) throw UsageError("missing -o OUTDIR (the folder for the results)");
-  auto positive = [](const std::string& opt, const std::string& v) {
-    std::size_t pos = 0;
-    double x = 0;
-    try {
-      x = std::stod(v, &pos);
-    } catch (const std::exception&) {
-      pos = 0;
-    }
-    if (pos == 0 || pos != v.size() || !(x > 0) || !std::isfinite(x))
-      throw UsageError("option --" + opt + " expects a time > 0 in seconds, got '" + v + "'");
-    return x;
-  };
   if (inertia && *inertia != "simplified" && *inertia != "full")
     throw UsageError("option --inertia expects simplified or full, got '" + *inertia + "'");
   if (fidelity && *fidelity != "rigid" && *fidelity != "flexible")
@@ -106,9 +94,9 @@ int run_run(seflex::app::Args& args) {
   io::SceneDescription d = io::read_scene(scene_path);
   if (formulation != "aic" && d.method != io::IntegratorMethod::GeneralizedAlpha)
     throw UsageError("option --formulation " + formulation + " integrates with generalized-alpha only; the scene asks for integrator.method rk4");
-  if (t_end) d.integrator.t_end = positive("t-end", *t_end);
+  if (t_end) d.integrator.t_end = seflex::app::positive_number("t-end", *t_end, "a time > 0 in seconds");
   if (step) {
-    d.integrator.h_initial = positive("step", *step);
+    d.integrator.h_initial = seflex::app::positive_number("step", *step, "a time > 0 in seconds");
     d.integrator.h_min = std::min(d.integrator.h_min, d.integrator.h_initial);
   }
   for (auto& b : d.bodies) {

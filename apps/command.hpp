@@ -47,6 +47,10 @@ class Args {
   std::vector<bool> used_;
 };
 
+/// The text of option --`option` as a finite number > 0; otherwise UsageError
+/// "option --OPTION expects EXPECTED, got 'TEXT'".
+double positive_number(const std::string& option, const std::string& text, const std::string& expected);
+
 struct Command {
   std::string name, usage, summary;
   std::function<int(Args&)> run;

@@ -1,5 +1,6 @@
 // The seflex command: dispatches to the registered subcommands (cmd_*.cpp) and turns exceptions into
 // a one-line diagnosis and an exit status.
+#include <cmath>
 #include <cctype>
 #include <cstdio>
 #include <exception>
@@ -73,6 +74,19 @@ double Args::number(const std::string& name, double fallback) {
   } catch (const std::exception&) {
     throw UsageError("option --" + name + " expects a number, got '" + *v + "'");
   }
+}
+
+double positive_number(const std::string& option, const std::string& text, const std::string& expected) {
+  std::size_t pos = 0;
+  double x = 0;
+  try {
+    x = std::stod(text, &pos);
+  } catch (const std::exception&) {
+    pos = 0;
+  }
+  if (pos == 0 || pos != text.size() || !std::isfinite(x) || !(x > 0))
+    throw UsageError("option --" + option + " expects " + expected + ", got '" + text + "'");
+  return x;
 }
 
 int Args::integer(const std::string& name, int fallback) {
