@@ -9,6 +9,7 @@
 
 #include "seflex/io/scene.hpp"
 #include "seflex/io/superelement_file.hpp"
+#include "seflex/mbd/drive_profile.hpp"
 
 namespace seflex::io {
 
@@ -141,7 +142,7 @@ struct Builder {
     for (const SceneDrive& dr : d.drives) {
       if (dr.hinge != hg.name) continue;
       const double w = dr.rate, T = dr.ramp_time;
-      if (dr.kind == "spin_up") o.drive = [w, T](double t) { return spin_up_drive(w, T, t); };
+      if (dr.kind == "spin_up") o.drive = [w, T](double t) { return mbd::spin_up_drive(w, T, t); };
       else o.drive = [w](double t) { return mbd::DriveValue{w * t, w, 0.0}; };
     }
     return o;
@@ -331,20 +332,6 @@ se::Superelement keep_internal_modes(const se::Superelement& s, int modes) {
   if (modes < s.num_modes) r.truncation.first_neglected_hz = s.mode_frequencies_hz(modes);
   r.truncation.max_kept_hz = modes > 0 ? s.mode_frequencies_hz(modes - 1) : 0.0;
   return r;
-}
-
-mbd::DriveValue spin_up_drive(double w, double T, double t) {
-  mbd::DriveValue v;
-  const double c = 2.0 * M_PI / T;
-  if (t < T) {
-    v.phi = w / T * (t * t / 2.0 + (std::cos(c * t) - 1.0) / (c * c));
-    v.phidot = w / T * (t - std::sin(c * t) / c);
-    v.phiddot = w / T * (1.0 - std::cos(c * t));
-  } else {
-    v.phi = w * (t - T / 2.0);
-    v.phidot = w;
-  }
-  return v;
 }
 
 Scene build_scene(const SceneDescription& d) {

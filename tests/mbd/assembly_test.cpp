@@ -8,7 +8,7 @@
 
 #include <random>
 
-#include "beam_superelement.hpp"
+#include "mbd_models.hpp"
 #include "seflex/common/so3.hpp"
 #include "seflex/mbd/assembly.hpp"
 
@@ -190,14 +190,8 @@ TEST(Assembly, GyroscopicMatrixIsTheVelocityDerivative) {
 // softening of the inertia forces is as large as the elastic stiffness of the first bending mode
 // (omega_1 = 3.8 rad/s), so a missing or wrong inertial term would show in the iteration matrix.
 TEST(Assembly, DynamicTangentMatchesFiniteDifferencesAtHighSpin) {
-  const double L = 10.0, EI = 1.4e4, EA = 2.8e7, rhoA = 1.2, Omega = 9.0;
-  test::BeamSection sec;
-  sec.A = 1e-3;
-  sec.E = EA / sec.A;
-  sec.G = sec.E / 2.6;
-  sec.Iz = sec.Iy = EI / sec.E;
-  sec.J = 2 * sec.Iz;
-  sec.rho = rhoA / sec.A;
+  const double L = 10.0, Omega = 9.0;
+  const test::BeamSection sec = test::spinup_section(1e-3);
   auto fe = test::straight_beam(L, 10, sec);
   const se::Superelement s = test::craig_bampton(fe, {0, 10}, 5, 6, "spinup");
   ModelBuilder mb;

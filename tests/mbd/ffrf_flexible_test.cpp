@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "mbd_models.hpp"
+#include "seflex/mbd/drive_profile.hpp"
 #include "seflex/mbd/ffrf.hpp"
 
 using namespace seflex;
@@ -198,14 +199,7 @@ TEST(FfrfFlexible, LockAndCableTorquesMatchAic) {
 namespace {
 
 // Simo and Vu-Quoc's hub angle (bench/study/spinup.yaml): spin-up to 6 rad/s over 15 s.
-DriveValue spinup_hub(double t) {
-  DriveValue d;
-  const double Ts = 15, ws = 6, c = 2 * M_PI / Ts;
-  d.phi = ws / Ts * (t * t / 2 + (std::cos(c * t) - 1) / (c * c));
-  d.phidot = ws / Ts * (t - std::sin(c * t) / c);
-  d.phiddot = ws / Ts * (1 - std::cos(c * t));
-  return d;
-}
+DriveValue spinup_hub(double t) { return spin_up_drive(6.0, 15.0, t); }
 
 // The spin-up beam as bench/study/spinup.yaml has it (spinup_beam.bdf reduced by `seflex reduce
 // --interface 1,11 --modes 6`): one superelement of 10 bars, interfaces hub and tip, frame node at
@@ -214,14 +208,8 @@ DriveValue spinup_hub(double t) {
 // CONM2 at mid-span, so the antisymmetric twist (hub and tip turned opposite ways about the axis,
 // mid-span still) carries no mass: the frame-clamped mass matrix is singular.
 Model spinup_beam_model() {
-  const double L = 10.0, EI = 1.4e4, EA = 2.8e7, rhoA = 1.2;
-  test::BeamSection sec;
-  sec.A = 1e-2;
-  sec.E = EA / sec.A;
-  sec.G = sec.E / 2.6;
-  sec.Iz = sec.Iy = EI / sec.E;
-  sec.J = 2 * sec.Iz;
-  sec.rho = rhoA / sec.A;
+  const double L = 10.0;
+  const test::BeamSection sec = test::spinup_section(1e-2);
   auto fe = test::straight_beam(L, 10, sec, Eigen::Vector3d::UnitX(), false);
   test::assemble(fe);
   for (int i = 0; i < fe.nodes(); ++i) {

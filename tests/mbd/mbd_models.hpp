@@ -27,6 +27,20 @@ inline se::Superelement rod(double L, double m, const std::string& name = "rod")
   return s;
 }
 
+/// The spin-up beam of Simo and Vu-Quoc (1986): EI = 1.4e4 N m^2, EA = 2.8e7 N, rho A = 1.2 kg/m
+/// (L = 10 m), as a section of the given area (the area sets only the torsion and rotary terms).
+inline BeamSection spinup_section(double area) {
+  const double EI = 1.4e4, EA = 2.8e7, rhoA = 1.2;
+  BeamSection sec;
+  sec.A = area;
+  sec.E = EA / sec.A;
+  sec.G = sec.E / 2.6;
+  sec.Iz = sec.Iy = EI / sec.E;
+  sec.J = 2 * sec.Iz;
+  sec.rho = rhoA / sec.A;
+  return sec;
+}
+
 /// Keeps every sample.
 struct Recorder : mbd::Observer {
   std::vector<mbd::Sample> samples;

@@ -7,6 +7,7 @@
 #include "mbd_models.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/common/so3.hpp"
+#include "seflex/mbd/drive_profile.hpp"
 #include "seflex/mbd/integrator.hpp"
 
 using namespace seflex;
@@ -17,19 +18,7 @@ using Eigen::Vector3d;
 namespace {
 
 // Hub angle of Simo and Vu-Quoc: spin-up to 6 rad/s over 15 s, then constant rate.
-DriveValue hub(double t) {
-  DriveValue d;
-  const double Ts = 15, ws = 6, c = 2 * M_PI / Ts;
-  if (t < Ts) {
-    d.phi = ws / Ts * (t * t / 2 + (std::cos(c * t) - 1) / (c * c));
-    d.phidot = ws / Ts * (t - std::sin(c * t) / c);
-    d.phiddot = ws / Ts * (1 - std::cos(c * t));
-  } else {
-    d.phi = ws * (t - Ts / 2);
-    d.phidot = ws;
-  }
-  return d;
-}
+DriveValue hub(double t) { return spin_up_drive(6.0, 15.0, t); }
 
 struct SpinupHistory {
   std::vector<double> t, v, u;  // tip transverse and axial displacement in the hub frame
@@ -38,14 +27,8 @@ struct SpinupHistory {
 // L = 10 m, EI = 1.4e4 N m^2, EA = 2.8e7 N, rho A = 1.2 kg/m, cut into `bodies` AIC superelements
 // of 2 FE elements each, on a driven hub hinge.
 SpinupHistory spinup(int bodies, InertiaModel inertia) {
-  const double L = 10.0, EI = 1.4e4, EA = 2.8e7, rhoA = 1.2;
-  test::BeamSection sec;
-  sec.A = 1e-3;
-  sec.E = EA / sec.A;
-  sec.G = sec.E / 2.6;
-  sec.Iz = sec.Iy = EI / sec.E;
-  sec.J = 2 * sec.Iz;
-  sec.rho = rhoA / sec.A;
+  const double L = 10.0;
+  const test::BeamSection sec = test::spinup_section(1e-3);
   auto fe = test::straight_beam(L / bodies, 2, sec);
   const se::Superelement s = test::craig_bampton(fe, {0, 2}, 1, 0, "segment");
   ModelBuilder mb;

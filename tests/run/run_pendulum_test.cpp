@@ -8,6 +8,7 @@
 
 #include "scene_fixture.hpp"
 #include "seflex/io/scene.hpp"
+#include "seflex/mbd/drive_profile.hpp"
 #include "seflex/mbd/integrator.hpp"
 #include "seflex/mbd/model.hpp"
 #include "seflex/mbd/state.hpp"
@@ -235,7 +236,7 @@ output: {interval: 0.01}
     EXPECT_NEAR(N[i], T1[i] - T2[i], 1e-12 * (1 + std::abs(N[i])));
     EXPECT_NEAR(tau1[i], -N[i] * 0.04, 1e-12);
     EXPECT_NEAR(tau2[i], N[i] * 0.02, 1e-12);
-    EXPECT_NEAR(hub[i], io::spin_up_drive(60.0, 0.5, t[i]).phi, 1e-9);  // degrees in, degrees out
+    EXPECT_NEAR(hub[i], mbd::spin_up_drive(60.0, 0.5, t[i]).phi, 1e-9);  // degrees in, degrees out
     maxN = std::max(maxN, std::abs(N[i]));
   }
   EXPECT_GT(maxN, 0.1);            // the spring pulls the cable

@@ -140,8 +140,4 @@ Scene build_scene(const SceneDescription& description);
 /// Craig-Bampton basis: K, M, Phi_f, recovery lose the trailing columns).
 se::Superelement keep_internal_modes(const se::Superelement& s, int modes);
 
-/// Hub angle of the spin-up drive of Simo and Vu-Quoc (1986): rate w ramped over T with
-/// phi = w/T (t^2/2 + (cos(2 pi t/T) - 1)/(2 pi/T)^2) for t < T, then w (t - T/2).
-mbd::DriveValue spin_up_drive(double rate, double ramp_time, double t);
-
 }  // namespace seflex::io
