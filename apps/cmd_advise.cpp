@@ -57,16 +57,18 @@ int run_advise(seflex::app::Args& args) {
     std::printf("horizon: %.4g s (first lock of the finest model: %s)\n", r.horizon, r.horizon_lock.c_str());
   else
     std::printf("horizon: %.4g s\n", r.horizon);
-  std::printf("\n%-48s %6s %10s %7s %14s  %s\n", "variant", "dofs", "CPU [s]", "steps", "max err [deg]", "within");
+  std::printf("\n%-48s %8s %10s %7s %14s  %s\n", "variant", "unknowns", "CPU [s]", "steps", "max err [deg]", "within");
   for (std::size_t i = 0; i < r.rows.size(); ++i) {
     const io::AdviseRow& row = r.rows[i];
     char err[32];
     if (row.reference) std::snprintf(err, sizeof err, "(reference)");
     else if (!row.ran) std::snprintf(err, sizeof err, "failed");
     else std::snprintf(err, sizeof err, "%.3g", row.max_error * deg);
-    std::printf("%-48s %6d %10.3f %7ld %14s  %s%s\n", row.name.c_str(), row.dofs, row.cpu_seconds, row.steps, err,
+    const std::string unknowns = std::to_string(row.dofs) + (row.multipliers > 0 ? "+" + std::to_string(row.multipliers) : "");
+    std::printf("%-48s %8s %10.3f %7ld %14s  %s%s\n", row.name.c_str(), unknowns.c_str(), row.cpu_seconds, row.steps, err,
                 row.within ? "yes" : "no", static_cast<int>(i) == r.recommended ? "  <- recommended" : "");
   }
+  std::printf("(unknowns: dofs of the AIC variants; coordinates + Lagrange multipliers of FFRF-LM and rigid-LM)\n");
   for (const auto& row : r.rows)
     if (!row.ran && !row.reference) std::printf("  %s: %s\n", row.name.c_str(), row.failure.c_str());
   const io::AdviseRow& best = r.rows.at(static_cast<std::size_t>(r.recommended));
@@ -76,11 +78,11 @@ int run_advise(seflex::app::Args& args) {
   if (csv) {
     std::ofstream f(*csv);
     if (!f) throw seflex::InputError("option --csv: cannot write " + *csv);
-    f << "variant,reference,dofs,ran,cpu_seconds,steps,max_error_deg,worst_hinge,worst_time,within,recommended\n";
+    f << "variant,reference,dofs,multipliers,ran,cpu_seconds,steps,max_error_deg,worst_hinge,worst_time,within,recommended\n";
     f.precision(10);
     for (std::size_t i = 0; i < r.rows.size(); ++i) {
       const io::AdviseRow& row = r.rows[i];
-      f << '"' << row.name << "\"," << row.reference << ',' << row.dofs << ',' << row.ran << ',' << row.cpu_seconds << ','
+      f << '"' << row.name << "\"," << row.reference << ',' << row.dofs << ',' << row.multipliers << ',' << row.ran << ',' << row.cpu_seconds << ','
         << row.steps << ',' << row.max_error * deg << ',' << row.worst_hinge << ',' << row.worst_time << ',' << row.within << ','
         << (static_cast<int>(i) == r.recommended) << '\n';
     }
@@ -92,6 +94,6 @@ int run_advise(seflex::app::Args& args) {
 
 SEFLEX_COMMAND(advise, "SCENE --tol ANGLE_DEG [--t-end T] [--alternative SCENE2] [--modes K1,K2] [--csv FILE]",
                "the cheapest model of a scene (rigid; fewer internal modes; simplified mass; an alternative "
-               "reduction) whose hinge angles stay within ANGLE_DEG of the finest model (flexible, full inertia, "
+               "reduction; the classic floating frame FFRF-LM and rigid-LM with Lagrange multipliers) whose hinge angles stay within ANGLE_DEG of the finest model (flexible, full inertia, "
                "all modes) up to its first lock (or T), with the evidence table",
                run_advise);

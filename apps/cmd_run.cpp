@@ -14,7 +14,6 @@
 #include "seflex/io/run_output.hpp"
 #include "seflex/io/scene.hpp"
 #include "seflex/io/solve_scene.hpp"
-#include "seflex/mbd/ffrf.hpp"
 #include "seflex/mbd/integrator.hpp"
 #include "seflex/mbd/state.hpp"
 
@@ -56,20 +55,6 @@ class Progress : public mbd::Observer {
   std::chrono::steady_clock::time_point last_{};
 };
 
-/// The seam where the solvers of seflex are chosen (`--formulation`: aic with the scene's
-/// integrator.method, or the floating-frame and rigid-body baselines with Lagrange multipliers);
-/// every solver reports to the same observer.
-mbd::RunStats solve(const io::Scene& scene, const mbd::IntegratorSettings& settings, const std::string& formulation,
-                    mbd::Observer* observer) {
-  if (formulation == "aic") return io::solve_scene(scene, settings, observer);
-  mbd::FfrfOptions fo;
-  fo.rigid = formulation == "rigid-lm";
-  const mbd::FfrfStats st = mbd::simulate_ffrf(scene.model, settings, fo, observer);
-  std::printf("  %s: %d coordinates, %d multipliers; largest constraint drift %.2e m, %.2e rad (%.2e m/s)\n",
-              formulation.c_str(), st.coordinates, st.constraints, st.drift_position, st.drift_rotation, st.drift_velocity);
-  return st.run;
-}
-
 int run_run(seflex::app::Args& args) {
   std::optional<std::string> out = args.value("-o");
   if (!out) out = args.value("output");
@@ -78,7 +63,7 @@ int run_run(seflex::app::Args& args) {
   const auto step = args.value("step");
   const auto inertia = args.value("inertia");
   const auto fidelity = args.value("fidelity");
-  const std::string formulation = args.value("formulation").value_or("aic");
+  const std::string formulation_arg = args.value("formulation").value_or("aic");
   const bool no_animation = args.flag("no-animation");
   const std::string scene_path = args.positional("SCENE");
   args.finish();
@@ -87,13 +72,16 @@ int run_run(seflex::app::Args& args) {
     throw UsageError("option --inertia expects simplified or full, got '" + *inertia + "'");
   if (fidelity && *fidelity != "rigid" && *fidelity != "flexible")
     throw UsageError("option --fidelity expects rigid or flexible, got '" + *fidelity + "'");
-  if (formulation != "aic" && formulation != "ffrf-lm" && formulation != "rigid-lm")
-    throw UsageError("option --formulation expects aic, ffrf-lm or rigid-lm, got '" + formulation + "'");
+  io::Formulation formulation = io::Formulation::Aic;
+  if (formulation_arg == "ffrf-lm") formulation = io::Formulation::FfrfLm;
+  else if (formulation_arg == "rigid-lm") formulation = io::Formulation::RigidLm;
+  else if (formulation_arg != "aic")
+    throw UsageError("option --formulation expects aic, ffrf-lm or rigid-lm, got '" + formulation_arg + "'");
   io::RunOutput::check_folder(*out, force);  // before the work, not after it
 
   io::SceneDescription d = io::read_scene(scene_path);
-  if (formulation != "aic" && d.method != io::IntegratorMethod::GeneralizedAlpha)
-    throw UsageError("option --formulation " + formulation + " integrates with generalized-alpha only; the scene asks for integrator.method rk4");
+  if (formulation != io::Formulation::Aic && d.method != io::IntegratorMethod::GeneralizedAlpha)
+    throw UsageError("option --formulation " + formulation_arg + " integrates with generalized-alpha only; the scene asks for integrator.method rk4");
   if (t_end) d.integrator.t_end = seflex::app::positive_number("t-end", *t_end, "a time > 0 in seconds");
   if (step) {
     d.integrator.h_initial = seflex::app::positive_number("step", *step, "a time > 0 in seconds");
@@ -119,7 +107,14 @@ int run_run(seflex::app::Args& args) {
   io::RunEnd end;
   const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   try {
-    end.stats = solve(scene, d.integrator, formulation, &progress);
+    const io::SceneRun r = io::solve_scene(scene, d.integrator, formulation, &progress);
+    end.stats = r.run;
+    if (r.ffrf) {
+      progress.done();
+      std::printf("  %s: %d coordinates, %d multipliers; largest constraint drift %.2e m, %.2e rad (%.2e m/s)\n",
+                  formulation_arg.c_str(), r.ffrf->coordinates, r.ffrf->constraints, r.ffrf->drift_position,
+                  r.ffrf->drift_rotation, r.ffrf->drift_velocity);
+    }
   } catch (const seflex::Error& e) {
     // Everything computed so far is on disk; say where it stopped and why.
     progress.done();

@@ -21,6 +21,7 @@ struct Variant {
   std::string name;
   bool reference = false;
   SceneDescription scene;
+  Formulation formulation = Formulation::Aic;
 };
 
 /// Hinge angles at every sample; optionally asks to stop at the first lock that latches.
@@ -120,6 +121,10 @@ AdviseReport advise(const SceneDescription& scene, const AdviseOptions& o) {
   std::vector<Variant> variants;
   add_ladder(variants, scene, modes_in_files(ref_scene), o.few_modes, "", true);
   variants.push_back({"rigid", false, with_bodies(scene, Fidelity::Rigid, mbd::InertiaModel::Simplified, {})});
+  // The baselines of the classic floating frame with Lagrange multipliers (docs/ffrf.md): the
+  // finest model's bodies and modes, and rigid bodies.
+  variants.push_back({"FFRF-LM / flexible / all modes", false, finest, Formulation::FfrfLm});
+  variants.push_back({"rigid-LM", false, finest, Formulation::RigidLm});
   if (o.alternative) {
     const Scene alt = build_scene(with_bodies(*o.alternative, Fidelity::Flexible, mbd::InertiaModel::Full, {}));
     for (const auto& h : ref_scene.model.hinges) {
@@ -141,7 +146,7 @@ AdviseReport advise(const SceneDescription& scene, const AdviseOptions& o) {
     row.name = variants[0].name;
     row.reference = true;
     row.dofs = ref_scene.model.num_dofs;
-    const mbd::RunStats st = solve_scene(ref_scene, base, &ref);  // the reference must run
+    const mbd::RunStats st = solve_scene(ref_scene, base, Formulation::Aic, &ref).run;  // the reference must run
     row.cpu_seconds = cpu_now() - c0;
     row.steps = st.steps;
     row.ran = true;
@@ -164,7 +169,12 @@ AdviseReport advise(const SceneDescription& scene, const AdviseOptions& o) {
       row.dofs = s.model.num_dofs;
       const double c0 = cpu_now();
       try {
-        const mbd::RunStats st = solve_scene(s, short_run, &rec);
+        const SceneRun run = solve_scene(s, short_run, variants[v].formulation, &rec);
+        const mbd::RunStats& st = run.run;
+        if (run.ffrf) {
+          row.dofs = run.ffrf->coordinates;
+          row.multipliers = run.ffrf->constraints;
+        }
         row.steps = st.steps;
         row.ran = true;
       } catch (const ConvergenceError& e) {

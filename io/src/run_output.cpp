@@ -83,7 +83,10 @@ RunOutput::RunOutput(const Scene& scene, const RunOutputOptions& o) : scene_(sce
 
   history_ = open(folder_ / "history.csv");
   history_ << "t";
-  for (const auto& h : m.hinges) history_ << "," << h.name << ".phi_deg," << h.name << ".rate_deg_s";
+  for (const auto& h : m.hinges) {
+    history_ << "," << h.name << ".phi_deg," << h.name << ".rate_deg_s";
+    if (h.drive) history_ << "," << h.name << ".drive_torque";
+  }
   for (std::size_t i = 0; i < m.force_elements.size(); ++i) {
     const auto& fe = m.force_elements[i];
     if (const auto* c = as_cable(fe.element)) {
@@ -163,7 +166,11 @@ void RunOutput::track_locks(const mbd::Model& model, const mbd::Sample& s) {
 
 void RunOutput::write_history(const mbd::Model& m, const mbd::Sample& s) {
   std::string row = num(s.t);
-  for (const auto& h : s.hinges) row += "," + num(h.phi * kRad2Deg) + "," + num(h.phidot * kRad2Deg);
+  for (std::size_t i = 0; i < s.hinges.size(); ++i) {
+    const mbd::HingeSample& h = s.hinges[i];
+    row += "," + num(h.phi * kRad2Deg) + "," + num(h.phidot * kRad2Deg);
+    if (m.hinges[i].drive) row += "," + num(h.drive_torque);
+  }
   for (std::size_t i = 0; i < m.force_elements.size(); ++i) {
     const mbd::ElementSample& e = s.elements[i];
     row += "," + num(e.value);

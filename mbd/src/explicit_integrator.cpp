@@ -20,6 +20,7 @@ namespace {
 void accelerations(const Model& model, State& s, Data& data, Eigen::SparseMatrix<double>& M, long& factorizations) {
   s.vdot.setZero();
   assemble(model, s, data, AssemblyOptions{});
+  if (model.num_dofs == 0) return;  // fully prescribed motion: nothing to solve for
   combine_matrices(model, data, 0.0, 0.0, 1.0, nullptr, M);
   if (!data.analyzed) {
     data.lu.analyzePattern(M);

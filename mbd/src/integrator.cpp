@@ -55,6 +55,15 @@ StepResult newton_step(const Model& model, const State& s0, double h, const Coef
   double inc = std::numeric_limits<double>::infinity();
   double r_prev = std::numeric_limits<double>::infinity();
   bool fresh = false;  // the factorisation belongs to this step
+  if (model.num_dofs == 0) {
+    // Fully prescribed motion (e.g. a rigid body on a driven hinge): the configuration is the
+    // drives' at t0 + h; assembling evaluates it and the drive torques (inverse dynamics).
+    configure(model, s0, c, h, hDq, s1);
+    opt.matrices = false;
+    assemble(model, s1, data, opt);
+    out.converged = true;
+    return out;
+  }
   for (int it = 0; it <= st.newton_max_iterations; ++it) {
     configure(model, s0, c, h, hDq, s1);
     // Modified Newton: keep the iteration matrix while the residual falls fast enough.
@@ -172,13 +181,15 @@ void initial_accelerations(const Model& model, State& s, Data& data) {
   AssemblyOptions opt;
   assemble(model, s, data, opt);
   Eigen::SparseMatrix<double> S;
-  combine_matrices(model, data, 0.0, 0.0, 1.0, nullptr, S);
-  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
-  lu.compute(S);
-  if (lu.info() != Eigen::Success)
-    throw ConvergenceError("the mass matrix at t = " + std::to_string(s.t) + " s is singular (" +
-                           detail::describe_singular(model, S) + "): every dof needs mass");
-  s.vdot = lu.solve(-data.residual);
+  if (model.num_dofs > 0) {  // else: fully prescribed motion, no accelerations to solve for
+    combine_matrices(model, data, 0.0, 0.0, 1.0, nullptr, S);
+    Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
+    lu.compute(S);
+    if (lu.info() != Eigen::Success)
+      throw ConvergenceError("the mass matrix at t = " + std::to_string(s.t) + " s is singular (" +
+                             detail::describe_singular(model, S) + "): every dof needs mass");
+    s.vdot = lu.solve(-data.residual);
+  }
   s.a = s.vdot;
   for (std::size_t b = 0; b < model.flexible_bodies.size(); ++b) s.frames[b] = data.flex[b].kin.frame;
   assemble(model, s, data, AssemblyOptions{false, true, 1.0});

@@ -100,6 +100,23 @@ TEST(Advise, SoftLinkNeedsFlexibility) {
   EXPECT_LE(best.max_error, o.tolerance);
   // The ladder converges: fewer modes never beat more modes by much on the same inertia model.
   EXPECT_LE(row(r, "flexible / full inertia / 2 modes").max_error, row(r, "flexible / full inertia / 0 modes").max_error * 1.5);
+  // The other formulations of the same models: the classic floating frame on the finest model's
+  // superelement captures the sag (its difference from AIC is the formulations' and the
+  // integrators' error, a small fraction of the rigid error), and rigid bodies with multipliers
+  // miss it exactly as AIC's rigid body does (the same rigid dynamics, two sets of coordinates).
+  const io::AdviseRow& ffrf = row(r, "FFRF-LM / flexible / all modes");
+  const io::AdviseRow& rigid_lm = row(r, "rigid-LM");
+  ASSERT_TRUE(ffrf.ran) << ffrf.failure;
+  ASSERT_TRUE(rigid_lm.ran) << rigid_lm.failure;
+  std::printf("soft link: rigid %.4f deg, rigid-LM %.4f deg, FFRF-LM %.2e deg (%d coordinates + %d multipliers)\n",
+              rigid.max_error / kDeg, rigid_lm.max_error / kDeg, ffrf.max_error / kDeg, ffrf.dofs, ffrf.multipliers);
+  EXPECT_TRUE(ffrf.within);
+  EXPECT_LT(ffrf.max_error, 0.02 * rigid.max_error);
+  EXPECT_EQ(ffrf.multipliers, 6);            // one hinge to ground: 6 constraint equations
+  EXPECT_EQ(ffrf.dofs, 6 + (12 + 4 - 6) + 1);  // frame, frame-clamped modes of the 12 interface dofs
+                                               // and 4 internal modes, hinge angle
+  EXPECT_NEAR(rigid_lm.max_error, rigid.max_error, 0.02 * rigid.max_error);
+  EXPECT_FALSE(rigid_lm.within);
 }
 
 TEST(Advise, CommandLineTableAndBadOptions) {
@@ -111,7 +128,7 @@ TEST(Advise, CommandLineTableAndBadOptions) {
   EXPECT_NE(r.out.find("recommended: "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("horizon: 0.2 s"), std::string::npos) << r.out;
   const Csv csv = read_csv(dir / "advise.csv");
-  EXPECT_EQ(csv.rows.size(), 5u);  // reference, 0 modes, simplified all/0 modes, rigid
+  EXPECT_EQ(csv.rows.size(), 7u);  // reference, 0 modes, simplified all/0 modes, rigid, FFRF-LM, rigid-LM
   double recommended = 0;
   for (double x : csv.column("recommended")) recommended += x;
   EXPECT_EQ(recommended, 1.0);

@@ -1,7 +1,8 @@
 #pragma once
 // Model no more than a scene needs: a short study of cheaper variants of a scene (all bodies
 // rigid; fewer internal modes; the simplified mass; an alternative reduction such as beam-like
-// superelements for 3D ones), each compared with the finest variant (every body flexible, full
+// superelements for 3D ones; the classic floating frame and rigid bodies with Lagrange multipliers,
+// FFRF-LM and rigid-LM, as other formulations of the finest model), each compared with the finest variant (every body flexible, full
 // inertia, all internal modes of the scene as written) on the hinge angles over a short horizon
 // (up to the finest variant's first lock, or a given end time). The cheapest variant (CPU time)
 // whose largest hinge-angle difference stays within the tolerance is recommended; the evidence
@@ -26,9 +27,10 @@ struct AdviseOptions {
 };
 
 struct AdviseRow {
-  std::string name;               ///< e.g. "rigid", "flexible / full inertia / 2 modes", "alternative: ..."
+  std::string name;               ///< e.g. "rigid", "flexible / full inertia / 2 modes", "FFRF-LM / flexible / all modes", "alternative: ..."
   bool reference = false;        ///< the finest variant (flexible / full inertia / all modes)
-  int dofs = 0;
+  int dofs = 0;                   ///< unknowns of the motion (FFRF-LM, rigid-LM: coordinates)
+  int multipliers = 0;            ///< Lagrange multipliers (FFRF-LM, rigid-LM)
   bool ran = false;              ///< built and integrated to the horizon
   std::string failure;           ///< why not (build or convergence error)
   double cpu_seconds = 0.0;      ///< process CPU time of the integration (not the file loading)
