@@ -7,14 +7,15 @@ one curve per formulation, Pareto front).
 
 Cases and formulations:
   spin-up beam (bench/study/spinup.yaml, Simo and Vu-Quoc): AIC full inertia (local error 1e-4..1e-6),
-    AIC simplified mass, rigid, RK4 (explicit, constant steps); error: max |lag - lag_ref| of the
-    beam's floating frame behind the hub [deg] (the deflection; rigid: the whole lag).
+    AIC simplified mass, rigid (0 dofs: the prescribed motion), RK4 (explicit, constant steps); error:
+    max |lag - lag_ref| of the beam's floating frame behind the hub [deg] (the deflection; rigid and
+    rigid-LM: the whole lag).
   solar array, sync and unsync (examples/solar_array, superelements reduced as scripts/demo.sh does):
     AIC full inertia and simplified mass on the 3D and beam-like reductions (local error 1e-4, 1e-5),
     rigid; errors: max hinge-line angle difference up to the reference's last lock [deg], largest
     lock-time difference [s], largest relative peak lock-torque difference.
   FFRF-LM (seflex run --formulation ffrf-lm; spin-up: local error 1e-4..1e-7; arrays: 3D 1e-4..1e-6 and
-    beam-like 1e-4) and rigid-LM (arrays, 1e-4 and 1e-5) are included when the binary offers them
+    beam-like 1e-4) and rigid-LM (spin-up 1e-6; arrays, 1e-4 and 1e-5) are included when the binary offers them
     (otherwise skipped, and said so). A run longer than --timeout (300 s) is stopped: status timeout.
 Reference: the finest AIC full-inertia run (3D, local error 1e-6); cross-checked against the finest
 FFRF-LM run when there is one (printed as a note: its errors, and FFRF-LM's next run against it). --quick: the spin-up beam only, 3 s, four runs (a CTest).
@@ -208,6 +209,7 @@ def main():
         if st.has_ffrf:
             for tol in (1e-7, 1e-6, 1e-5, 1e-4):
                 st.run("spinup", "FFRF-LM", f"tol {tol:g}", edit_scene(base, tol=tol), sd, ["--formulation", "ffrf-lm"])
+            st.run("spinup", "rigid-LM", "tol 1e-6", edit_scene(base, tol=1e-6), sd, ["--formulation", "rigid-lm"])
     if ref["status"] != "ok":
         sys.exit("study: the spin-up reference run failed: " + ref["message"])
     lag_ref = spinup_lag(ref["folder"])
