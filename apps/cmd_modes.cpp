@@ -45,9 +45,9 @@ int run_modes(seflex::app::Args& args) {
     if (count < 1) throw UsageError("option --count must be at least 1");
     o.count = count;
   }
-  const std::string solver = args.value_or("eigensolver", "spectra");
+  const std::string solver = args.value_or("eigensolver", std::string(seflex::reduction::to_string(o.backend)));
   const auto backend = seflex::reduction::parse_eigen_backend(solver);
-  if (!backend) throw UsageError("option --eigensolver expects spectra, arpack or dense, got '" + solver + "'");
+  if (!backend) throw UsageError("option --eigensolver expects block, spectra, arpack or dense, got '" + solver + "'");
   o.backend = *backend;
   const std::string fact = args.value_or("factorization", std::string(seflex::reduction::to_string(o.factorization)));
   const auto factorization = seflex::reduction::parse_factorization_backend(fact);
@@ -77,7 +77,7 @@ int run_modes(seflex::app::Args& args) {
   if (r.selection.spc) std::printf(", SPC %d", *r.selection.spc);
   std::printf("\n  %zu grids, %ld free dofs, %ld modes, normalisation %s\n", model.grids.size(), static_cast<long>(r.n_free),
               static_cast<long>(r.eigenvalues.size()), normalization_name(r.normalization));
-  std::printf("  eigensolver %s on %s, shift %.6E, %ld solves, %d Lanczos runs%s\n",
+  std::printf("  eigensolver %s on %s, shift %.6E, %ld solved columns, %d Lanczos runs%s\n",
               std::string(to_string(r.stats.backend_used)).c_str(), std::string(to_string(o.factorization)).c_str(),
               r.stats.shift, r.stats.operator_applications, r.stats.lanczos_runs,
               r.stats.missed_modes_recovered ? (", " + std::to_string(r.stats.missed_modes_recovered) + " recovered by the completeness check").c_str() : "");
@@ -86,6 +86,9 @@ int run_modes(seflex::app::Args& args) {
               "completeness check %.2f, Rayleigh-Ritz %.2f; nnz(L) %.3g)\n",
               seconds(t0, t1), seconds(t1, t2), st.seconds_factorization, st.seconds_calibration, st.seconds_lanczos,
               st.seconds_check, st.seconds_postprocess, st.factorization.factor_nonzeros);
+  std::printf("  factorisation: ordering %.2f s, symbolic %.2f s, numeric %.2f s; %d solves of %ld columns in %.2f s\n",
+              st.factorization.seconds_ordering, st.factorization.seconds_symbolic, st.factorization.seconds_numeric,
+              st.factorization.solve_calls, st.factorization.solve_columns, st.factorization.seconds_solve);
   print_table(r);
   std::fflush(stdout);
 
@@ -104,7 +107,7 @@ int run_modes(seflex::app::Args& args) {
 
 }  // namespace
 
-SEFLEX_COMMAND(modes, "DECK [--count N] [--csv FILE] [--vtk FILE.vtu] [--eigensolver spectra|arpack|dense] "
+SEFLEX_COMMAND(modes, "DECK [--count N] [--csv FILE] [--vtk FILE.vtu] [--eigensolver block|spectra|arpack|dense] "
                       "[--factorization cholmod|ldlt] [--subcase ID] [--force]",
                "normal modes (SOL 103): Nastran-style eigenvalue table, CSV of frequencies, mode shapes for ParaView",
                run_modes);

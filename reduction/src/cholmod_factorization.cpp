@@ -3,6 +3,7 @@
 // then CHOLMOD's weighted postordering; supernodal L L^T with BLAS-3 (OpenBLAS) for factorisation and multi-column solves.
 #include <cholmod.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -13,6 +14,9 @@
 
 namespace seflex::reduction {
 namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 class CholmodFactorization final : public SparseFactorization {
  public:
@@ -40,18 +44,30 @@ class CholmodFactorization final : public SparseFactorization {
 
   void factorize(const SparseMatrixd& A) override {
     SEFLEX_DEMAND(A.rows() == A.cols(), "factorize: matrix must be square");
+    auto t0 = Clock::now();
     const bool same_pattern = copy_lower(A);
     cholmod_sparse S = view();
     if (factor_ == nullptr || !same_pattern) {
       if (factor_ != nullptr) cholmod_l_free_factor(&factor_, &common_);
       free_workspace();
+      stats_.seconds_numeric += seconds_since(t0);
+      t0 = Clock::now();
       std::vector<std::int64_t> perm = nested_dissection_ordering(A);
       std::vector<SuiteSparse_long> user_perm(perm.begin(), perm.end());
+      stats_.seconds_ordering += seconds_since(t0);
+      t0 = Clock::now();
       factor_ = cholmod_l_analyze_p(&S, user_perm.data(), nullptr, 0, &common_);
       check_status("cholmod_l_analyze");
       SEFLEX_DEMAND(factor_ != nullptr, "cholmod_l_analyze returned no factor");
       ++stats_.symbolic_analyses;
+      stats_.seconds_symbolic += seconds_since(t0);
+      t0 = Clock::now();
     }
+    struct AddTime {
+      double& total;
+      Clock::time_point t;
+      ~AddTime() { total += seconds_since(t); }
+    } add_time{stats_.seconds_numeric, t0};
     cholmod_l_factorize(&S, factor_, &common_);
     ++stats_.numeric_factorizations;
     stats_.rows = A.rows();
@@ -74,6 +90,7 @@ class CholmodFactorization final : public SparseFactorization {
     SEFLEX_DEMAND(factorized_, "solve before a successful factorize");
     SEFLEX_DEMAND(B.rows() == stats_.rows, "solve: right-hand side has the wrong number of rows");
     if (B.cols() == 0 || B.rows() == 0) return;
+    const auto t0 = Clock::now();
     cholmod_dense rhs{};
     rhs.nrow = static_cast<size_t>(B.rows());
     rhs.ncol = static_cast<size_t>(B.cols());
@@ -87,6 +104,9 @@ class CholmodFactorization final : public SparseFactorization {
     const auto* x = static_cast<const double*>(x_->x);
     for (Eigen::Index j = 0; j < B.cols(); ++j)
       std::memcpy(B.col(j).data(), x + static_cast<size_t>(j) * x_->d, sizeof(double) * static_cast<size_t>(B.rows()));
+    stats_.seconds_solve += seconds_since(t0);
+    stats_.solve_columns += B.cols();
+    ++stats_.solve_calls;
   }
 
  private:

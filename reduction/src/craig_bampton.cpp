@@ -7,7 +7,7 @@
 #include <cmath>
 #include <string>
 
-#include "craig_bampton_modes.hpp"
+#include "block_lanczos.hpp"
 #include "seflex/common/error.hpp"
 
 namespace seflex::reduction {

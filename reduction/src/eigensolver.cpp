@@ -12,6 +12,7 @@
 #include <random>
 #include <vector>
 
+#include "block_lanczos.hpp"
 #include "matrix_norms.hpp"
 #include "shift_invert.hpp"
 
@@ -22,6 +23,7 @@ std::string_view to_string(EigenBackend backend) {
     case EigenBackend::Spectra: return "spectra";
     case EigenBackend::Arpack: return "arpack";
     case EigenBackend::Dense: return "dense";
+    case EigenBackend::Block: return "block";
   }
   return "?";
 }
@@ -30,6 +32,7 @@ std::optional<EigenBackend> parse_eigen_backend(std::string_view name) {
   if (name == "spectra") return EigenBackend::Spectra;
   if (name == "arpack") return EigenBackend::Arpack;
   if (name == "dense") return EigenBackend::Dense;
+  if (name == "block") return EigenBackend::Block;
   return std::nullopt;
 }
 
@@ -70,16 +73,6 @@ SparseMatrixd shifted_lower(const SparseMatrixd& K, const SparseMatrixd& M, doub
   SparseMatrixd A = SparseMatrixd(K.triangularView<Eigen::Lower>()) - sigma * SparseMatrixd(M.triangularView<Eigen::Lower>());
   A.prune(0.0, 0.0);
   return A;
-}
-
-/// Number of columns of the symmetric M (lower triangle read) holding a nonzero: an upper bound of
-/// rank(M), i.e. of the number of finite eigenvalues.
-Eigen::Index mass_rank_bound(const SparseMatrixd& M) {
-  std::vector<char> nonzero(static_cast<std::size_t>(M.cols()), 0);
-  for (Eigen::Index j = 0; j < M.outerSize(); ++j)
-    for (SparseMatrixd::InnerIterator it(M, j); it; ++it)
-      if (it.row() >= j && it.value() != 0) nonzero[static_cast<std::size_t>(j)] = nonzero[static_cast<std::size_t>(it.row())] = 1;
-  return std::count(nonzero.begin(), nonzero.end(), 1);
 }
 
 /// Factorise K - sigma M, moving sigma down if the matrix is not positive definite numerically.
@@ -239,7 +232,7 @@ EigenSolution solve_eigenproblem(const SparseMatrixd& K, const SparseMatrixd& M,
   solution.backward_errors.resize(0);
   EigenStats& stats = solution.stats;
 
-  const Eigen::Index finite = mass_rank_bound(M);
+  const Eigen::Index finite = detail::mass_rank_bound(M);
   const Eigen::Index wanted = options.count ? std::min<Eigen::Index>(*options.count, finite) : finite;
   if (n == 0 || wanted == 0) return solution;
 
@@ -293,7 +286,30 @@ EigenSolution solve_eigenproblem(const SparseMatrixd& K, const SparseMatrixd& M,
     // the top of the range is passed.
     Eigen::Index have = 0;
     const auto t_main = Clock::now();
-    for (;;) {
+    // Block Lanczos: one run for a count or an upper bound (falls back to the restarted Lanczos
+    // below for a count within a range, or when the basis would exceed its limit).
+    bool main_done = false;
+    if (options.backend == EigenBackend::Block) {
+      stats.backend_used = EigenBackend::Spectra;
+      if (!options.lambda_min && options.count.has_value() != options.lambda_max.has_value()) {
+        detail::BlockLanczosOptions bo;
+        if (options.count) bo.count = wanted;
+        else bo.lambda_max = lambda_hi - sigma;
+        bo.block = options.block_size;
+        bo.tolerance = options.tolerance;
+        bo.seed = seed++;
+        const long columns = factor->stats().solve_columns;
+        auto run = detail::block_lanczos_lowest(*factor, M, bo);
+        stats.operator_applications += factor->stats().solve_columns - columns;
+        ++stats.lanczos_runs;
+        if (run) {
+          append_orthonormal(X, run->vectors, M);
+          stats.backend_used = EigenBackend::Block;
+          main_done = true;
+        }
+      }
+    }
+    while (!main_done) {
       const Eigen::Index available = finite - X.cols();
       Eigen::Index batch = options.count ? wanted - have : kRangeBatch;
       batch = std::min(batch, available - 1);
@@ -303,11 +319,11 @@ EigenSolution solve_eigenproblem(const SparseMatrixd& K, const SparseMatrixd& M,
       const Eigen::Index room = std::min(available, n - X.cols());
       const int ncv = options.subspace > nev ? static_cast<int>(std::min<Eigen::Index>(options.subspace, room))
                                              : subspace_size(nev, room);
-      const KrylovResult run = run_krylov(options.backend, op, nev, ncv, options.tolerance, options.max_restarts, seed++);
+      const KrylovResult run = run_krylov(stats.backend_used, op, nev, ncv, options.tolerance, options.max_restarts, seed++);
       ++stats.lanczos_runs;
       stats.operator_applications += op.applications();
       if (!run.converged || run.vectors.cols() < nev)
-        throw ConvergenceError("eigensolver (" + std::string(to_string(options.backend)) + "): " +
+        throw ConvergenceError("eigensolver (" + std::string(to_string(stats.backend_used)) + "): " +
                                std::to_string(run.vectors.cols()) + " of " + std::to_string(nev) +
                                " modes converged after " + std::to_string(run.restarts) + " restarts");
       append_orthonormal(X, run.vectors, M);
@@ -340,17 +356,35 @@ EigenSolution solve_eigenproblem(const SparseMatrixd& K, const SparseMatrixd& M,
       // Ritz values of the deflated operator are lower bounds of its eigenvalues, so a loose
       // tolerance cannot report a missed mode that is not there; only a detection is re-run to
       // full accuracy.
-      ShiftInvertOperator op(*factor, M, X);
-      const int ncv = static_cast<int>(std::min<Eigen::Index>(kCheckSubspace, available));
       auto is_missed = [&](double theta) { return sigma + 1.0 / theta < threshold - 1e-8 * std::abs(threshold); };
-      KrylovResult check = run_krylov(options.backend, op, nev, ncv, kCheckTolerance, options.max_restarts, seed);
-      ++stats.lanczos_runs;
-      if (check.theta.size() > 0 && is_missed(check.theta(0))) {
-        check = run_krylov(options.backend, op, nev, ncv, options.tolerance, options.max_restarts, seed);
+      // The dominant eigenpair(s) of the deflated operator, by the backend of the main run.
+      auto check_run = [&](double tol) {
+        const long columns = factor->stats().solve_columns;
+        KrylovResult r;
+        if (stats.backend_used == EigenBackend::Block) {
+          detail::BlockLanczosOptions bo;
+          bo.count = nev;
+          bo.block = options.block_size;
+          bo.tolerance = tol;
+          bo.seed = seed;
+          bo.locked = &X;
+          if (auto b = detail::block_lanczos_lowest(*factor, M, bo)) {
+            r.theta = b->eigenvalues.cwiseInverse();
+            r.vectors = std::move(b->vectors);
+            r.converged = true;
+          }
+        } else {
+          ShiftInvertOperator op(*factor, M, X);
+          const int ncv = static_cast<int>(std::min<Eigen::Index>(kCheckSubspace, available));
+          r = run_krylov(stats.backend_used, op, nev, ncv, tol, options.max_restarts, seed);
+        }
+        stats.operator_applications += factor->stats().solve_columns - columns;
         ++stats.lanczos_runs;
-      }
+        return r;
+      };
+      KrylovResult check = check_run(kCheckTolerance);
+      if (check.theta.size() > 0 && is_missed(check.theta(0))) check = check_run(options.tolerance);
       ++seed;
-      stats.operator_applications += op.applications();
       Eigen::MatrixXd missed(n, 0);
       for (Eigen::Index i = 0; i < check.theta.size(); ++i) {
         if (is_missed(check.theta(i))) {

@@ -72,6 +72,8 @@ class LdltFactorization final : public SparseFactorization {
     SEFLEX_DEMAND(B.rows() == stats_.rows, "solve: right-hand side has the wrong number of rows");
     if (B.cols() == 0 || B.rows() == 0) return;
     B = ldlt_.solve(B).eval();
+    stats_.solve_columns += B.cols();
+    ++stats_.solve_calls;
   }
 
  private:

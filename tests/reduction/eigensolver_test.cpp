@@ -134,17 +134,22 @@ TEST_P(KrylovBackend, HonoursAnEigenvalueRange) {
   EXPECT_NEAR(four.eigenvalues(3) / test::chain_eigenvalue(n, 1.0, 1.0, true, 6), 1.0, 1e-10);
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, KrylovBackend, ::testing::Values(EigenBackend::Spectra, EigenBackend::Arpack),
+INSTANTIATE_TEST_SUITE_P(Backends, KrylovBackend,
+                         ::testing::Values(EigenBackend::Spectra, EigenBackend::Arpack, EigenBackend::Block),
                          [](const auto& param_info) { return std::string(to_string(param_info.param)); });
 
-// Spectra and ARPACK agree with each other on a model neither has an analytic answer for.
-TEST(Eigensolver, SpectraAndArpackAgreeOnATruss) {
+// Spectra, ARPACK and block Lanczos agree with each other on a model none has an analytic answer for.
+TEST(Eigensolver, SpectraArpackAndBlockAgreeOnATruss) {
   const test::Truss truss = test::free_truss(4, 4, 4, 1.0e5, 0.2);
   const auto a = solve_eigenproblem(truss.pencil.K, truss.pencil.M, krylov(EigenBackend::Spectra, 24));
-  const auto b = solve_eigenproblem(truss.pencil.K, truss.pencil.M, krylov(EigenBackend::Arpack, 24));
   ASSERT_EQ(a.eigenvalues.size(), 24);
-  ASSERT_EQ(b.eigenvalues.size(), 24);
-  for (int j = 6; j < 24; ++j) EXPECT_NEAR(a.eigenvalues(j) / b.eigenvalues(j), 1.0, 1e-11) << "mode " << j + 1;
+  for (auto backend : {EigenBackend::Arpack, EigenBackend::Block}) {
+    const auto b = solve_eigenproblem(truss.pencil.K, truss.pencil.M, krylov(backend, 24));
+    ASSERT_EQ(b.eigenvalues.size(), 24);
+    EXPECT_EQ(b.stats.backend_used, backend);
+    for (int j = 6; j < 24; ++j)
+      EXPECT_NEAR(a.eigenvalues(j) / b.eigenvalues(j), 1.0, 1e-11) << to_string(backend) << " mode " << j + 1;
+  }
 }
 
 // The cantilever and free-free bars of the MYSTRAN validation decks BAR-CC-GIV / BAR-FF-GIV
@@ -206,6 +211,7 @@ TEST(Eigensolver, MechanismIsReportedWithItsDof) {
 TEST(Eigensolver, ParsesBackendNames) {
   EXPECT_EQ(parse_eigen_backend("spectra"), EigenBackend::Spectra);
   EXPECT_EQ(parse_eigen_backend("arpack"), EigenBackend::Arpack);
+  EXPECT_EQ(parse_eigen_backend("block"), EigenBackend::Block);
   EXPECT_FALSE(parse_eigen_backend("lanczos").has_value());
 }
 

@@ -73,12 +73,12 @@ void expect_six_rigid_body_modes(const NormalModes& r) {
   EXPECT_GT(f7, 10.0);  // a 0.6 m x 3 mm plate: its first free mode is tens of Hz
 }
 
-// Free-free model: exactly six modes below 1e-4 of the first elastic frequency, with Spectra and
-// with ARPACK, which agree on the elastic modes.
-TEST(NormalModes, FreePlateHasSixRigidBodyModesWithSpectraAndArpack) {
+// Free-free model: exactly six modes below 1e-4 of the first elastic frequency, with Spectra,
+// ARPACK and block Lanczos, which agree on the elastic modes.
+TEST(NormalModes, FreePlateHasSixRigidBodyModesWithEveryKrylovBackend) {
   const fem::Model m = free_plate();
   std::vector<NormalModes> results;
-  for (auto backend : {EigenBackend::Spectra, EigenBackend::Arpack}) {
+  for (auto backend : {EigenBackend::Spectra, EigenBackend::Arpack, EigenBackend::Block}) {
     ModesOptions o;
     o.count = 14;
     o.backend = backend;
@@ -90,21 +90,28 @@ TEST(NormalModes, FreePlateHasSixRigidBodyModesWithSpectraAndArpack) {
     EXPECT_LT((r.generalized_mass.array() - 1.0).abs().maxCoeff(), 1e-10);  // NORM = MASS (no METHOD)
     EXPECT_LT((r.generalized_stiffness - r.eigenvalues).cwiseAbs().maxCoeff(), 1e-8 * r.eigenvalues(13));
   }
-  for (int j = 6; j < 14; ++j) EXPECT_NEAR(results[0].eigenvalues(j) / results[1].eigenvalues(j), 1.0, 1e-10) << "mode " << j + 1;
+  for (std::size_t b = 1; b < results.size(); ++b)
+    for (int j = 6; j < 14; ++j)
+      EXPECT_NEAR(results[0].eigenvalues(j) / results[b].eigenvalues(j), 1.0, 1e-10) << "backend " << b << " mode " << j + 1;
 }
 
-// The Krylov path against the dense solution of the whole pencil, on a smaller free plate.
-TEST(NormalModes, SpectraMatchesTheDenseSolution) {
+// The Krylov paths (the default block Lanczos and Spectra) against the dense solution of the whole
+// pencil, on a smaller free plate.
+TEST(NormalModes, KrylovMatchesTheDenseSolution) {
   const fem::Model m = free_plate(10, 7);  // 528 dofs
   ModesOptions o;
   o.count = 12;
-  const NormalModes krylov = solve_normal_modes(m, o);
   o.backend = EigenBackend::Dense;
   const NormalModes dense = solve_normal_modes(m, o);
-  EXPECT_EQ(krylov.stats.backend_used, EigenBackend::Spectra);
   EXPECT_EQ(dense.stats.backend_used, EigenBackend::Dense);
   expect_six_rigid_body_modes(dense);
-  for (int j = 6; j < 12; ++j) EXPECT_NEAR(krylov.eigenvalues(j) / dense.eigenvalues(j), 1.0, 1e-10) << "mode " << j + 1;
+  for (auto backend : {ModesOptions{}.backend, EigenBackend::Spectra}) {
+    o.backend = backend;
+    const NormalModes krylov = solve_normal_modes(m, o);
+    EXPECT_EQ(krylov.stats.backend_used, backend);
+    for (int j = 6; j < 12; ++j)
+      EXPECT_NEAR(krylov.eigenvalues(j) / dense.eigenvalues(j), 1.0, 1e-10) << to_string(backend) << " mode " << j + 1;
+  }
 }
 
 // EIGRL F1/F2 (Hz) without ND: every mode in the band, none outside; F1 above zero drops the

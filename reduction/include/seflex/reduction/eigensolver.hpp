@@ -1,7 +1,9 @@
 #pragma once
 // Generalised symmetric eigenproblem K x = lambda M x for the lowest eigenpairs of an FE model
 // (lambda = omega^2, rad^2/s^2). Backends, one file each:
-//   - Spectra (default): implicitly restarted Lanczos (SymGEigsShiftSolver, shift-invert mode);
+//   - Block (default): block shift-invert Lanczos with full reorthogonalisation, no restarts
+//     (block_lanczos.hpp; the method of MSC Nastran's EIGRL): each step is one multi-column solve;
+//   - Spectra: implicitly restarted Lanczos (SymGEigsShiftSolver, shift-invert mode);
 //   - Arpack: dsaupd/dseupd, shift-invert mode 3 (bmat = 'G', which = 'LM');
 //   - Dense: LAPACK-style dense solution of the transformed problem, for small models.
 //
@@ -30,9 +32,9 @@
 
 namespace seflex::reduction {
 
-enum class EigenBackend : std::uint8_t { Spectra, Arpack, Dense };
+enum class EigenBackend : std::uint8_t { Spectra, Arpack, Dense, Block };
 
-/// "spectra", "arpack" or "dense".
+/// "spectra", "arpack", "dense" or "block".
 std::string_view to_string(EigenBackend backend);
 std::optional<EigenBackend> parse_eigen_backend(std::string_view name);
 
@@ -43,7 +45,10 @@ struct EigenOptions {
   std::optional<int> count = 10;
   std::optional<double> lambda_min;  ///< keep eigenvalues >= lambda_min (Nastran F1, as (2 pi F1)^2)
   std::optional<double> lambda_max;  ///< keep eigenvalues <= lambda_max (Nastran F2)
-  EigenBackend backend = EigenBackend::Spectra;
+  /// Block by measurement (docs/solvers.md). Block handles a count or an upper bound alone; a count
+  /// with a range, or a basis beyond its limit, falls back to Spectra (EigenStats::backend_used).
+  EigenBackend backend = EigenBackend::Block;
+  int block_size = 8;                  ///< block of the Block backend (>= the largest multiplicity)
   FactorizationBackend factorization = kDefaultFactorization;
   /// Models with at most this many dofs are solved densely whatever the backend (exact, fast).
   int dense_below = 200;

@@ -24,7 +24,7 @@ namespace seflex::reduction {
 struct ModesOptions {
   std::optional<int> subcase;                 ///< default: the first subcase, else the global selections
   std::optional<int> count;                   ///< overrides ND (and lifts the need for a METHOD)
-  EigenBackend backend = EigenBackend::Spectra;
+  EigenBackend backend = EigenOptions{}.backend;
   FactorizationBackend factorization = kDefaultFactorization;
   std::vector<Eigen::Index> fixed_dofs;       ///< extra g-set dofs held at zero (fixed-interface modes)
   bool check_completeness = true;

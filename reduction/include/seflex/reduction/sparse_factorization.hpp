@@ -68,6 +68,13 @@ struct FactorizationStats {
   double min_pivot_ratio = 0;
   int symbolic_analyses = 0;      ///< how many times the pattern was (re)analysed
   int numeric_factorizations = 0;
+  // Wall time, summed over all calls (benchmarks only; 0 where a backend does not split them).
+  double seconds_ordering = 0;    ///< fill-reducing ordering (METIS)
+  double seconds_symbolic = 0;    ///< symbolic analysis (elimination tree, supernodes)
+  double seconds_numeric = 0;     ///< numeric factorisations, with the copy of A and the pivot check
+  double seconds_solve = 0;       ///< solve_in_place
+  long solve_columns = 0;         ///< right-hand sides solved
+  int solve_calls = 0;            ///< solve_in_place calls
 };
 
 /// A factorisation object owns the factor and the solve workspace (it is state, not a function):

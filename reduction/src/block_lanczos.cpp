@@ -1,5 +1,5 @@
-// Block shift-invert Lanczos for the fixed-interface modes (craig_bampton_modes.hpp).
-#include "craig_bampton_modes.hpp"
+// Block shift-invert Lanczos (block_lanczos.hpp).
+#include "block_lanczos.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -44,6 +44,13 @@ void orthonormalize_block(const SparseMatrixd& M, const Eigen::MatrixXd& W, Eige
   R.conservativeResize(k, b);
 }
 
+/// W <- W - X (X^T M W): M-orthogonal to the locked vectors (no-op without them).
+void deflate(const Eigen::MatrixXd* X, const SparseMatrixd& M, Eigen::MatrixXd& W) {
+  if (X == nullptr || X->cols() == 0) return;
+  const Eigen::MatrixXd MW = M.selfadjointView<Eigen::Lower>() * W;
+  W.noalias() -= *X * (X->transpose() * MW);
+}
+
 }  // namespace
 
 Eigen::Index mass_rank_bound(const SparseMatrixd& M) {
@@ -62,8 +69,10 @@ std::optional<BlockLanczosResult> block_lanczos_lowest(SparseFactorization& fact
   BlockLanczosResult res;
   res.eigenvalues.resize(0);
   res.vectors.resize(n, 0);
-  const Eigen::Index finite = mass_rank_bound(M);
-  if (n == 0 || finite == 0 || (o.count && *o.count <= 0)) return res;
+  const Eigen::Index locked = o.locked != nullptr ? o.locked->cols() : 0;
+  SEFLEX_DEMAND(locked == 0 || o.locked->rows() == n, "block Lanczos: locked vectors have the wrong size");
+  const Eigen::Index finite = mass_rank_bound(M) - locked;  // finite eigenvalues left to find
+  if (n == 0 || finite <= 0 || (o.count && *o.count <= 0)) return res;
 
   // Start block OP X0: in range(OP), so massless directions never enter the basis.
   std::mt19937_64 rng(o.seed);
@@ -74,6 +83,7 @@ std::optional<BlockLanczosResult> block_lanczos_lowest(SparseFactorization& fact
   W = M.selfadjointView<Eigen::Lower>() * W;
   factor.solve_in_place(W);
   ++res.block_solves;
+  for (int pass = 0; pass < 2; ++pass) deflate(o.locked, M, W);
 
   std::vector<Eigen::MatrixXd> Q;   // basis blocks, M-orthonormal together
   std::vector<Eigen::Index> first;  // column offset of each block
@@ -95,6 +105,7 @@ std::optional<BlockLanczosResult> block_lanczos_lowest(SparseFactorization& fact
     ++res.block_solves;
     Eigen::MatrixXd H = Eigen::MatrixXd::Zero(k, bj);
     for (int pass = 0; pass < 2; ++pass) {
+      deflate(o.locked, M, W);
       const Eigen::MatrixXd MW = M.selfadjointView<Eigen::Lower>() * W;
       for (std::size_t i = 0; i < Q.size(); ++i) {
         const Eigen::MatrixXd C = Q[i].transpose() * MW;

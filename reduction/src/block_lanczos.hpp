@@ -1,9 +1,12 @@
 #pragma once
-// Fixed-interface modes of a Craig-Bampton reduction from the factorisation of K_ii that the
-// constraint modes already needed: block shift-invert Lanczos at shift 0 (K_ii is positive definite
-// when the interface holds the interior), so the reduction factorises K_ii once, and every
-// application of the operator is a block solve (BLAS-3 in the supernodal factor) instead of a
-// single-vector one. Internal to reduction (craig_bampton.cpp); tested through craig_bampton().
+// Block shift-invert Lanczos on a factorisation of K - sigma M (internal to reduction). Used for
+// - the fixed-interface modes of a Craig-Bampton reduction, from the factorisation of K_ii that the
+//   constraint modes already needed (shift 0: K_ii is positive definite when the interface holds the
+//   interior), so the reduction factorises K_ii once (craig_bampton.cpp);
+// - the `block` backend of solve_eigenproblem (eigensolver.cpp), the default of `seflex modes`.
+// Every application of the operator is a block solve (BLAS-3 in the supernodal factor) instead of a
+// single-vector one (docs/solvers.md, docs/benchmarks.md). Tested through craig_bampton() and
+// solve_eigenproblem().
 //
 // Method (Grimes, Lewis & Simon, SIAM J. Matrix Anal. Appl. 15(1), 1994, the block shift-invert
 // Lanczos of MSC Nastran's EIGRL): OP = K^-1 M, self-adjoint in the M inner product. The start
@@ -13,6 +16,9 @@
 // has the residual ||OP y - theta y||_M = ||R_{j+1} c_j|| (c_j: the last block of c). A pair counts as
 // converged when that residual is <= tol * theta. The lowest pairs are accepted as a prefix: the
 // search stops when the `count` lowest (or all below lambda_max and `extra` more) have converged.
+// With `locked` vectors X (M-orthonormal) every block is also M-orthogonalised against X, i.e. the
+// operator is P OP P with P = I - X X^T M (deflation: the eigenpairs not in span(X)).
+// Eigenvalues are those of the factorised pencil: 1/theta = lambda - sigma.
 #include <Eigen/Core>
 #include <optional>
 
@@ -28,10 +34,11 @@ struct BlockLanczosOptions {
   Eigen::Index max_basis = 600;       ///< give up (nullopt) beyond this many basis vectors
   double tolerance = 1e-10;
   unsigned seed = 20261121u;
+  const Eigen::MatrixXd* locked = nullptr;  ///< M-orthonormal vectors deflated from the operator (or none)
 };
 
 struct BlockLanczosResult {
-  Eigen::VectorXd eigenvalues;  ///< ascending
+  Eigen::VectorXd eigenvalues;  ///< ascending, 1/theta = lambda - sigma
   Eigen::MatrixXd vectors;      ///< M-orthonormal
   int block_solves = 0;
   Eigen::Index basis_size = 0;
@@ -41,7 +48,7 @@ struct BlockLanczosResult {
 /// rank(M), the number of finite eigenvalues.
 Eigen::Index mass_rank_bound(const SparseMatrixd& M);
 
-/// Lowest eigenpairs of K x = lambda M x, `factor` holding K (positive definite), M symmetric
+/// Lowest eigenpairs of K x = lambda M x, `factor` holding K - sigma M (positive definite), M symmetric
 /// positive semi-definite (lower triangle read). nullopt if the basis would exceed max_basis (the
 /// caller then uses the restarted eigensolver). Fewer pairs than asked when the finite spectrum
 /// (rank of M) is exhausted.
