@@ -1,9 +1,13 @@
 // Block shift-invert Lanczos (block_lanczos.hpp).
 #include "block_lanczos.hpp"
 
+#include <cblas.h>
+
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -12,11 +16,14 @@ namespace seflex::reduction::detail {
 namespace {
 
 constexpr double kDropTolerance = 1e-9;  // a column this small after orthogonalisation is dependent
+// Cholesky QR is used when no column of the block loses more than this fraction of its M-norm to
+// the others (cond(W) ~< 1e4: two passes then give orthogonality to round-off); else Gram-Schmidt.
+constexpr double kCholeskyQrLimit = 1e-4;
 
 /// M-orthonormalise the columns of W among themselves (modified Gram-Schmidt, twice, with M Q kept
 /// so that every inner product costs no sparse product): W = Q R with R (kept x W.cols()).
 /// Columns that are dependent to round-off are dropped.
-void orthonormalize_block(const SparseMatrixd& M, const Eigen::MatrixXd& W, Eigen::MatrixXd& Q, Eigen::MatrixXd& R) {
+void orthonormalize_block_mgs(const SparseMatrixd& M, const Eigen::MatrixXd& W, Eigen::MatrixXd& Q, Eigen::MatrixXd& R) {
   const Eigen::Index n = W.rows(), b = W.cols();
   Q.resize(n, b);
   Eigen::MatrixXd MQ(n, b);
@@ -43,6 +50,85 @@ void orthonormalize_block(const SparseMatrixd& M, const Eigen::MatrixXd& W, Eige
   Q.conservativeResize(n, k);
   R.conservativeResize(k, b);
 }
+
+/// The same by Cholesky QR, twice (CholQR2: G = W^T M W = U^T U, W <- W U^-1): two passes of
+/// BLAS-3 over the block instead of b^2 vector operations; falls back to Gram-Schmidt for a nearly
+/// dependent block.
+void orthonormalize_block(const SparseMatrixd& M, const Eigen::MatrixXd& W, Eigen::MatrixXd& Q, Eigen::MatrixXd& R) {
+  const Eigen::Index b = W.cols();
+  Q = W;
+  R = Eigen::MatrixXd::Identity(b, b);
+  for (int pass = 0; pass < 2; ++pass) {
+    const Eigen::MatrixXd MQ = M.selfadjointView<Eigen::Lower>() * Q;
+    Eigen::MatrixXd G = Q.transpose() * MQ;
+    G = 0.5 * (G + G.transpose()).eval();
+    const Eigen::LLT<Eigen::MatrixXd> llt(G);
+    bool well_conditioned = llt.info() == Eigen::Success;
+    const Eigen::MatrixXd U = llt.matrixU();
+    for (Eigen::Index j = 0; j < b && well_conditioned; ++j)
+      well_conditioned = U(j, j) > kCholeskyQrLimit * std::sqrt(G(j, j));
+    if (!well_conditioned) {
+      orthonormalize_block_mgs(M, W, Q, R);
+      return;
+    }
+    U.triangularView<Eigen::Upper>().solveInPlace<Eigen::OnTheRight>(Q);
+    R = (U.triangularView<Eigen::Upper>() * R).eval();
+  }
+}
+
+/// BLAS dimension (32-bit: a million-dof basis is far from its limit).
+int blas_int(Eigen::Index i) {
+  SEFLEX_DEMAND(i >= 0 && i <= std::numeric_limits<int>::max(), "block Lanczos: dimension beyond the BLAS's int");
+  return static_cast<int>(i);
+}
+
+/// The Lanczos basis V, stored in column chunks: it grows without copying, and the products with it
+/// are a few large matrix products instead of one per block. They go to the BLAS that CHOLMOD uses
+/// (OpenBLAS: multithreaded, no packing copy of the tall basis as in Eigen's own product), which is
+/// where the reorthogonalisation of a million-dof basis spends its time.
+class ChunkedBasis {
+ public:
+  ChunkedBasis(Eigen::Index rows, Eigen::Index chunk) : rows_(rows), chunk_(chunk) {}
+  Eigen::Index cols() const { return cols_; }
+  void append(const Eigen::MatrixXd& Q) {
+    if (chunks_.empty() || used_.back() + Q.cols() > chunks_.back().cols()) {
+      chunks_.emplace_back(rows_, std::max(chunk_, Q.cols()));
+      used_.push_back(0);
+    }
+    chunks_.back().middleCols(used_.back(), Q.cols()) = Q;
+    used_.back() += Q.cols();
+    cols_ += Q.cols();
+  }
+  /// V^T Y (cols() x Y.cols()).
+  Eigen::MatrixXd transpose_times(const Eigen::MatrixXd& Y) const {
+    SEFLEX_DEMAND(Y.rows() == rows_, "block Lanczos: product with a block of the wrong size");
+    Eigen::MatrixXd C(cols_, Y.cols());
+    Eigen::Index at = 0;
+    for (std::size_t c = 0; c < chunks_.size(); at += used_[c], ++c)
+      cblas_dgemm(CblasColMajor, CblasTrans, CblasNoTrans, blas_int(used_[c]), blas_int(Y.cols()), blas_int(rows_), 1.0,
+                  chunks_[c].data(), blas_int(rows_), Y.data(), blas_int(rows_), 0.0, C.data() + at, blas_int(cols_));
+    return C;
+  }
+  /// Y -= V C.
+  void subtract_times(const Eigen::MatrixXd& C, Eigen::MatrixXd& Y) const {
+    SEFLEX_DEMAND(Y.rows() == rows_ && C.rows() == cols_ && C.cols() == Y.cols(), "block Lanczos: product sizes");
+    Eigen::Index at = 0;
+    for (std::size_t c = 0; c < chunks_.size(); at += used_[c], ++c)
+      cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, blas_int(rows_), blas_int(Y.cols()), blas_int(used_[c]), -1.0,
+                  chunks_[c].data(), blas_int(rows_), C.data() + at, blas_int(cols_), 1.0, Y.data(), blas_int(rows_));
+  }
+  /// V C.
+  Eigen::MatrixXd times(const Eigen::MatrixXd& C) const {
+    Eigen::MatrixXd Y = Eigen::MatrixXd::Zero(rows_, C.cols());
+    subtract_times(-C, Y);
+    return Y;
+  }
+
+ private:
+  Eigen::Index rows_, chunk_, cols_ = 0;
+  std::vector<Eigen::MatrixXd> chunks_;
+  std::vector<Eigen::Index> used_;
+};
 
 /// W <- W - X (X^T M W): M-orthogonal to the locked vectors (no-op without them).
 void deflate(const Eigen::MatrixXd* X, const SparseMatrixd& M, Eigen::MatrixXd& W) {
@@ -85,9 +171,8 @@ std::optional<BlockLanczosResult> block_lanczos_lowest(SparseFactorization& fact
   ++res.block_solves;
   for (int pass = 0; pass < 2; ++pass) deflate(o.locked, M, W);
 
-  std::vector<Eigen::MatrixXd> Q;   // basis blocks, M-orthonormal together
-  std::vector<Eigen::Index> first;  // column offset of each block
-  Eigen::MatrixXd T(0, 0);          // V^T M OP V
+  ChunkedBasis V(n, std::max<Eigen::Index>(4 * o.block, 32));  // basis blocks, M-orthonormal together
+  Eigen::MatrixXd T(0, 0);                                     // V^T M OP V
   Eigen::MatrixXd R;
   Eigen::MatrixXd Qnew;
   orthonormalize_block(M, W, Qnew, R);
@@ -95,23 +180,19 @@ std::optional<BlockLanczosResult> block_lanczos_lowest(SparseFactorization& fact
   for (;;) {
     // Append the new block.
     const Eigen::Index bj = Qnew.cols();
-    Q.push_back(std::move(Qnew));
-    first.push_back(k);
+    V.append(Qnew);
     k += bj;
     // Next block: OP Q_j, orthogonalised against the whole basis (two passes of block classical
     // Gram-Schmidt); the coefficients are column block j of T.
-    W = M.selfadjointView<Eigen::Lower>() * Q.back();
+    W = M.selfadjointView<Eigen::Lower>() * Qnew;
     factor.solve_in_place(W);
     ++res.block_solves;
     Eigen::MatrixXd H = Eigen::MatrixXd::Zero(k, bj);
     for (int pass = 0; pass < 2; ++pass) {
       deflate(o.locked, M, W);
-      const Eigen::MatrixXd MW = M.selfadjointView<Eigen::Lower>() * W;
-      for (std::size_t i = 0; i < Q.size(); ++i) {
-        const Eigen::MatrixXd C = Q[i].transpose() * MW;
-        W.noalias() -= Q[i] * C;
-        H.middleRows(first[i], Q[i].cols()) += C;
-      }
+      const Eigen::MatrixXd C = V.transpose_times(M.selfadjointView<Eigen::Lower>() * W);
+      V.subtract_times(C, W);
+      H += C;
     }
     orthonormalize_block(M, W, Qnew, R);
     T.conservativeResize(k, k);
@@ -145,13 +226,13 @@ std::optional<BlockLanczosResult> block_lanczos_lowest(SparseFactorization& fact
     if (take >= 0) {
       res.basis_size = k;
       res.eigenvalues.resize(take);
-      res.vectors = Eigen::MatrixXd::Zero(n, take);
+      Eigen::MatrixXd C(k, take);
       for (Eigen::Index t = 0; t < take; ++t) {
         const Eigen::Index i = order[static_cast<std::size_t>(t)];
         res.eigenvalues(t) = 1.0 / es.eigenvalues()(i);
-        for (std::size_t blk = 0; blk < Q.size(); ++blk)
-          res.vectors.col(t).noalias() += Q[blk] * es.eigenvectors().col(i).segment(first[blk], Q[blk].cols());
+        C.col(t) = es.eigenvectors().col(i);
       }
+      res.vectors = V.times(C);
       return res;
     }
     if (k + Qnew.cols() > o.max_basis) return std::nullopt;

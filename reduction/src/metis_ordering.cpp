@@ -4,8 +4,10 @@
 #include <metis.h>
 
 #include <algorithm>
+#include <future>
 #include <numeric>
 #include <string>
+#include <thread>
 
 namespace seflex::reduction {
 namespace {
@@ -30,6 +32,105 @@ void symmetric_adjacency(const SparseMatrixd& A, std::vector<std::int64_t>& xadj
         adjncy[static_cast<std::size_t>(fill[static_cast<std::size_t>(j)]++)] = static_cast<idx_t>(it.row());
         adjncy[static_cast<std::size_t>(fill[static_cast<std::size_t>(it.row())]++)] = static_cast<idx_t>(j);
       }
+}
+
+/// Components this small are ordered as they come (METIS is for the large ones).
+constexpr idx_t kSmallComponent = 8;
+
+/// METIS_NodeND of one graph (CSR xadj/adjncy, vertex weights): order[k] = vertex eliminated k-th.
+std::vector<idx_t> metis_order(std::vector<idx_t>& xadj, std::vector<idx_t>& adjncy, std::vector<idx_t>& vwgt) {
+  idx_t nv = static_cast<idx_t>(vwgt.size());
+  std::vector<idx_t> order(static_cast<std::size_t>(nv)), inverse(static_cast<std::size_t>(nv));
+  if (nv < kSmallComponent || adjncy.empty()) {
+    std::iota(order.begin(), order.end(), 0);
+    return order;
+  }
+  idx_t options[METIS_NOPTIONS];
+  METIS_SetDefaultOptions(options);
+  const int status = METIS_NodeND(&nv, xadj.data(), adjncy.data(), vwgt.data(), options, order.data(), inverse.data());
+  if (status == METIS_ERROR_MEMORY) throw std::bad_alloc();
+  SEFLEX_DEMAND(status == METIS_OK, "METIS_NodeND failed (status " + std::to_string(status) + ")");
+  return order;
+}
+
+/// Nested dissection of a graph that may fall into independent parts (a flat shell's membrane and
+/// bending dofs, disconnected bodies): each connected component is ordered on its own and they are
+/// eliminated one after another (the factor is block diagonal), the large ones on two threads at
+/// once. The result does not depend on the threads: each component keeps its place in the order.
+std::vector<idx_t> component_order(const std::vector<idx_t>& cx, const std::vector<idx_t>& cadj, const std::vector<idx_t>& vwgt) {
+  const auto nv = static_cast<idx_t>(vwgt.size());
+  std::vector<idx_t> component(static_cast<std::size_t>(nv), -1), stack;
+  std::vector<std::vector<idx_t>> members;  // vertices of each component, ascending
+  for (idx_t v0 = 0; v0 < nv; ++v0) {
+    if (component[static_cast<std::size_t>(v0)] >= 0) continue;
+    const auto c = static_cast<idx_t>(members.size());
+    members.emplace_back();
+    component[static_cast<std::size_t>(v0)] = c;
+    stack.assign(1, v0);
+    while (!stack.empty()) {
+      const idx_t v = stack.back();
+      stack.pop_back();
+      members.back().push_back(v);
+      for (idx_t k = cx[static_cast<std::size_t>(v)]; k < cx[static_cast<std::size_t>(v) + 1]; ++k) {
+        const idx_t w = cadj[static_cast<std::size_t>(k)];
+        if (component[static_cast<std::size_t>(w)] < 0) {
+          component[static_cast<std::size_t>(w)] = c;
+          stack.push_back(w);
+        }
+      }
+    }
+    std::sort(members.back().begin(), members.back().end());
+  }
+  std::vector<idx_t> local(static_cast<std::size_t>(nv));  // index of each vertex within its component
+  for (const auto& m : members)
+    for (std::size_t i = 0; i < m.size(); ++i) local[static_cast<std::size_t>(m[i])] = static_cast<idx_t>(i);
+
+  // Order component c: its subgraph in local numbering, then METIS; returns global vertices.
+  auto order_component = [&](std::size_t c) {
+    const std::vector<idx_t>& m = members[c];
+    std::vector<idx_t> x(m.size() + 1, 0), adj, w(m.size());
+    for (std::size_t i = 0; i < m.size(); ++i) {
+      const auto v = static_cast<std::size_t>(m[i]);
+      w[i] = vwgt[v];
+      for (idx_t k = cx[v]; k < cx[v + 1]; ++k) adj.push_back(local[static_cast<std::size_t>(cadj[static_cast<std::size_t>(k)])]);
+      x[i + 1] = static_cast<idx_t>(adj.size());
+    }
+    std::vector<idx_t> order = metis_order(x, adj, w);
+    for (idx_t& v : order) v = m[static_cast<std::size_t>(v)];
+    return order;
+  };
+  std::vector<std::vector<idx_t>> orders(members.size());
+  // Components by size, largest first; the large ones alternate between this thread and a helper.
+  std::vector<std::size_t> by_size(members.size());
+  std::iota(by_size.begin(), by_size.end(), 0);
+  std::stable_sort(by_size.begin(), by_size.end(), [&](std::size_t a, std::size_t b) { return members[a].size() > members[b].size(); });
+  const bool two_threads = members.size() > 1 && members[by_size[1]].size() >= 1000 && std::thread::hardware_concurrency() > 1;
+  if (two_threads) {
+    std::size_t load_here = 0, load_there = 0;
+    std::vector<std::size_t> there;
+    for (std::size_t c : by_size) {
+      if (load_there < load_here) {
+        there.push_back(c);
+        load_there += members[c].size();
+      } else {
+        load_here += members[c].size();
+      }
+    }
+    auto helper = std::async(std::launch::async, [&] {
+      for (std::size_t c : there) orders[c] = order_component(c);
+    });
+    std::vector<char> is_there(members.size(), 0);
+    for (std::size_t c : there) is_there[c] = 1;
+    for (std::size_t c : by_size)
+      if (!is_there[c]) orders[c] = order_component(c);
+    helper.get();
+  } else {
+    for (std::size_t c = 0; c < members.size(); ++c) orders[c] = order_component(c);
+  }
+  std::vector<idx_t> order;
+  order.reserve(static_cast<std::size_t>(nv));
+  for (const auto& o : orders) order.insert(order.end(), o.begin(), o.end());
+  return order;
 }
 
 }  // namespace
@@ -110,20 +211,9 @@ std::vector<std::int64_t> nested_dissection_ordering(const SparseMatrixd& A) {
   std::vector<idx_t>().swap(adjncy);
   std::vector<std::int64_t>().swap(xadj);
 
-  std::vector<idx_t> mperm(static_cast<std::size_t>(nv)), miperm(static_cast<std::size_t>(nv));
-  if (nv > 1) {
-    idx_t options[METIS_NOPTIONS];
-    METIS_SetDefaultOptions(options);
-    const int status = METIS_NodeND(&nv, cx.data(), cadj.empty() ? nullptr : cadj.data(), vwgt.data(), options,
-                                    mperm.data(), miperm.data());
-    if (status == METIS_ERROR_MEMORY) throw std::bad_alloc();
-    SEFLEX_DEMAND(status == METIS_OK, "METIS_NodeND failed (status " + std::to_string(status) + ")");
-  } else {
-    mperm[0] = miperm[0] = 0;
-  }
-  // METIS_NodeND: mperm[k] is the vertex eliminated k-th (miperm is its inverse). Expand each
-  // vertex into its columns, kept together and in their original order.
-  const std::vector<idx_t>& order = mperm;
+  // order[k] is the vertex eliminated k-th. Expand each vertex into its columns, kept together and
+  // in their original order.
+  const std::vector<idx_t> order = component_order(cx, cadj, vwgt);
   std::vector<std::int64_t> start(static_cast<std::size_t>(nv) + 1, 0);
   for (idx_t k = 0; k < nv; ++k) start[static_cast<std::size_t>(k) + 1] = start[static_cast<std::size_t>(k)] + vwgt[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])];
   std::vector<std::int64_t> position_of_vertex(static_cast<std::size_t>(nv));
