@@ -7,6 +7,7 @@
 #include <optional>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <string>
 
 #include "command.hpp"
@@ -92,6 +93,7 @@ int run_run(seflex::app::Args& args) {
     if (fidelity) b.fidelity = *fidelity == "rigid" ? io::Fidelity::Rigid : io::Fidelity::Flexible;
   }
   const auto t0 = std::chrono::steady_clock::now();
+  const std::clock_t c0 = std::clock();
   const io::Scene scene = io::build_scene(d);
   std::printf("seflex run %s -> %s\n  %s\n  %zu bodies, %zu hinges, %zu force elements, %d dofs; t_end = %g s\n",
               scene_path.c_str(), out->c_str(), d.title.c_str(), d.bodies.size(), scene.model.hinges.size(),
@@ -106,6 +108,7 @@ int run_run(seflex::app::Args& args) {
   Progress progress(output);
   io::RunEnd end;
   const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  const auto cpu_seconds = [&] { return static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC; };
   try {
     const io::SceneRun r = io::solve_scene(scene, d.integrator, formulation, &progress);
     end.stats = r.run;
@@ -121,6 +124,7 @@ int run_run(seflex::app::Args& args) {
     end.ok = false;
     end.message = e.what();
     end.wall_seconds = seconds();
+    end.cpu_seconds = cpu_seconds();
     output.finish(end);
     std::fprintf(stderr, "the results up to t = %g s are in %s (summary.txt, history.csv)\n", output.t_last(), out->c_str());
     if (dynamic_cast<const seflex::ConvergenceError*>(&e)) {
@@ -131,6 +135,7 @@ int run_run(seflex::app::Args& args) {
   }
   progress.done();
   end.wall_seconds = seconds();
+  end.cpu_seconds = cpu_seconds();
   output.finish(end);
   const mbd::RunStats& st = *end.stats;
   std::printf("done: t = %g s in %.2f s wall; %ld steps (%ld rejected), %ld Newton iterations; results in %s\n",

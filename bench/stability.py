@@ -87,7 +87,12 @@ def main():
     ap.add_argument("--bin", default=os.path.join(ROOT, "build", "apps", "seflex"))
     ap.add_argument("--out", default="stability-output")
     ap.add_argument("--img", default=None)
+    ap.add_argument("--replot", action="store_true", help="only redraw the chart from OUT/stability.json")
     a = ap.parse_args()
+    if a.replot:
+        with open(os.path.join(a.out, "stability.json")) as f:
+            plot(json.load(f), a, "/usr/bin/python3 bench/stability.py " + " ".join(x for x in sys.argv[1:] if x != "--replot"))
+        return
     b = os.path.abspath(a.bin)
     os.makedirs(a.out, exist_ok=True)
     cmd = "/usr/bin/python3 bench/stability.py " + " ".join(sys.argv[1:])
@@ -167,27 +172,47 @@ def main():
             print(f"  spin-up to {rate:g} rad/s: FFRF-LM max lag {ff_lag:.3g} deg, max difference to AIC full {ff_diff:.3g} deg", flush=True)
         ffrf_rows.append((rate, ff_lag, ff_diff, fails["ffrf-lm"]))
         if lags["full"] is None:  # the reference itself failed (reported, the sweep goes on)
-            spin_rows.append((rate, np.nan, np.nan, np.nan))
+            spin_rows.append((rate, np.nan, np.nan, np.nan, fails["full"]))
             print(f"  spin-up to {rate:g} rad/s: the full-inertia run failed (see {d('spin-full')}/summary.txt)", flush=True)
             continue
         t, lf = lags["full"]
         if lags["simplified"] is None:
-            spin_rows.append((rate, float(np.max(np.abs(lf))), np.inf, np.inf))
+            spin_rows.append((rate, float(np.max(np.abs(lf))), np.inf, np.inf, None))
         else:
             ts, ls = lags["simplified"]
-            spin_rows.append((rate, float(np.max(np.abs(lf))), float(np.max(np.abs(ls))), float(np.max(np.abs(np.interp(t, ts, ls) - lf)))))
+            spin_rows.append((rate, float(np.max(np.abs(lf))), float(np.max(np.abs(ls))), float(np.max(np.abs(np.interp(t, ts, ls) - lf))), None))
         print(f"  spin-up to {rate:g} rad/s: max lag full {spin_rows[-1][1]:.3g} deg, simplified {spin_rows[-1][2]:.3g} deg, "
               f"max difference {spin_rows[-1][3]:.3g} deg", flush=True)
+    data = dict(table=table, lock_rows=lock_rows, solar_rows=solar_rows, spin_rows=spin_rows, ffrf_rows=ffrf_rows)
+    with open(os.path.join(a.out, "stability.json"), "w") as f:
+        json.dump(data, f)
+    plot(data, a, cmd)
+
+
+def plot(data, a, cmd):
+    """The chart of the measured rows (also from OUT/stability.json with --replot)."""
+    table, lock_rows, solar_rows, spin_rows, ffrf_rows = (data[k] for k in ("table", "lock_rows", "solar_rows", "spin_rows", "ffrf_rows"))
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(1, 3, figsize=(15, 4.2))
-    labels = [f"{n}\n{m}" for n, m, _, _ in table]
-    ax[0].bar(range(len(table)), [s or 0 for _, _, s, _ in table], color=[{"rk4": "C0", "ffrf-lm": "C2"}.get(m, "C1") for _, m, _, _ in table])
-    ax[0].set_xticks(range(len(table)), labels, fontsize=6)
+    fig, ax = plt.subplots(1, 3, figsize=(16, 4.8))
+    models = list(dict.fromkeys(n for n, _, _, _ in table))
+    methods = [("rk4", "RK4 (explicit)", "C0"), ("generalized-alpha", "AIC, generalized-alpha", "C1"), ("ffrf-lm", "FFRF-LM, generalized-alpha", "C2")]
+    for j, (m, label, color) in enumerate(methods):
+        rows = [next((r for r in table if r[0] == n and r[1] == m), None) for n in models]
+        x = [i + (j - 1) * 0.27 for i in range(len(models))]
+        hs = [r[2] if r and r[2] else 0 for r in rows]
+        bars = ax[0].bar(x, hs, width=0.27, color=color, label=label)
+        for bar, r in zip(bars, rows):
+            if r and r[3] is None:  # stable at the largest step tried: a lower bound
+                bar.set_hatch("//")
+                ax[0].annotate(">=", (bar.get_x() + bar.get_width() / 2, bar.get_height()), ha="center", va="bottom", fontsize=7)
+    ax[0].set_xticks(range(len(models)), models, fontsize=8)
     ax[0].set_yscale("log")
     ax[0].set_ylabel("largest stable constant step [s]")
-    ax[0].set_title("stable steps (bars at the upper bracket mean: stable at the largest step tried)", fontsize=7)
+    ax[0].set_ylim(top=3.0)  # room for the legend above the bars
+    ax[0].legend(fontsize=7, loc="upper left", ncol=2)
+    ax[0].set_title("largest stable constant step (hatched, >=: stable at the largest step tried)", fontsize=8)
     hs = [r[0] for r in lock_rows]
     ax[1].semilogx(hs, [r[5] for r in lock_rows], "o-", label="link, adaptive: rejected steps")
     fail = [r for r in lock_rows if r[1] != "ok"]
@@ -205,16 +230,23 @@ def main():
     ax[1].set_ylabel("rejected steps (Newton or error test)")
     ax[1].legend(fontsize=6)
     ax[1].set_title("implicit generalized-alpha through the locks, large steps", fontsize=8)
-    r = np.array([x[0] for x in spin_rows])
-    ax[2].plot(r, [x[1] for x in spin_rows], "o-", label="lag, full inertia")
-    ax[2].plot(r, [x[2] for x in spin_rows], "s-", label="lag, simplified mass")
-    ax[2].plot(r, [x[3] for x in spin_rows], "^--", label="difference simplified - full")
+    r = np.array([x[0] for x in spin_rows], dtype=float)
+    ax[2].plot(r, [x[1] for x in spin_rows], "o-", color="C1", label="lag, AIC full inertia")
+    ax[2].plot(r, [x[2] for x in spin_rows], "s-", color="C4", label="lag, AIC simplified mass")
+    ax[2].plot(r, [x[3] for x in spin_rows], "^--", color="C4", label="|simplified - full|")
     rf = [x for x in ffrf_rows if np.isfinite(x[1])]
-    ax[2].plot([x[0] for x in rf], [x[1] for x in rf], "D-", color="C2", label="lag, FFRF-LM")
-    ax[2].plot([x[0] for x in rf], [x[2] for x in rf], "v:", color="C2", label="difference FFRF-LM - AIC full")
+    ax[2].plot([x[0] for x in rf], [x[1] for x in rf], "D-", color="C2", mfc="none", label="lag, FFRF-LM")
+    ax[2].plot([x[0] for x in rf], [x[2] for x in rf], "v:", color="C2", label="|FFRF-LM - AIC full|")
     for x in ffrf_rows:
         if not np.isfinite(x[1]):
             ax[2].annotate(f"FFRF-LM fails at t = {x[3]:.3g} s" if x[3] is not None else "FFRF-LM fails", (x[0], 0.5), fontsize=6, color="C2", rotation=90)
+    for x in rf:
+        if x[1] > 90.0:  # more than a quarter turn behind the hub: a diverged run that still ended "ok"
+            ax[2].annotate("FFRF-LM ends 'ok',\ndiverged", (x[0], x[1]), fontsize=7, color="C2", ha="right", va="top")
+    for x in spin_rows:
+        if not np.isfinite(x[1]):
+            ax[2].annotate(f"AIC full inertia fails at t = {x[4]:.3g} s" if x[4] is not None else "AIC full inertia fails", (x[0], 1e-3),
+                           fontsize=7, color="C1", rotation=90, ha="right")
     ax[2].set_yscale("log")
     ax[2].set_xlabel("final spin rate [rad/s] (ramp 15 s)")
     ax[2].set_ylabel("max lag of the beam behind the hub [deg]")

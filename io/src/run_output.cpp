@@ -260,7 +260,8 @@ void RunOutput::finish(const RunEnd& end) {
   js << "{\n  \"scene\": " << json_string(scene_.description.file.string()) << ",\n  \"title\": "
      << json_string(scene_.description.title) << ",\n  \"status\": " << (end.ok ? "\"ok\"" : "\"failed\"")
      << ",\n  \"message\": " << json_string(end.message) << ",\n  \"final_t\": " << json_number(t_last_)
-     << ",\n  \"run_time_s\": " << json_number(end.wall_seconds) << ",\n  \"steps\": " << steps
+     << ",\n  \"run_time_s\": " << json_number(end.wall_seconds) << ",\n  \"cpu_time_s\": " << json_number(end.cpu_seconds)
+     << ",\n  \"steps\": " << steps
      << ",\n  \"rejected_steps\": " << (end.stats ? std::to_string(rej_err + rej_newton) : "null")
      << ",\n  \"newton_iterations\": " << newton << ",\n  \"dofs\": " << m.num_dofs << ",\n  \"locks\": {";
   for (std::size_t k = 0; k < lock_elements_.size(); ++k) {
@@ -275,7 +276,7 @@ void RunOutput::finish(const RunEnd& end) {
   tx << "seflex run " << scene_.description.file.string() << "\n" << scene_.description.title << "\n\n";
   tx << "status          " << (end.ok ? "ok" : "FAILED") << "\n";
   if (!end.message.empty()) tx << "message         " << end.message << "\n";
-  tx << "final time      " << t_last_ << " s\nrun time        " << end.wall_seconds << " s\n";
+  tx << "final time      " << t_last_ << " s\nrun time        " << end.wall_seconds << " s\nCPU time        " << end.cpu_seconds << " s\n";
   tx << "model           " << scene_.description.bodies.size() << " bodies, " << m.hinges.size() << " hinges, "
      << m.force_elements.size() << " force elements, " << m.num_dofs << " dofs\n";
   tx << "steps           " << steps;

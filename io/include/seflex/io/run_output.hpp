@@ -36,6 +36,7 @@ struct RunEnd {
   bool ok = true;
   std::string message;               ///< failure diagnosis (or a note)
   double wall_seconds = 0.0;
+  double cpu_seconds = 0.0;          ///< process CPU time over the same span (building the scene, integrating, writing)
   std::optional<mbd::RunStats> stats;  ///< absent when the solver threw (counts then come from the samples)
 };
 
