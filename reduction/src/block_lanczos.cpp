@@ -11,6 +11,9 @@
 #include <random>
 #include <vector>
 
+#include "blas_threads.hpp"
+#include "mass_product.hpp"
+
 namespace seflex::reduction::detail {
 
 namespace {
@@ -19,11 +22,14 @@ constexpr double kDropTolerance = 1e-9;  // a column this small after orthogonal
 // Cholesky QR is used when no column of the block loses more than this fraction of its M-norm to
 // the others (cond(W) ~< 1e4: two passes then give orthogonality to round-off); else Gram-Schmidt.
 constexpr double kCholeskyQrLimit = 1e-4;
+// Full reorthogonalisation is repeated when it removed more than half of a column's squared M-norm
+// (Daniel, Gragg, Kaufman & Stewart 1976: eta = 1/sqrt(2)).
+constexpr double kReorthogonalizeAgain = 0.5;
 
 /// M-orthonormalise the columns of W among themselves (modified Gram-Schmidt, twice, with M Q kept
 /// so that every inner product costs no sparse product): W = Q R with R (kept x W.cols()).
 /// Columns that are dependent to round-off are dropped.
-void orthonormalize_block_mgs(const SparseMatrixd& M, const Eigen::MatrixXd& W, Eigen::MatrixXd& Q, Eigen::MatrixXd& R) {
+void orthonormalize_block_mgs(const MassProduct& M, const Eigen::MatrixXd& W, Eigen::MatrixXd& Q, Eigen::MatrixXd& R) {
   const Eigen::Index n = W.rows(), b = W.cols();
   Q.resize(n, b);
   Eigen::MatrixXd MQ(n, b);
@@ -31,7 +37,7 @@ void orthonormalize_block_mgs(const SparseMatrixd& M, const Eigen::MatrixXd& W, 
   Eigen::Index k = 0;
   for (Eigen::Index j = 0; j < b; ++j) {
     Eigen::VectorXd w = W.col(j);
-    Eigen::VectorXd Mw = M.selfadjointView<Eigen::Lower>() * w;
+    Eigen::VectorXd Mw = M(w);
     const double original = std::sqrt(std::max(0.0, w.dot(Mw)));
     for (int pass = 0; pass < 2; ++pass)
       for (Eigen::Index i = 0; i < k; ++i) {
@@ -54,12 +60,12 @@ void orthonormalize_block_mgs(const SparseMatrixd& M, const Eigen::MatrixXd& W, 
 /// The same by Cholesky QR, twice (CholQR2: G = W^T M W = U^T U, W <- W U^-1): two passes of
 /// BLAS-3 over the block instead of b^2 vector operations; falls back to Gram-Schmidt for a nearly
 /// dependent block.
-void orthonormalize_block(const SparseMatrixd& M, const Eigen::MatrixXd& W, Eigen::MatrixXd& Q, Eigen::MatrixXd& R) {
+void orthonormalize_block(const MassProduct& M, const Eigen::MatrixXd& W, Eigen::MatrixXd& Q, Eigen::MatrixXd& R) {
   const Eigen::Index b = W.cols();
   Q = W;
   R = Eigen::MatrixXd::Identity(b, b);
   for (int pass = 0; pass < 2; ++pass) {
-    const Eigen::MatrixXd MQ = M.selfadjointView<Eigen::Lower>() * Q;
+    const Eigen::MatrixXd MQ = M(Q);
     Eigen::MatrixXd G = Q.transpose() * MQ;
     G = 0.5 * (G + G.transpose()).eval();
     const Eigen::LLT<Eigen::MatrixXd> llt(G);
@@ -131,10 +137,9 @@ class ChunkedBasis {
 };
 
 /// W <- W - X (X^T M W): M-orthogonal to the locked vectors (no-op without them).
-void deflate(const Eigen::MatrixXd* X, const SparseMatrixd& M, Eigen::MatrixXd& W) {
+void deflate(const Eigen::MatrixXd* X, const MassProduct& M, Eigen::MatrixXd& W) {
   if (X == nullptr || X->cols() == 0) return;
-  const Eigen::MatrixXd MW = M.selfadjointView<Eigen::Lower>() * W;
-  W.noalias() -= *X * (X->transpose() * MW);
+  W.noalias() -= *X * (X->transpose() * M(W));
 }
 
 }  // namespace
@@ -166,35 +171,51 @@ std::optional<BlockLanczosResult> block_lanczos_lowest(SparseFactorization& fact
   Eigen::MatrixXd W(n, std::min(o.block, finite));
   for (Eigen::Index j = 0; j < W.cols(); ++j)
     for (Eigen::Index i = 0; i < n; ++i) W(i, j) = uniform(rng);
-  W = M.selfadjointView<Eigen::Lower>() * W;
+  const BlasThreadScope single_thread(1);  // memory-bound products with the basis (blas_threads.hpp)
+  const MassProduct mass(M);
+  W = mass(W);
   factor.solve_in_place(W);
   ++res.block_solves;
-  for (int pass = 0; pass < 2; ++pass) deflate(o.locked, M, W);
+  for (int pass = 0; pass < 2; ++pass) deflate(o.locked, mass, W);
 
   ChunkedBasis V(n, std::max<Eigen::Index>(4 * o.block, 32));  // basis blocks, M-orthonormal together
   Eigen::MatrixXd T(0, 0);                                     // V^T M OP V
   Eigen::MatrixXd R;
-  Eigen::MatrixXd Qnew;
-  orthonormalize_block(M, W, Qnew, R);
+  Eigen::MatrixXd Qnew, Qprev;
+  orthonormalize_block(mass, W, Qnew, R);
   Eigen::Index k = 0;
   for (;;) {
     // Append the new block.
     const Eigen::Index bj = Qnew.cols();
     V.append(Qnew);
     k += bj;
-    // Next block: OP Q_j, orthogonalised against the whole basis (two passes of block classical
-    // Gram-Schmidt); the coefficients are column block j of T.
-    W = M.selfadjointView<Eigen::Lower>() * Qnew;
+    // Next block: OP Q_j; the coefficients of its M-orthogonalisation are column block j of T.
+    W = mass(Qnew);
     factor.solve_in_place(W);
     ++res.block_solves;
     Eigen::MatrixXd H = Eigen::MatrixXd::Zero(k, bj);
+    // The three-term recurrence first (the last two blocks, cheap): it removes nearly all of W's
+    // norm, so that one pass of block classical Gram-Schmidt against the whole basis then keeps it
+    // M-orthogonal to round-off; a second pass only where that pass removed much (DGKS).
+    deflate(o.locked, mass, W);
+    for (const Eigen::MatrixXd* B : {&Qnew, &Qprev}) {
+      if (B->cols() == 0) continue;
+      const Eigen::MatrixXd C = B->transpose() * mass(W);
+      W.noalias() -= *B * C;
+      H.middleRows(B == &Qnew ? k - bj : k - bj - B->cols(), B->cols()) += C;
+    }
     for (int pass = 0; pass < 2; ++pass) {
-      deflate(o.locked, M, W);
-      const Eigen::MatrixXd C = V.transpose_times(M.selfadjointView<Eigen::Lower>() * W);
+      if (pass > 0) deflate(o.locked, mass, W);
+      const Eigen::MatrixXd MW = mass(W);
+      const Eigen::RowVectorXd before = W.cwiseProduct(MW).colwise().sum();
+      const Eigen::MatrixXd C = V.transpose_times(MW);
       V.subtract_times(C, W);
       H += C;
+      const Eigen::RowVectorXd removed = C.cwiseAbs2().colwise().sum();
+      if ((removed.array() <= kReorthogonalizeAgain * before.array()).all()) break;
     }
-    orthonormalize_block(M, W, Qnew, R);
+    Qprev = Qnew;
+    orthonormalize_block(mass, W, Qnew, R);
     T.conservativeResize(k, k);
     T.rightCols(bj) = H;
     T.bottomRows(bj).leftCols(k - bj) = H.topRows(k - bj).transpose();

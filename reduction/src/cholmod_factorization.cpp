@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "backends.hpp"
+#include "blas_threads.hpp"
 #include "metis_ordering.hpp"
 
 namespace seflex::reduction {
@@ -91,6 +92,7 @@ class CholmodFactorization final : public SparseFactorization {
     SEFLEX_DEMAND(B.rows() == stats_.rows, "solve: right-hand side has the wrong number of rows");
     if (B.cols() == 0 || B.rows() == 0) return;
     const auto t0 = Clock::now();
+    const BlasThreadScope single_thread(1);  // one BLAS call per supernode (blas_threads.hpp)
     cholmod_dense rhs{};
     rhs.nrow = static_cast<size_t>(B.rows());
     rhs.ncol = static_cast<size_t>(B.cols());

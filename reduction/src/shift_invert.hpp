@@ -3,6 +3,7 @@
 // (private to reduction/; one source file per backend).
 #include <Eigen/Core>
 
+#include "mass_product.hpp"
 #include "seflex/reduction/eigensolver.hpp"
 #include "seflex/reduction/sparse_factorization.hpp"
 
@@ -26,9 +27,7 @@ class ShiftInvertOperator {
  private:
   SparseFactorization& factor_;
   const SparseMatrixd& M_;
-  Eigen::VectorXd M_diagonal_;  // M when it is diagonal (lumped mass): y = d .* x
-  SparseMatrixd M_full_;        // otherwise both triangles, for a plain sparse product
-  bool M_is_diagonal_ = true;
+  MassProduct mass_;  // the cheapest form of M (Krylov methods multiply by it several times per step)
   const Eigen::MatrixXd& X_;
   Eigen::MatrixXd MX_;  // M X
   Eigen::VectorXd scratch_;
