@@ -107,12 +107,15 @@ int run_run(seflex::app::Args& args) {
   io::RunOutput output(scene, oo);
   Progress progress(output);
   io::RunEnd end;
+  end.formulation = io::formulation_name(formulation);
   const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   const auto cpu_seconds = [&] { return static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC; };
   try {
     const io::SceneRun r = io::solve_scene(scene, d.integrator, formulation, &progress);
     end.stats = r.run;
     if (r.ffrf) {
+      end.coordinates = r.ffrf->coordinates;
+      end.multipliers = r.ffrf->constraints;
       progress.done();
       std::printf("  %s: %d coordinates, %d multipliers; largest constraint drift %.2e m, %.2e rad (%.2e m/s)\n",
                   formulation_arg.c_str(), r.ffrf->coordinates, r.ffrf->constraints, r.ffrf->drift_position,

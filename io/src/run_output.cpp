@@ -263,7 +263,9 @@ void RunOutput::finish(const RunEnd& end) {
      << ",\n  \"run_time_s\": " << json_number(end.wall_seconds) << ",\n  \"cpu_time_s\": " << json_number(end.cpu_seconds)
      << ",\n  \"steps\": " << steps
      << ",\n  \"rejected_steps\": " << (end.stats ? std::to_string(rej_err + rej_newton) : "null")
-     << ",\n  \"newton_iterations\": " << newton << ",\n  \"dofs\": " << m.num_dofs << ",\n  \"locks\": {";
+     << ",\n  \"newton_iterations\": " << newton << ",\n  \"formulation\": " << json_string(end.formulation)
+     << ",\n  \"dofs\": " << (end.coordinates >= 0 ? end.coordinates : m.num_dofs) << ",\n  \"multipliers\": " << end.multipliers
+     << ",\n  \"locks\": {";
   for (std::size_t k = 0; k < lock_elements_.size(); ++k) {
     js << (k ? "," : "") << "\n    " << json_string(m.force_elements[static_cast<std::size_t>(lock_elements_[k])].name)
        << ": {\"t_latch\": " << (t_latch_[k] ? json_number(*t_latch_[k]) : "null")
@@ -279,7 +281,9 @@ void RunOutput::finish(const RunEnd& end) {
   tx << "final time      " << t_last_ << " s\nrun time        " << end.wall_seconds << " s\nCPU time        " << end.cpu_seconds << " s\n";
   tx << "model           " << scene_.description.bodies.size() << " bodies, " << m.hinges.size() << " hinges, "
      << m.force_elements.size() << " force elements, " << m.num_dofs << " dofs\n";
-  tx << "steps           " << steps;
+  tx << "formulation     " << end.formulation;
+  if (end.coordinates >= 0) tx << ": " << end.coordinates << " coordinates, " << end.multipliers << " multipliers";
+  tx << "\nsteps           " << steps;
   if (end.stats) tx << " accepted, " << rej_err << " rejected (error), " << rej_newton << " retried (Newton)";
   tx << "\nNewton          " << newton << " iterations";
   if (steps > 0) tx << " (" << static_cast<double>(newton) / static_cast<double>(steps) << " per step)";

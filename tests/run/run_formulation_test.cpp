@@ -64,6 +64,16 @@ TEST(RunFormulation, FloatingFrameAndRigidMatchAic) {
   std::printf("max |phi_aic - phi_ffrf| = %.2e deg, |phi_aic_rigid - phi_rigid_lm| = %.2e deg\n", d_ffrf, d_rigid);
   EXPECT_LT(d_ffrf, 1e-3);
   EXPECT_LT(d_rigid, 1e-4);
+  // summary.json names the formulation and its unknowns: FFRF-LM has the frame (6), the
+  // frame-clamped modes of the 12 interface dofs (12 - 6) and the hinge angle; 6 multipliers for
+  // the hinge to ground. AIC: the model's dofs, no multipliers.
+  const std::string ffrf_summary = read_file(dir / "ffrf" / "summary.json");
+  EXPECT_NE(ffrf_summary.find("\"formulation\": \"ffrf-lm\""), std::string::npos) << ffrf_summary;
+  EXPECT_NE(ffrf_summary.find("\"dofs\": 13,"), std::string::npos) << ffrf_summary;
+  EXPECT_NE(ffrf_summary.find("\"multipliers\": 6,"), std::string::npos) << ffrf_summary;
+  const std::string aic_summary = read_file(dir / "aic" / "summary.json");
+  EXPECT_NE(aic_summary.find("\"formulation\": \"aic\""), std::string::npos) << aic_summary;
+  EXPECT_NE(aic_summary.find("\"multipliers\": 0,"), std::string::npos) << aic_summary;
 }
 
 TEST(RunFormulation, RejectsUnknownFormulation) {

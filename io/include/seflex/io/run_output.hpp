@@ -1,7 +1,7 @@
 #pragma once
 // Results of a `seflex run`, written as the run goes (every file flushed after every sample, so a
 // run that stops early leaves everything it computed):
-//   history.csv   t; per hinge H: H.phi_deg, H.rate_deg_s; per force element E: E.torque (cable
+//   history.csv   t; per hinge H: H.phi_deg, H.rate_deg_s (driven: H.drive_torque); per force element E: E.torque (cable
 //                 loops: E.force, E.tension1, E.tension2, E.torque.<hinge> per hinge), locks also
 //                 E.latched; E_kinetic, E_elastic, E_spring, E_gravity, E_total; newton_iterations
 //                 (all accepted steps so far), step_size (last accepted step)
@@ -37,6 +37,9 @@ struct RunEnd {
   std::string message;               ///< failure diagnosis (or a note)
   double wall_seconds = 0.0;
   double cpu_seconds = 0.0;          ///< process CPU time over the same span (building the scene, integrating, writing)
+  std::string formulation = "aic";   ///< which solver ran (io::formulation_name)
+  int coordinates = -1;              ///< unknowns of a multiplier formulation (-1: the model's dofs)
+  int multipliers = 0;               ///< its Lagrange multipliers
   std::optional<mbd::RunStats> stats;  ///< absent when the solver threw (counts then come from the samples)
 };
 
