@@ -49,6 +49,10 @@ int run_modes(seflex::app::Args& args) {
   const auto backend = seflex::reduction::parse_eigen_backend(solver);
   if (!backend) throw UsageError("option --eigensolver expects block, spectra, arpack or dense, got '" + solver + "'");
   o.backend = *backend;
+  if (const int block = args.integer("block-size", kAbsent); block != kAbsent) {
+    if (block < 1) throw UsageError("option --block-size must be at least 1");
+    o.block_size = block;
+  }
   const std::string fact = args.value_or("factorization", std::string(seflex::reduction::to_string(o.factorization)));
   const auto factorization = seflex::reduction::parse_factorization_backend(fact);
   if (!factorization) throw UsageError("option --factorization expects cholmod or ldlt, got '" + fact + "'");
@@ -108,6 +112,6 @@ int run_modes(seflex::app::Args& args) {
 }  // namespace
 
 SEFLEX_COMMAND(modes, "DECK [--count N] [--csv FILE] [--vtk FILE.vtu] [--eigensolver block|spectra|arpack|dense] "
-                      "[--factorization cholmod|ldlt] [--subcase ID] [--force]",
+                      "[--block-size B] [--factorization cholmod|ldlt] [--subcase ID] [--force]",
                "normal modes (SOL 103): Nastran-style eigenvalue table, CSV of frequencies, mode shapes for ParaView",
                run_modes);

@@ -79,6 +79,7 @@ NormalModes solve_normal_modes(const fem::Model& model, const ModesOptions& opti
 
   EigenOptions eo;
   eo.backend = options.backend;
+  eo.block_size = options.block_size;
   eo.factorization = options.factorization;
   eo.check_completeness = options.check_completeness;
   eo.count = options.count;

@@ -122,6 +122,14 @@ TEST(ModesCli, KrylovBackendsAgreeOnAFreePlate) {
     for (const auto& row : results.back()) rigid += row[2] < 1e-4 * results.back()[6][2];
     EXPECT_EQ(rigid, 6) << solver;
   }
+  // a block of 3 holds only half of the six rigid-body modes: the completeness check brings the rest
+  const auto small = test::run_seflex("modes plate.bdf --count 14 --block-size 3 --csv block3.csv", dir.path());
+  ASSERT_EQ(small.exit_code, 0) << small.err;
+  results.push_back(csv_rows(dir / "block3.csv"));
+  ASSERT_EQ(results.back().size(), 14u);
+  int rigid = 0;
+  for (const auto& row : results.back()) rigid += row[2] < 1e-4 * results.back()[6][2];
+  EXPECT_EQ(rigid, 6) << "block 3";
   for (std::size_t b = 1; b < results.size(); ++b)
     for (int j = 6; j < 14; ++j) EXPECT_NEAR(results[0][j][1] / results[b][j][1], 1.0, 1e-10) << b << " mode " << j + 1;
   const auto nd = test::run_seflex("modes plate.bdf", dir.path());
@@ -139,6 +147,7 @@ TEST(ModesCli, RefusesToOverwriteAndChecksOptions) {
   EXPECT_EQ(test::run_seflex("modes '" + bar_cc().string() + "' --csv f.csv --force", dir.path()).exit_code, 0);
   EXPECT_EQ(test::run_seflex("modes '" + bar_cc().string() + "' --eigensolver lobpcg", dir.path()).exit_code, 2);
   EXPECT_EQ(test::run_seflex("modes '" + bar_cc().string() + "' --count 0", dir.path()).exit_code, 2);
+  EXPECT_EQ(test::run_seflex("modes '" + bar_cc().string() + "' --block-size 0", dir.path()).exit_code, 2);
   EXPECT_EQ(test::run_seflex("modes '" + bar_cc().string() + "' --vtk shapes.vtk", dir.path()).exit_code, 2);
 }
 

@@ -25,6 +25,7 @@ struct ModesOptions {
   std::optional<int> subcase;                 ///< default: the first subcase, else the global selections
   std::optional<int> count;                   ///< overrides ND (and lifts the need for a METHOD)
   EigenBackend backend = EigenOptions{}.backend;
+  int block_size = EigenOptions{}.block_size;  ///< block of the block-Lanczos backend (like EIGRL MAXSET)
   FactorizationBackend factorization = kDefaultFactorization;
   std::vector<Eigen::Index> fixed_dofs;       ///< extra g-set dofs held at zero (fixed-interface modes)
   bool check_completeness = true;
