@@ -26,6 +26,32 @@ constexpr double kCholeskyQrLimit = 1e-4;
 // (Daniel, Gragg, Kaufman & Stewart 1976: eta = 1/sqrt(2)).
 constexpr double kReorthogonalizeAgain = 0.5;
 
+/// BLAS dimension (32-bit: a million-dof basis is far from its limit).
+int blas_int(Eigen::Index i) {
+  SEFLEX_DEMAND(i >= 0 && i <= std::numeric_limits<int>::max(), "block Lanczos: dimension beyond the BLAS's int");
+  return static_cast<int>(i);
+}
+
+/// C = A^T B (A n x p, B n x q, column-major, leading dimension n; C p x q with leading dimension ldc).
+void gram(const double* A, Eigen::Index p, const double* B, Eigen::Index q, Eigen::Index n, double* C, Eigen::Index ldc) {
+  cblas_dgemm(CblasColMajor, CblasTrans, CblasNoTrans, blas_int(p), blas_int(q), blas_int(n), 1.0, A, blas_int(n), B,
+              blas_int(n), 0.0, C, blas_int(ldc));
+}
+Eigen::MatrixXd gram(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B) {
+  Eigen::MatrixXd C(A.cols(), B.cols());
+  gram(A.data(), A.cols(), B.data(), B.cols(), A.rows(), C.data(), C.rows());
+  return C;
+}
+/// Y -= A C (A n x p, C p x q with leading dimension ldc, Y n x q; leading dimension n).
+void subtract_product(const double* A, Eigen::Index p, const double* C, Eigen::Index ldc, Eigen::Index n, double* Y,
+                      Eigen::Index q) {
+  cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, blas_int(n), blas_int(q), blas_int(p), -1.0, A, blas_int(n), C,
+              blas_int(ldc), 1.0, Y, blas_int(n));
+}
+void subtract_product(const Eigen::MatrixXd& A, const Eigen::MatrixXd& C, Eigen::MatrixXd& Y) {
+  subtract_product(A.data(), A.cols(), C.data(), C.rows(), A.rows(), Y.data(), Y.cols());
+}
+
 /// M-orthonormalise the columns of W among themselves (modified Gram-Schmidt, twice, with M Q kept
 /// so that every inner product costs no sparse product): W = Q R with R (kept x W.cols()).
 /// Columns that are dependent to round-off are dropped.
@@ -66,7 +92,7 @@ void orthonormalize_block(const MassProduct& M, const Eigen::MatrixXd& W, Eigen:
   R = Eigen::MatrixXd::Identity(b, b);
   for (int pass = 0; pass < 2; ++pass) {
     const Eigen::MatrixXd MQ = M(Q);
-    Eigen::MatrixXd G = Q.transpose() * MQ;
+    Eigen::MatrixXd G = gram(Q, MQ);
     G = 0.5 * (G + G.transpose()).eval();
     const Eigen::LLT<Eigen::MatrixXd> llt(G);
     bool well_conditioned = llt.info() == Eigen::Success;
@@ -77,15 +103,10 @@ void orthonormalize_block(const MassProduct& M, const Eigen::MatrixXd& W, Eigen:
       orthonormalize_block_mgs(M, W, Q, R);
       return;
     }
-    U.triangularView<Eigen::Upper>().solveInPlace<Eigen::OnTheRight>(Q);
+    cblas_dtrsm(CblasColMajor, CblasRight, CblasUpper, CblasNoTrans, CblasNonUnit, blas_int(Q.rows()), blas_int(b), 1.0,
+                U.data(), blas_int(b), Q.data(), blas_int(Q.rows()));  // Q <- Q U^-1
     R = (U.triangularView<Eigen::Upper>() * R).eval();
   }
-}
-
-/// BLAS dimension (32-bit: a million-dof basis is far from its limit).
-int blas_int(Eigen::Index i) {
-  SEFLEX_DEMAND(i >= 0 && i <= std::numeric_limits<int>::max(), "block Lanczos: dimension beyond the BLAS's int");
-  return static_cast<int>(i);
 }
 
 /// The Lanczos basis V, stored in column chunks: it grows without copying, and the products with it
@@ -111,8 +132,7 @@ class ChunkedBasis {
     Eigen::MatrixXd C(cols_, Y.cols());
     Eigen::Index at = 0;
     for (std::size_t c = 0; c < chunks_.size(); at += used_[c], ++c)
-      cblas_dgemm(CblasColMajor, CblasTrans, CblasNoTrans, blas_int(used_[c]), blas_int(Y.cols()), blas_int(rows_), 1.0,
-                  chunks_[c].data(), blas_int(rows_), Y.data(), blas_int(rows_), 0.0, C.data() + at, blas_int(cols_));
+      gram(chunks_[c].data(), used_[c], Y.data(), Y.cols(), rows_, C.data() + at, cols_);
     return C;
   }
   /// Y -= V C.
@@ -120,8 +140,7 @@ class ChunkedBasis {
     SEFLEX_DEMAND(Y.rows() == rows_ && C.rows() == cols_ && C.cols() == Y.cols(), "block Lanczos: product sizes");
     Eigen::Index at = 0;
     for (std::size_t c = 0; c < chunks_.size(); at += used_[c], ++c)
-      cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, blas_int(rows_), blas_int(Y.cols()), blas_int(used_[c]), -1.0,
-                  chunks_[c].data(), blas_int(rows_), C.data() + at, blas_int(cols_), 1.0, Y.data(), blas_int(rows_));
+      subtract_product(chunks_[c].data(), used_[c], C.data() + at, cols_, rows_, Y.data(), Y.cols());
   }
   /// V C.
   Eigen::MatrixXd times(const Eigen::MatrixXd& C) const {
@@ -139,7 +158,7 @@ class ChunkedBasis {
 /// W <- W - X (X^T M W): M-orthogonal to the locked vectors (no-op without them).
 void deflate(const Eigen::MatrixXd* X, const MassProduct& M, Eigen::MatrixXd& W) {
   if (X == nullptr || X->cols() == 0) return;
-  W.noalias() -= *X * (X->transpose() * M(W));
+  subtract_product(*X, gram(*X, M(W)), W);
 }
 
 }  // namespace
@@ -198,11 +217,16 @@ std::optional<BlockLanczosResult> block_lanczos_lowest(SparseFactorization& fact
     // norm, so that one pass of block classical Gram-Schmidt against the whole basis then keeps it
     // M-orthogonal to round-off; a second pass only where that pass removed much (DGKS).
     deflate(o.locked, mass, W);
-    for (const Eigen::MatrixXd* B : {&Qnew, &Qprev}) {
-      if (B->cols() == 0) continue;
-      const Eigen::MatrixXd C = B->transpose() * mass(W);
-      W.noalias() -= *B * C;
-      H.middleRows(B == &Qnew ? k - bj : k - bj - B->cols(), B->cols()) += C;
+    {
+      const Eigen::MatrixXd MW = mass(W);
+      const Eigen::MatrixXd C = gram(Qnew, MW);
+      H.bottomRows(bj) += C;
+      if (Qprev.cols() > 0) {
+        const Eigen::MatrixXd Cprev = gram(Qprev, MW);
+        H.middleRows(k - bj - Qprev.cols(), Qprev.cols()) += Cprev;
+        subtract_product(Qprev, Cprev, W);
+      }
+      subtract_product(Qnew, C, W);
     }
     for (int pass = 0; pass < 2; ++pass) {
       if (pass > 0) deflate(o.locked, mass, W);
@@ -214,7 +238,7 @@ std::optional<BlockLanczosResult> block_lanczos_lowest(SparseFactorization& fact
       const Eigen::RowVectorXd removed = C.cwiseAbs2().colwise().sum();
       if ((removed.array() <= kReorthogonalizeAgain * before.array()).all()) break;
     }
-    Qprev = Qnew;
+    Qprev = std::move(Qnew);
     orthonormalize_block(mass, W, Qnew, R);
     T.conservativeResize(k, k);
     T.rightCols(bj) = H;
