@@ -47,7 +47,7 @@ int run_modes(seflex::app::Args& args) {
   }
   const std::string solver = args.value_or("eigensolver", std::string(seflex::reduction::to_string(o.backend)));
   const auto backend = seflex::reduction::parse_eigen_backend(solver);
-  if (!backend) throw UsageError("option --eigensolver expects block, spectra, arpack or dense, got '" + solver + "'");
+  if (!backend) throw UsageError("option --eigensolver expects " + std::string(seflex::reduction::eigen_backend_names()) + ", got '" + solver + "'");
   o.backend = *backend;
   if (const int block = args.integer("block-size", kAbsent); block != kAbsent) {
     if (block < 1) throw UsageError("option --block-size must be at least 1");

@@ -181,7 +181,7 @@ int run_reduce(seflex::app::Args& args) {
     throw UsageError("option --fmax expects a frequency > 0 (Hz)");
   if (compare != kAbsent && compare < 1) throw UsageError("option --compare expects a number of elastic modes >= 1");
   const auto backend = red::parse_eigen_backend(solver);
-  if (!backend) throw UsageError("option --eigensolver expects spectra, arpack or dense, got '" + solver + "'");
+  if (!backend) throw UsageError("option --eigensolver expects " + std::string(red::eigen_backend_names()) + ", got '" + solver + "'");
   if (!force && std::filesystem::exists(*out))  // before the work, not after it
     throw seflex::InputError(seflex::SourceRef{*out, 0},
                              "exists already; refusing to overwrite it (use --force to replace it)");
@@ -239,7 +239,7 @@ int run_reduce(seflex::app::Args& args) {
 
 SEFLEX_COMMAND(reduce,
                "MODEL --interface IDS|SETS|aset|bset|suport [--modes N | --fmax HZ] [--frame NODE|SET] [--name NAME] "
-               "[--compare K] [--eigensolver spectra|arpack|dense] [--no-mesh] -o FILE.se [--force] "
+               "[--compare K] [--eigensolver block|spectra|arpack|dense] [--no-mesh] -o FILE.se [--force] "
                "[--properties FILE] [--set NAME=VALUE]...",
                "Craig-Bampton reduction to an absolute-interface-coordinate superelement: constraint modes of all six "
                "dofs of the interface grids plus fixed-interface modes; prints mass properties, the truncation report "

@@ -36,6 +36,8 @@ std::optional<EigenBackend> parse_eigen_backend(std::string_view name) {
   return std::nullopt;
 }
 
+std::string_view eigen_backend_names() { return "block, spectra, arpack or dense"; }
+
 namespace {
 
 using Clock = std::chrono::steady_clock;

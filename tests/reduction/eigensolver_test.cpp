@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <numbers>
+#include <sstream>
 
 #include "test_problems.hpp"
 
@@ -237,6 +239,18 @@ TEST(Eigensolver, ParsesBackendNames) {
   EXPECT_EQ(parse_eigen_backend("arpack"), EigenBackend::Arpack);
   EXPECT_EQ(parse_eigen_backend("block"), EigenBackend::Block);
   EXPECT_FALSE(parse_eigen_backend("lanczos").has_value());
+  // Every name the messages offer parses and prints back as itself.
+  std::string names(eigen_backend_names());
+  for (const char* sep : {", ", " or "})
+    for (std::size_t p = names.find(sep); p != std::string::npos; p = names.find(sep)) names.replace(p, std::strlen(sep), " ");
+  std::istringstream in(names);
+  int count = 0;
+  for (std::string name; in >> name; ++count) {
+    const auto b = parse_eigen_backend(name);
+    ASSERT_TRUE(b.has_value()) << name;
+    EXPECT_EQ(to_string(*b), name);
+  }
+  EXPECT_EQ(count, 4);
 }
 
 }  // namespace

@@ -37,6 +37,8 @@ enum class EigenBackend : std::uint8_t { Spectra, Arpack, Dense, Block };
 /// "spectra", "arpack", "dense" or "block".
 std::string_view to_string(EigenBackend backend);
 std::optional<EigenBackend> parse_eigen_backend(std::string_view name);
+/// The names parse_eigen_backend accepts, for messages: "block, spectra, arpack or dense".
+std::string_view eigen_backend_names();
 
 /// Which eigenpairs to compute and how. Every range bound is in eigenvalue units (rad/s)^2.
 struct EigenOptions {
