@@ -75,9 +75,9 @@ int run_run(seflex::app::Args& args) {
     throw UsageError("option --fidelity expects rigid or flexible, got '" + *fidelity + "'");
   io::Formulation formulation = io::Formulation::Aic;
   if (formulation_arg == "ffrf-lm") formulation = io::Formulation::FfrfLm;
-  else if (formulation_arg == "rigid-lm") formulation = io::Formulation::RigidLm;
+  else if (formulation_arg == "rigid-lm" || formulation_arg == "rigid") formulation = io::Formulation::RigidLm;
   else if (formulation_arg != "aic")
-    throw UsageError("option --formulation expects aic, ffrf-lm or rigid-lm, got '" + formulation_arg + "'");
+    throw UsageError("option --formulation expects aic, ffrf-lm or rigid-lm (also: rigid), got '" + formulation_arg + "'");
   io::RunOutput::check_folder(*out, force);  // before the work, not after it
 
   io::SceneDescription d = io::read_scene(scene_path);
@@ -155,5 +155,5 @@ SEFLEX_COMMAND(run,
                "simulate the mechanism of a scene file (YAML, docs/scenes.md); writes history.csv, events.csv, "
                "poses.csv, animation.pvd and summary.txt/json to OUTDIR as the run goes (options override the scene; "
                "--formulation: the AIC superelements (default), the classic floating frame or rigid bodies with "
-               "Lagrange multipliers, docs/ffrf.md)",
+               "Lagrange multipliers (rigid-lm, also spelled rigid), docs/ffrf.md)",
                run_run);
