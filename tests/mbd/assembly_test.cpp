@@ -96,6 +96,21 @@ VectorXd residual(const Model& model, const State& s, const AssemblyOptions& o) 
   return d.residual;
 }
 
+// dr/dx by central differences of the residual, column by column along the model's increments
+// (rotations on the group), step h.
+MatrixXd central_difference_tangent(const Model& model, const State& s, const AssemblyOptions& o, double h) {
+  MatrixXd Kfd(model.num_dofs, model.num_dofs);
+  for (int c = 0; c < model.num_dofs; ++c) {
+    VectorXd e = VectorXd::Zero(model.num_dofs);
+    e[c] = h;
+    State sp = s, sm = s;
+    apply_increment(model, sp, e);
+    apply_increment(model, sm, -e);
+    Kfd.col(c) = (residual(model, sp, o) - residual(model, sm, o)) / (2 * h);
+  }
+  return Kfd;
+}
+
 }  // namespace
 
 TEST(Assembly, StaticTangentMatchesFiniteDifferences) {
@@ -107,16 +122,7 @@ TEST(Assembly, StaticTangentMatchesFiniteDifferences) {
     Data data(model);
     assemble(model, s, data, o);
     const MatrixXd K = dense(model, data, 1, 0, 0);
-    const double h = 1e-7;
-    MatrixXd Kfd(model.num_dofs, model.num_dofs);
-    for (int c = 0; c < model.num_dofs; ++c) {
-      VectorXd e = VectorXd::Zero(model.num_dofs);
-      e[c] = h;
-      State sp = s, sm = s;
-      apply_increment(model, sp, e);
-      apply_increment(model, sm, -e);
-      Kfd.col(c) = (residual(model, sp, o) - residual(model, sm, o)) / (2 * h);
-    }
+    const MatrixXd Kfd = central_difference_tangent(model, s, o, 1e-7);
     const double err = (K - Kfd).norm() / Kfd.norm();
     if (inertia == InertiaModel::Simplified) {
       EXPECT_LT(err, 1e-6);
@@ -223,16 +229,7 @@ TEST(Assembly, DynamicTangentMatchesFiniteDifferencesAtHighSpin) {
   Data data(model);
   assemble(model, st, data, AssemblyOptions{});
   const MatrixXd K = dense(model, data, 1, 0, 0);
-  const double hh = 1e-6;
-  MatrixXd Kfd(model.num_dofs, model.num_dofs);
-  for (int c = 0; c < model.num_dofs; ++c) {
-    VectorXd e = VectorXd::Zero(model.num_dofs);
-    e[c] = hh;
-    State sp = st, sm = st;
-    apply_increment(model, sp, e);
-    apply_increment(model, sm, -e);
-    Kfd.col(c) = (residual(model, sp, {}) - residual(model, sm, {})) / (2 * hh);
-  }
+  const MatrixXd Kfd = central_difference_tangent(model, st, AssemblyOptions{}, 1e-6);
   // Kt of the full inertia is approximate by design (aic_element.hpp: only the rotation of the
   // inertia force with the frame), so dr/dx is not matched to round-off; what Newton needs is that
   // the iteration matrix S = K + gamma/(beta h) C + 1/(beta h^2) M it uses contracts: the error
