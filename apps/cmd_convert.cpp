@@ -7,6 +7,8 @@
 
 #include "command.hpp"
 #include "model_args.hpp"
+#include "usage_warnings.hpp"
+#include "seflex/reduction/card_usage.hpp"
 #include "seflex/io/model_reader.hpp"
 #include "seflex/io/nastran_writer.hpp"
 #include "seflex/io/results_csv.hpp"
@@ -34,12 +36,12 @@ int run_convert(seflex::app::Args& args) {
   }
   seflex::io::write_nastran_file(model, *output, force, w);
 
-  std::size_t elements = model.bars.size() + model.rods.size() + model.shells.size() + model.springs.size() + model.rbe2.size();
+  std::size_t elements = model.bars.size() + model.rods.size() + model.shells.size() + model.springs.size() + model.rbe2.size() +
+                         model.rbars.size() + model.rbe3.size();
   std::printf("wrote %s: %zu grids, %zu elements, %zu CONM2, %zu node sets\n", output->c_str(), model.grids.size(), elements,
               model.conm2.size(), model.node_sets.size());
-  for (const auto& u : seflex::io::unwritten_cards(model))
-    std::fprintf(stderr, "warning: not written (seflex does not model it): %s\n", u.c_str());
   std::fflush(stdout);
+  seflex::app::print_card_usage(model, seflex::reduction::check_card_usage(model, seflex::reduction::Solution::Convert, {}));
   return seflex::app::kOk;
 }
 

@@ -35,6 +35,9 @@ int run_export(seflex::app::Args& args) {
   const seflex::se::Superelement body = seflex::io::load_superelement(body_path);
   std::printf("superelement '%s' from %s: %d interface nodes, %d modes, n = %d\n", body.name.c_str(), body_path.c_str(),
               body.num_interfaces(), body.num_modes, body.size());
+  for (const std::string& w : body.source_warnings)  // what seflex reduce said about the source model
+    std::fprintf(stderr, "warning (reduction of %s): %s\n", body.source_file.c_str(), w.c_str());
+  std::fflush(stderr);
   if (dmig) {
     seflex::io::DmigExportOptions o;
     o.overwrite = force;

@@ -12,6 +12,7 @@
 #include "seflex/fem/model.hpp"
 #include "model_args.hpp"
 #include "seflex/io/model_reader.hpp"
+#include "seflex/reduction/card_usage.hpp"
 
 namespace {
 
@@ -25,7 +26,8 @@ void print_model(const seflex::fem::Model& m) {
   for (const auto& r : m.rods) (r.inline_property ? conrod : crod)++;
   for (const auto& s : m.shells) (s.nnode == 4 ? quad : tria)++;
   for (const auto& s : m.springs) (s.inline_property ? celas2 : celas1)++;
-  const std::size_t elements = m.bars.size() + m.rods.size() + m.shells.size() + m.conm2.size() + m.springs.size() + m.rbe2.size();
+  const std::size_t elements = m.bars.size() + m.rods.size() + m.shells.size() + m.conm2.size() + m.springs.size() +
+                               m.rbe2.size() + m.rbars.size() + m.rbe3.size();
   std::printf("\nmodel\n");
   row("grids", m.grids.size());
   row("scalar points", m.spoints.size());
@@ -34,12 +36,14 @@ void print_model(const seflex::fem::Model& m) {
   const std::pair<const char*, std::size_t> kinds[] = {{"CBAR", cbar},     {"CBEAM", cbeam},   {"CROD", crod},
                                                        {"CONROD", conrod}, {"CQUAD4", quad},   {"CTRIA3", tria},
                                                        {"CONM2", m.conm2.size()}, {"CELAS1", celas1}, {"CELAS2", celas2},
-                                                       {"RBE2", m.rbe2.size()}};
+                                                       {"RBE2", m.rbe2.size()}, {"RBAR", m.rbars.size()},
+                                                       {"RBE3", m.rbe3.size()}};
   for (const auto& [name, n] : kinds)
     if (n) row(name, n, 4);
   row("properties", m.bar_props.size() + m.rod_props.size() + m.shell_props.size() + m.spring_props.size());
   row("materials", m.mat1.size());
   row("SPC entries", m.spcs.size());
+  row("MPC equations", m.mpcs.size());
   row("loads (FORCE, MOMENT)", m.point_loads.size());
   row("eigenvalue methods", m.eigen_methods.size());
   row("DMIG matrices", m.dmigs.size());
@@ -53,6 +57,34 @@ void print_model(const seflex::fem::Model& m) {
     std::printf("\nunsupported cards (read but not used by seflex)\n");
     for (const auto& u : m.unsupported)
       std::printf("  %-24s %10zu   first at %s\n", u.name.c_str(), u.count, seflex::fem::where(m, u.first).str().c_str());
+  }
+}
+
+/// What the deck's own solution (its SOL) would use, refuse, approximate and ignore.
+void print_card_usage(const seflex::fem::Model& m) {
+  namespace red = seflex::reduction;
+  const red::Solution sol = red::solution_of_deck(m);
+  std::vector<red::CaseSelection> cases;
+  if (sol == red::Solution::Statics) cases = red::select_cases(m);
+  else if (sol == red::Solution::NormalModes || sol == red::Solution::Buckling) cases = {red::select_case(m)};
+  const red::CardUsage usage = red::check_card_usage(m, sol, cases);
+  if (sol == red::Solution::Info)
+    std::printf("\ncard use (no SOL seflex runs in the executive control: cards seflex does not model are listed)\n");
+  else
+    std::printf("\ncard use by %s, the deck's SOL\n", red::solution_name(sol));
+  if (usage.uses.empty()) {
+    std::printf("  every card is used\n");
+    return;
+  }
+  const std::pair<red::CardUse::Kind, const char*> groups[] = {
+      {red::CardUse::Kind::Refused, "refused (the solution stops with an error)"},
+      {red::CardUse::Kind::Approximated, "read with an approximation (warning)"},
+      {red::CardUse::Kind::Unused, "not used (warning)"}};
+  for (const auto& [kind, title] : groups) {
+    if (usage.count(kind) == 0) continue;
+    std::printf("  %s\n", title);
+    for (const auto& u : usage.uses)
+      if (u.kind == kind) std::printf("    %s\n", red::describe(m, u).c_str());
   }
 }
 
@@ -105,6 +137,7 @@ int run_info(seflex::app::Args& args) {
   if (!cc.title.empty()) std::printf("title       %s\n", cc.title.c_str());
   if (!cc.subtitle.empty()) std::printf("subtitle    %s\n", cc.subtitle.c_str());
   print_model(m);
+  print_card_usage(m);
   std::fflush(stdout);
   std::optional<int> reference;
   if (grdpnt != kUnset) {

@@ -8,6 +8,8 @@
 
 #include "command.hpp"
 #include "model_args.hpp"
+#include "usage_warnings.hpp"
+#include "seflex/reduction/card_usage.hpp"
 #include "seflex/io/model_reader.hpp"
 #include "seflex/io/results_csv.hpp"
 #include "seflex/io/vtk_modes.hpp"
@@ -30,6 +32,11 @@ const char* normalization_name(seflex::reduction::ModeNormalization n) {
 void print_table(const seflex::reduction::NormalModes& r) {
   const Eigen::VectorXd rad = r.radians(), hz = r.cycles();
   std::printf("\n%58s\n", "R E A L   E I G E N V A L U E S");
+  if (r.guyan)
+    std::printf("   (Guyan reduction: eigenvalues of the %ld-dof a-set %s; %ld omitted dofs condensed statically,\n"
+                "    as Nastran does; the mode shapes' omitted dofs are recovered statically)\n",
+                static_cast<long>(r.guyan->a_dofs), r.guyan->from_aset ? "of the ASET/ASET1 cards" : "left by OMIT/OMIT1",
+                static_cast<long>(r.guyan->o_dofs));
   std::printf("   MODE   EXTRACTION    EIGENVALUE       RADIANS        CYCLES      GENERALIZED    GENERALIZED\n");
   std::printf("    NO.      ORDER                                                    MASS         STIFFNESS\n");
   for (Eigen::Index k = 0; k < r.eigenvalues.size(); ++k)
@@ -70,6 +77,9 @@ int run_modes(seflex::app::Args& args) {
 
   const auto t0 = std::chrono::steady_clock::now();
   const seflex::fem::Model model = seflex::io::read_model(deck, model_options);
+  seflex::app::check_and_print_card_usage(
+      model, seflex::reduction::check_card_usage(model, seflex::reduction::Solution::NormalModes,
+                                                 {seflex::reduction::select_case(model, o.subcase)}));
   const auto t1 = std::chrono::steady_clock::now();
   const seflex::reduction::NormalModes r = seflex::reduction::solve_normal_modes(model, o);
   const auto t2 = std::chrono::steady_clock::now();
@@ -79,8 +89,13 @@ int run_modes(seflex::app::Args& args) {
   if (r.selection.subcase_id) std::printf(", subcase %d", r.selection.subcase_id);
   if (r.selection.method) std::printf(", METHOD %d", *r.selection.method);
   if (r.selection.spc) std::printf(", SPC %d", *r.selection.spc);
+  if (r.selection.mpc) std::printf(", MPC %d", *r.selection.mpc);
   std::printf("\n  %zu grids, %ld free dofs, %ld modes, normalisation %s\n", model.grids.size(), static_cast<long>(r.n_free),
               static_cast<long>(r.eigenvalues.size()), normalization_name(r.normalization));
+  if (r.guyan)
+    std::printf("  Guyan reduction to the a-set: %ld a-set dofs (%s), %ld omitted dofs condensed statically\n",
+                static_cast<long>(r.guyan->a_dofs), r.guyan->from_aset ? "ASET/ASET1" : "all but OMIT/OMIT1",
+                static_cast<long>(r.guyan->o_dofs));
   std::printf("  eigensolver %s on %s, shift %.6E, %ld solved columns, %d Lanczos runs%s\n",
               std::string(to_string(r.stats.backend_used)).c_str(), std::string(to_string(o.factorization)).c_str(),
               r.stats.shift, r.stats.operator_applications, r.stats.lanczos_runs,

@@ -14,6 +14,8 @@
 
 #include "command.hpp"
 #include "model_args.hpp"
+#include "usage_warnings.hpp"
+#include "seflex/reduction/card_usage.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/common/version.hpp"
 #include "seflex/io/model_reader.hpp"
@@ -101,9 +103,11 @@ void print_vector(const char* label, const Eigen::Vector3d& v) {
 void print_summary(const seflex::se::Superelement& s, const red::SuperelementInfo& info,
                    const seflex::fem::Model& model) {
   const auto& st = info.stats;
-  std::printf("\nmodel\n  %zu grids, %ld free dofs (f-set), %ld RBE2-dependent, %ld removed by AUTOSPC, SPC set %s\n",
+  std::printf("\nmodel\n  %zu grids, %ld free dofs (f-set), %ld dependent (rigid elements, RBE3, MPC), %ld removed by "
+              "AUTOSPC, SPC set %s, MPC set %s\n",
               model.grids.size(), static_cast<long>(st.n_free), static_cast<long>(info.dependent_dofs),
-              static_cast<long>(info.autospc_dofs), info.spc_set ? std::to_string(info.spc_set).c_str() : "none");
+              static_cast<long>(info.autospc_dofs), info.spc_set ? std::to_string(info.spc_set).c_str() : "none",
+              info.mpc_set ? std::to_string(info.mpc_set).c_str() : "none");
   std::printf("\ninterface: %d nodes, %d dofs (basic axes)\n", s.num_interfaces(), 6 * s.num_interfaces());
   std::printf("  %8s %14s %14s %14s   (position from the frame node)\n", "grid", "x", "y", "z");
   for (const auto& n : s.interfaces)
@@ -190,6 +194,14 @@ int run_reduce(seflex::app::Args& args) {
   const seflex::fem::Model model = seflex::io::read_model(model_path, model_options);
   red::SuperelementOptions o;
   o.interface_ids = interface_ids(model, *spec);
+  const std::string spec_lower = lower(*spec);
+  o.interface_cards = spec_lower == "aset" ? red::kInterfaceAset
+                      : spec_lower == "bset" ? red::kInterfaceBset
+                      : (spec_lower == "suport" || spec_lower == "support") ? red::kInterfaceSuport
+                                                                            : red::kInterfaceNone;
+  const red::CardUsage usage = red::check_card_usage(model, red::Solution::CraigBampton, {red::select_case(model)},
+                                                     o.interface_cards);
+  seflex::app::check_and_print_card_usage(model, usage);
   if (frame) o.frame_node = frame_id(model, *frame);
   if (!std::isnan(fmax))
     o.modes.fmax_hz = fmax;
@@ -203,6 +215,8 @@ int run_reduce(seflex::app::Args& args) {
   seflex::se::Superelement s = red::reduce_to_superelement(model, o, &info);
   const auto t2 = std::chrono::steady_clock::now();
   s.source_file = model_path;
+  for (const red::CardUse& u : usage.uses)
+    if (u.kind != red::CardUse::Kind::Refused) s.source_warnings.push_back(red::describe(model, u));
   s.source_hash = source_hash(model);
   s.created = iso_utc_now();
   s.seflex_version = seflex::kVersion;

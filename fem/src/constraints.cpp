@@ -1,10 +1,13 @@
-// SPC and RBE2 elimination (see constraints.hpp).
+// SPC, MPC and rigid-element elimination (see constraints.hpp).
 #include "seflex/fem/constraints.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <functional>
 #include <set>
+#include <string_view>
 
+#include "constraint_equations.hpp"
 #include "model_lookup.hpp"
 #include "seflex/fem/finalize.hpp"
 #include "seflex/common/error.hpp"
@@ -15,13 +18,6 @@ namespace {
 
 using Index = Eigen::Index;
 using Row = std::vector<std::pair<Index, double>>;  // sparse row: (g dof, coefficient)
-
-// Where a dependent dof came from, for messages.
-struct Dependency {
-  std::size_t rbe2 = 0;
-  Index independent_grid = 0;  // grid index of GN
-  Row terms;                   // over the six dofs of GN (before chain resolution)
-};
 
 double lookup(const Eigen::SparseMatrix<double>& A, Index row, Index col) {
   const int* inner = A.innerIndexPtr();
@@ -82,6 +78,7 @@ std::vector<std::pair<Eigen::Index, double>> spc_set_dofs(const Model& model, co
       continue;
     }
     const auto it = model.grid_index.find(e.grid);
+    if (it == model.grid_index.end() && e.from_thru) continue;  // QRG SPC1: grids of a THRU range need not exist
     if (it == model.grid_index.end())
       throw InputError(where(model, e.ref), "SPC/SPC1 set " + std::to_string(e.sid) + ": references GRID " +
                                                             std::to_string(e.grid) + ", which is not defined");
@@ -107,6 +104,41 @@ ConstrainedSystem apply_constraints(const Model& model, const GlobalMatrices& g,
   return apply_constraints(model, g, o);
 }
 
+namespace {
+
+/// The card that constrains g dof d (GRID PS or an entry of the SPC set), for conflict messages.
+std::string constraint_source(const Model& model, const DofMap& dofs, const ConstraintOptions& o, Index d,
+                              DofStatus status) {
+  if (status == DofStatus::Fixed) return "a dof held fixed by the solution (SUPORT or a superelement interface)";
+  if (d < 6 * dofs.n_grids) {
+    const Grid& grid = model.grids[static_cast<std::size_t>(d / 6)];
+    const int c = static_cast<int>(d % 6) + 1;
+    if (has_component(grid.ps, c)) return "PS on GRID " + std::to_string(grid.id) + " (" + where(model, grid.ref).str() + ")";
+    if (o.spc_set)
+      for (const SpcEntry& e : model.spcs)
+        if (e.grid == grid.id && has_component(e.c, c))
+          return "SPC/SPC1 set " + std::to_string(e.sid) + " (" + where(model, e.ref).str() + ")";
+  } else if (o.spc_set) {
+    const int id = model.spoints[static_cast<std::size_t>(d - 6 * dofs.n_grids)].id;
+    for (const SpcEntry& e : model.spcs)
+      if (e.grid == id) return "SPC/SPC1 set " + std::to_string(e.sid) + " (" + where(model, e.ref).str() + ")";
+  }
+  return "a single-point constraint";
+}
+
+}  // namespace
+
+std::string describe(const Model& model, const ConstraintCard& card) {
+  const bool set = std::string_view(card.card) == "MPC";
+  return std::string(card.card) + (set ? " set " : " ") + std::to_string(card.id) + " (" + where(model, card.ref).str() + ")";
+}
+
+bool autospc_enabled(const Model& model) {
+  for (const Param& p : model.params)
+    if (p.name == "AUTOSPC") return p.values.empty() || p.values[0] != "NO";
+  return true;
+}
+
 ConstrainedSystem apply_constraints(const Model& model, const GlobalMatrices& g, const ConstraintOptions& options) {
   const DofMap& dofs = g.dofs;
   const Index n = dofs.size();
@@ -129,118 +161,154 @@ ConstrainedSystem apply_constraints(const Model& model, const GlobalMatrices& g,
     if (out.status[d] == DofStatus::Free) out.status[d] = DofStatus::Fixed;
   }
 
-  // m-set: RBE2 dependents, each as a combination of its independent grid's six dofs.
-  const auto axes = grid_cd_axes(model);
-  std::vector<std::optional<Dependency>> dep(static_cast<std::size_t>(n));
-  bool any_dependent = false;
-  for (std::size_t r = 0; r < model.rbe2.size(); ++r) {
-    const Rbe2& e = model.rbe2[r];
-    const Index gn = detail::grid_index(model, e.gn, e.ref, "RBE2", e.id, "3 (GN)");
-    const Eigen::Matrix3d An = axes[gn].value_or(Eigen::Matrix3d::Identity());
-    for (int gm_id : e.gm) {
-      const Index gm = detail::grid_index(model, gm_id, e.ref, "RBE2", e.id, "GMi");
-      if (gm == gn) detail::fail(model, e.ref, "RBE2", e.id, "GMi", "GRID " + std::to_string(gm_id) + " is also GN");
-      const Eigen::Matrix3d Am = axes[gm].value_or(Eigen::Matrix3d::Identity());
-      const Eigen::Vector3d d = model.grids[gm].x_basic - model.grids[gn].x_basic;
-      Matrix6 G = Matrix6::Zero();  // q_m(CD) = G q_n(CD)
-      G.topLeftCorner<3, 3>() = Am.transpose() * An;
-      G.topRightCorner<3, 3>() = -Am.transpose() * so3::skew(d) * An;
-      G.bottomRightCorner<3, 3>() = Am.transpose() * An;
-      for (int c = 1; c <= 6; ++c) {
-        if (!has_component(e.cm, c)) continue;
-        const Index m = dofs.grid_dof(gm, c);
-        if (dep[m])
-          detail::fail(model, e.ref, "RBE2", e.id, "GMi",
-                       "component " + std::to_string(c) + " of GRID " + std::to_string(gm_id) +
-                           " is already dependent in RBE2 " + std::to_string(model.rbe2[dep[m]->rbe2].id));
-        if (out.status[m] != DofStatus::Free)
-          detail::fail(model, e.ref, "RBE2", e.id, "GMi",
-                       "component " + std::to_string(c) + " of GRID " + std::to_string(gm_id) +
-                           " is dependent here but also constrained (GRID PS, SPC/SPC1 or a held dof)");
-        Dependency dp;
-        dp.rbe2 = r;
-        dp.independent_grid = gn;
-        for (int k = 0; k < 6; ++k)
-          if (G(c - 1, k) != 0.0) dp.terms.emplace_back(dofs.grid_dof(gn, k + 1), G(c - 1, k));
-        dep[m] = std::move(dp);
-        out.status[m] = DofStatus::Dependent;
-        any_dependent = true;
-      }
+  // m-set: rigid elements, RBE3s and the selected MPC set, each dependent dof as a combination of others.
+  detail::ConstraintEquations eq;
+  if (!model.rbe2.empty() || !model.rbars.empty() || !model.rbe3.empty() || options.mpc_set) {
+    const auto axes = grid_cd_axes(model);
+    detail::add_rigid_elements(model, dofs, axes, eq);
+    detail::add_rbe3_elements(model, dofs, axes, eq);
+    if (options.mpc_set) detail::add_mpc_set(model, dofs, *options.mpc_set, eq);
+  }
+  const bool any_dependent = !eq.dependents.empty();
+  std::vector<std::int32_t> dep(any_dependent ? static_cast<std::size_t>(n) : 0, -1);  // index into eq.dependents
+  for (std::size_t k = 0; k < eq.dependents.size(); ++k) {
+    const detail::DependentDof& d = eq.dependents[k];
+    const ConstraintCard& card = eq.cards[d.card];
+    if (dep[d.dof] >= 0) {
+      const ConstraintCard& first = eq.cards[eq.dependents[static_cast<std::size_t>(dep[d.dof])].card];
+      throw InputError(where(model, card.ref),
+                       std::string(card.card) + " " + std::to_string(card.id) + ": " + detail::dof_name(model, dofs, d.dof) +
+                           " is made dependent here and by " + describe(model, first) +
+                           "; expected each dependent dof in one rigid element or MPC equation (Nastran's m-set)");
     }
+    if (out.status[d.dof] != DofStatus::Free)
+      throw InputError(where(model, card.ref),
+                       std::string(card.card) + " " + std::to_string(card.id) + ": " + detail::dof_name(model, dofs, d.dof) +
+                           " is dependent here but also constrained by " +
+                           constraint_source(model, dofs, options, d.dof, out.status[d.dof]) +
+                           "; expected a dependent dof not to be constrained (the m-set and the s-set do not overlap)");
+    dep[d.dof] = static_cast<std::int32_t>(k);
+    out.status[d.dof] = DofStatus::Dependent;
+  }
+  if (any_dependent) {
+    out.constraint_cards = eq.cards;
+    out.dependent_card.assign(static_cast<std::size_t>(n), -1);
+    for (Index m = 0; m < n; ++m)
+      if (dep[m] >= 0) out.dependent_card[m] = static_cast<std::int32_t>(eq.dependents[static_cast<std::size_t>(dep[m])].card);
   }
 
-  // Resolve chains: express every dependent dof through non-dependent dofs only.
+  // Resolve chains: express every dependent dof through non-dependent dofs only (iteratively, so
+  // that long chains cannot overflow the stack).
   std::vector<Row> resolved(any_dependent ? static_cast<std::size_t>(n) : 0);
   if (any_dependent) {
     std::vector<unsigned char> state(static_cast<std::size_t>(n), 0);  // 0 new, 1 in progress, 2 done
-    std::function<void(Index)> resolve = [&](Index m) {
-      if (state[m] == 2) return;
-      if (state[m] == 1) {
-        const Rbe2& e = model.rbe2[dep[m]->rbe2];
-        detail::fail(model, e.ref, "RBE2", e.id, "", "RBE2 dependencies form a closed loop");
-      }
-      state[m] = 1;
-      Row row;
-      for (const auto& [k, a] : dep[m]->terms) {
-        if (dep[k]) {
-          resolve(k);
-          for (const auto& [kk, b] : resolved[k]) row.emplace_back(kk, a * b);
-        } else {
-          row.emplace_back(k, a);
+    std::vector<Index> stack;
+    for (Index root = 0; root < n; ++root) {
+      if (dep[root] < 0 || state[root] == 2) continue;
+      stack.push_back(root);
+      while (!stack.empty()) {
+        const Index m = stack.back();
+        const detail::DependentDof& d = eq.dependents[static_cast<std::size_t>(dep[m])];
+        if (state[m] == 0) {
+          state[m] = 1;
+          for (const auto& [k, a] : d.terms) {
+            if (dep[k] < 0 || state[k] == 2) continue;
+            if (state[k] == 1) {
+              const ConstraintCard& here = eq.cards[d.card];
+              const ConstraintCard& there = eq.cards[eq.dependents[static_cast<std::size_t>(dep[k])].card];
+              throw InputError(where(model, here.ref),
+                               std::string(here.card) + " " + std::to_string(here.id) + ": its dependent " +
+                                   detail::dof_name(model, dofs, m) + " depends on " + detail::dof_name(model, dofs, k) +
+                                   ", which depends back on it through " + describe(model, there) +
+                                   "; expected no closed loop of dependencies");
+            }
+            stack.push_back(k);
+          }
+          continue;
         }
+        stack.pop_back();
+        if (state[m] == 2) continue;
+        Row row;
+        for (const auto& [k, a] : d.terms) {
+          if (dep[k] >= 0)
+            for (const auto& [kk, b] : resolved[k]) row.emplace_back(kk, a * b);
+          else
+            row.emplace_back(k, a);
+        }
+        std::sort(row.begin(), row.end());
+        Row merged;
+        for (const auto& t : row) {
+          if (!merged.empty() && merged.back().first == t.first)
+            merged.back().second += t.second;
+          else
+            merged.push_back(t);
+        }
+        resolved[m] = std::move(merged);
+        state[m] = 2;
       }
-      std::sort(row.begin(), row.end());
-      Row merged;
-      for (const auto& t : row) {
-        if (!merged.empty() && merged.back().first == t.first)
-          merged.back().second += t.second;
-        else
-          merged.push_back(t);
-      }
-      resolved[m] = std::move(merged);
-      state[m] = 2;
-    };
-    for (Index m = 0; m < n; ++m)
-      if (dep[m]) resolve(m);
+    }
   }
 
   // Columns of T before AUTOSPC: for each independent dof j, the dependents that use it.
   std::vector<Row> users(any_dependent ? static_cast<std::size_t>(n) : 0);
   if (any_dependent)
     for (Index m = 0; m < n; ++m)
-      if (dep[m])
+      if (dep[m] >= 0)
         for (const auto& [k, a] : resolved[m]) users[k].emplace_back(m, a);
 
-  // AUTOSPC on the diagonal of T^T K T (computed column by column, without the product).
+  // AUTOSPC on the per-grid 3 x 3 blocks of T^T K T (computed from the columns of T, without the product).
   if (options.autospc) {
-    std::vector<double> diag(static_cast<std::size_t>(n), 0.0);
-    for (Index j = 0; j < n; ++j) {
-      if (out.status[j] != DofStatus::Free) continue;
-      if (!any_dependent || users[j].empty()) {
-        diag[j] = lookup(g.K, j, j);
-        continue;
-      }
-      Row t = users[j];
+    auto column = [&](Index j) {
+      Row t;
+      if (any_dependent) t = users[j];
       t.emplace_back(j, 1.0);
+      return t;
+    };
+    auto kbar = [&](const Row& a, const Row& b) {
       double s = 0.0;
-      for (const auto& [a, ta] : t)
-        for (const auto& [b, tb] : t) s += ta * tb * lookup(g.K, a, b);
-      diag[j] = s;
+      for (const auto& [p, tp] : a)
+        for (const auto& [q, tq] : b) s += tp * tq * lookup(g.K, p, q);
+      return s;
+    };
+    std::vector<bool> exempt(static_cast<std::size_t>(n), false);
+    for (const Index d : options.no_autospc) {
+      SEFLEX_DEMAND(d >= 0 && d < n, "no_autospc dof out of range");
+      exempt[static_cast<std::size_t>(d)] = true;
     }
     for (Index i = 0; i < dofs.n_grids; ++i)
       for (int h = 0; h < 2; ++h) {
-        double dmax = 0.0;
-        for (int c = 0; c < 3; ++c) {
-          const Index d = 6 * i + 3 * h + c;
-          if (out.status[d] == DofStatus::Free) dmax = std::max(dmax, std::abs(diag[d]));
+        std::vector<Index> free;
+        for (int c = 0; c < 3; ++c)
+          if (out.status[6 * i + 3 * h + c] == DofStatus::Free && !exempt[static_cast<std::size_t>(6 * i + 3 * h + c)])
+            free.push_back(6 * i + 3 * h + c);
+        if (free.empty()) continue;
+        const Index k = static_cast<Index>(free.size());
+        std::vector<Row> cols;
+        for (const Index d : free) cols.push_back(column(d));
+        Eigen::MatrixXd B(k, k);
+        for (Index p = 0; p < k; ++p)
+          for (Index q = p; q < k; ++q) B(p, q) = B(q, p) = kbar(cols[p], cols[q]);
+        const double dmax = B.diagonal().cwiseAbs().maxCoeff();
+        if (!(dmax > 0.0)) {
+          for (const Index d : free) out.status[d] = DofStatus::AutoSpc;
+          continue;
         }
-        for (int c = 0; c < 3; ++c) {
-          const Index d = 6 * i + 3 * h + c;
-          if (out.status[d] == DofStatus::Free && std::abs(diag[d]) <= 1e-8 * dmax) out.status[d] = DofStatus::AutoSpc;
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(B);
+        std::vector<bool> taken(static_cast<std::size_t>(k), false);
+        for (Index e = 0; e < k; ++e) {
+          if (es.eigenvalues()(e) > 1e-8 * dmax) continue;
+          const Eigen::VectorXd v = es.eigenvectors().col(e);
+          Index best = -1;
+          for (Index p = 0; p < k; ++p)
+            if (!taken[static_cast<std::size_t>(p)] && (best < 0 || std::abs(v(p)) > std::abs(v(best)))) best = p;
+          if (best < 0) break;
+          taken[static_cast<std::size_t>(best)] = true;
+          out.status[free[static_cast<std::size_t>(best)]] = DofStatus::AutoSpc;
         }
       }
     for (Index d = 6 * dofs.n_grids; d < n; ++d)
-      if (out.status[d] == DofStatus::Free && diag[d] == 0.0) out.status[d] = DofStatus::AutoSpc;
+      if (out.status[d] == DofStatus::Free && !exempt[static_cast<std::size_t>(d)] && kbar(column(d), column(d)) == 0.0)
+        out.status[d] = DofStatus::AutoSpc;
   }
 
   // f-set numbering.
@@ -258,7 +326,7 @@ ConstrainedSystem apply_constraints(const Model& model, const GlobalMatrices& g,
   for (Index j = 0; j < nf; ++j) trip.emplace_back(out.f_to_g[j], j, 1.0);
   if (any_dependent)
     for (Index m = 0; m < n; ++m) {
-      if (!dep[m]) continue;
+      if (dep[m] < 0) continue;
       double u0 = 0.0;
       for (const auto& [k, a] : resolved[m]) {
         if (out.g_to_f[k] >= 0) trip.emplace_back(m, out.g_to_f[k], a);

@@ -129,10 +129,11 @@ class Finalizer {
     }
   }
 
-  /// All elements share one id space: CBAR, CBEAM, CROD, CONROD, CQUAD4, CTRIA3, CONM2, CELAS1/2, RBE2.
+  /// All elements share one id space: CBAR, CBEAM, CROD, CONROD, CQUAD4, CTRIA3, CONM2, CELAS1/2,
+  /// RBE2, RBAR, RBE3.
   void index_elements() {
     const std::size_t total = m_.bars.size() + m_.rods.size() + m_.shells.size() + m_.conm2.size() +
-                              m_.springs.size() + m_.rbe2.size();
+                              m_.springs.size() + m_.rbe2.size() + m_.rbars.size() + m_.rbe3.size();
     IdSpace seen;
     seen.model = &m_;
     seen.map.reserve(total);
@@ -145,6 +146,8 @@ class Finalizer {
     for (const auto& e : m_.conm2) add(e.id, e.ref, "CONM2");
     for (const auto& e : m_.springs) add(e.id, e.ref, e.inline_property ? "CELAS2" : "CELAS1");
     for (const auto& e : m_.rbe2) add(e.id, e.ref, "RBE2");
+    for (const auto& e : m_.rbars) add(e.id, e.ref, "RBAR");
+    for (const auto& e : m_.rbe3) add(e.id, e.ref, "RBE3");
   }
 
   void need_material(int mid, const CardRef& ref, const char* card, int id, const char* field) {
@@ -241,100 +244,58 @@ class Finalizer {
       need_grid(r.gn, r.ref, "RBE2", r.id, "field 3 (GN)");
       for (const int g : r.gm) need_grid(g, r.ref, "RBE2", r.id, "GM " + std::to_string(g));
     }
+    for (const auto& r : m_.rbars) {
+      need_grid(r.ga, r.ref, "RBAR", r.id, "field 3 (GA)");
+      need_grid(r.gb, r.ref, "RBAR", r.id, "field 4 (GB)");
+    }
+    for (const auto& r : m_.rbe3) {
+      need_grid(r.refgrid, r.ref, "RBE3", r.id, "field 4 (REFGRID)");
+      for (const auto& group : r.groups)
+        for (const int g : group.grids) need_grid(g, r.ref, "RBE3", r.id, "Gi,j " + std::to_string(g));
+      for (const auto& d : r.um) need_grid(d.grid, r.ref, "RBE3", r.id, "GMi (UM) " + std::to_string(d.grid));
+    }
   }
 
+  /// Set cards (SPC, MPC, loads) are checked where a solution selects them (fem::spc_set_dofs,
+  /// fem::load_vector, the MPC elimination; reduction::check_card_usage warns about the unselected
+  /// ones, as Nastran does): here only what makes the deck itself ambiguous - duplicate and clashing
+  /// set ids - and the dof sets that are not selected by case control (ASET, OMIT, BSET, SUPORT).
   void check_constraints_and_loads() {
-    std::set<int> spc_sets, load_sets;
-    for (const auto& s : m_.spcs) {
-      need_dof(s.grid, s.c, true, s.ref, "SPC/SPC1", s.sid, "grid " + std::to_string(s.grid));
-      spc_sets.insert(s.sid);
-    }
-    std::unordered_map<int, CardRef> spcadd_ids;
-    for (const auto& a : m_.spcadds)
-      check_combination(spcadd_ids, spc_sets, "SPCADD", a.sid, a.ref, a.sets, "SPC set", "SPC or SPC1", "");
+    std::set<int> spc_sets, mpc_sets, load_sets;
+    for (const auto& s : m_.spcs) spc_sets.insert(s.sid);
+    for (const auto& e : m_.mpcs) mpc_sets.insert(e.sid);
+    for (const auto& l : m_.point_loads) load_sets.insert(l.sid);
+    std::unordered_map<int, CardRef> spcadd_ids, mpcadd_ids, load_ids;
+    for (const auto& a : m_.spcadds) check_combination(spcadd_ids, spc_sets, "SPCADD", a.sid, a.ref, "SPC set", "SPC or SPC1");
+    for (const auto& a : m_.mpcadds) check_combination(mpcadd_ids, mpc_sets, "MPCADD", a.sid, a.ref, "MPC set", "MPC");
+    for (const auto& l : m_.load_combinations) check_combination(load_ids, load_sets, "LOAD", l.sid, l.ref, "load set", "FORCE or MOMENT");
     for (const auto& e : m_.aset) need_dof(e.grid, e.c, true, e.ref, "ASET/ASET1", e.grid, "");
+    for (const auto& e : m_.omit) need_dof(e.grid, e.c, true, e.ref, "OMIT/OMIT1", e.grid, "");
     for (const auto& e : m_.bset) need_dof(e.grid, e.c, true, e.ref, "BSET/BSET1", e.grid, "");
     for (const auto& e : m_.suport) need_dof(e.grid, e.c, true, e.ref, "SUPORT", e.grid, "");
-    for (const auto& l : m_.point_loads) {
-      const char* card = l.kind == PointLoad::Kind::Force ? "FORCE" : "MOMENT";
-      need_grid(l.grid, l.ref, card, l.sid, "field 3 (G)");
-      need_coord(l.cid, l.ref, card, l.sid, "field 4 (CID)");
-      load_sets.insert(l.sid);
-    }
-    std::unordered_map<int, CardRef> load_ids;
-    for (const auto& l : m_.load_combinations) {
-      std::vector<int> sets;
-      for (const auto& term : l.terms) sets.push_back(term.second);
-      check_combination(load_ids, load_sets, "LOAD", l.sid, l.ref, sets, "load set", "FORCE or MOMENT", unsupported_hint());
-    }
   }
 
-  /// SPCADD / LOAD: a unique id, not also a set of the cards it combines, combining only sets that exist.
+  /// SPCADD / MPCADD / LOAD: a unique id, not also a set id of the cards it combines. (Whether the
+  /// combined sets exist is checked when the combination is selected.)
   void check_combination(std::unordered_map<int, CardRef>& ids, const std::set<int>& sets, const char* card, int sid,
-                         const CardRef& ref, const std::vector<int>& combined, const char* set_kind, const char* set_cards,
-                         const std::string& hint) {
+                         const CardRef& ref, const char* set_kind, const char* set_cards) {
     if (const auto [it, inserted] = ids.emplace(sid, ref); !inserted)
       fail(ref, card, sid, "field 2 (SID)", std::string("duplicate ") + card + " id, first defined at " + at(it->second) + "; expected unique ids");
     if (sets.count(sid))
       fail(ref, card, sid, "field 2 (SID)", std::string("the id is also used by ") + set_cards + " cards; expected a " + card +
                                                 " id different from every " + set_kind + " id");
-    for (const int s : combined)
-      if (!sets.count(s))
-        fail(ref, card, sid, std::string(set_kind) + " " + std::to_string(s),
-             "references " + std::string(set_kind) + " " + std::to_string(s) + ", which has no " + set_cards + " card" + hint +
-                 "; expected the id of an existing " + set_kind);
   }
 
-  std::string unsupported_hint() const {
-    if (m_.unsupported.empty()) return "";
-    std::string s = " (cards seflex does not support in this deck: ";
-    for (std::size_t i = 0; i < m_.unsupported.size() && i < 8; ++i) s += (i ? ", " : "") + m_.unsupported[i].name;
-    return s + ")";
-  }
-
+  /// EIGR/EIGRL ids must be unique; what a method references (NORM = POINT grid) and what the case
+  /// control selects are checked when a solution uses them (reduction::check_card_usage).
   void check_solution_control() {
     std::unordered_map<int, CardRef> methods;
     for (const auto& e : m_.eigen_methods) {
       const char* card = e.is_eigr ? "EIGR" : "EIGRL";
       if (const auto [it, inserted] = methods.emplace(e.sid, e.ref); !inserted)
         fail(e.ref, card, e.sid, "field 2 (SID)", "duplicate method id, first defined at " + at(it->second) + "; expected unique EIGR/EIGRL ids");
-      if (e.norm == "POINT") need_dof(e.norm_grid, e.norm_component, false, e.ref, card, e.sid, "field 3 of continuation 1 (G)");
     }
-    for (const auto& d : m_.dmigs)
-      for (const auto& t : d.entries) {
-        need_dof(t.gj, t.cj, false, d.ref, "DMIG", 0, "column " + std::to_string(t.gj));
-        need_dof(t.gi, t.ci, false, d.ref, "DMIG", 0, "row " + std::to_string(t.gi));
-      }
     check_params();
-    // case control selections
-    std::set<int> spc_sets, load_sets;
-    for (const auto& s : m_.spcs) spc_sets.insert(s.sid);
-    for (const auto& a : m_.spcadds) spc_sets.insert(a.sid);
-    for (const auto& l : m_.point_loads) load_sets.insert(l.sid);
-    for (const auto& l : m_.load_combinations) load_sets.insert(l.sid);
-    auto check = [&](const Subcase& sc) {
-      const std::string in = sc.id == 0 ? "case control" : "case control SUBCASE " + std::to_string(sc.id);
-      const std::string file = m_.files.empty() ? std::string() : m_.files[0];
-      if (sc.spc && !spc_sets.count(*sc.spc))
-        throw InputError(file + ": " + in + ": SPC = " + std::to_string(*sc.spc) +
-                         " selects no SPC, SPC1 or SPCADD card; expected the id of an SPC set in the bulk data");
-      if (sc.load && !load_sets.count(*sc.load))
-        throw InputError(file + ": " + in + ": LOAD = " + std::to_string(*sc.load) + " selects no FORCE, MOMENT or LOAD card" +
-                         unsupported_hint() + "; expected the id of a load set in the bulk data");
-      if (sc.method && !methods.count(*sc.method))
-        throw InputError(file + ": " + in + ": METHOD = " + std::to_string(*sc.method) +
-                         " selects no EIGRL or EIGR card; expected the id of an eigenvalue method in the bulk data");
-      for (const auto* names : {&sc.k2gg, &sc.m2gg})
-        for (const auto& name : *names) {
-          bool found = false;
-          for (const auto& d : m_.dmigs) found = found || d.name == name;
-          if (!found)
-            throw InputError(file + ": " + in + ": " + (names == &sc.k2gg ? "K2GG" : "M2GG") + " = " + name +
-                             " names no DMIG matrix; expected the name of a DMIG in the bulk data");
-        }
-    };
-    check(m_.case_control.global);
-    for (const auto& sc : m_.case_control.subcases) check(sc);
   }
 
   void check_params() {
@@ -363,7 +324,7 @@ class Finalizer {
     if (first.count("GRDPNT")) {
       const int g = static_cast<int>(number("GRDPNT", -1.0, true));
       if (g < -1) bad("GRDPNT", "-1 (off), 0 (basic origin) or a grid id");
-      if (g > 0 && !m_.grid_index.count(g)) bad("GRDPNT", "-1, 0 or the id of a GRID (grid " + std::to_string(g) + " is not defined)");
+      // a GRDPNT naming no grid means the basic origin, as in Nastran (reduction::check_card_usage warns)
     }
   }
 

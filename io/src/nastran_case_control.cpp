@@ -16,6 +16,16 @@ bool is_command(std::string_view key, std::string_view command) {
   return key.size() >= 4 && key.size() < command.size() && command.substr(0, key.size()) == key;
 }
 
+/// Case-control commands that select analysis input seflex does not use, in full (abbreviable to four
+/// letters); they are kept in Subcase::other so that a solution that needs them can refuse the deck.
+constexpr std::string_view kSelectionCommands[] = {
+    "TEMPERATURE", "DLOAD",    "DEFORM",   "SUPORT1",  "BC",        "STATSUB",   "SDAMPING", "FREQUENCY",
+    "TSTEP",       "TSTEPNL",  "NLPARM",   "CMETHOD",  "RANDOM",    "IC",        "DESSUB",   "DESOBJ",
+    "DESGLB",      "ANALYSIS", "TRIM",     "GUST",     "FMETHOD",   "DIVERG",    "AUXMODEL", "ADAPT",
+    "NONLINEAR",   "SMETHOD",  "RGYRO",    "AXISYMMETRIC", "HARMONICS", "BCONTACT", "BCSET", "P2G",
+    "K2PP",        "M2PP",     "B2GG",     "B2PP",     "K42GG",     "TFL",       "RESVEC",   "SEALL",
+    "SUPER",       "MFLUID",   "EBDSET",   "DRSPAN"};
+
 std::string_view first_word(std::string_view s) {
   std::size_t e = 0;
   while (e < s.size() && s[e] != ' ' && s[e] != ',' && s[e] != '=' && s[e] != '(') ++e;
@@ -68,6 +78,7 @@ void CaseControlReader::command(const std::string& text, const std::string& file
       if (s.id == id) throw InputError(where + ": case control SUBCASE " + std::to_string(id) + " appears twice; expected unique subcase ids");
     fem::Subcase s;
     s.id = id;
+    s.ref = {file_index, line};
     model_.case_control.subcases.push_back(s);
     in_subcase_ = true;
     return;
@@ -111,6 +122,18 @@ void CaseControlReader::command(const std::string& text, const std::string& file
       throw InputError(where + ": case control " + name + ": got " + quote_field(value) + "; expected a set id (integer > 0)");
     target = id;
   };
+  for (const std::string_view command : kSelectionCommands) {
+    if (!(key == command || is_command(key, command))) continue;
+    fem::CaseCommand c;
+    c.name = std::string(command);
+    const std::size_t open = u.find('('), close = u.find(')');
+    if (open != std::string::npos && open < eq && close != std::string::npos && close < eq && open < close)
+      c.name += "(" + std::string(trim(std::string_view(u).substr(open + 1, close - open - 1))) + ")";
+    c.value = value;
+    c.ref = {file_index, line};
+    sc.other.push_back(std::move(c));
+    return;
+  }
   if (key == "SPC") return set_id(sc.spc, "SPC");
   if (key == "MPC") return set_id(sc.mpc, "MPC");
   if (is_command(key, "LOAD")) return set_id(sc.load, "LOAD");
@@ -149,6 +172,11 @@ void CaseControlReader::finish() {
     if (s.k2gg.empty()) s.k2gg = cc.global.k2gg;
     if (s.m2gg.empty()) s.m2gg = cc.global.m2gg;
     if (s.label.empty()) s.label = cc.global.label;
+    for (const auto& g : cc.global.other) {  // inherited unless the subcase gives the same command
+      bool given = false;
+      for (const auto& o : s.other) given = given || o.name == g.name;
+      if (!given) s.other.push_back(g);
+    }
   }
 }
 

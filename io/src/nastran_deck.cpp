@@ -19,8 +19,15 @@ namespace nastran {
 
 void ReaderState::note_unsupported(std::string_view name, const fem::CardRef& ref) {
   auto [it, inserted] = unsupported_index.try_emplace(std::string(name), model.unsupported.size());
-  if (inserted) model.unsupported.push_back({std::string(name), 0, ref});
+  if (inserted) model.unsupported.push_back({std::string(name), 0, ref, {}});
   ++model.unsupported[it->second].count;
+}
+
+void ReaderState::note_unsupported_card(const Card& card) {
+  note_unsupported(card.name(), card.ref());
+  int sid = 0;
+  if (parse_int(card.raw(0), sid))
+    model.unsupported[unsupported_index.at(std::string(card.name()))].members.push_back({sid, card.ref()});
 }
 
 namespace {
@@ -42,6 +49,8 @@ constexpr CardType kCardTypes[] = {
     {"ASET", parse_aset},       {"ASET1", parse_aset1},     {"BSET", parse_bset},      {"BSET1", parse_bset1},
     {"SUPORT", parse_suport},   {"FORCE", parse_force},     {"MOMENT", parse_moment},  {"LOAD", parse_load},
     {"EIGRL", parse_eigrl},     {"EIGR", parse_eigr},       {"PARAM", parse_param},    {"DMIG", parse_dmig},
+    {"MPC", parse_mpc},         {"MPCADD", parse_mpcadd},   {"OMIT", parse_omit},      {"OMIT1", parse_omit1},
+    {"RBAR", parse_rbar},       {"RBE3", parse_rbe3},
 };
 constexpr std::size_t kNumCardTypes = sizeof(kCardTypes) / sizeof(kCardTypes[0]);
 
@@ -103,6 +112,14 @@ bool valid_card_name(std::string_view n) {
   if (n.empty() || n.size() > 8 || !(n[0] >= 'A' && n[0] <= 'Z')) return false;
   for (const char c : n)
     if (!((c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_')) return false;
+  return true;
+}
+
+/// A field 1 of punctuation only (no letter or digit, not '=' duplication or a continuation mark).
+bool stray_mark(std::string_view f) {
+  if (f.empty() || f[0] == '=' || f[0] == '+' || f[0] == '*' || f[0] == '$') return false;
+  for (const char c : f)
+    if ((c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == ' ') return false;
   return true;
 }
 
@@ -297,6 +314,11 @@ class DeckReader {
       done_ = true;
       return;
     }
+    if (stray_mark(field1) && trim(line.text.substr(std::min(line.text.size(), field1.size() + line.text.find_first_not_of(' ')))).empty()) {
+      // A line holding only a mark such as '&' (MYSTRAN's decks have some): listed, not a card.
+      state_.note_unsupported(std::string("'") + std::string(field1) + "'", {src.index, line.number});
+      return;
+    }
     if (!valid_card_name(uname) || name.size() > 8) {
       if (starts_with_word(trim(line.text), "BEGIN"))
         throw InputError(location(src.name, line.number) + ": " + quote_field(trim(line.text)) +
@@ -338,7 +360,7 @@ class DeckReader {
       last_type_ = type;
     }
     if (type < 0) {
-      state_.note_unsupported(name, card_.ref());
+      state_.note_unsupported_card(card_);
       return;
     }
     kCardTypes[type].parse(card_, state_);

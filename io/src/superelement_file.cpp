@@ -230,6 +230,10 @@ class Reader {
     s.source_file = get<std::string>(h, "source_file");
     s.source_hash = get<std::string>(h, "source_hash");
     s.created = get<std::string>(h, "created");
+    if (const YAML::Node w = h["source_warnings"]; w) {  // format 1.1
+      if (!w.IsSequence()) fail("header: 'source_warnings' must be an array of strings");
+      for (const auto& line : w) s.source_warnings.push_back(line.as<std::string>());
+    }
     const YAML::Node frame = h["frame_node"];
     if (!frame || !frame.IsMap()) fail("header: missing object 'frame_node'");
     s.frame_node_id = get<int>(frame, "id");
@@ -374,6 +378,9 @@ std::string serialize_superelement(const se::Superelement& s) {
       << "  \"source_file\": " << json_string(s.source_file) << ",\n"
       << "  \"source_hash\": " << json_string(s.source_hash) << ",\n"
       << "  \"created\": " << json_string(s.created) << ",\n"
+      << "  \"source_warnings\": [";
+    for (std::size_t k = 0; k < s.source_warnings.size(); ++k) o << (k ? ", " : "") << json_string(s.source_warnings[k]);
+    o << "],\n"
       << "  \"coordinates\": \"q = [u_1, theta_1, ..., u_N, theta_N, eta_1, ..., eta_m]; body frame B: origin at the "
          "frame node, axes parallel to the source model's basic axes\",\n"
       << "  \"frame_node\": {\"id\": " << s.frame_node_id << ", \"position\": " << json_array(s.p_OBo) << "},\n"

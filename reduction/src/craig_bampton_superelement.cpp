@@ -14,6 +14,8 @@
 #include "seflex/fem/components.hpp"
 #include "seflex/fem/constraints.hpp"
 #include "seflex/fem/finalize.hpp"
+#include "seflex/reduction/card_usage.hpp"
+#include "seflex/reduction/case_selection.hpp"
 
 namespace seflex::reduction {
 
@@ -24,10 +26,15 @@ using Axes = std::vector<std::optional<Eigen::Matrix3d>>;
 
 std::string deck_name(const fem::Model& model) { return model.files.empty() ? std::string("<model>") : model.files[0]; }
 
-/// SPC set of the case control (first SUBCASE, else the global selection), as the solutions use.
-std::optional<int> case_spc_set(const fem::Model& model) {
-  const fem::CaseControl& cc = model.case_control;
-  return cc.subcases.empty() ? cc.global.spc : cc.subcases.front().spc;
+/// The constraints of the case control (first SUBCASE, else the global selections: SPC and MPC
+/// sets), as the solutions use them.
+fem::ConstraintOptions case_constraints(const fem::Model& model) {
+  const CaseSelection sel = select_case(model);
+  fem::ConstraintOptions o;
+  o.spc_set = sel.spc;
+  o.mpc_set = sel.mpc;
+  o.autospc = fem::autospc_enabled(model);
+  return o;
 }
 
 /// Why grid `gi` (index) does not have six free dofs; empty if it has.
@@ -54,11 +61,23 @@ std::string not_free_reason(const fem::Model& model, const fem::ConstrainedSyste
     }
   }
   if (dependent) {
-    for (const fem::Rbe2& r : model.rbe2)
-      if (std::find(r.gm.begin(), r.gm.end(), grid.id) != r.gm.end())
-        return "components " + fem::component_string(dependent) + " depend on RBE2 " + std::to_string(r.id) + " (" +
-               fem::where(model, r.ref).str() + ")";
-    return "components " + fem::component_string(dependent) + " are dependent (RBE2)";
+    const std::string comps = "components " + fem::component_string(dependent);
+    std::int32_t card = -1;
+    for (int k = 0; k < 6 && card < 0; ++k)
+      if (!c.dependent_card.empty()) card = c.dependent_card[6 * gi + static_cast<std::size_t>(k)];
+    if (card < 0) return comps + " are dependent";
+    const fem::ConstraintCard& cc = c.constraint_cards[static_cast<std::size_t>(card)];
+    const std::string name = std::string(cc.card), which = fem::describe(model, cc);
+    if (name == "RBE3")
+      return comps + " are the dependent reference of " + which +
+             ": a weighted average of its independent grids, so a unit motion of this grid alone does not define a "
+             "constraint mode (the independent grids could move in many ways); use an independent grid as the "
+             "interface, or make the reference grid independent with UM on the RBE3 (listing as many components "
+             "of its independent grids as REFC has)";
+    if (name == "RBE2" || name == "RBAR")
+      return comps + " depend on " + which + "; use its independent grid (" + (name == "RBE2" ? "GN" : "CNA/CNB") +
+             ") as the interface node instead";
+    return comps + " depend on " + which + " (the first dof of each MPC equation is dependent)";
   }
   if (spc) {
     if (grid.ps & spc)
@@ -186,7 +205,7 @@ Eigen::VectorXd reduced_eigenvalues(const se::Superelement& body, int count) {
 
 Eigen::VectorXd full_model_eigenvalues(const fem::Model& model, int count, EigenBackend backend) {
   const fem::GlobalMatrices g = fem::assemble(model, fem::assembly_options(model));
-  const fem::ConstrainedSystem c = fem::apply_constraints(model, g, case_spc_set(model));
+  const fem::ConstrainedSystem c = fem::apply_constraints(model, g, case_constraints(model));
   EigenOptions eo;
   eo.count = count;
   eo.backend = backend;
@@ -203,10 +222,15 @@ se::Superelement reduce_to_superelement(const fem::Model& model, const Superelem
     throw InputError(deck + ": no interface node given; expected at least one GRID id");
 
   // 1. Matrices and constraints.
+  require_usable(model, check_card_usage(model, Solution::CraigBampton, {select_case(model)}, options.interface_cards));
   fem::GlobalMatrices g = fem::assemble(model, fem::assembly_options(model));
-  const std::optional<int> spc = case_spc_set(model);
-  inf.spc_set = spc.value_or(0);
-  fem::ConstrainedSystem c = fem::apply_constraints(model, g, spc);
+  fem::ConstraintOptions co = case_constraints(model);
+  for (const int id : options.interface_ids)  // boundary dofs: held in the interior problem, never AUTOSPC'd
+    if (const auto it = model.grid_index.find(id); it != model.grid_index.end())
+      for (int k = 1; k <= 6; ++k) co.no_autospc.push_back(g.dofs.grid_dof(it->second, k));
+  inf.spc_set = co.spc_set.value_or(0);
+  inf.mpc_set = co.mpc_set.value_or(0);
+  fem::ConstrainedSystem c = fem::apply_constraints(model, g, co);
   g.K = SparseMatrixd();  // not needed any more (memory of large models)
   for (const fem::DofStatus s : c.status) {
     inf.autospc_dofs += s == fem::DofStatus::AutoSpc;

@@ -7,6 +7,8 @@
 #include "seflex/common/error.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/constraints.hpp"
+#include "seflex/reduction/card_usage.hpp"
+#include "guyan.hpp"
 #include "solution_errors.hpp"
 
 namespace seflex::reduction {
@@ -33,14 +35,9 @@ double lambda_of_hz(double f) {
 void normalise(const fem::Model& model, const fem::GlobalMatrices& g, const fem::ConstrainedSystem& c,
                const fem::EigenMethod* method, ModeNormalization norm, Eigen::MatrixXd& phi_g) {
   std::optional<Eigen::Index> point_dof;
-  if (norm == ModeNormalization::Point) {
-    point_dof = fem::find_dof(model, g.dofs, method->norm_grid, method->norm_component);
-    if (!point_dof)
-      throw InputError(card_source(model, method->ref),
-                       std::string(method->is_eigr ? "EIGR " : "EIGRL ") + std::to_string(method->sid) +
-                           ": NORM = POINT names grid " + std::to_string(method->norm_grid) + " component " +
-                           std::to_string(method->norm_component) + ", which is not a dof of the model");
-  }
+  // NORM = POINT on a point that is not a dof of the model: MAX (check_card_usage warns), as when
+  // the component is ~0 in a mode.
+  if (norm == ModeNormalization::Point) point_dof = fem::find_dof(model, g.dofs, method->norm_grid, method->norm_component);
   for (Eigen::Index j = 0; j < phi_g.cols(); ++j) {
     // the largest f-set component (by magnitude), signed
     double largest = 0;
@@ -49,7 +46,7 @@ void normalise(const fem::Model& model, const fem::GlobalMatrices& g, const fem:
     double scale = 1.0;
     if (norm == ModeNormalization::Mass) {
       scale = largest < 0 ? -1.0 : 1.0;  // modes arrive mass-normalised
-    } else if (norm == ModeNormalization::Point && std::abs(phi_g(*point_dof, j)) > 1e-10 * std::abs(largest)) {
+    } else if (norm == ModeNormalization::Point && point_dof && std::abs(phi_g(*point_dof, j)) > 1e-10 * std::abs(largest)) {
       scale = 1.0 / phi_g(*point_dof, j);
     } else if (largest != 0) {
       scale = 1.0 / largest;
@@ -66,6 +63,7 @@ Eigen::VectorXd NormalModes::cycles() const { return radians() / (2 * std::numbe
 NormalModes solve_normal_modes(const fem::Model& model, const ModesOptions& options) {
   NormalModes r;
   r.selection = select_case(model, options.subcase);
+  require_usable(model, check_card_usage(model, Solution::NormalModes, {r.selection}));
   const fem::EigenMethod* method = nullptr;
   if (r.selection.method) {
     method = find_method(model, *r.selection.method);
@@ -104,15 +102,25 @@ NormalModes solve_normal_modes(const fem::Model& model, const ModesOptions& opti
   const fem::GlobalMatrices g = fem::assemble(model, fem::assembly_options(model));
   fem::ConstraintOptions co;
   co.spc_set = r.selection.spc;
+  co.mpc_set = r.selection.mpc;
   co.fixed_dofs = options.fixed_dofs;
+  co.autospc = fem::autospc_enabled(model);
   const fem::ConstrainedSystem c = fem::apply_constraints(model, g, co);
   r.dofs = g.dofs;
   r.n_free = c.n_free();
+  std::optional<detail::GuyanReduction> guyan;
+  if (options.guyan) guyan = detail::guyan_reduction(model, g, c, options.factorization);
+  if (guyan) r.guyan = GuyanInfo{static_cast<Eigen::Index>(guyan->a.size()), static_cast<Eigen::Index>(guyan->o.size()),
+                                 guyan->from_aset};
 
   EigenSolution s;
   try {
-    s = solve_eigenproblem(c.K_ff, c.M_ff, eo);
+    s = guyan ? solve_eigenproblem(guyan->K_aa, guyan->M_aa, eo) : solve_eigenproblem(c.K_ff, c.M_ff, eo);
+    if (guyan) s.vectors = guyan->expand(s.vectors, c.n_free());
   } catch (const FactorizationError& e) {
+    if (guyan)
+      throw InputError(deck(model), "normal modes on the Guyan-reduced a-set (ASET/OMIT): K_aa - sigma M_aa is singular: "
+                                    "an a-set motion has neither stiffness nor mass; constrain it or give it mass");
     throw_singular_dof(model, g, c, e, "normal modes: K - sigma M is singular",
                        "a motion of this dof has neither stiffness nor mass after the constraints (a massless "
                        "mechanism or rigid-body motion, e.g. a free beam's rotation about its axis with lumped mass); "

@@ -5,49 +5,91 @@
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/constraints.hpp"
 #include "seflex/fem/loads.hpp"
+#include "seflex/reduction/card_usage.hpp"
 #include "matrix_norms.hpp"
 #include "solution_errors.hpp"
 
 namespace seflex::reduction {
+namespace {
+
+/// g-set dofs of the SUPORT entries (held at zero in statics).
+std::vector<Eigen::Index> suport_dofs(const fem::Model& model, const fem::DofMap& dofs) {
+  std::vector<Eigen::Index> out;
+  for (const fem::DofSetEntry& e : model.suport) {
+    if (model.spoint_index.count(e.grid)) {
+      out.push_back(dofs.spoint_dof(model.spoint_index.at(e.grid)));
+      continue;
+    }
+    for (int c = 1; c <= 6; ++c)
+      if ((e.c >> (c - 1)) & 1u) out.push_back(dofs.grid_dof(model.grid_index.at(e.grid), c));
+  }
+  return out;
+}
+
+std::vector<StaticSolution> solve(const fem::Model& model, const std::vector<CaseSelection>& cases,
+                                  const StaticOptions& options) {
+  require_usable(model, check_card_usage(model, Solution::Statics, cases));
+  const fem::GlobalMatrices g = fem::assemble(model, fem::assembly_options(model));
+  std::vector<StaticSolution> out(cases.size());
+  std::vector<bool> done(cases.size(), false);
+  for (std::size_t first = 0; first < cases.size(); ++first) {
+    if (done[first]) continue;
+    // every subcase with the same SPC and MPC sets shares the constrained system and its factor
+    fem::ConstraintOptions co;
+    co.spc_set = cases[first].spc;
+    co.mpc_set = cases[first].mpc;
+    co.fixed_dofs = suport_dofs(model, g.dofs);
+    co.autospc = fem::autospc_enabled(model);
+    const fem::ConstrainedSystem c = fem::apply_constraints(model, g, co);
+    std::unique_ptr<SparseFactorization> factor;
+    double norm_K = 0;
+    if (c.n_free() > 0) {
+      factor = make_factorization(options.factorization);
+      try {
+        factor->factorize(c.K_ff);
+      } catch (const FactorizationError& e) {
+        throw_singular_dof(model, g, c, e, "statics: the constrained stiffness matrix is singular",
+                           "the model can move without deforming (a rigid-body motion no SPC holds, or a mechanism); "
+                           "constrain it with SPC/SPC1 or GRID PS");
+      }
+      norm_K = norm1_symmetric(c.K_ff);
+    }
+    for (std::size_t k = first; k < cases.size(); ++k) {
+      if (done[k] || cases[k].spc != co.spc_set || cases[k].mpc != co.mpc_set) continue;
+      done[k] = true;
+      StaticSolution& s = out[k];
+      s.selection = cases[k];
+      s.dofs = g.dofs;
+      s.n_free = c.n_free();
+      s.p_g = s.selection.load ? fem::load_vector(model, g.dofs, *s.selection.load) : Eigen::VectorXd::Zero(g.dofs.size());
+      Eigen::VectorXd u_f = fem::reduce_load(c, g, s.p_g);
+      if (factor) {
+        const Eigen::VectorXd p_f = u_f;
+        factor->solve_in_place(u_f);
+        const double scale = norm_K * u_f.norm() + p_f.norm();
+        s.backward_error = scale > 0 ? (c.K_ff * u_f - p_f).norm() / scale : 0.0;
+      }
+      s.u_g = fem::expand(c, u_f);
+      // Forces of single-point constraint: K u - p on the constrained dofs.
+      const Eigen::VectorXd r = g.K * s.u_g - s.p_g;
+      s.q_g = Eigen::VectorXd::Zero(r.size());
+      for (Eigen::Index d = 0; d < r.size(); ++d) {
+        const fem::DofStatus st = c.status[static_cast<std::size_t>(d)];
+        if (st == fem::DofStatus::Spc || st == fem::DofStatus::AutoSpc || st == fem::DofStatus::Fixed) s.q_g(d) = r(d);
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace
 
 StaticSolution solve_static(const fem::Model& model, const StaticOptions& options) {
-  StaticSolution s;
-  s.selection = select_case(model, options.subcase);
-  if (!s.selection.load)
-    throw InputError(SourceRef{model.files.empty() ? std::string() : model.files.front(), 0},
-                     "case control: no LOAD = <set> selected" +
-                         (s.selection.subcase_id ? " in SUBCASE " + std::to_string(s.selection.subcase_id) : std::string()) +
-                         " (statics needs a load set)");
-  const fem::GlobalMatrices g = fem::assemble(model, fem::assembly_options(model));
-  const fem::ConstrainedSystem c = fem::apply_constraints(model, g, s.selection.spc);
-  s.dofs = g.dofs;
-  s.n_free = c.n_free();
-  s.p_g = fem::load_vector(model, g.dofs, *s.selection.load);
-  Eigen::VectorXd u_f = fem::reduce_load(c, g, s.p_g);
-  const double p_norm = u_f.norm();
-  if (s.n_free > 0) {
-    auto factor = make_factorization(options.factorization);
-    try {
-      factor->factorize(c.K_ff);
-    } catch (const FactorizationError& e) {
-      throw_singular_dof(model, g, c, e, "statics: the constrained stiffness matrix is singular",
-                         "the model can move without deforming (a rigid-body motion no SPC holds, or a mechanism); "
-                         "constrain it with SPC/SPC1 or GRID PS");
-    }
-    const Eigen::VectorXd p_f = u_f;
-    factor->solve_in_place(u_f);
-    const double scale = norm1_symmetric(c.K_ff) * u_f.norm() + p_norm;
-    s.backward_error = scale > 0 ? (c.K_ff * u_f - p_f).norm() / scale : 0.0;
-  }
-  s.u_g = fem::expand(c, u_f);
-  // Forces of single-point constraint: K u - p on the constrained dofs.
-  const Eigen::VectorXd r = g.K * s.u_g - s.p_g;
-  s.q_g = Eigen::VectorXd::Zero(r.size());
-  for (Eigen::Index d = 0; d < r.size(); ++d) {
-    const fem::DofStatus st = c.status[static_cast<std::size_t>(d)];
-    if (st == fem::DofStatus::Spc || st == fem::DofStatus::AutoSpc || st == fem::DofStatus::Fixed) s.q_g(d) = r(d);
-  }
-  return s;
+  return solve(model, {select_case(model, options.subcase)}, options).front();
+}
+
+std::vector<StaticSolution> solve_statics(const fem::Model& model, const StaticOptions& options) {
+  return solve(model, select_cases(model, options.subcase), options);
 }
 
 }  // namespace seflex::reduction

@@ -72,10 +72,11 @@ TEST(FemBadInput, ConflictingConstraints) {
   const std::string d = kBar + "CBAR,5,7,1,2,0.,0.,1.\nCBAR,6,7,2,4,0.,0.,1.\n";
   // a dependent component that is also a GRID PS constraint
   EXPECT_TRUE(mentions(constraint_error(d + "RBE2,20,1,123,4\nGRID,9,,5.,5.,5.,,3\nRBE2,21,2,3,9\n"),
-                       {"deck.bdf:11: RBE2 21, field GMi", "component 3 of GRID 9", "also constrained"}));
-  // a component made dependent by two RBE2s
+                       {"deck.bdf:11: RBE2 21: grid 9 component 3 is dependent here but also constrained by PS on GRID 9 "
+                        "(deck.bdf:10)", "m-set and the s-set do not overlap"}));
+  // a component made dependent by two RBE2s: both cards named
   EXPECT_TRUE(mentions(constraint_error(d + "RBE2,20,1,123,4\nRBE2,21,2,12,4\n"),
-                       {"deck.bdf:10: RBE2 21", "component 1 of GRID 4 is already dependent in RBE2 20"}));
+                       {"deck.bdf:10: RBE2 21: grid 4 component 1 is made dependent here and by RBE2 20 (deck.bdf:9)"}));
   // RBE2s that depend on each other in a loop
   EXPECT_TRUE(mentions(constraint_error(d + "RBE2,20,1,123456,4\nRBE2,21,4,123456,2\nRBE2,22,2,123456,1\n"),
                        {"RBE2", "closed loop"}));

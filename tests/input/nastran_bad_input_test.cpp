@@ -50,6 +50,8 @@ TEST(NastranBadInput, WrongFieldTypes) {
   EXPECT_TRUE(mentions(read_error(base_deck() + "CONM2,5,1,,1.\n,1.,,x\n"), {"deck.bdf:8: CONM2 5, field 4 (I22): got text 'x'"}));
 }
 
+// References of the cards of case-control sets (SPC, LOAD, METHOD ...) and PARAM GRDPNT's grid are
+// checked when a solution selects them (tests/input/card_usage_test.cpp), not when the deck is read.
 TEST(NastranBadInput, MissingReferences) {
   const std::string d = base_deck();
   EXPECT_TRUE(mentions(read_error(d + "CQUAD4,9,1,1,2,3,77\n"),
@@ -61,11 +63,6 @@ TEST(NastranBadInput, MissingReferences) {
   EXPECT_TRUE(mentions(read_error(d + "CBAR,9,1,1,2,0.,0.,1.\n"), {"CBAR 9, field 3 (PID): references property 1", "PBAR or PBARL"}));
   EXPECT_TRUE(mentions(read_error(d + "CORD2R,3,7,0.,0.,0.,0.,0.,1.\n,1.,0.,0.\n"), {"CORD2R 3, field 3 (RID): references coordinate system 7"}));
   EXPECT_TRUE(mentions(read_error(d + "CORD1R,3,1,2,44\n"), {"CORD1R 3, G3: references grid 44"}));
-  EXPECT_TRUE(mentions(read_error(d + "SPCADD,3,1\n"), {"SPCADD 3", "references SPC set 1"}));
-  EXPECT_TRUE(mentions(read_error(d + "LOAD,3,1.,1.,9\nPLOAD4,9,1,1.\n"), {"LOAD 3", "load set 9", "PLOAD4"}));
-  EXPECT_TRUE(mentions(read_error("SOL 103\nCEND\nSPC = 4\nBEGIN BULK\n" + d), {"case control: SPC = 4 selects no SPC"}));
-  EXPECT_TRUE(mentions(read_error("SOL 103\nCEND\nMETHOD = 4\nBEGIN BULK\n" + d), {"METHOD = 4 selects no EIGRL or EIGR"}));
-  EXPECT_TRUE(mentions(read_error(d + "PARAM,GRDPNT,12\n"), {"PARAM GRDPNT", "grid 12 is not defined"}));
   EXPECT_TRUE(mentions(read_error(d + "CBAR,9,9,1,2\nPBAR,9,1,1.\n"), {"CBAR 9, field 6 (X1/G0): blank and no BAROR"}));
   EXPECT_TRUE(mentions(read_error(d + "CBEAM,9,9,1,2,0.,0.,1.\nPBAR,9,1,1.\n"), {"CBEAM 9, field 3 (PID): references PBAR 9", "PBEAM"}));
 }
@@ -158,7 +155,6 @@ TEST(NastranBadInput, InconsistentCards) {
   EXPECT_TRUE(mentions(read_error(d + "CORD1R,3,1,2,2\n"), {"CORD1R 3, field 3 (G1A): the three grids 1, 2, 2 are not distinct"}));
   EXPECT_TRUE(mentions(read_error(d + "CELAS2,9,1.,1,7\n"), {"CELAS2 9, field 5 (C1): got integer '7'"}));
   EXPECT_TRUE(mentions(read_error(d + "SPOINT,20\nCELAS2,9,1.,20,3\n"), {"CELAS2 9, field 4 (G1): scalar point 20 with component 3"}));
-  EXPECT_TRUE(mentions(read_error(d + "SPC1,1,0,3\n"), {"SPC/SPC1 1, grid 3: grid 3 with component 0 or blank"}));
   EXPECT_TRUE(mentions(read_error(d + "PARAM,WTMASS,-1.\n"), {"PARAM WTMASS, field 3 (V1): got -1.; expected a mass factor > 0"}));
   EXPECT_TRUE(mentions(read_error(d + "RBE2,9,1,123456,2,1\n"), {"RBE2 9", "the independent grid 1 is also dependent"}));
   EXPECT_TRUE(mentions(read_error(d + "EIGRL,1,10.,5.\n"), {"EIGRL 1, field 4 (V2): got real '5.'; expected V2 >= V1"}));

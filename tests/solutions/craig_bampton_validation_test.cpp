@@ -41,13 +41,18 @@ TEST(CraigBamptonValidation, MystranCbExampleReducedMatrices) {
   const auto dir = test::validation_dir() / "mystran_craig_bampton_cbar_frame";
   const fem::Model m = io::read_nastran(dir / "CB-EXAMPLE-12_noOUTPUT4.DAT");
   const fem::GlobalMatrices g = fem::assemble(m, fem::assembly_options(m));
-  const fem::ConstrainedSystem c = fem::apply_constraints(m, g, m.case_control.global.spc);
   std::vector<Eigen::Index> boundary;
   std::vector<Eigen::Index> boundary_g;
   for (const auto& e : m.suport)
     for (int comp = 1; comp <= 6; ++comp)
       if (e.c & (1u << (comp - 1)))
         boundary_g.push_back(6 * static_cast<Eigen::Index>(m.grid_index.at(e.grid)) + comp - 1);
+  // The r-set is exempt from AUTOSPC (Nastran's PARAM AUTOSPCR = NO): grid 13's pinned bars leave its
+  // translation along (0, 1, 2) without stiffness, which AUTOSPC would otherwise remove as component 3.
+  fem::ConstraintOptions co;
+  co.spc_set = m.case_control.global.spc;
+  co.no_autospc = boundary_g;
+  const fem::ConstrainedSystem c = fem::apply_constraints(m, g, co);
   std::sort(boundary_g.begin(), boundary_g.end());  // MYSTRAN's R-set order: grid, then component
   for (Eigen::Index gd : boundary_g) boundary.push_back(c.g_to_f[static_cast<std::size_t>(gd)]);
   ASSERT_EQ(boundary.size(), 8u);

@@ -11,13 +11,17 @@ namespace seflex::fem {
 
 /// Resolve and check a model read from user files:
 /// - build the id -> index maps and reject duplicate ids (grids and scalar points share one id
-///   space, so do all elements incl. CONM2 and RBE2, and all properties);
+///   space, so do all elements incl. CONM2, RBE2, RBAR and RBE3, and all properties; SPCADD,
+///   MPCADD, LOAD and EIGR/EIGRL ids must be unique and distinct from the sets they combine);
 /// - resolve every coordinate system (CORD2x chains through RID, CORD1x through grids) and every
 ///   GRID's basic position;
-/// - check every reference: grids, scalar points, properties (of the right kind), materials,
-///   coordinate systems, SPC/SPCADD/LOAD sets, EIGR/EIGRL methods and DMIG matrices named by the
-///   case control, PARAM values seflex uses (WTMASS > 0, GRDPNT a grid, COUPMASS, K6ROT);
+/// - check every reference of the structure: grids, scalar points, properties (of the right kind),
+///   materials, coordinate systems of elements, rigid elements, ASET/OMIT/BSET/SUPORT entries, and
+///   the PARAM values seflex uses (WTMASS > 0, GRDPNT a grid, COUPMASS, K6ROT);
 /// - check components: 1-6 on grids, 0 on scalar points.
+/// Cards that belong to a set the case control selects (SPC, MPC, FORCE, MOMENT, LOAD, EIGR/EIGRL,
+/// DMIG) are checked when a solution selects them, and reduction::check_card_usage warns about the
+/// problems of the unselected ones: as Nastran, a deck is not refused for a set it does not use.
 /// Throws InputError naming file:line, card, id, field and what was expected. Idempotent.
 void finalize(Model& model);
 

@@ -197,12 +197,43 @@ struct Rbe2 {
   CardRef ref;
 };
 
+/// RBAR: a rigid bar between GA and GB. CNA/CNB: independent components (six in all, able to
+/// describe any rigid motion); CMA/CMB: dependent ones (both blank: every component not independent).
+struct Rbar {
+  int id = 0, ga = 0, gb = 0;
+  ComponentMask cna = 0, cnb = 0, cma = 0, cmb = 0;
+  double alpha = 0;                             ///< thermal expansion: read, not used
+  CardRef ref;
+};
+
+/// RBE3: the REFC components of REFGRID are the weighted least-squares average of the motions of
+/// the groups' grids (WTi on components Ci of grids Gi,j). UM: the dependent set redefined.
+struct Rbe3 {
+  struct Group {
+    double weight = 0;
+    ComponentMask c = 0;
+    std::vector<int> grids;
+  };
+  struct Dependent {                            ///< one UM pair GMi CMi
+    int grid = 0;
+    ComponentMask c = 0;
+  };
+  int id = 0, refgrid = 0;
+  ComponentMask refc = 0;
+  std::vector<Group> groups;
+  std::vector<Dependent> um;                    ///< empty: REFC of REFGRID are the dependents
+  bool has_alpha = false;
+  double alpha = 0;                             ///< thermal expansion: read, not used
+  CardRef ref;
+};
+
 // ---------------------------------------------------------------------------------------------
 // Constraints, sets and loads
 struct SpcEntry {  ///< one SPC/SPC1 grid-component entry (d = enforced value, SPC only)
   int sid = 0, grid = 0;
   ComponentMask c = 0;
   double d = 0;
+  bool from_thru = false;           ///< SPC1 "G1 THRU G2": a missing grid is skipped (QRG SPC1 remark)
   CardRef ref;
 };
 
@@ -212,7 +243,25 @@ struct SpcAdd {
   CardRef ref;
 };
 
-struct DofSetEntry {  ///< ASET/ASET1/BSET/BSET1/SUPORT entries (grid or scalar point + components)
+/// MPC: one equation sum_j A_j u(G_j, C_j) = 0 (components in the grids' CD systems, 0 for a
+/// scalar point); the first term's dof is the dependent one.
+struct MpcTerm {
+  int grid = 0, component = 0;
+  double a = 0;
+};
+struct MpcEquation {
+  int sid = 0;
+  std::vector<MpcTerm> terms;
+  CardRef ref;
+};
+
+struct MpcAdd {
+  int sid = 0;
+  std::vector<int> sets;
+  CardRef ref;
+};
+
+struct DofSetEntry {  ///< ASET/ASET1/OMIT/OMIT1/BSET/BSET1/SUPORT entries (grid or scalar point + components)
   int grid = 0;
   ComponentMask c = 0;
   CardRef ref;
@@ -267,11 +316,21 @@ struct Param {
 
 // ---------------------------------------------------------------------------------------------
 // Executive and case control (what seflex keeps of it)
+/// A case-control command that selects analysis input seflex does not use (TEMPERATURE(LOAD),
+/// DLOAD, DEFORM, SUPORT1, ...): kept so that a solution that would need it can refuse the deck.
+struct CaseCommand {
+  std::string name;                 ///< upper case, with its describer: "TEMPERATURE(LOAD)", "DLOAD"
+  std::string value;                ///< the text after '='
+  CardRef ref;
+};
+
 struct Subcase {
   int id = 0;                       ///< 0 = the global (above any SUBCASE) selections
   std::string label;
   std::optional<int> spc, load, method, mpc;
   std::vector<std::string> k2gg, m2gg;
+  std::vector<CaseCommand> other;   ///< selections seflex does not use (global ones are inherited)
+  CardRef ref;                      ///< the SUBCASE line (file 0, line 0 for the global level)
 };
 
 struct CaseControl {
@@ -281,11 +340,18 @@ struct CaseControl {
   std::vector<Subcase> subcases;
 };
 
-/// Cards the reader recognised but seflex does not model, or did not recognise at all.
+/// Cards the reader recognised but seflex does not model, or did not recognise at all. `members`
+/// holds field 2 (the SID of a load, a method or a set; an element's id) of each card whose field 2
+/// is an integer, so that the cards of a selected set can be told from those of unselected sets.
 struct UnsupportedCard {
+  struct Member {
+    int sid = 0;
+    CardRef ref;
+  };
   std::string name;
   std::size_t count = 0;
   CardRef first;
+  std::vector<Member> members;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -312,10 +378,14 @@ struct Model {
   std::vector<Conm2> conm2;
   std::vector<Spring> springs;
   std::vector<Rbe2> rbe2;
+  std::vector<Rbar> rbars;
+  std::vector<Rbe3> rbe3;
 
   std::vector<SpcEntry> spcs;
   std::vector<SpcAdd> spcadds;
-  std::vector<DofSetEntry> aset, bset, suport;
+  std::vector<MpcEquation> mpcs;
+  std::vector<MpcAdd> mpcadds;
+  std::vector<DofSetEntry> aset, omit, bset, suport;
   std::vector<PointLoad> point_loads;
   std::vector<LoadCombination> load_combinations;
   std::vector<EigenMethod> eigen_methods;

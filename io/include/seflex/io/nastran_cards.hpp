@@ -27,6 +27,9 @@ struct ReaderState {
 
   /// Record a card (or a feature of a card) seflex reads but does not use: counted, first location kept.
   void note_unsupported(std::string_view name, const fem::CardRef& ref);
+  /// A whole card seflex does not read: as note_unsupported, and its field 2 (a set id) kept when
+  /// it is an integer (fem::UnsupportedCard::members).
+  void note_unsupported_card(const Card& card);
 };
 
 using CardParser = void (*)(const Card&, ReaderState&);
@@ -66,6 +69,12 @@ void parse_pelas(const Card&, ReaderState&);
 void parse_spc(const Card&, ReaderState&);
 void parse_spc1(const Card&, ReaderState&);
 void parse_spcadd(const Card&, ReaderState&);
+void parse_mpc(const Card&, ReaderState&);
+void parse_mpcadd(const Card&, ReaderState&);
+void parse_omit(const Card&, ReaderState&);
+void parse_omit1(const Card&, ReaderState&);
+void parse_rbar(const Card&, ReaderState&);
+void parse_rbe3(const Card&, ReaderState&);
 void parse_aset(const Card&, ReaderState&);
 void parse_aset1(const Card&, ReaderState&);
 void parse_bset(const Card&, ReaderState&);
@@ -86,9 +95,10 @@ std::string param_value(std::string_view field);
 
 /// Ids of a list field run starting at data field `first`: integers and "ID1 THRU ID2" ranges, blanks
 /// skipped (SPC1, ASET1, BSET1, SPOINT, RBE2). Stops at the end of the card or, when stop_at_real, at
-/// the first real. Ranges larger than kMaxThru ids are an error.
+/// the first real. Ranges larger than kMaxThru ids are an error. `from_thru` (optional) receives, per
+/// id, whether it belongs to a "ID1 THRU ID2" range (ID1 and ID2 included).
 inline constexpr int kMaxThru = 10'000'000;
 std::vector<int> id_list(const Card& card, std::size_t first, const char* what, bool stop_at_real = false,
-                         std::size_t* stopped_at = nullptr);
+                         std::size_t* stopped_at = nullptr, std::vector<bool>* from_thru = nullptr);
 
 }  // namespace seflex::io::nastran

@@ -2,7 +2,9 @@
 // Executive and case control sections of a Nastran deck: what seflex keeps of them.
 // - Executive control (before CEND): SOL. Everything else is skipped.
 // - Case control (CEND to BEGIN BULK): TITLE, SUBTITLE, LABEL, SUBCASE, SPC, LOAD, METHOD, MPC,
-//   K2GG, M2GG, PARAM; other commands (output requests, SET, ...) are skipped. Commands may be
+//   K2GG, M2GG, PARAM; commands that select analysis input seflex does not use (TEMPERATURE(LOAD),
+//   DLOAD, DEFORM, SUPORT1, ...) are kept in Subcase::other so that a solution needing them can
+//   refuse the deck; other commands (output requests, SET, ...) are skipped. Commands may be
 //   abbreviated to their first four letters, as Nastran allows. A line ending with a comma continues
 //   on the next one. Subcases inherit the global selections they do not set.
 #include <cstdint>

@@ -14,7 +14,7 @@
 namespace seflex::io {
 
 inline constexpr int kSuperelementFormatMajor = 1;
-inline constexpr int kSuperelementFormatMinor = 0;
+inline constexpr int kSuperelementFormatMinor = 1;
 
 struct SaveOptions {
   bool overwrite = false;  ///< refuse to replace an existing file unless set

@@ -8,9 +8,14 @@
 //
 // Steps (the model is read, never changed):
 //  1. K, M of the g-set (fem::assemble; DMIG K2GG/M2GG included), constraints of the case control
-//     SPC set and RBE2s eliminated exactly (fem::apply_constraints, AUTOSPC on).
-//  2. Every interface grid must keep its six dofs free (not SPC'd, not an RBE2 dependent, not
-//     removed by AUTOSPC); the boundary set is their 6N f-dofs.
+//     (SPC and MPC sets of the first subcase) and rigid elements (RBE2, RBAR, RBE3) eliminated
+//     exactly (fem::apply_constraints, AUTOSPC as PARAM AUTOSPC says, default on). Cards the
+//     reduction needs and seflex does not model refuse the deck (check_card_usage, CraigBampton).
+//  2. Every interface grid must keep its six dofs free (not SPC'd, not dependent, not removed by
+//     AUTOSPC); the boundary set is their 6N f-dofs. The reference grid of an RBE3 is dependent (a
+//     weighted average of its independent grids): a unit motion of it alone does not define a
+//     constraint mode, so it is refused as an interface node unless UM makes it independent; the
+//     dependent grids of an RBE2/RBAR are refused too (their independent grid is the interface).
 //  3. Craig-Bampton (craig_bampton.hpp). Constraint-mode columns are then expressed in basic
 //     components, so q is in body axes even for grids with a CD system (interface triads R_BN = I).
 //  4. Recovery to every grid's 6 dofs in basic (RBE2 dependents and SPC'd dofs through T):
@@ -45,6 +50,7 @@ std::vector<int> interface_nodes_from_set(const fem::Model& model, const std::st
 
 struct SuperelementOptions {
   std::vector<int> interface_ids;  ///< grid ids, in the order of q
+  unsigned interface_cards = 0;    ///< InterfaceFrom bits (card_usage.hpp): the cards interface_ids came from
   std::optional<int> frame_node;   ///< default: see above
   CraigBamptonOptions modes;       ///< fixed-interface modes (count or frequency limit)
   std::string name;                ///< body name
@@ -56,8 +62,9 @@ struct SuperelementInfo {
   CraigBamptonStats stats;
   bool frame_chosen = false;        ///< the frame node was chosen by the default rule
   int spc_set = 0;                  ///< SPC set applied (0 = none)
+  int mpc_set = 0;                  ///< MPC set applied (0 = none)
   Eigen::Index autospc_dofs = 0;    ///< dofs removed by AUTOSPC
-  Eigen::Index dependent_dofs = 0;  ///< RBE2-dependent dofs eliminated
+  Eigen::Index dependent_dofs = 0;  ///< dependent dofs (rigid elements, RBE3, MPC) eliminated
 };
 
 /// Reduce a finalized model. Fills every field of se::Superelement except the provenance ones the
@@ -77,7 +84,7 @@ Eigen::MatrixXd interface_rigid_modes(const se::Superelement& body);
 Eigen::VectorXd reduced_eigenvalues(const se::Superelement& body, int count);
 
 /// Lowest `count` eigenvalues of the full FE model with the constraints `reduce_to_superelement`
-/// applies (case-control SPC, RBE2, AUTOSPC), for comparison with the reduced model.
+/// applies (case-control SPC and MPC, rigid elements, AUTOSPC), for comparison with the reduced model.
 Eigen::VectorXd full_model_eigenvalues(const fem::Model& model, int count,
                                        EigenBackend backend = EigenBackend::Spectra);
 

@@ -9,6 +9,12 @@
 //
 // Generalised mass and stiffness are phi^T M phi and phi^T K phi of the normalised modes, as
 // Nastran's REAL EIGENVALUES table prints them.
+//
+// Constraints: the case control's SPC and MPC sets, rigid elements (fem/constraints.hpp). With
+// ASET/ASET1 or OMIT/OMIT1 cards the f-set is condensed statically to the a-set first (Guyan
+// reduction, as Nastran and MYSTRAN do; guyan.hpp) and the eigenproblem is solved on the a-set;
+// the omitted dofs of the modes are recovered as u_o = G_oa u_a. The result says so (guyan).
+// Before anything is assembled, check_card_usage(NormalModes) must find nothing Refused.
 #include <Eigen/Core>
 #include <optional>
 #include <string>
@@ -29,14 +35,22 @@ struct ModesOptions {
   FactorizationBackend factorization = kDefaultFactorization;
   std::vector<Eigen::Index> fixed_dofs;       ///< extra g-set dofs held at zero (fixed-interface modes)
   bool check_completeness = true;
+  bool guyan = true;                          ///< honour ASET/OMIT (false: eigenproblem on the full f-set)
 };
 
 enum class ModeNormalization : unsigned char { Mass, Max, Point };
+
+/// The static condensation a solution applied (ASET/OMIT).
+struct GuyanInfo {
+  Eigen::Index a_dofs = 0, o_dofs = 0;  ///< sizes of the a-set and the omitted set
+  bool from_aset = true;                ///< a-set from ASET/ASET1 (else the complement of OMIT/OMIT1)
+};
 
 struct NormalModes {
   CaseSelection selection;
   fem::DofMap dofs;
   Eigen::Index n_free = 0;
+  std::optional<GuyanInfo> guyan;        ///< set when the eigenproblem was solved on a Guyan-reduced a-set
   ModeNormalization normalization = ModeNormalization::Mass;
   Eigen::VectorXd eigenvalues;           ///< m, ascending, (rad/s)^2 (in the deck's units)
   Eigen::MatrixXd shapes_g;              ///< g-set x m, each grid's CD system, normalised as above
