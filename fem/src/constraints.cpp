@@ -128,9 +128,16 @@ std::string constraint_source(const Model& model, const DofMap& dofs, const Cons
 
 }  // namespace
 
-std::string describe(const Model& model, const ConstraintCard& card) {
+namespace {
+/// "RBE3 5" / "MPC set 2".
+std::string label(const ConstraintCard& card) {
   const bool set = std::string_view(card.card) == "MPC";
-  return std::string(card.card) + (set ? " set " : " ") + std::to_string(card.id) + " (" + where(model, card.ref).str() + ")";
+  return std::string(card.card) + (set ? " set " : " ") + std::to_string(card.id);
+}
+}  // namespace
+
+std::string describe(const Model& model, const ConstraintCard& card) {
+  return label(card) + " (" + where(model, card.ref).str() + ")";
 }
 
 bool autospc_enabled(const Model& model) {
@@ -177,14 +184,12 @@ ConstrainedSystem apply_constraints(const Model& model, const GlobalMatrices& g,
     if (dep[d.dof] >= 0) {
       const ConstraintCard& first = eq.cards[eq.dependents[static_cast<std::size_t>(dep[d.dof])].card];
       throw InputError(where(model, card.ref),
-                       std::string(card.card) + " " + std::to_string(card.id) + ": " + detail::dof_name(model, dofs, d.dof) +
-                           " is made dependent here and by " + describe(model, first) +
+                       label(card) + ": " + detail::dof_name(model, dofs, d.dof) + " is made dependent here and by " + describe(model, first) +
                            "; expected each dependent dof in one rigid element or MPC equation (Nastran's m-set)");
     }
     if (out.status[d.dof] != DofStatus::Free)
       throw InputError(where(model, card.ref),
-                       std::string(card.card) + " " + std::to_string(card.id) + ": " + detail::dof_name(model, dofs, d.dof) +
-                           " is dependent here but also constrained by " +
+                       label(card) + ": " + detail::dof_name(model, dofs, d.dof) + " is dependent here but also constrained by " +
                            constraint_source(model, dofs, options, d.dof, out.status[d.dof]) +
                            "; expected a dependent dof not to be constrained (the m-set and the s-set do not overlap)");
     dep[d.dof] = static_cast<std::int32_t>(k);
@@ -217,7 +222,7 @@ ConstrainedSystem apply_constraints(const Model& model, const GlobalMatrices& g,
               const ConstraintCard& here = eq.cards[d.card];
               const ConstraintCard& there = eq.cards[eq.dependents[static_cast<std::size_t>(dep[k])].card];
               throw InputError(where(model, here.ref),
-                               std::string(here.card) + " " + std::to_string(here.id) + ": its dependent " +
+                               label(here) + ": its dependent " +
                                    detail::dof_name(model, dofs, m) + " depends on " + detail::dof_name(model, dofs, k) +
                                    ", which depends back on it through " + describe(model, there) +
                                    "; expected no closed loop of dependencies");

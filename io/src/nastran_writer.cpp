@@ -215,20 +215,56 @@ void write_elements(const fem::Model& m, CardWriter& w) {
     for (const int g : r.gm) w.i(g);
     w.end();
   }
+  for (const auto& r : m.rbars)
+    w.start("RBAR").i(r.id).i(r.ga).i(r.gb).components(r.cna).components(r.cnb).components(r.cma).components(r.cmb)
+        .r(r.alpha).end();
+  for (const auto& r : m.rbe3) {
+    w.start("RBE3").i(r.id).blank().i(r.refgrid).components(r.refc);
+    for (const auto& g : r.groups) {
+      w.r(g.weight).components(g.c);
+      for (const int id : g.grids) w.i(id);
+    }
+    if (!r.um.empty()) {
+      w.next_line().t("UM");
+      for (std::size_t k = 0; k < r.um.size(); ++k) {
+        if (k > 0 && k % 3 == 0) w.blank().next_line().blank();  // three pairs per line, fields 3-8
+        w.i(r.um[k].grid).components(r.um[k].c);
+      }
+    }
+    if (r.has_alpha) w.next_line().t("ALPHA").r(r.alpha);
+    w.end();
+  }
   for (const auto& c : m.conm2)
     w.start("CONM2").i(c.id).i(c.grid).i(c.cid).r(c.m).r(c.x.x()).r(c.x.y()).r(c.x.z()).blank()
         .r(c.I11).r(c.I21).r(c.I22).r(c.I31).r(c.I32).r(c.I33).end();
 }
 
 void write_constraints_and_loads(const fem::Model& m, CardWriter& w) {
-  for (const auto& s : m.spcs) w.start("SPC").i(s.sid).i(s.grid).components(s.c, false).r(s.d).end();
+  for (const auto& s : m.spcs) {
+    // grids of an SPC1 THRU range that do not exist are not part of the model (QRG SPC1)
+    if (s.from_thru && !m.grid_index.count(s.grid) && !m.spoint_index.count(s.grid)) continue;
+    w.start("SPC").i(s.sid).i(s.grid).components(s.c, false).r(s.d).end();
+  }
   for (const auto& a : m.spcadds) {
     w.start("SPCADD").i(a.sid);
     for (const int s : a.sets) w.i(s);
     w.end();
   }
+  for (const auto& e : m.mpcs) {
+    w.start("MPC").i(e.sid);
+    for (std::size_t k = 0; k < e.terms.size(); ++k) {
+      if (k > 0 && k % 2 == 0) w.blank().next_line().blank();  // two terms per line, fields 3-8
+      w.i(e.terms[k].grid).i(e.terms[k].component).r(e.terms[k].a);
+    }
+    w.end();
+  }
+  for (const auto& a : m.mpcadds) {
+    w.start("MPCADD").i(a.sid);
+    for (const int s : a.sets) w.i(s);
+    w.end();
+  }
   const std::pair<const char*, const std::vector<fem::DofSetEntry>*> sets[] = {
-      {"ASET", &m.aset}, {"BSET", &m.bset}, {"SUPORT", &m.suport}};
+      {"ASET", &m.aset}, {"OMIT", &m.omit}, {"BSET", &m.bset}, {"SUPORT", &m.suport}};
   for (const auto& [name, entries] : sets)
     for (const auto& e : *entries) w.start(name).i(e.grid).components(e.c, false).end();
   for (const auto& l : m.point_loads)

@@ -108,6 +108,11 @@ class Classifier {
       : m_(m), s_(s), cases_(cases), interface_(interface) {}
 
   std::vector<CardUse> run() {
+    if (!runs(s_)) {  // info without a SOL seflex runs, convert: what seflex does not model
+      unsupported();
+      notes();
+      return report_.take();
+    }
     collect_sets();
     selections();
     loads();
@@ -437,6 +442,10 @@ class Classifier {
     for (const auto& u : m_.unsupported) {
       if (u.name.find(' ') != std::string::npos) continue;  // a feature note (notes())
       const CardRole* r = detail::find_card_role(u.name);
+      if (s_ == Solution::Convert) {
+        report_.add(Kind::Unused, u.name, u.first, "not written: seflex does not model it", u.count);
+        continue;
+      }
       if (r == nullptr) {
         report_.add(Kind::Unused, u.name, u.first, "a card seflex does not know; ignored", u.count);
         continue;

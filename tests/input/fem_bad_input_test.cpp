@@ -28,12 +28,16 @@ std::string assembly_error(const std::string& deck) {
   return "";
 }
 
-/// The InputError message of applying the constraints (SPC set `spc`, if any).
-std::string constraint_error(const std::string& deck, std::optional<int> spc = std::nullopt) {
+/// The InputError message of applying the constraints (SPC set `spc`, MPC set `mpc`, if any).
+std::string constraint_error(const std::string& deck, std::optional<int> spc = std::nullopt,
+                             std::optional<int> mpc = std::nullopt) {
   const fem::Model m = read_deck(deck);
   const fem::GlobalMatrices g = fem::assemble(m, fem::assembly_options(m));
   try {
-    fem::apply_constraints(m, g, spc);
+    fem::ConstraintOptions o;
+    o.spc_set = spc;
+    o.mpc_set = mpc;
+    fem::apply_constraints(m, g, o);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -80,6 +84,46 @@ TEST(FemBadInput, ConflictingConstraints) {
   // RBE2s that depend on each other in a loop
   EXPECT_TRUE(mentions(constraint_error(d + "RBE2,20,1,123456,4\nRBE2,21,4,123456,2\nRBE2,22,2,123456,1\n"),
                        {"RBE2", "closed loop"}));
+}
+
+// A dof made dependent twice (by two constraints, or dependent and constrained): InputError naming
+// both cards with file:line, as Nastran's m-set must not overlap itself or the s-set.
+TEST(FemBadInput, DependentDofAppearsTwice) {
+  const std::string d = kBar + "CBAR,5,7,1,2,0.,0.,1.\nCBAR,6,7,2,4,0.,0.,1.\nGRID,9,,1.,1.,1.\nGRID,8,,2.,2.,0.\n";
+  // the reference grid of an RBE3 (dependent by default) and the first dof of an MPC equation
+  EXPECT_TRUE(mentions(constraint_error(d + "RBE3,30,,9,123,1.,123,1,2\n,4\nMPC,5,9,2,1.,4,2,-1.\n", std::nullopt, 5),
+                       {"deck.bdf:13: MPC set 5: grid 9 component 2 is made dependent here and by RBE3 30 (deck.bdf:11)",
+                        "one rigid element or MPC equation"}));
+  // a dependent end of an RBAR that an SPC of the selected set also holds
+  EXPECT_TRUE(mentions(constraint_error(d + "RBAR,31,4,8,123456\nSPC1,1,3,8\n", 1),
+                       {"deck.bdf:11: RBAR 31: grid 8 component 3 is dependent here but also constrained by SPC/SPC1 set 1 "
+                        "(deck.bdf:12)"}));
+  // an RBE2 dependent also made dependent by an RBE3 through UM
+  EXPECT_TRUE(mentions(constraint_error(d + "RBE2,32,4,123,8\nRBE3,33,,9,1,1.,123,1,2\n,8\n,UM,8,1\n"),
+                       {"RBE3 33: grid 8 component 1 is made dependent here and by RBE2 32 (deck.bdf:11)"}));
+  // MPC equations that depend on each other in a loop
+  EXPECT_TRUE(mentions(constraint_error(d + "MPC,6,8,1,1.,9,1,-1.\nMPC,6,9,1,1.,8,1,-2.\n", std::nullopt, 6),
+                       {"MPC set 6", "depends back on it", "closed loop"}));
+  // a selected MPC set naming a grid that does not exist
+  EXPECT_TRUE(mentions(constraint_error(d + "MPC,6,8,1,1.,77,1,-1.\n", std::nullopt, 6),
+                       {"deck.bdf:11: MPC 6, field G2: references point 77, which is not defined"}));
+  EXPECT_TRUE(mentions(constraint_error(d, std::nullopt, 3), {"case control MPC = 3", "no MPC or MPCADD"}));
+}
+
+// Rigid and interpolation elements that do not determine their dependents.
+TEST(FemBadInput, UndeterminedRigidAndInterpolationElements) {
+  const std::string d = kBar + "CBAR,5,7,1,2,0.,0.,1.\nGRID,8,,3.,0.,0.\nGRID,9,,1.5,1.,0.\n";
+  // translations at both ends of a bar along x leave its rotation about x free
+  EXPECT_TRUE(mentions(constraint_error(d + "RBAR,40,2,8,123,123\n"),
+                       {"deck.bdf:10: RBAR 40, field 5 (CNA)", "cannot describe every rigid-body motion"}));
+  // translations of three grids on one line cannot give the rotation about it, nor the off-line
+  // reference point's translation
+  EXPECT_TRUE(mentions(constraint_error(d + "RBE3,41,,9,123456,1.,123,1,2\n,8\n"),
+                       {"deck.bdf:10: RBE3 41, field 5 (REFC)", "is not determined by the independent components"}));
+  EXPECT_TRUE(mentions(constraint_error(d + "RBE3,42,,9,12,1.,123,1,2\n,4\n,UM,1,123\n"),
+                       {"RBE3 42, field UM", "3 dependent components listed after UM; expected as many as REFC has (2)"}));
+  EXPECT_TRUE(mentions(constraint_error(d + "RBE3,43,,9,1,1.,123,1,2\n,4\n,UM,3,1\n"),
+                       {"RBE3 43, field CMi (UM)", "component 1 of grid 3 is not in the element"}));
 }
 
 TEST(FemBadInput, UndefinedSets) {

@@ -157,6 +157,17 @@ TEST(NastranBadInput, InconsistentCards) {
   EXPECT_TRUE(mentions(read_error(d + "SPOINT,20\nCELAS2,9,1.,20,3\n"), {"CELAS2 9, field 4 (G1): scalar point 20 with component 3"}));
   EXPECT_TRUE(mentions(read_error(d + "PARAM,WTMASS,-1.\n"), {"PARAM WTMASS, field 3 (V1): got -1.; expected a mass factor > 0"}));
   EXPECT_TRUE(mentions(read_error(d + "RBE2,9,1,123456,2,1\n"), {"RBE2 9", "the independent grid 1 is also dependent"}));
+  EXPECT_TRUE(mentions(read_error(d + "RBAR,9,1,2,123,12\n"),
+                       {"deck.bdf:7: RBAR 9, field 5 (CNA): 5 independent components in CNA and CNB; expected six"}));
+  EXPECT_TRUE(mentions(read_error(d + "RBAR,9,1,2,123456,,1\n"), {"RBAR 9, field 7 (CMA)", "both independent (CNA) and dependent"}));
+  EXPECT_TRUE(mentions(read_error(d + "RBAR,9,1,1,123456\n"), {"RBAR 9, field 4 (GB): the same grid as GA"}));
+  EXPECT_TRUE(mentions(read_error(d + "MPC,9,1,3,0.,2,3,1.\n"), {"MPC 9, field 5 (A1): 0.0; expected a nonzero coefficient"}));
+  EXPECT_TRUE(mentions(read_error(d + "MPC,9,1,7,1.\n"), {"MPC 9, field 4 (C1): got integer '7'", "one component 1-6"}));
+  EXPECT_TRUE(mentions(read_error(d + "RBE3,9,,1,123\n"), {"RBE3 9, field 6 (WT1): blank; expected at least one weight"}));
+  EXPECT_TRUE(mentions(read_error(d + "RBE3,9,,1,123,1,123,2\n"), {"RBE3 9, field 6 (WT1): got integer '1'", "weighting factor"}));
+  EXPECT_TRUE(mentions(read_error(d + "RBE3,9,,1,123,1.,123\n"), {"RBE3 9", "no grid after the components"}));
+  EXPECT_TRUE(mentions(read_error(d + "RBE3,9,,1,123,1.,123,2,3\n,UM,2\n"), {"RBE3 9", "CMi"}));
+  EXPECT_TRUE(mentions(read_error(d + "RBE3,9,,1,123,-1.,123,2,3\n"), {"RBE3 9, field 6 (WTi): got real '-1.'", ">= 0"}));
   EXPECT_TRUE(mentions(read_error(d + "EIGRL,1,10.,5.\n"), {"EIGRL 1, field 4 (V2): got real '5.'; expected V2 >= V1"}));
   EXPECT_TRUE(mentions(read_error(d + "DMIG,K,0,6,3,0\n"), {"DMIG K, field 5 (TIN): got integer '3'", "complex matrices are not supported"}));
   EXPECT_TRUE(mentions(read_error(d + "CQUAD4,9,1,1,2,3,4,,,\n,,,2\n"), {"CQUAD4 9, field 4 (TFLAG): got integer '2'"}));

@@ -67,6 +67,7 @@ GRID,6,,2.,0.,0.
 GRID,7,,2.,1.,0.
 GRID,8,,3.,1.,0.
 GRID,9,,0.5,2.,0.
+GRID,10,,1.,0.5,0.5
 SPOINT,100,101
 MAT1,1,7.1+10,,.3,2700.,2.3-5,20.,0.01
 MAT1,2,2.1E11,8.E10,,7800.
@@ -101,6 +102,12 @@ CELAS1,1009,30,1,3,2,3
 CELAS1,1010,31,100,,
 CELAS2,1011,5.+4,3,2,,,0.02,0.1
 RBE2,1012,7,123,8
+RBAR,1016,8,9,123456,,,,1.-5
+RBAR,1018,1,9,1236,45,4,6
+RBE3,1017,,10,123,1.,123,1,3
+,5,2.5,123,6,7
+,UM,10,12,1,3
+,ALPHA,1.-5
 CONM2,1013,6,0,2.5,0.01,0.,0.
 ,0.1,0.,0.2,0.,0.,0.3
 CONM2,1014,4,-1,1.5,1.5,30.,0.2
@@ -109,6 +116,12 @@ SPC,10,1,123456,0.
 SPC1,11,123,1
 SPC,12,9,3,0.001
 SPCADD,13,10,12
+MPC,40,1,3,1.,2,3,-0.5
+,,5,1,2.,6,2,1.
+,,100,0,1.
+MPCADD,41,40
+OMIT,3,456
+OMIT1,5,6,7
 ASET,2,123
 BSET,1,456
 SUPORT,7,1
@@ -167,6 +180,21 @@ TEST(NastranWriter, RoundTripsEveryCard) {
   EXPECT_EQ(back.spcs.size(), m.spcs.size());
   EXPECT_EQ(back.spcs.back().d, 0.001);
   EXPECT_EQ(back.dmigs.at(0).entries.size(), 3u);
+  ASSERT_EQ(back.rbars.size(), 2u);
+  EXPECT_EQ(back.rbars[0].cmb, 0x3F);  // blank CMA, CMB: the complement of CNA, CNB
+  EXPECT_EQ(back.rbars[0].alpha, 1e-5);
+  EXPECT_EQ(back.rbars[1].cma, 8);     // CMA 4 as given
+  ASSERT_EQ(back.rbe3.size(), 1u);
+  EXPECT_EQ(back.rbe3[0].groups.size(), 2u);
+  EXPECT_EQ(back.rbe3[0].groups[1].weight, 2.5);
+  EXPECT_EQ(back.rbe3[0].groups[1].grids, (std::vector<int>{6, 7}));
+  EXPECT_EQ(back.rbe3[0].um.size(), 2u);
+  EXPECT_EQ(back.rbe3[0].alpha, 1e-5);
+  ASSERT_EQ(back.mpcs.size(), 1u);
+  EXPECT_EQ(back.mpcs[0].terms.size(), 5u);
+  EXPECT_EQ(back.mpcs[0].terms[4].grid, 100);
+  EXPECT_EQ(back.mpcadds.at(0).sets, std::vector<int>{40});
+  EXPECT_EQ(back.omit.size(), 3u);
   EXPECT_EQ(back.eigen_methods.at(1).norm, "POINT");
   EXPECT_EQ(back.case_control.subcases.size(), 2u);
   EXPECT_EQ(back.case_control.subcases[0].label, "FIRST");

@@ -318,6 +318,60 @@ TEST(NastranCards, ConstraintsLoadsAndSets) {
   EXPECT_EQ(m.suport[0].c, 0b111111);
 }
 
+// RBAR, RBE3 (groups, UM, ALPHA), MPC (scalar point term, continuation), MPCADD, OMIT, OMIT1;
+// SPC1 THRU marks its ids; a line with only '&' is listed, not a card; case-control selections seflex
+// does not use are kept per subcase (global ones inherited).
+TEST(NastranCards, MultipointConstraintsAndOmitSets) {
+  const fem::Model m = read_deck("SOL 101\nCEND\nTEMP(INIT) = 5\nSUBCASE 1\nDLOAD = 7\nSUBCASE 2\nTEMPERATURE(LOAD) = 6\n"
+                                 "BEGIN BULK\n" + base_deck() +
+                                 "SPOINT,100\nGRID,9,,5.,5.,5.\n"
+                                 "RBAR,50,1,2,123,456\nRBAR,51,1,3,123456,,,12\n"
+                                 "RBE3,52,,9,1236,1.5,123,1,2,+R\n+R,3,.5,456,4,UM,1,12,4\n,6,ALPHA,2.-5\n"
+                                 "MPC,7,1,3,2.,2,1,-1.5\n,,100,,4.\nMPCADD,8,7\n"
+                                 "OMIT,1,456\nOMIT1,3,2,THRU,4\nSPC1,3,123,1,2,THRU,40\n&\n");
+  ASSERT_EQ(m.rbars.size(), 2u);
+  EXPECT_EQ(fem::component_string(m.rbars[0].cma), "456");  // blank CMA, CMB: the complements
+  EXPECT_EQ(fem::component_string(m.rbars[0].cmb), "123");
+  EXPECT_EQ(fem::component_string(m.rbars[1].cmb), "12");
+  EXPECT_EQ(m.rbars[1].cma, 0);
+  ASSERT_EQ(m.rbe3.size(), 1u);
+  const fem::Rbe3& r = m.rbe3[0];
+  EXPECT_EQ(r.refgrid, 9);
+  EXPECT_EQ(fem::component_string(r.refc), "1236");
+  ASSERT_EQ(r.groups.size(), 2u);
+  EXPECT_DOUBLE_EQ(r.groups[0].weight, 1.5);
+  EXPECT_EQ(r.groups[0].grids, (std::vector<int>{1, 2, 3}));
+  EXPECT_EQ(fem::component_string(r.groups[1].c), "456");
+  EXPECT_EQ(r.groups[1].grids, std::vector<int>{4});
+  ASSERT_EQ(r.um.size(), 2u);
+  EXPECT_EQ(r.um[0].grid, 1);
+  EXPECT_EQ(fem::component_string(r.um[0].c), "12");
+  EXPECT_EQ(r.um[1].grid, 4);
+  EXPECT_EQ(fem::component_string(r.um[1].c), "6");
+  EXPECT_DOUBLE_EQ(r.alpha, 2e-5);
+  ASSERT_EQ(m.mpcs.size(), 1u);
+  ASSERT_EQ(m.mpcs[0].terms.size(), 3u);
+  EXPECT_EQ(m.mpcs[0].terms[2].grid, 100);
+  EXPECT_EQ(m.mpcs[0].terms[2].component, 0);
+  EXPECT_DOUBLE_EQ(m.mpcs[0].terms[1].a, -1.5);
+  EXPECT_EQ(m.mpcadds[0].sets, std::vector<int>{7});
+  EXPECT_EQ(m.omit.size(), 4u);
+  std::size_t thru = 0;
+  for (const auto& e : m.spcs) thru += e.from_thru;
+  EXPECT_EQ(m.spcs.size(), 40u);
+  EXPECT_EQ(thru, 39u);  // 2 THRU 40; grid 1 listed on its own
+  ASSERT_FALSE(m.unsupported.empty());
+  EXPECT_EQ(m.unsupported.back().name, "'&'");
+  const auto& cc = m.case_control;
+  ASSERT_EQ(cc.subcases.size(), 2u);
+  ASSERT_EQ(cc.subcases[0].other.size(), 2u);  // DLOAD, and TEMPERATURE(INIT) inherited
+  EXPECT_EQ(cc.subcases[0].other[0].name, "DLOAD");
+  EXPECT_EQ(cc.subcases[0].other[1].name, "TEMPERATURE(INIT)");
+  EXPECT_EQ(cc.subcases[1].other[0].name, "TEMPERATURE(LOAD)");
+  EXPECT_EQ(cc.subcases[1].other[0].value, "6");
+  EXPECT_EQ(cc.subcases[1].ref.line, 6u);
+}
+
 TEST(NastranCards, EigenMethodsParamsAndDmig) {
   const fem::Model m = read_deck(base_deck() +
                                  "EIGRL,1,.1,100.,6,,,,MAX\n"

@@ -149,5 +149,109 @@ TEST(NormalModes, MissingOrUndefinedMethodIsAnInputError) {
   EXPECT_THROW(solve_normal_modes(m), InputError);  // nothing bounds the number of modes
 }
 
+
+/// MYSTRAN's GUYAN-03 deck (MYSTRANsolver/MYSTRAN_Benchmark, Benchmark_Decks/EB-GUYAN-03-GIV.DAT and
+/// the 12.0 test runs' Eigen/Sparse/Current/GUYAN-03-GIV.DAT, commit ad765ad), transcribed card by
+/// card: two CBARs of 10 along x (PBAR 10: A = .01, I1 = I2 = J = .1; MAT1 10: E = 1e7, nu = .33,
+/// rho = .1), GRDSET PS 1345 (bending in the x-y plane: T2, R3 free), SPC1 123 26 101, ASET1 26 103,
+/// PARAM WTMASS .002591, EIGR GIV for all modes.
+fem::Model guyan_beam(bool aset) {
+  fem::Model m;
+  m.files = {"GUYAN-03-GIV.DAT"};
+  m.grdset.present = true;
+  m.grdset.ps = test::mask("1345");
+  for (int i = 0; i < 3; ++i) test::add_grid(m, 101 + i, 10.0 * i, 0, 0);
+  test::add_mat1(m, 10, 1.0e7, 0.33, 0.1);
+  test::add_pbar(m, 10, 10, 0.01, 0.1, 0.1, 0.1);
+  test::add_cbar(m, 11, 10, 101, 102, {0, 1, 0});
+  test::add_cbar(m, 12, 10, 102, 103, {0, 1, 0});
+  test::add_spc1(m, 123, test::mask("26"), 101);
+  if (aset) m.aset.push_back({103, test::mask("26"), {}});
+  m.params.push_back(fem::Param{"WTMASS", {".002591"}, {}});
+  fem::EigenMethod method;
+  method.sid = 1;
+  method.is_eigr = true;
+  method.method = "GIV";
+  method.nd = 10;
+  m.eigen_methods.push_back(method);
+  m.case_control.global.spc = 123;
+  m.case_control.global.method = 1;
+  test::finalize_for_test(m);
+  return m;
+}
+
+// Guyan reduction to ASET1 26 103 (the tip's T2, R3), checked against a hand-computed condensation:
+// - K_aa_bar is the exact tip stiffness of the cantilever (cubic beam elements reproduce the static
+//   deflection): the inverse of the flexibility [[L^3/3EI, L^2/2EI], [L^2/2EI, L/EI]], L = 20;
+// - the omitted grid 102 follows the static shape: for tip (w, theta) = K_bar^-1 (P, M) the
+//   cantilever's w(x) = P x^2 (3L - x) / 6EI + M x^2 / 2EI at x = 10 (Timoshenko & Gere, table G-1),
+//   so w_102 = g . (w, theta), g = [l^2 (3L - l) / 6EI, l^2 / 2EI] K_bar;
+// - the CBAR lumped mass is translational: WTMASS rho A l = 2.591e-5 at grid 102, half at 103, so
+//   M_aa_bar = m g g^T + diag(m / 2, 0);
+// and the 2 x 2 eigenproblem solved in closed form. MYSTRAN 12.0 prints the same two eigenvalues
+// (Eigen/Sparse/Archive/GUYAN-03-GIV.arc: 2.413794E+07, 1.481072E+09); the full model's (no ASET)
+// differ: two finite eigenvalues too (the rotations are massless), each below the Guyan one (the
+// condensed model is a Rayleigh-Ritz approximation of the full one: its eigenvalues are upper bounds).
+TEST(NormalModes, GuyanReductionToTheAsetMatchesHandCondensationAndMystran) {
+  const double E = 1e7, I = 0.1, l = 10, L = 20, EI = E * I, m = 0.002591 * 0.1 * 0.01 * l;
+  const double a = L * L * L / (3 * EI), b = L * L / (2 * EI), c = L / EI, det = a * c - b * b;
+  const double K[2][2] = {{c / det, -b / det}, {-b / det, a / det}};
+  const double h[2] = {l * l * (3 * L - l) / (6 * EI), l * l / (2 * EI)};
+  const double g[2] = {h[0] * K[0][0] + h[1] * K[1][0], h[0] * K[0][1] + h[1] * K[1][1]};
+  const double M[2][2] = {{m * g[0] * g[0] + m / 2, m * g[0] * g[1]}, {m * g[0] * g[1], m * g[1] * g[1]}};
+  const double qa = M[0][0] * M[1][1] - M[0][1] * M[0][1];
+  const double qb = -(K[0][0] * M[1][1] + K[1][1] * M[0][0] - 2 * K[0][1] * M[0][1]);
+  const double qc = K[0][0] * K[1][1] - K[0][1] * K[0][1];
+  const double disc = std::sqrt(qb * qb - 4 * qa * qc);
+  const double hand[2] = {(-qb - disc) / (2 * qa), (-qb + disc) / (2 * qa)};
+  const double mystran[2] = {2.413794E+07, 1.481072E+09};
+
+  const NormalModes r = solve_normal_modes(guyan_beam(true));
+  ASSERT_TRUE(r.guyan.has_value());
+  EXPECT_EQ(r.guyan->a_dofs, 2);
+  EXPECT_EQ(r.guyan->o_dofs, 2);  // grid 102's T2 and R3
+  ASSERT_EQ(r.eigenvalues.size(), 2);
+  for (int k = 0; k < 2; ++k) {
+    EXPECT_NEAR(r.eigenvalues(k) / hand[k], 1.0, 1e-10) << "mode " << k + 1;
+    EXPECT_NEAR(r.eigenvalues(k) / mystran[k], 1.0, 5e-7) << "mode " << k + 1;  // 7 printed digits
+  }
+  // the omitted grid's motion is the static shape of the tip's: w_102 = g . (w_103, theta_103)
+  for (int k = 0; k < 2; ++k) {
+    const double w = r.shapes_g(r.dofs.grid_dof(2, 2), k), th = r.shapes_g(r.dofs.grid_dof(2, 6), k);
+    EXPECT_NEAR(r.shapes_g(r.dofs.grid_dof(1, 2), k), g[0] * w + g[1] * th, 1e-12 * std::abs(w)) << "mode " << k + 1;
+  }
+  // generalised mass: the modes are mass-normalised on the reduced mass
+  for (int k = 0; k < 2; ++k) EXPECT_NEAR(r.generalized_mass(k), 1.0, 1e-12);
+
+  const NormalModes full = solve_normal_modes(guyan_beam(false));
+  EXPECT_FALSE(full.guyan.has_value());
+  ASSERT_EQ(full.eigenvalues.size(), 2);
+  for (int k = 0; k < 2; ++k) EXPECT_LT(full.eigenvalues(k), r.eigenvalues(k) * (1 - 1e-4)) << "mode " << k + 1;
+}
+
+// OMIT1 of the same dofs' complement gives the same a-set; a dof both in ASET and held by an SPC is
+// an error naming the ASET card, as Nastran's mutually exclusive sets.
+TEST(NormalModes, OmitGivesTheSameReductionAndConflictsAreErrors) {
+  fem::Model m = guyan_beam(false);
+  m.omit.push_back({102, test::mask("26"), {}});
+  test::finalize_for_test(m);
+  const NormalModes r = solve_normal_modes(m), a = solve_normal_modes(guyan_beam(true));
+  ASSERT_TRUE(r.guyan.has_value());
+  EXPECT_FALSE(r.guyan->from_aset);
+  ASSERT_EQ(r.eigenvalues.size(), 2);
+  for (int k = 0; k < 2; ++k) EXPECT_NEAR(r.eigenvalues(k) / a.eigenvalues(k), 1.0, 1e-12);
+
+  fem::Model bad = guyan_beam(true);
+  bad.aset.push_back({101, test::mask("2"), {}});
+  test::finalize_for_test(bad);
+  try {
+    solve_normal_modes(bad);
+    FAIL() << "an SPC'd dof in the a-set was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("ASET/ASET1: grid 101 component 2 is in the a-set but also constrained"),
+              std::string::npos)
+        << e.what();
+  }
+}
 }  // namespace
 }  // namespace seflex::reduction

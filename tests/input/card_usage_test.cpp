@@ -1,0 +1,198 @@
+// Which cards a solution uses (reduction/card_usage.hpp): what the selected subcases need and seflex
+// cannot use refuses the deck with an error naming the card, file:line and why; what they do not use
+// is a warning, never a refusal (Nastran runs such decks). Also run under ASan + UBSan.
+#include <gtest/gtest.h>
+
+#include "nastran_test_util.hpp"
+#include "seflex/reduction/card_usage.hpp"
+#include "seflex/reduction/normal_modes.hpp"
+#include "seflex/reduction/statics.hpp"
+
+namespace seflex {
+namespace {
+
+using reduction::CardUse;
+using reduction::Solution;
+using test::mentions;
+
+/// A clamped two-bar cantilever (grids 1-3) with a tip FORCE in load set 7, SPC set 1, EIGRL 1.
+std::string bulk() {
+  return "MAT1,1,7.e10,,0.3,2700.\nPBAR,1,1,1.e-4,2.e-8,2.e-8,4.e-8\n"
+         "GRID,1,,0.,0.,0.\nGRID,2,,1.,0.,0.\nGRID,3,,2.,0.,0.\n"
+         "CBAR,1,1,1,2,0.,1.,0.\nCBAR,2,1,2,3,0.,1.,0.\nSPC1,1,123456,1\nFORCE,7,3,0,1.,0.,0.,1.\n"
+         "EIGRL,1,,,2\n";
+}
+
+std::string deck(const std::string& case_control, const std::string& more_bulk) {
+  return "SOL 101\nCEND\n" + case_control + "BEGIN BULK\n" + bulk() + more_bulk + "ENDDATA\n";
+}
+
+reduction::CardUsage usage(const fem::Model& m, Solution s) {
+  const auto cases = s == Solution::Statics ? reduction::select_cases(m) : std::vector{reduction::select_case(m)};
+  return reduction::check_card_usage(m, s, cases);
+}
+
+/// The entry of `card` (first one), or a test failure.
+const CardUse* find(const reduction::CardUsage& u, const std::string& card) {
+  for (const CardUse& e : u.uses)
+    if (e.card == card) return &e;
+  ADD_FAILURE() << "no entry for " << card;
+  return nullptr;
+}
+
+std::string refusal(const fem::Model& m, Solution s) {
+  try {
+    reduction::require_usable(m, usage(m, s));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "not refused";
+  return "";
+}
+
+// A selected load set holding a card seflex does not apply refuses the deck, naming the card and its
+// line; the same card in an unselected set is a warning, and the subcase runs.
+TEST(CardUsage, SelectedLoadWithAnUnsupportedCardIsRefusedUnselectedIsAWarning) {
+  const std::string pload = "PLOAD4,9,1,5.\nLOAD,20,1.,1.,7,1.,9\n";  // line 14 (PLOAD4), 15 (LOAD)
+  const fem::Model used = test::read_deck(deck("SPC = 1\nLOAD = 20\n", pload));
+  EXPECT_TRUE(mentions(refusal(used, Solution::Statics),
+                       {"deck.bdf:16: PLOAD4: load set 9 selected by the case control holds them, and seflex does not "
+                        "apply PLOAD4 loads; linear statics (SOL 101) cannot run without it"}));
+  EXPECT_THROW(reduction::solve_static(used), InputError);  // the library refuses too
+
+  const fem::Model unused = test::read_deck(deck("SPC = 1\nLOAD = 7\n", pload));
+  const auto u = usage(unused, Solution::Statics);
+  EXPECT_FALSE(u.refused());
+  const CardUse* p = find(u, "PLOAD4");
+  ASSERT_NE(p, nullptr);
+  EXPECT_EQ(p->kind, CardUse::Kind::Unused);
+  EXPECT_EQ(reduction::describe(unused, *p),
+            "PLOAD4: 1 card, first at deck.bdf:16: load set 9 not selected by any subcase linear statics (SOL 101) runs");
+  EXPECT_NO_THROW(reduction::solve_static(unused));
+  // in normal modes every load card is unused
+  const auto modes = usage(unused, Solution::NormalModes);
+  EXPECT_EQ(find(modes, "FORCE")->reason, "loads are not used by normal modes (SOL 103)");
+}
+
+// Missing references in sets the case control does not select are warnings (as Nastran); in a
+// selected set they refuse the deck.
+TEST(CardUsage, ReferencesOfUnselectedSetsWarnSelectedRefuse) {
+  // an EIGR that METHOD does not select, normalised at a grid that does not exist (MYSTRAN's
+  // AQ3U2S004 decks have one): read, and modes run with METHOD = 1
+  const std::string eigr = "EIGR,2,GIV,,,,4\n,POINT,55,3\n";
+  const fem::Model m = test::read_deck("SOL 103\nCEND\nSPC = 1\nMETHOD = 1\nBEGIN BULK\n" + bulk() + eigr);
+  const auto u = usage(m, Solution::NormalModes);
+  EXPECT_FALSE(u.refused());
+  EXPECT_TRUE(mentions(reduction::describe(m, *find(u, "EIGR")),
+                       {"EIGR: 1 card, first at deck.bdf:16: NORM = POINT names grid 55 component 3, which is not a dof of "
+                        "the model (the method is not selected)"}));
+  EXPECT_EQ(reduction::solve_normal_modes(m).eigenvalues.size(), 2);
+  // selected: the modes are computed and normalised to MAX instead (eigenvalues do not depend on it)
+  const fem::Model sel = test::read_deck("SOL 103\nCEND\nSPC = 1\nMETHOD = 2\nBEGIN BULK\n" + bulk() + eigr);
+  const auto usel = usage(sel, Solution::NormalModes);
+  const CardUse* e = find(usel, "EIGR");
+  ASSERT_NE(e, nullptr);
+  EXPECT_EQ(e->kind, CardUse::Kind::Approximated);
+  const reduction::NormalModes r = reduction::solve_normal_modes(sel);
+  ASSERT_EQ(r.eigenvalues.size(), 4);  // ND of EIGR 2
+  for (Eigen::Index k = 0; k < 4; ++k) EXPECT_EQ(r.shapes_g.col(k).cwiseAbs().maxCoeff(), 1.0);  // MAX
+
+  // SPC and SPCADD sets: a missing grid or set in an unselected set is a warning
+  const std::string spc = "SPC1,4,123,77\nSPCADD,5,4,88\n";
+  const fem::Model s1 = test::read_deck(deck("SPC = 1\nLOAD = 7\n", spc));
+  const auto u1 = usage(s1, Solution::Statics);
+  EXPECT_FALSE(u1.refused());
+  EXPECT_TRUE(mentions(reduction::describe(s1, *find(u1, "SPC/SPC1")),
+                       {"deck.bdf:16", "SPC set 4: references point 77, which is not defined (the set is not used)"}));
+  // selected through SPCADD 5: set 4's missing grid and the missing set 88 both refuse it
+  EXPECT_TRUE(mentions(refusal(test::read_deck(deck("SPC = 5\nLOAD = 7\n", spc)), Solution::Statics),
+                       {"deck.bdf:16: SPC/SPC1: SPC set 4: references point 77, which is not defined", "1 more problem"}));
+  const fem::Model s5 = test::read_deck(deck("SPC = 5\nLOAD = 7\n", spc));
+  const auto u5 = usage(s5, Solution::Statics);
+  EXPECT_TRUE(mentions(reduction::describe(s5, *find(u5, "SPCADD")),
+                       {"deck.bdf:17: SPCADD 5 references SPC set 88, which no card defines"}));
+  // a selection that names nothing
+  EXPECT_TRUE(mentions(refusal(test::read_deck(deck("SPC = 1\nLOAD = 8\n", "")), Solution::Statics),
+                       {"deck.bdf: case control LOAD: the global case control: LOAD = 8 selects no load card"}));
+  EXPECT_TRUE(mentions(refusal(test::read_deck("SOL 103\nCEND\nSPC = 4\nMETHOD = 1\nBEGIN BULK\n" + bulk()),
+                               Solution::NormalModes),
+                       {"case control SPC", "SPC = 4 selects no SPC, SPC1 or SPCADD card"}));
+  EXPECT_TRUE(mentions(refusal(test::read_deck("SOL 103\nCEND\nSPC = 1\nMETHOD = 4\nBEGIN BULK\n" + bulk()),
+                               Solution::NormalModes),
+                       {"METHOD = 4 selects no EIGRL or EIGR card"}));
+  // PARAM GRDPNT naming no grid: the basic origin, with a warning
+  const fem::Model g = test::read_deck(deck("SPC = 1\nLOAD = 7\n", "PARAM,GRDPNT,12\n"));
+  const auto ug = usage(g, Solution::Statics);
+  EXPECT_TRUE(mentions(reduction::describe(g, *find(ug, "PARAM GRDPNT")),
+                       {"deck.bdf:16", "grid 12 is not defined; the mass properties (seflex info) use the basic origin"}));
+}
+
+// SPC1 "G1 THRU G2" over grids that do not all exist: the missing ones are skipped (QRG SPC1), with
+// a warning; an explicit missing grid in a selected set refuses.
+TEST(CardUsage, Spc1ThruSkipsMissingGrids) {
+  const fem::Model m = test::read_deck(deck("SPC = 3\nLOAD = 7\n", "SPC1,3,123456,1\nSPC1,3,1,2,THRU,1000\n"));
+  const auto u = usage(m, Solution::Statics);
+  EXPECT_FALSE(u.refused());
+  const CardUse* e = find(u, "SPC1");
+  ASSERT_NE(e, nullptr);
+  EXPECT_EQ(e->kind, CardUse::Kind::Approximated);
+  EXPECT_EQ(e->count, 997u);  // 4 ... 1000 do not exist
+  EXPECT_TRUE(mentions(reduction::describe(m, *e), {"SPC1: 997 cards, first at deck.bdf:17",
+                                                    "grids of a THRU range that do not exist are skipped"}));
+  const auto s = reduction::solve_static(m);
+  EXPECT_GT(s.u_g.norm(), 0.0);
+  EXPECT_TRUE(mentions(refusal(test::read_deck(deck("SPC = 3\nLOAD = 7\n", "SPC1,3,123456,1,1000\n")), Solution::Statics),
+                       {"deck.bdf:16: SPC/SPC1: SPC set 3: references point 1000, which is not defined"}));
+}
+
+// Elements, properties, materials seflex does not model refuse every solution; seflex convert and
+// seflex info only list them.
+TEST(CardUsage, UnsupportedStructureRefusesEverySolution) {
+  const fem::Model m = test::read_deck(deck("SPC = 1\nLOAD = 7\n", "CHEXA,9,3,1,2,3,1,2,3\n,1,2\nPSOLID,3,1\n"));
+  for (const Solution s : {Solution::Statics, Solution::NormalModes, Solution::CraigBampton})
+    EXPECT_TRUE(mentions(refusal(m, s), {"deck.bdf:16: CHEXA: seflex does not model CHEXA", "cannot run without it",
+                                         "1 more problem"}));
+  const auto c = reduction::check_card_usage(m, Solution::Convert, {});
+  EXPECT_FALSE(c.refused());
+  EXPECT_EQ(find(c, "CHEXA")->reason, "not written: seflex does not model it");
+}
+
+// Case-control selections seflex does not use: refused where the solution needs them (thermal loads
+// in statics), warnings otherwise.
+TEST(CardUsage, CaseControlSelections) {
+  const std::string temps = "TEMPD,21,100.\n";
+  const fem::Model m = test::read_deck(deck("SPC = 1\nSUBCASE 1\nLOAD = 7\nSUBCASE 2\nTEMP(LOAD) = 21\n", temps));
+  EXPECT_TRUE(mentions(refusal(m, Solution::Statics),
+                       {"deck.bdf:7: case control TEMPERATURE(LOAD): SUBCASE 2: TEMPERATURE(LOAD) = 21 selects thermal "
+                        "loads, which seflex does not apply"}));
+  // the first subcase alone does not need it; TEMP(INIT) and DLOAD are warnings
+  const fem::Model w = test::read_deck(deck("SPC = 1\nTEMP(INIT) = 21\nDLOAD = 4\nLOAD = 7\n", temps));
+  const auto u = usage(w, Solution::Statics);
+  EXPECT_FALSE(u.refused());
+  EXPECT_EQ(find(u, "case control TEMPERATURE(INIT)")->kind, CardUse::Kind::Unused);
+  EXPECT_TRUE(mentions(find(u, "case control DLOAD")->reason, {"DLOAD = 4: not used by linear statics (SOL 101)"}));
+  EXPECT_TRUE(mentions(find(u, "TEMPD")->reason, {"temperatures are not used"}));
+}
+
+// Output, optimisation, aero and other solvers' cards, unselected MPC sets and unknown PARAMs: warnings.
+TEST(CardUsage, CardsNoSolutionUsesAreWarnings) {
+  const fem::Model m = test::read_deck(deck("SPC = 1\nLOAD = 7\n",
+                                            "DESVAR,1,T,1.,0.,2.\nCAERO1,5,6\nPLOTEL,8,1,2\nDEBUG,1,2\n"
+                                            "MPC,4,2,3,1.,3,3,-1.\nPARAM,POST,-1\nPARAM,SOLLIB,SPARSE\nXYZCARD,1\n"));
+  const auto u = usage(m, Solution::Statics);
+  EXPECT_FALSE(u.refused());
+  EXPECT_TRUE(mentions(find(u, "DESVAR")->reason, {"design optimisation"}));
+  EXPECT_TRUE(mentions(find(u, "CAERO1")->reason, {"aeroelastic"}));
+  EXPECT_TRUE(mentions(find(u, "PLOTEL")->reason, {"output"}));
+  EXPECT_TRUE(mentions(find(u, "DEBUG")->reason, {"another solver"}));
+  EXPECT_TRUE(mentions(find(u, "MPC")->reason, {"MPC set 4 not selected"}));
+  EXPECT_TRUE(mentions(find(u, "PARAM")->reason, {"parameters seflex does not use: POST, SOLLIB"}));
+  EXPECT_EQ(find(u, "PARAM")->count, 2u);
+  EXPECT_TRUE(mentions(find(u, "XYZCARD")->reason, {"a card seflex does not know"}));
+  // inertia relief is refused in statics
+  EXPECT_TRUE(mentions(refusal(test::read_deck(deck("SPC = 1\nLOAD = 7\n", "PARAM,INREL,-1\n")), Solution::Statics),
+                       {"PARAM INREL", "inertia relief"}));
+}
+
+}  // namespace
+}  // namespace seflex
