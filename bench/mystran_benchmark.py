@@ -274,6 +274,10 @@ def main():
                     status = "differs with warning"
                 else:
                     status = "differs silently"
+            # file names in messages relative to the deck's folder, for a readable table
+            prefix = os.path.dirname(os.path.abspath(deck)) + os.sep
+            note = note.replace(prefix, "")
+            warns = [w.replace(prefix, "") for w in warns]
             rows.append((name, sol, status, note, warns, err))
 
     order = ["reproduced", "differs with warning", "differs silently", "refused", "not compared"]

@@ -152,7 +152,18 @@ class Finalizer {
 
   void need_material(int mid, const CardRef& ref, const char* card, int id, const char* field) {
     if (!m_.mat1_index.count(mid))
-      fail(ref, card, id, field, "references MAT1 " + std::to_string(mid) + ", which is not defined; expected the id of a MAT1 card");
+      fail(ref, card, id, field, "references MAT1 " + std::to_string(mid) + undefined(mid) + "; expected the id of a MAT1 card");
+  }
+
+  /// ", which is not defined", or ", a PCOMP card, which seflex does not support" when a card seflex
+  /// lists as unsupported has this id (field 2): the user's property or material is there.
+  std::string undefined(int id) const {
+    for (const auto& u : m_.unsupported) {
+      if (!(u.name[0] == 'P' || u.name.rfind("MAT", 0) == 0)) continue;  // properties and materials only
+      for (const auto& mb : u.members)
+        if (mb.sid == id) return ", a " + u.name + " card (" + at(mb.ref) + "), which seflex does not support";
+    }
+    return ", which is not defined";
   }
 
   bool is_grid(int g) const {
@@ -204,7 +215,7 @@ class Finalizer {
       }
       const auto it = m_.bar_prop_index.find(b.pid);
       if (it == m_.bar_prop_index.end())
-        fail(b.ref, card, b.id, "field 3 (PID)", "references property " + std::to_string(b.pid) + ", which is not defined; expected the id of a " +
+        fail(b.ref, card, b.id, "field 3 (PID)", "references property " + std::to_string(b.pid) + undefined(b.pid) + "; expected the id of a " +
                                                      (b.is_beam ? "PBEAM or PBEAML" : "PBAR or PBARL") + " card");
       const BarProperty& p = m_.bar_props[it->second];
       const bool beam_prop = p.source == BarProperty::Source::PBEAM || p.source == BarProperty::Source::PBEAML;
@@ -219,14 +230,14 @@ class Finalizer {
       if (r.inline_property)
         need_material(r.mid, r.ref, card, r.id, "field 5 (MID)");
       else if (!m_.rod_prop_index.count(r.pid))
-        fail(r.ref, card, r.id, "field 3 (PID)", "references property " + std::to_string(r.pid) + ", which is not defined; expected the id of a PROD card");
+        fail(r.ref, card, r.id, "field 3 (PID)", "references property " + std::to_string(r.pid) + undefined(r.pid) + "; expected the id of a PROD card");
     }
     for (const auto& s : m_.shells) {
       const char* card = s.nnode == 4 ? "CQUAD4" : "CTRIA3";
       static const char* gfields[4] = {"field 4 (G1)", "field 5 (G2)", "field 6 (G3)", "field 7 (G4)"};
       for (int k = 0; k < s.nnode; ++k) need_grid(s.g[k], s.ref, card, s.id, gfields[k]);
       if (!m_.shell_prop_index.count(s.pid))
-        fail(s.ref, card, s.id, "field 3 (PID)", "references property " + std::to_string(s.pid) + ", which is not defined; expected the id of a PSHELL card");
+        fail(s.ref, card, s.id, "field 3 (PID)", "references property " + std::to_string(s.pid) + undefined(s.pid) + "; expected the id of a PSHELL card");
       if (s.theta_is_mcid) need_coord(s.mcid, s.ref, card, s.id, s.nnode == 4 ? "field 8 (MCID)" : "field 7 (MCID)");
     }
     for (const auto& c : m_.conm2) {
@@ -238,7 +249,7 @@ class Finalizer {
       if (s.g1 != 0) need_dof(s.g1, s.c1, false, s.ref, card, s.id, "field 4 (G1)");
       if (s.g2 != 0) need_dof(s.g2, s.c2, false, s.ref, card, s.id, "field 6 (G2)");
       if (!s.inline_property && !m_.spring_prop_index.count(s.pid))
-        fail(s.ref, card, s.id, "field 3 (PID)", "references property " + std::to_string(s.pid) + ", which is not defined; expected the id of a PELAS card");
+        fail(s.ref, card, s.id, "field 3 (PID)", "references property " + std::to_string(s.pid) + undefined(s.pid) + "; expected the id of a PELAS card");
     }
     for (const auto& r : m_.rbe2) {
       need_grid(r.gn, r.ref, "RBE2", r.id, "field 3 (GN)");

@@ -57,6 +57,9 @@ TEST(NastranBadInput, MissingReferences) {
   EXPECT_TRUE(mentions(read_error(d + "CQUAD4,9,1,1,2,3,77\n"),
                        {"deck.bdf:7: CQUAD4 9, field 7 (G4): references grid 77, which is not defined"}));
   EXPECT_TRUE(mentions(read_error(d + "CQUAD4,9,5,1,2,3,4\n"), {"CQUAD4 9, field 3 (PID): references property 5", "PSHELL"}));
+  // the property is there but seflex does not read its card: said so
+  EXPECT_TRUE(mentions(read_error(d + "CQUAD4,9,5,1,2,3,4\nPCOMPX,5,,,\n"),
+                       {"CQUAD4 9, field 3 (PID): references property 5, a PCOMPX card (deck.bdf:8), which seflex does not support"}));
   EXPECT_TRUE(mentions(read_error(d + "PSHELL,2,8,.1\n"), {"deck.bdf:7: PSHELL 2, field 3 (MID1): references MAT1 8"}));
   EXPECT_TRUE(mentions(read_error(d + "GRID,9,3,0.,0.,0.\n"), {"GRID 9, field 3 (CP): references coordinate system 3"}));
   EXPECT_TRUE(mentions(read_error(d + "CONM2,9,1,4,1.\n"), {"CONM2 9, field 4 (CID): references coordinate system 4"}));
