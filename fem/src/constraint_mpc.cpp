@@ -3,7 +3,6 @@
 // MPC SID G1 C1 A1 G2 C2 A2 ...: sum_j A_j u_j = 0 (components in the grids' CD systems), the first
 // dof dependent (QRG MPC): u_1 = -sum_{j>1} (A_j / A_1) u_j. MPCADD SID S1 S2 ... unions MPC sets;
 // case control MPC = SID selects an MPC or MPCADD set.
-#include <functional>
 #include <set>
 
 #include "constraint_equations.hpp"
@@ -14,17 +13,8 @@
 namespace seflex::fem::detail {
 
 void add_mpc_set(const Model& model, const DofMap& dofs, int sid, ConstraintEquations& eq) {
-  std::set<int> sets;
   bool defined = false;
-  std::function<void(int)> expand = [&](int s) {
-    if (!sets.insert(s).second) return;
-    for (const MpcAdd& a : model.mpcadds)
-      if (a.sid == s) {
-        defined = true;
-        for (const int t : a.sets) expand(t);
-      }
-  };
-  expand(sid);
+  const std::set<int> sets = expand_sets(sid, model.mpcadds, &defined);
   for (const MpcEquation& e : model.mpcs) {
     if (!sets.count(e.sid)) continue;
     defined = true;

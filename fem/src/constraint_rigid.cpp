@@ -6,7 +6,9 @@
 // Elements": RBE2 and RBAR equations).
 #include <Eigen/LU>
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <tuple>
 
 #include "constraint_equations.hpp"
 #include "model_lookup.hpp"
@@ -37,16 +39,17 @@ std::string dof_name(const Model& model, const DofMap& dofs, Index dof) {
 
 namespace {
 
-/// Dependent rows u_m = G u_n for the components `cm` of grid gm, G (6 x 6) over the six dofs of gn.
-void add_rows(const DofMap& dofs, Index gm, ComponentMask cm, Index gn, const Matrix6& G, std::uint32_t card,
-              ConstraintEquations& eq) {
+/// Dependent rows u_m = G u_n for the components `cm` of grid gm, G (6 x 6) over the six
+/// independent dofs `independent`; coefficients below 1e-14 are round-off of exact zeros.
+void add_rows(const DofMap& dofs, Index gm, ComponentMask cm, const std::array<Index, 6>& independent, const Matrix6& G,
+              std::uint32_t card, ConstraintEquations& eq) {
   for (int c = 1; c <= 6; ++c) {
     if (!has_component(cm, c)) continue;
     DependentDof d;
     d.dof = dofs.grid_dof(gm, c);
     d.card = card;
     for (int k = 0; k < 6; ++k)
-      if (G(c - 1, k) != 0.0) d.terms.emplace_back(dofs.grid_dof(gn, k + 1), G(c - 1, k));
+      if (std::abs(G(c - 1, k)) > 1e-14) d.terms.emplace_back(independent[static_cast<std::size_t>(k)], G(c - 1, k));
     eq.dependents.push_back(std::move(d));
   }
 }
@@ -59,10 +62,12 @@ void add_rbe2(const Model& model, const DofMap& dofs, const CdAxes& axes, const 
   Matrix6 Hn_inv = Matrix6::Zero();
   Hn_inv.topLeftCorner<3, 3>() = Hn_inv.bottomRightCorner<3, 3>() =
       axes[static_cast<std::size_t>(gn)].value_or(Eigen::Matrix3d::Identity());
+  std::array<Index, 6> independent;
+  for (int k = 0; k < 6; ++k) independent[static_cast<std::size_t>(k)] = dofs.grid_dof(gn, k + 1);
   for (const int gm_id : e.gm) {
     const Index gm = grid_index(model, gm_id, e.ref, "RBE2", e.id, "GMi");
     if (gm == gn) fail(model, e.ref, "RBE2", e.id, "GMi", "GRID " + std::to_string(gm_id) + " is also GN");
-    add_rows(dofs, gm, e.cm, gn, rigid_map(model, axes, gm, p) * Hn_inv, card, eq);
+    add_rows(dofs, gm, e.cm, independent, rigid_map(model, axes, gm, p) * Hn_inv, card, eq);
   }
 }
 
@@ -79,18 +84,16 @@ void add_rbar(const Model& model, const DofMap& dofs, const CdAxes& axes, const 
   D.bottomRightCorner<3, 3>() *= 1.0 / L;
   const Matrix6 Ra = rigid_map(model, axes, ga, p) * D, Rb = rigid_map(model, axes, gb, p) * D;
   Matrix6 Hn;
-  std::vector<Index> independent;
-  for (int c = 1; c <= 6; ++c)
-    if (has_component(e.cna, c)) {
-      Hn.row(static_cast<Index>(independent.size())) = Ra.row(c - 1);
-      independent.push_back(dofs.grid_dof(ga, c));
-    }
-  for (int c = 1; c <= 6; ++c)
-    if (has_component(e.cnb, c)) {
-      Hn.row(static_cast<Index>(independent.size())) = Rb.row(c - 1);
-      independent.push_back(dofs.grid_dof(gb, c));
-    }
-  SEFLEX_DEMAND(independent.size() == 6, "RBAR independent components checked by the reader");
+  std::array<Index, 6> independent;
+  std::size_t n = 0;
+  for (const auto& [g, R, cn] : {std::tuple{ga, &Ra, e.cna}, std::tuple{gb, &Rb, e.cnb}})
+    for (int c = 1; c <= 6; ++c)
+      if (has_component(cn, c)) {
+        SEFLEX_DEMAND(n < 6, "RBAR independent components checked by the reader");
+        Hn.row(static_cast<Index>(n)) = R->row(c - 1);
+        independent[n++] = dofs.grid_dof(g, c);
+      }
+  SEFLEX_DEMAND(n == 6, "RBAR independent components checked by the reader");
   Eigen::FullPivLU<Matrix6> lu(Hn);
   lu.setThreshold(1e-10);
   if (!lu.isInvertible())
@@ -99,20 +102,8 @@ void add_rbar(const Model& model, const DofMap& dofs, const CdAxes& axes, const 
              " cannot describe every rigid-body motion of the bar (e.g. 123 at both ends leaves the rotation about "
              "the bar free); expected six components that fix all six rigid-body motions");
   const Matrix6 Hn_inv = lu.inverse();
-  auto rows = [&](Index g, const Matrix6& Rg, ComponentMask cm) {
-    const Matrix6 G = Rg * Hn_inv;  // over `independent`
-    for (int c = 1; c <= 6; ++c) {
-      if (!has_component(cm, c)) continue;
-      DependentDof d;
-      d.dof = dofs.grid_dof(g, c);
-      d.card = card;
-      for (int k = 0; k < 6; ++k)
-        if (std::abs(G(c - 1, k)) > 1e-14) d.terms.emplace_back(independent[static_cast<std::size_t>(k)], G(c - 1, k));
-      eq.dependents.push_back(std::move(d));
-    }
-  };
-  rows(ga, Ra, e.cma);
-  rows(gb, Rb, e.cmb);
+  add_rows(dofs, ga, e.cma, independent, Ra * Hn_inv, card, eq);
+  add_rows(dofs, gb, e.cmb, independent, Rb * Hn_inv, card, eq);
 }
 
 }  // namespace

@@ -56,19 +56,26 @@ void select(const Eigen::SparseMatrix<double>& A, const std::vector<Index>& f_to
 
 }  // namespace
 
-std::vector<std::pair<Eigen::Index, double>> spc_set_dofs(const Model& model, const DofMap& dofs, int spc_set) {
-  // Expand SPCADD (guarding against cycles).
-  std::set<int> sets;
-  bool defined = false;
-  std::function<void(int)> expand_set = [&](int sid) {
-    if (!sets.insert(sid).second) return;
-    for (const SpcAdd& a : model.spcadds)
-      if (a.sid == sid) {
-        defined = true;
-        for (int s : a.sets) expand_set(s);
+std::set<int> expand_sets(int sid, const std::vector<SetCombination>& combinations, bool* combined) {
+  std::set<int> out;
+  std::vector<int> todo{sid};
+  if (combined) *combined = false;
+  while (!todo.empty()) {
+    const int s = todo.back();
+    todo.pop_back();
+    if (!out.insert(s).second) continue;
+    for (const SetCombination& c : combinations)
+      if (c.sid == s) {
+        if (combined) *combined = true;
+        todo.insert(todo.end(), c.sets.begin(), c.sets.end());
       }
-  };
-  expand_set(spc_set);
+  }
+  return out;
+}
+
+std::vector<std::pair<Eigen::Index, double>> spc_set_dofs(const Model& model, const DofMap& dofs, int spc_set) {
+  bool defined = false;
+  const std::set<int> sets = expand_sets(spc_set, model.spcadds, &defined);
   std::vector<std::pair<Index, double>> out;
   for (const SpcEntry& e : model.spcs) {
     if (!sets.count(e.sid)) continue;

@@ -120,15 +120,16 @@ void parse_spc1(const Card& card, ReaderState& st) {
   for (std::size_t k = 0; k < grids.size(); ++k) st.model.spcs.push_back({sid, grids[k], c, 0.0, thru[k], card.ref()});
 }
 
-// SPCADD SID S1 S2 ...
-void parse_spcadd(const Card& card, ReaderState& st) {
-  fem::SpcAdd a;
+// SPCADD / MPCADD SID S1 S2 ...
+static void set_combination(const Card& card, const char* sets, std::vector<fem::SetCombination>& out) {
+  fem::SetCombination a;
   a.sid = card.id(0, "SID");
   a.sets = id_list(card, 1, "S");
-  if (a.sets.empty()) card.fail(1, "S1", "blank; expected SPC set ids");
+  if (a.sets.empty()) card.fail(1, "S1", std::string("blank; expected ") + sets + " set ids");
   a.ref = card.ref();
-  st.model.spcadds.push_back(std::move(a));
+  out.push_back(std::move(a));
 }
+void parse_spcadd(const Card& card, ReaderState& st) { set_combination(card, "SPC", st.model.spcadds); }
 
 // MPC SID G1 C1 A1 G2 C2 A2 / - G3 C3 A3 G4 C4 A4 / ...: sum Ai u(Gi, Ci) = 0, (G1, C1) dependent.
 void parse_mpc(const Card& card, ReaderState& st) {
@@ -158,15 +159,7 @@ void parse_mpc(const Card& card, ReaderState& st) {
   st.model.mpcs.push_back(std::move(e));
 }
 
-// MPCADD SID S1 S2 ...
-void parse_mpcadd(const Card& card, ReaderState& st) {
-  fem::MpcAdd a;
-  a.sid = card.id(0, "SID");
-  a.sets = id_list(card, 1, "S");
-  if (a.sets.empty()) card.fail(1, "S1", "blank; expected MPC set ids");
-  a.ref = card.ref();
-  st.model.mpcadds.push_back(std::move(a));
-}
+void parse_mpcadd(const Card& card, ReaderState& st) { set_combination(card, "MPC", st.model.mpcadds); }
 
 // ASET ID1 C1 ID2 C2 ...; ASET1 C ID1 ID2 ... (THRU); same for OMIT/OMIT1, BSET/BSET1; SUPORT ID1 C1 ...
 void parse_aset(const Card& card, ReaderState& st) { dof_pairs(card, st.model.aset); }

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <functional>
 #include <map>
 #include <set>
 #include <tuple>
@@ -11,6 +10,7 @@
 #include "card_usage_table.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/fem/components.hpp"
+#include "seflex/fem/constraints.hpp"
 #include "seflex/fem/dof_map.hpp"
 #include "seflex/fem/finalize.hpp"
 
@@ -90,18 +90,6 @@ class Report {
   std::map<std::tuple<Kind, std::string, std::string>, SetEntry> sets_;
 };
 
-/// Expand SPCADD/MPCADD-like combinations: `combos` maps a combination id to the ids it combines.
-std::set<int> expand(int sid, const std::multimap<int, int>& combos) {
-  std::set<int> out;
-  std::function<void(int)> go = [&](int s) {
-    if (!out.insert(s).second) return;
-    const auto [b, e] = combos.equal_range(s);
-    for (auto it = b; it != e; ++it) go(it->second);
-  };
-  go(sid);
-  return out;
-}
-
 class Classifier {
  public:
   Classifier(const fem::Model& m, Solution s, const std::vector<CaseSelection>& cases, unsigned interface)
@@ -143,10 +131,6 @@ class Classifier {
   // ------------------------------------------------------------------------------------------
   void collect_sets() {
     for (const auto& l : m_.load_combinations) load_combos_.emplace(l.sid, &l);
-    for (const auto& a : m_.spcadds)
-      for (const int t : a.sets) spc_combos_.emplace(a.sid, t);
-    for (const auto& a : m_.mpcadds)
-      for (const int t : a.sets) mpc_combos_.emplace(a.sid, t);
     for (const auto& e : m_.spcs) spc_defined_.insert(e.sid);
     for (const auto& a : m_.spcadds) spc_defined_.insert(a.sid);
     for (const auto& e : m_.mpcs) mpc_defined_.insert(e.sid);
@@ -166,8 +150,8 @@ class Classifier {
     for (const auto& l : m_.load_combinations) load_defined_.insert(l.sid);
     if (!runs(s_)) return;
     for (const CaseSelection& c : cases_) {
-      if (c.spc) used_spc_.merge(expand(*c.spc, spc_combos_));
-      if (c.mpc) used_mpc_.merge(expand(*c.mpc, mpc_combos_));
+      if (c.spc) used_spc_.merge(fem::expand_sets(*c.spc, m_.spcadds));
+      if (c.mpc) used_mpc_.merge(fem::expand_sets(*c.mpc, m_.mpcadds));
       if (uses_loads() && c.load) {
         used_load_.insert(*c.load);
         if (const auto it = load_combos_.find(*c.load); it != load_combos_.end())
@@ -227,7 +211,7 @@ class Classifier {
 
   bool enforced_displacement(const CaseSelection& c) const {
     if (!c.spc) return false;
-    const std::set<int> sets = expand(*c.spc, spc_combos_);
+    const std::set<int> sets = fem::expand_sets(*c.spc, m_.spcadds);
     for (const auto& e : m_.spcs)
       if (sets.count(e.sid) && e.d != 0.0) return true;
     return false;
@@ -315,13 +299,20 @@ class Classifier {
       }
       if (!used) not_selected("SPC/SPC1", "SPC set", e.sid, e.ref);
     }
-    for (const auto& a : m_.spcadds) {
-      const bool used = uses && used_spc_.count(a.sid);
+    combinations("SPCADD", "SPC set", m_.spcadds, spc_defined_, used_spc_);
+  }
+
+  /// SPCADD / MPCADD: sets they combine that no card defines, and combinations not selected.
+  void combinations(const char* card, const char* kind, const std::vector<fem::SetCombination>& all,
+                    const std::set<int>& defined, const std::set<int>& used_sets) {
+    for (const auto& a : all) {
+      const bool used = runs(s_) && used_sets.count(a.sid);
       for (const int t : a.sets)
-        if (!spc_defined_.count(t))
-          report_.add(used ? Kind::Refused : Kind::Unused, "SPCADD", a.ref,
-                      "SPCADD " + std::to_string(a.sid) + " references SPC set " + std::to_string(t) + ", which no card defines");
-      if (!used) not_selected("SPCADD", "SPC set", a.sid, a.ref);
+        if (!defined.count(t))
+          report_.add(used ? Kind::Refused : Kind::Unused, card, a.ref,
+                      std::string(card) + " " + std::to_string(a.sid) + " references " + kind + " " + std::to_string(t) +
+                          ", which no card defines");
+      if (!used) not_selected(card, kind, a.sid, a.ref);
     }
   }
 
@@ -338,14 +329,7 @@ class Classifier {
       }
       if (!used) not_selected("MPC", "MPC set", e.sid, e.ref);
     }
-    for (const auto& a : m_.mpcadds) {
-      const bool used = uses && used_mpc_.count(a.sid);
-      for (const int t : a.sets)
-        if (!mpc_defined_.count(t))
-          report_.add(used ? Kind::Refused : Kind::Unused, "MPCADD", a.ref,
-                      "MPCADD " + std::to_string(a.sid) + " references MPC set " + std::to_string(t) + ", which no card defines");
-      if (!used) not_selected("MPCADD", "MPC set", a.sid, a.ref);
-    }
+    combinations("MPCADD", "MPC set", m_.mpcadds, mpc_defined_, used_mpc_);
   }
 
   void methods() {
@@ -544,7 +528,6 @@ class Classifier {
   unsigned interface_;
   Report report_;
   std::multimap<int, const fem::LoadCombination*> load_combos_;
-  std::multimap<int, int> spc_combos_, mpc_combos_;
   std::set<int> spc_defined_, mpc_defined_, load_defined_;
   std::set<int> used_spc_, used_mpc_, used_load_, used_method_;
   std::vector<std::pair<const CardRole*, std::vector<Member>>> supported_loads_;

@@ -129,6 +129,20 @@ inline Conm2& add_conm2(Model& m, int id, int grid, double mass) {
   return m.conm2.back();
 }
 
+/// CELAS2 of stiffness k between component c1 of g1 and c2 of g2 (g2 = 0: grounded).
+inline Spring& add_celas2(Model& m, int id, int g1, int c1, double k, int g2 = 0, int c2 = 0) {
+  Spring s;
+  s.id = id;
+  s.inline_property = true;
+  s.k = k;
+  s.g1 = g1;
+  s.c1 = c1;
+  s.g2 = g2;
+  s.c2 = c2;
+  m.springs.push_back(s);
+  return m.springs.back();
+}
+
 inline void add_param(Model& m, const std::string& name, const std::string& value) {
   Param p;
   p.name = name;

@@ -15,17 +15,6 @@ namespace {
 
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 
-Spring& add_grounded_spring(Model& m, int id, int grid, int c, double k) {
-  Spring s;
-  s.id = id;
-  s.inline_property = true;
-  s.k = k;
-  s.g1 = grid;
-  s.c1 = c;
-  m.springs.push_back(s);
-  return m.springs.back();
-}
-
 /// Four independent grids on grounded springs (all six components, so that every independent dof is
 /// free), the reference grid 100 at `ref`; RBE3 7 with weights w_i on components `ci`.
 Model rbe3_model(const Eigen::Vector3d& ref, const std::array<Eigen::Vector3d, 4>& x, const std::array<double, 4>& w,
@@ -33,7 +22,7 @@ Model rbe3_model(const Eigen::Vector3d& ref, const std::array<Eigen::Vector3d, 4
   Model m;
   for (int i = 0; i < 4; ++i) {
     test::add_grid(m, i + 1, x[i].x(), x[i].y(), x[i].z());
-    for (int c = 1; c <= 6; ++c) add_grounded_spring(m, 10 * (i + 1) + c, i + 1, c, 1e3 * (1 + c + i));
+    for (int c = 1; c <= 6; ++c) test::add_celas2(m, 10 * (i + 1) + c, i + 1, c, 1e3 * (1 + c + i));
   }
   test::add_grid(m, 100, ref.x(), ref.y(), ref.z());
   Rbe3 r;
@@ -158,7 +147,7 @@ TEST(Rbe3, UmRedefinesTheDependentsWithoutChangingTheConstraint) {
                                             Eigen::Vector3d(-2, -1, 0), Eigen::Vector3d(2, -1, 0)};
   Model a = rbe3_model({0.5, 0.2, 1.0}, x, {1, 2, 1, 2}, test::mask("123"));
   test::add_conm2(a, 500, 100, 2.0);
-  for (int c = 1; c <= 6; ++c) add_grounded_spring(a, 900 + c, 100, c, 50.0 * c);
+  for (int c = 1; c <= 6; ++c) test::add_celas2(a, 900 + c, 100, c, 50.0 * c);
   test::finalize_for_test(a);
   Model b = a;
   // the reference grid's translations become independent, grid 1's translations dependent instead
@@ -229,15 +218,7 @@ TEST(Mpc, TiedCantileversMatchBeamTheoryAndAStiffSpring) {
   Model spring = m;
   spring.mpcs.clear();
   spring.mpcadds.clear();
-  Spring s;
-  s.id = 900;
-  s.inline_property = true;
-  s.k = 1e6 * 3 * E * IA / (L * L * L);
-  s.g1 = 104;
-  s.c1 = 3;
-  s.g2 = 204;
-  s.c2 = 3;
-  spring.springs.push_back(s);
+  test::add_celas2(spring, 900, 104, 3, 1e6 * 3 * E * IA / (L * L * L), 204, 3);
   test::finalize_for_test(spring);
   ConstraintOptions os;
   os.spc_set = 1;

@@ -28,6 +28,7 @@
 #include <Eigen/SparseCore>
 #include <cstdint>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -86,6 +87,11 @@ Eigen::VectorXd expand(const ConstrainedSystem& c, const Eigen::VectorXd& u_f);
 /// GRID PS not included). Grids of an SPC1 "THRU" range that do not exist are skipped (QRG SPC1:
 /// they need not exist); any other undefined point is an InputError, as is an undefined set.
 std::vector<std::pair<Eigen::Index, double>> spc_set_dofs(const Model& model, const DofMap& dofs, int spc_set);
+
+/// The set ids a set `sid` stands for through SPCADD/MPCADD `combinations` (itself included;
+/// nested combinations expanded, cycles ignored). `combined` (optional) tells whether a combination
+/// has this SID.
+std::set<int> expand_sets(int sid, const std::vector<SetCombination>& combinations, bool* combined = nullptr);
 
 /// "RBE3 5 (deck.bdf:12)" / "MPC set 2 (deck.bdf:30)".
 std::string describe(const Model& model, const ConstraintCard& card);

@@ -237,11 +237,13 @@ struct SpcEntry {  ///< one SPC/SPC1 grid-component entry (d = enforced value, S
   CardRef ref;
 };
 
-struct SpcAdd {
+/// SPCADD / MPCADD: set SID is the union of sets S1, S2, ...
+struct SetCombination {
   int sid = 0;
   std::vector<int> sets;
   CardRef ref;
 };
+using SpcAdd = SetCombination;
 
 /// MPC: one equation sum_j A_j u(G_j, C_j) = 0 (components in the grids' CD systems, 0 for a
 /// scalar point); the first term's dof is the dependent one.
@@ -255,11 +257,7 @@ struct MpcEquation {
   CardRef ref;
 };
 
-struct MpcAdd {
-  int sid = 0;
-  std::vector<int> sets;
-  CardRef ref;
-};
+using MpcAdd = SetCombination;
 
 struct DofSetEntry {  ///< ASET/ASET1/OMIT/OMIT1/BSET/BSET1/SUPORT entries (grid or scalar point + components)
   int grid = 0;
