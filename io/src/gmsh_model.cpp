@@ -323,6 +323,8 @@ class ModelBuilder {
     take(m_.conm2);
     take(m_.springs);
     take(m_.rbe2);
+    take(m_.rbars);
+    take(m_.rbe3);
     next_element_ = dir_.first_element ? *dir_.first_element : (max_id < INT_MAX ? max_id + 1 : INT_MAX);
   }
 

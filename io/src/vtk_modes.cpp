@@ -22,7 +22,7 @@
 namespace seflex::io {
 namespace {
 
-enum ElementType : int { kBar = 1, kRod = 2, kSpring = 3, kRbe2 = 4, kTria = 5, kQuad = 6, kMass = 7 };
+enum ElementType : int { kBar = 1, kRod = 2, kSpring = 3, kRbe2 = 4, kTria = 5, kQuad = 6, kMass = 7, kRbar = 8, kRbe3 = 9 };
 
 /// Cells of the mesh (grid ids resolved through the finalized model's index).
 class MeshCells {
@@ -87,6 +87,10 @@ void write_mode_shapes_vtu(const std::filesystem::path& path, const fem::Model& 
     if (s.g2 != 0) cells.add(VTK_LINE, {s.g1, s.g2}, s.id, kSpring);
   for (const auto& r : model.rbe2)
     for (int gm : r.gm) cells.add(VTK_LINE, {r.gn, gm}, r.id, kRbe2);
+  for (const auto& r : model.rbars) cells.add(VTK_LINE, {r.ga, r.gb}, r.id, kRbar);
+  for (const auto& r : model.rbe3)
+    for (const auto& g : r.groups)
+      for (int gi : g.grids) cells.add(VTK_LINE, {r.refgrid, gi}, r.id, kRbe3);
   for (const auto& s : model.shells) {
     if (s.nnode == 3) cells.add(VTK_TRIANGLE, {s.g[0], s.g[1], s.g[2]}, s.id, kTria);
     else cells.add(VTK_QUAD, {s.g[0], s.g[1], s.g[2], s.g[3]}, s.id, kQuad);

@@ -102,6 +102,7 @@ class Classifier {
       return report_.take();
     }
     collect_sets();
+    sol_mismatch();
     selections();
     loads();
     spc_sets();
@@ -159,6 +160,16 @@ class Classifier {
       }
       if (uses_methods() && c.method) used_method_.insert(*c.method);
     }
+  }
+
+  /// A deck written for another solution (seflex static on a SOL 103 deck): said, not refused.
+  void sol_mismatch() {
+    if (s_ == Solution::CraigBampton || !m_.case_control.sol) return;
+    const Solution deck = solution_of_deck(m_);
+    if (deck == s_) return;
+    report_.add(Kind::Unused, "executive control SOL", {0, 0},
+                "the deck asks for " + (deck == Solution::Info ? "SOL " + *m_.case_control.sol : std::string(solution_name(deck))) +
+                    "; " + sol() + " runs on it as asked");
   }
 
   // ------------------------------------------------------------------------------------------
@@ -574,7 +585,7 @@ CardUsage check_card_usage(const fem::Model& model, Solution solution, const std
 }
 
 std::string describe(const fem::Model& model, const CardUse& use) {
-  if (use.card.rfind("case control", 0) == 0) return use.card + " (" + fem::where(model, use.first).str() + "): " + use.reason;
+  if (use.card.rfind("case control", 0) == 0 || use.card.rfind("executive control", 0) == 0) return use.card + " (" + fem::where(model, use.first).str() + "): " + use.reason;
   return use.card + ": " + std::to_string(use.count) + (use.count == 1 ? " card" : " cards") + ", first at " +
          fem::where(model, use.first).str() + ": " + use.reason;
 }

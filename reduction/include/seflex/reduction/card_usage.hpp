@@ -23,6 +23,12 @@
 // row (for a card that belongs to a load/method set, give the function that lists its set ids).
 // Reference checks of the cards of unselected sets (a missing grid in an SPC set the case control
 // does not select, an EIGR whose NORM = POINT grid does not exist) become warnings, as in Nastran.
+//
+// A new solution (e.g. buckling) calls check_card_usage with its Solution and the subcases it runs,
+// prints with apps/usage_warnings.hpp, and calls require_usable before assembling. Buckling is
+// classified as statics (LOAD of every case) plus METHOD: a METHOD that selects an EIGB card is
+// refused while EIGB is not read into the Model; when it is, flip EIGB's row and let
+// Classifier::selections() find it among the model's methods.
 #include <cstdint>
 #include <string>
 #include <vector>
