@@ -194,5 +194,18 @@ TEST(CardUsage, CardsNoSolutionUsesAreWarnings) {
                        {"PARAM INREL", "inertia relief"}));
 }
 
+// A deck written for another solution runs as the command asks, with a word about it (Nastran would
+// run its own SOL); the deck's own solution gets no such word.
+TEST(CardUsage, DeckForAnotherSolutionIsSaidNotRefused) {
+  const fem::Model m = test::read_deck(deck("SPC = 1\nLOAD = 7\nMETHOD = 1\n", ""));  // SOL 101 deck
+  const auto modes = usage(m, Solution::NormalModes);
+  EXPECT_FALSE(modes.refused());
+  const CardUse* sol = find(modes, "executive control SOL");
+  ASSERT_NE(sol, nullptr);
+  EXPECT_EQ(sol->kind, CardUse::Kind::Unused);
+  EXPECT_TRUE(mentions(reduction::describe(m, *sol), {"executive control SOL (deck.bdf", "the deck asks for linear statics (SOL 101)"}));
+  for (const CardUse& e : usage(m, Solution::Statics).uses) EXPECT_NE(e.card, "executive control SOL");
+}
+
 }  // namespace
 }  // namespace seflex
