@@ -118,11 +118,10 @@ NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot) {
   const ShellSection& sec = e.section;
   const Eigen::Matrix3d Am = sec.membrane_matrix();
   const Eigen::Matrix3d Db = sec.bending_matrix();
-  // Shear stabilisation (Lyly, Stenberg & Vihinen 1993): ks t^2 / (t^2 + alpha h^2), h the longest edge.
+  // Shear stabilisation (Lyly, Stenberg & Vihinen 1993), h the longest edge (ShellSection).
   double h2 = 0.0;
   for (int k = 0; k < 4; ++k) h2 = std::max(h2, (g.p[(k + 1) % 4] - g.p[k]).squaredNorm());
-  const double alpha = 0.1;
-  const double ks = sec.shear_stiffness() * sec.t * sec.t / (sec.t * sec.t + alpha * h2);
+  const double ks = sec.stabilised_shear_stiffness(h2);
   const double kd = sec.has_membrane ? k6rot * 1e-6 * sec.membrane.G * sec.t : 0.0;
 
   // MITC4 tying points: gamma_xi at A (0,-1), C (0,1); gamma_eta at D (-1,0), B (1,0).
