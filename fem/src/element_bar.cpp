@@ -178,16 +178,21 @@ NodeMatrix<2> bar_mass(const BarElement& e, MassKind kind) {
   const BarSection& s = e.section;
   const double m = (e.material.rho * s.A + s.nsm) * L;  // total translational mass
   Matrix12 M = Matrix12::Zero();
+  const double polar = (e.material.rho * (s.I1 + s.I2) + e.nsi) * L;  // about the bar axis
   if (kind == MassKind::Lumped) {
     for (int i : {0, 1, 2, 6, 7, 8}) M(i, i) = 0.5 * m;
-    apply_node_offsets<2>({e.w_A, e.w_B}, M);  // isotropic: no rotation needed
+    if (e.is_beam && polar > 0.0) {  // CBEAM: half the polar inertia about the axis at each end
+      const Eigen::Vector3d x = bar_axes(e).col(0);
+      M.block<3, 3>(3, 3) = M.block<3, 3>(9, 9) = 0.5 * polar * x * x.transpose();
+    }
+    apply_node_offsets<2>({e.w_A, e.w_B}, M);
     return M;
   }
   // Coupled mass in element axes.
   const double a = m / 6.0;  // linear axial (and torsion pattern [2 1; 1 2])
   M(kU, kU) = M(6 + kU, 6 + kU) = 2 * a;
   M(kU, 6 + kU) = M(6 + kU, kU) = a;
-  const double jt = e.material.rho * (s.I1 + s.I2) * L / 6.0;
+  const double jt = polar / 6.0;
   M(kRx, kRx) = M(6 + kRx, 6 + kRx) = 2 * jt;
   M(kRx, 6 + kRx) = M(6 + kRx, kRx) = jt;
   // Cubic Hermite, plane 1 dofs (v_A, tz_A, v_B, tz_B); plane 2 (w_A, ty_A, w_B, ty_B) with
@@ -228,6 +233,8 @@ BarElement make_bar_element(const Model& model, const Bar& bar) {
   const std::string pcard = kSourceName[static_cast<int>(p.source)];
   e.section = {p.A, p.I1, p.I2, p.I12, p.J, p.K1, p.K2, p.nsm};
   e.material = detail::material(model, p.mid, p.ref, pcard, p.id, "3 (MID)");
+  e.is_beam = bar.is_beam;
+  e.nsi = bar.is_beam ? p.nsi : 0.0;
   if (p.I12 != 0.0 && !(p.I1 * p.I2 > p.I12 * p.I12))
     detail::fail(model, p.ref, pcard, p.id, "I12", "I1 * I2 must exceed I12^2 (I1 = " + std::to_string(p.I1) +
                                                        ", I2 = " + std::to_string(p.I2) +

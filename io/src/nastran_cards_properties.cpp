@@ -142,7 +142,8 @@ void parse_pbarl(const Card& card, ReaderState& st) {
 
 // PBEAM PID MID A(A) I1(A) I2(A) I12(A) J(A) NSM(A) / C1(A) .. F2(A) / [SO X/XB A I1 I2 I12 J NSM /
 //   C1 .. F2]... / K1 K2 S1 S2 NSI(A) NSI(B) CW(A) CW(B) / M1(A) M2(A) M1(B) M2(B) N1(A) N2(A) N1(B) N2(B)
-// seflex models a PBEAM as a prismatic beam with the end-A section; a taper is reported.
+// seflex models a PBEAM as a prismatic beam with the end-A section (and NSI(A), the non-structural
+// mass moment of inertia per length, in the beam's polar inertia); a taper is reported.
 void parse_pbeam(const Card& card, ReaderState& st) {
   fem::BarProperty p;
   p.source = fem::BarProperty::Source::PBEAM;
@@ -179,9 +180,13 @@ void parse_pbeam(const Card& card, ReaderState& st) {
     p.K2 = card.real_or(b + 1, "K2", 1.0);
     if (p.K1 < 0.0) card.fail(b, "K1", card.got(b) + "; expected K1 >= 0 or blank");
     if (p.K2 < 0.0) card.fail(b + 1, "K2", card.got(b + 1) + "; expected K2 >= 0 or blank");
-    for (std::size_t k = 2; k < 8; ++k)
-      if (!card.blank(b + k) && card.real(b + k, "S1/S2/NSI/CW") != 0.0)
-        st.note_unsupported("PBEAM S1/S2/NSI/CW (shear relief, NSM inertia, warping ignored)", card.ref());
+    p.nsi = card.real_or(b + 4, "NSI(A)", 0.0);
+    if (p.nsi < 0.0) card.fail(b + 4, "NSI(A)", card.got(b + 4) + "; expected a mass moment of inertia per length >= 0 or blank");
+    const double nsi_b = card.real_or(b + 5, "NSI(B)", p.nsi);
+    if (std::abs(nsi_b - p.nsi) > 1e-9 * std::max(std::abs(p.nsi), std::abs(nsi_b))) tapered = true;
+    for (std::size_t k : {2, 3, 6, 7})
+      if (!card.blank(b + k) && card.real(b + k, "S1/S2/CW") != 0.0)
+        st.note_unsupported("PBEAM S1/S2/CW (shear relief and warping ignored)", card.ref());
     ++line;
   } else {
     p.K1 = p.K2 = 1.0;  // QRG PBEAM: K1, K2 default to 1.0

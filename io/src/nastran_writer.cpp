@@ -150,7 +150,7 @@ void write_bar_property(CardWriter& w, const fem::BarProperty& p) {
       w.r(p.A).r(p.I1).r(p.I2).r(p.J).r(p.nsm).next_line().blank(8).r(p.K1).r(p.K2).r(p.I12);
       break;
     case Source::PBEAM:
-      w.r(p.A).r(p.I1).r(p.I2).r(p.I12).r(p.J).r(p.nsm).next_line().blank(8).r(p.K1).r(p.K2);
+      w.r(p.A).r(p.I1).r(p.I2).r(p.I12).r(p.J).r(p.nsm).next_line().blank(8).r(p.K1).r(p.K2).blank(2).r(p.nsi).r(p.nsi);
       break;
     case Source::PBARL:
     case Source::PBEAML:

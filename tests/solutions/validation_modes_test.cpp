@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "seflex/fem/dof_map.hpp"
+#include "seflex/fem/mass_properties.hpp"
 #include "seflex/io/nastran.hpp"
 #include "seflex/reduction/normal_modes.hpp"
 #include "test_support.hpp"
@@ -66,6 +67,35 @@ TEST(ValidationModes, CraigBamptonFrameFixedInterfaceModes) {
   const double lambda[3] = {3.895211E+03, 7.011163E+03, 8.533585E+03};
   for (int j = 0; j < 3; ++j) EXPECT_NEAR(r.eigenvalues(j) / lambda[j], 1.0, 1e-6) << "mode " << j + 1;
   EXPECT_LT((r.generalized_mass.array() - 1.0).abs().maxCoeff(), 1e-10);  // EIGRL NORM = MASS
+}
+
+}  // namespace
+}  // namespace seflex
+
+namespace seflex {
+namespace {
+
+// nastran_cbar_cbeam_conm2_modes (pyNastran's models/beam_modes; Simcenter Nastran 2019.2 and MSC
+// Nastran 2005 answers in beam_modes.reference.txt): a clamped 10 m ROD beam of nine CBARs and one
+// CBEAM with a CONM2 at the tip. Nastran's lumped mass gives the CBEAM, not the CBARs, the polar
+// inertia rho (I1 + I2) L, half at each end: the grid point weight generator's I(S) about the beam
+// axis is 3.765757E-03 = 2.59E-03 (CONM2) + 1.175757E-03 (CBEAM), and the torsion mode (5) is
+// 4.989076E+08 (without the CBEAM's polar inertia it would be 7.05E+08, 19 % off in frequency).
+TEST(ValidationModes, CbarCbeamConm2MatchesNastranLumpedMass) {
+  const fem::Model m = io::read_nastran(test::validation_dir() / "nastran_cbar_cbeam_conm2_modes" / "beam_modes.dat");
+  const fem::MassProperties mp = fem::mass_properties(m);
+  EXPECT_NEAR(mp.mass / 2.610514E-02, 1.0, 2e-7);
+  EXPECT_NEAR(mp.M0(3, 3) / 3.765757E-03, 1.0, 2e-7);
+  EXPECT_NEAR(mp.M0(4, 4) / 1.049347E+00, 1.0, 2e-6);
+  const auto r = reduction::solve_normal_modes(m);
+  ASSERT_EQ(r.eigenvalues.size(), 10);
+  const double eig[10] = {8.232777E+06, 8.232777E+06, 2.824056E+08, 2.824056E+08, 4.989076E+08,
+                          8.021004E+08, 1.733310E+09, 1.733310E+09, 4.874295E+09, 4.874295E+09};
+  for (int j = 0; j < 10; ++j) EXPECT_NEAR(r.eigenvalues(j) / eig[j], 1.0, 1e-6) << "mode " << j + 1;
+  // Generalized masses (NORM = MAX) of the modes that are not one of a repeated pair (a pair's
+  // basis, and so its MAX-normalised mass, is arbitrary): torsion and axial.
+  EXPECT_NEAR(r.generalized_mass(4) / 3.668128E-03, 1.0, 2e-6);
+  EXPECT_NEAR(r.generalized_mass(5) / 1.334596E-02, 1.0, 2e-6);
 }
 
 }  // namespace

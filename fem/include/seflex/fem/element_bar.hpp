@@ -15,11 +15,14 @@
 // Pin flags release element-axis dofs at an end by static condensation (their rows/columns of the
 // end stiffness become zero); mass is not affected by pin flags.
 //
-// Mass: lumped (Nastran default): (rho A + NSM) L / 2 on the three translations of each bar end,
-// no rotary inertia. Coupled (PARAM COUPMASS > 0): linear axial, cubic-Hermite transverse
-// translational mass (no rotary inertia of bending) and torsional inertia rho (I1 + I2) L/6 [2 1; 1 2]
-// so that the rigid spin about the bar axis has the section's exact polar inertia. With offsets
-// the end masses sit at the bar ends and reach the grids through the rigid links.
+// Mass: lumped (Nastran default): (rho A + NSM) L / 2 on the three translations of each bar end;
+// a CBAR has no rotary inertia, a CBEAM has its polar inertia (rho (I1 + I2) + NSI) L / 2 about the
+// beam axis at each end (Simcenter Nastran 2019.2 and MSC Nastran 2005 on pyNastran's models/beam_modes: grid point weight
+// generator and torsion eigenvalue, tests/data/validation/nastran_cbar_cbeam_conm2_modes). Coupled
+// (PARAM COUPMASS > 0): linear axial, cubic-Hermite transverse translational mass (no rotary
+// inertia of bending) and torsional inertia (rho (I1 + I2) + NSI) L/6 [2 1; 1 2] so that the rigid
+// spin about the bar axis has the section's exact polar inertia. With offsets the end masses sit
+// at the bar ends and reach the grids through the rigid links.
 #include <Eigen/Core>
 
 #include "seflex/fem/element_common.hpp"
@@ -36,6 +39,8 @@ struct BarElement {
   BarSection section;
   IsotropicMaterial material;
   ComponentMask pin_A = 0, pin_B = 0;  ///< released element-axis dofs (bit c-1 for component c)
+  bool is_beam = false;  ///< CBEAM (lumped mass carries the polar inertia), else CBAR
+  double nsi = 0;        ///< PBEAM NSI: non-structural mass moment of inertia per length
 };
 
 /// Element axes as columns in basic (R_BE: x, y, z) and the length between the offset ends.

@@ -89,6 +89,7 @@ struct BarProperty {
   int mid = 0;
   Source source = Source::PBAR;
   double A = 0, I1 = 0, I2 = 0, I12 = 0, J = 0, nsm = 0;
+  double nsi = 0;                   ///< PBEAM NSI(A): non-structural mass moment of inertia per length
   double K1 = 0, K2 = 0;            ///< shear factors; 0 (blank) = no transverse shear flexibility
   std::string section_type;         ///< PBARL/PBEAML TYPE (ROD, TUBE, BAR, BOX, I, ...)
   std::vector<double> dims;         ///< PBARL/PBEAML DIMi
