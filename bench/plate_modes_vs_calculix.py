@@ -33,7 +33,9 @@ MODES = 20
 def real(x):
     """A Nastran real: always with a decimal point or exponent."""
     t = "%.9g" % x
-    return t if ("." in t or "e" in t) else t + "."
+    if "." in t:
+        return t
+    return t.replace("e", ".e") if "e" in t else t + "."  # 7e-08 -> 7.e-08: Nastran reals carry a point
 
 
 def grid_id(i, j, n):

@@ -13,7 +13,7 @@ K6ROT_NOTE = """$ Drilling stiffness (PARAM K6ROT, Nastran's penalty 1e-6 K6ROT 
 $ normal): the CONM2s' I11 = 1.98e-4 about the normal rests on it alone. With Nastran's default
 $ K6ROT = 100 those inertias make spurious drilling modes from 43 Hz on, among the panel's elastic
 $ modes (33, 56, 71 Hz); K6ROT = 1e5 moves them above 1 kHz and leaves the other modes below
-$ 500 Hz as they were (to 1e-11: the plate is flat; bench/panel_modes_vs_calculix.py).
+$ 500 Hz as they were (to 1e-11: the plate is flat; bench/panel_modes_vs_solvers.py).
 """
 
 

@@ -73,8 +73,8 @@ run_parallel() {
 
 # 1. Reductions. Interface sets of solar-array.md; fixed-interface modes per superelement chosen
 #    by convergence of the lock times and lock torques (docs/solar-array-results.md, "Number of
-#    fixed-interface modes"): 10 each (the 3D model is converged with 10; the beam-like panel's lock
-#    torques would need 22, at 4x the run time).
+#    fixed-interface modes"): 10 each (both reductions are converged with 10: 20 change the lock times
+#    by 0.1 ms and the lock torques by less than 0.5 %).
 t0=$(now)
 list="$out/.reduce.cmds"
 : > "$list"

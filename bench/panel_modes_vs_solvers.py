@@ -27,6 +27,7 @@ It prints the first elastic frequencies (the six rigid-body modes skipped) of se
 of CalculiX, and the relative differences.
 """
 import argparse
+import itertools
 import math
 import os
 import shutil
@@ -73,6 +74,8 @@ def read_panel(path):
             p["pshell"] = dict(mid=int(f[2]), T=num(f[3]), bend=num(f[5]), tst=num(f[7]))
         elif card == "MAT1":
             p.setdefault("mat1", {})[int(f[1])] = dict(E=num(f[2]), nu=num(f[4]))
+        elif card == "PARAM" and f[1] == "K6ROT":
+            p["k6rot"] = num(f[2])
         elif card == "CONM2":
             c = fields(lines[k + 1])
             p["conm2"].append((int(f[2]), num(f[4]), num(c[1]), num(c[3]), num(c[6])))  # I11, I22, I33
@@ -115,6 +118,8 @@ def write_seflex(path, p, r, modes, rotary=True):
     gid = {}
     lines = ["SOL 103\nCEND\nTITLE = demo panel free-free, plate %dx%d CQUAD4\nMETHOD = 1\nBEGIN BULK\n" % (
         len(Y) - 1, len(Z) - 1), "EIGRL,1,,,%d\n" % (modes + 6)]
+    if "k6rot" in p:
+        lines.append("PARAM,K6ROT,%s\n" % real(p["k6rot"]))
     for j, y in enumerate(Y):
         for i, z in enumerate(Z):
             gid[(j, i)] = 1 + i + len(Z) * j
@@ -208,10 +213,52 @@ def run(cmd, cwd):
     return p.stdout
 
 
+def mystran_frequencies(f06):
+    """CYCLES column of MYSTRAN's REAL EIGENVALUES table."""
+    freqs, on = [], False
+    for line in open(f06, errors="replace"):
+        if "R E A L   E I G E N V A L U E S" in line:
+            on, freqs = True, []
+            continue
+        w = line.split()
+        if on and len(w) >= 6 and w[0].isdigit() and w[1].isdigit():
+            freqs.append(float(w[4]))
+        elif on and freqs and not w:
+            on = False
+    return freqs
+
+
+def match_rigid(freqs, ref, modes):
+    """MYSTRAN's elastic frequencies (above 1 Hz) aligned with seflex's: when it finds fewer than six
+    rigid-body modes, the missing ones appear among the elastic modes; leave out those whose removal
+    matches seflex's frequencies best. Returns (frequencies, left-out frequencies)."""
+    elastic = [f for f in freqs if f > 1.0]
+    k = 6 - (len(freqs) - len(elastic))
+    best = None
+    for drop in itertools.combinations(range(min(len(elastic), modes + k)), max(k, 0)):
+        rest = [f for i, f in enumerate(elastic) if i not in drop][:modes]
+        cost = sum(abs(math.log(a / b)) for a, b in zip(rest, ref))
+        if best is None or cost < best[0]:
+            best = (cost, rest, [elastic[i] for i in drop])
+    return best[1], best[2]
+
+
+def table(title, ref_name, ref, cols, modes):
+    print("\n" + title)
+    head = "| mode | %s Hz |" % ref_name + "".join(" %s Hz | diff |" % n for n, _ in cols)
+    print(head + "\n|---:|---:|" + "---:|---:|" * len(cols))
+    for k in range(modes):
+        print("| %d | %.3f |" % (7 + k, ref[k]) + "".join(" %.3f | %+.2f %% |" % (f[k], 100.0 * (f[k] / ref[k] - 1.0)) for _, f in cols))
+    for n, f in cols:
+        print("%s: largest |difference| over the %d elastic modes %.2f %%" % (
+            n, modes, 100.0 * max(abs(a / b - 1.0) for a, b in zip(f, ref))))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--seflex", default=os.path.join(ROOT, "build", "apps", "seflex"))
     ap.add_argument("--ccx", default=os.environ.get("CCX", "ccx"))
+    ap.add_argument("--mystran", help="a MYSTRAN executable: also run MYSTRAN on seflex's decks (same input)")
     ap.add_argument("--panel", default=os.path.join(ROOT, "meshes", "panel.bdf"))
     ap.add_argument("--refine", default="1,2,4", help="seflex: each demo CQUAD4 split r x r")
     ap.add_argument("--ccx-refine", type=int, default=6, help="CalculiX: each demo CQUAD4 as r x r S8R")
@@ -225,8 +272,8 @@ def main():
     os.makedirs(work, exist_ok=True)
     print("command: %s" % " ".join([os.path.relpath(os.path.abspath(sys.argv[0]), ROOT)] + sys.argv[1:]))
     p = read_panel(args.panel)
-    cols = []
-    runs = [(r, False) for r in [int(x) for x in args.refine.split(",")]] + [(1, True)]
+    cols, myst, notes = [], [], []
+    runs = [(1, True)] + [(r, False) for r in [int(x) for x in args.refine.split(",")]]
     for r, rotary in runs:
         d = os.path.join(work, "seflex-r%d%s" % (r, "-rotary" if rotary else ""))
         os.makedirs(d, exist_ok=True)
@@ -235,25 +282,35 @@ def main():
         if os.path.exists(csv):
             os.remove(csv)
         run([args.seflex, "modes", "panel.bdf", "--csv", "modes.csv"], d)
-        cols.append(("seflex %dx%d%s" % (4 * r, 4 * r, " +rot" if rotary else ""), seflex_frequencies(csv)[6:6 + args.modes]))
+        name = "%dx%d%s" % (4 * r, 4 * r, " demo CONM2" if rotary else "")
+        cols.append((name, seflex_frequencies(csv)[6:6 + args.modes]))
+        if args.mystran:
+            shutil.copy(os.path.join(d, "panel.bdf"), os.path.join(d, "PANEL.DAT"))
+            run([os.path.abspath(args.mystran), "PANEL.DAT"], d)
+            g, dropped = match_rigid(mystran_frequencies(os.path.join(d, "PANEL.F06")), cols[-1][1], args.modes)
+            if dropped:
+                notes.append("MYSTRAN %s: %d rigid-body mode(s) at %s Hz (its rotation about the plate normal is "
+                             "not free), left out of the comparison" % (name, len(dropped), ", ".join("%.2f" % x for x in dropped)))
+            myst.append((name, g))
     d = os.path.join(work, "ccx")
     os.makedirs(d, exist_ok=True)
     geo = write_calculix(os.path.join(d, "panel.inp"), p, args.ccx_refine, args.modes)
     run([ccx, "-i", "panel"], d)
     ref = ccx_frequencies(os.path.join(d, "panel.dat"))[6:6 + args.modes]
-    print("CalculiX: %dx%d S8R, t_eq %.4g mm, E_eq %.4g GPa; edge members B32R PIPE ro %.4g mm ri %.4g mm" % (
-        4 * args.ccx_refine, 4 * args.ccx_refine, 1e3 * geo["t_eq"], 1e-9 * geo["E_eq"], 1e3 * geo["pipe_ro"], 1e3 * geo["pipe_ri"]))
-    print("seflex NxN: the demo's CQUAD4 split, CONM2 without rotary inertia as in CalculiX; +rot: the demo deck's CONM2\n")
-    head = "%4s | %12s" % ("mode", "CalculiX Hz") + "".join(" | %13s %7s" % (n + " Hz", "diff %") for n, _ in cols)
-    print(head + "\n" + "-" * len(head))
-    for k in range(args.modes):
-        row = "%4d | %12.3f" % (7 + k, ref[k])
-        for _, f in cols:
-            row += " | %13.3f %+7.2f" % (f[k], 100.0 * (f[k] / ref[k] - 1.0))
-        print(row)
-    for n, f in cols:
-        print("%s: largest |difference| over the %d elastic modes %.2f %%" % (
-            n, args.modes, 100.0 * max(abs(a / b - 1.0) for a, b in zip(f, ref))))
+    print("CalculiX: %dx%d S8R, t_eq %.4g mm, E_eq %.4g GPa, G13 = G23 %.4g GPa; edge members B32R PIPE ro %.4g mm ri %.4g mm" % (
+        4 * args.ccx_refine, 4 * args.ccx_refine, 1e3 * geo["t_eq"], 1e-9 * geo["E_eq"], 1e-9 * geo["G13"],
+        1e3 * geo["pipe_ro"], 1e3 * geo["pipe_ri"]))
+    print("seflex/MYSTRAN NxN: the demo's CQUAD4 split, CONM2 without rotary inertia (as CalculiX); "
+          "'demo CONM2': the demo deck's CONM2 (with rotary inertia)")
+    if myst:
+        for (n, f), (_, g) in zip(cols, myst):
+            table("seflex against MYSTRAN on the same deck, plate %s" % n, "MYSTRAN", g, [("seflex", f)], args.modes)
+        table("seflex and MYSTRAN against the finest MYSTRAN mesh", "MYSTRAN %s" % myst[-1][0], myst[-1][1],
+              [("seflex " + n, f) for n, f in cols] + [("MYSTRAN " + n, g) for n, g in myst[:-1]], args.modes)
+    table("seflex against CalculiX (S8R, %dx%d)" % (4 * args.ccx_refine, 4 * args.ccx_refine), "CalculiX", ref,
+          [("seflex " + n, f) for n, f in cols] + [("MYSTRAN " + n, g) for n, g in myst], args.modes)
+    for n in notes:
+        print(n)
     print("(modes 1-6 are the rigid-body modes; files in %s)" % work)
 
 
