@@ -2,12 +2,14 @@
 #include "seflex/reduction/card_usage.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <set>
 #include <tuple>
 
 #include "card_usage_table.hpp"
+#include "drilling_inertia.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/fem/components.hpp"
 #include "seflex/fem/constraints.hpp"
@@ -531,6 +533,27 @@ class Classifier {
     for (const auto& r : m_.rbars)
       if (r.alpha != 0.0)
         report_.add(k, "RBAR ALPHA", r.ref, "thermal expansion coefficient of the element: read, not used (no thermal loads)");
+    drilling();
+  }
+
+  /// CONM2 rotary inertia about a flat shell's normal that only the drilling penalty holds: spurious
+  /// modes in every solution that uses mass unless K6ROT is large (1e4 and up leaves a flat shell's
+  /// other modes unchanged: docs/fem.md, "Shell sections").
+  void drilling() {
+    if (s_ != Solution::NormalModes && s_ != Solution::CraigBampton && s_ != Solution::Info) return;
+    const double k6rot = fem::param_number(m_, "K6ROT", 100.0);
+    if (k6rot >= 1e4) return;
+    const detail::DrillingInertia d = detail::drilling_inertia(m_);
+    if (d.count == 0) return;
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%.4g", d.first_inertia);
+    char k6[32];
+    std::snprintf(k6, sizeof k6, "%g", k6rot);
+    report_.add(Kind::Approximated, "CONM2", d.first,
+                "rotary inertia about the normal of the flat shells at grid " + std::to_string(d.first_grid) + " (" + buf +
+                    ") rests on the drilling penalty alone (PARAM K6ROT = " + k6 +
+                    "): it makes spurious low modes; set PARAM K6ROT to 1e4 or more, or leave that inertia out",
+                d.count);
   }
 
   const fem::Model& m_;

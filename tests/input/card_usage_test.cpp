@@ -209,3 +209,52 @@ TEST(CardUsage, DeckForAnotherSolutionIsSaidNotRefused) {
 
 }  // namespace
 }  // namespace seflex
+
+namespace seflex {
+namespace {
+
+/// A free flat 2 x 2 CQUAD4 plate in the x-y plane (grids 1-9, centre 5) with a CONM2 on the centre
+/// grid; `inertia` is its CONM2 continuation (I11 I21 I22 I31 I32 I33), `more` extra bulk cards.
+fem::Model plate_with_conm2(const std::string& inertia, const std::string& more) {
+  std::string b = "SOL 103\nCEND\nMETHOD = 1\nBEGIN BULK\nEIGRL,1,,,12\nMAT1,1,7.e10,,0.3,2700.\nPSHELL,1,1,0.002,1,,1\n";
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) b += "GRID," + std::to_string(1 + i + 3 * j) + ",," + std::to_string(0.5 * i) + "," + std::to_string(0.5 * j) + ",0.\n";
+  b += "CQUAD4,1,1,1,2,5,4\nCQUAD4,2,1,2,3,6,5\nCQUAD4,3,1,4,5,8,7\nCQUAD4,4,1,5,6,9,8\n";
+  b += "CONM2,10,5,0,0.5\n," + inertia + "\n" + more + "ENDDATA\n";
+  return test::read_deck(b);
+}
+
+// Rotary inertia about a flat shell's normal rests on the drilling penalty alone (spurious modes,
+// docs/fem.md "Shell sections"): a warning naming the CONM2, its line and PARAM K6ROT, for the
+// solutions that use mass, and none when K6ROT is large, when the inertia is about in-plane axes
+// only, or when a bar also reaches the grid.
+TEST(CardUsage, ConmInertiaAboutAFlatShellNormalIsAWarning) {
+  const fem::Model m = plate_with_conm2("1.e-4,0.,1.e-4,0.,0.,2.e-4", "");
+  const reduction::CardUsage u = usage(m, Solution::NormalModes);
+  const CardUse* e = find(u, "CONM2");
+  ASSERT_NE(e, nullptr);
+  EXPECT_EQ(e->kind, CardUse::Kind::Approximated);
+  EXPECT_EQ(e->first.line, 21u);
+  EXPECT_TRUE(mentions(e->reason, {"normal of the flat shells at grid 5 (0.0002)", "PARAM K6ROT = 100", "spurious"}));
+  for (const CardUse& u : usage(m, Solution::Statics).uses) EXPECT_NE(u.card, "CONM2") << u.reason;
+  auto none = [](const fem::Model& q) {
+    for (const CardUse& u : usage(q, Solution::NormalModes).uses)
+      if (u.card == "CONM2") return false;
+    return true;
+  };
+  EXPECT_TRUE(none(plate_with_conm2("1.e-4,0.,1.e-4,0.,0.,2.e-4", "PARAM,K6ROT,1.e5\n")));
+  EXPECT_TRUE(none(plate_with_conm2("1.e-4,0.,1.e-4,0.,0.,0.", "")));
+  EXPECT_TRUE(none(plate_with_conm2("1.e-4,0.,1.e-4,0.,0.,2.e-4",
+                                    "PBAR,2,1,1.e-4,1.e-8,1.e-8,2.e-8\nCBAR,5,2,5,6,0.,0.,1.\n")));
+  // The physics the warning stands for: with I33 = 10 kg m^2 and K6ROT = 100 the centre's drilling
+  // rotation is a mode (2.8 Hz) below the plate's first elastic one (4.5 Hz); with K6ROT = 1e5 it is
+  // 32x higher (stiffness 1000x), out of the low spectrum, and the elastic modes are unchanged.
+  const auto low = reduction::solve_normal_modes(plate_with_conm2("1.e-4,0.,1.e-4,0.,0.,10.", ""));
+  const auto high = reduction::solve_normal_modes(plate_with_conm2("1.e-4,0.,1.e-4,0.,0.,10.", "PARAM,K6ROT,1.e5\n"));
+  const auto bare = reduction::solve_normal_modes(plate_with_conm2("1.e-4,0.,1.e-4,0.,0.,0.", ""));
+  EXPECT_LT(low.cycles()(6), 0.7 * bare.cycles()(6));  // 2.76 Hz against 4.51 Hz
+  for (int k = 6; k < 9; ++k) EXPECT_NEAR(high.cycles()(k) / bare.cycles()(k), 1.0, 1e-6) << "mode " << k + 1;
+}
+
+}  // namespace
+}  // namespace seflex
