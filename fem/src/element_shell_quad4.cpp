@@ -297,7 +297,7 @@ Quad4Element make_quad4_element(const Model& model, const Shell& shell, const Sh
   const Eigen::Vector3d a = (e.x[1] - e.x[0]) - (e.x[1] - e.x[0]).dot(e3) * e3;
   const Eigen::Vector3d e1 = a.normalized();
   const double theta = detail::material_angle(model, shell, e1, e3.cross(e1), 0.25 * (e.x[0] + e.x[1] + e.x[2] + e.x[3]));
-  e.section = (section ? *section : make_shell_section(model, shell)).in_element_axes(theta);
+  e.section = (section ? *section : make_shell_section(model, shell)).in_element_axes(theta).offset(shell.zoffs);
   return e;
 }
 

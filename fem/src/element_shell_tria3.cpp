@@ -152,7 +152,7 @@ Tria3Element make_tria3_element(const Model& model, const Shell& shell, const Sh
     detail::fail(model, shell.ref, "CTRIA3", shell.id, "4-6 (G1-G3)", "corners are collinear (zero area)");
   const Eigen::Vector3d e1 = a.normalized(), e3 = a.cross(b).normalized();
   const double theta = detail::material_angle(model, shell, e1, e3.cross(e1), (e.x[0] + e.x[1] + e.x[2]) / 3.0);
-  e.section = (section ? *section : make_shell_section(model, shell)).in_element_axes(theta);
+  e.section = (section ? *section : make_shell_section(model, shell)).in_element_axes(theta).offset(shell.zoffs);
   return e;
 }
 

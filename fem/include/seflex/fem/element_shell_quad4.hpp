@@ -35,7 +35,8 @@
 // rotated from the material axes (THETA from the projected G1-G2 edge, or the projected x axis of
 // MCID) to the element axes; the coupling B ties the membrane (incompatible modes included, so they
 // are condensed together with the plate dofs) to the curvatures. Corner thicknesses T1..T4 of a
-// PSHELL are averaged.
+// PSHELL are averaged. ZOFFS (the reference plane that far above the grids along the normal) shifts
+// the section: B + e A, D + 2 e B + e^2 A (ShellSection::offset); the mass stays at the grids.
 // Mass: lumped (Nastran default) m_i = (rho t + NSM) int N_i dA on the translations of grid i
 // (A/4 on a parallelogram); coupled (COUPMASS > 0) (rho t + NSM) int N_i N_j dA on each
 // translation; no rotary inertia either way.

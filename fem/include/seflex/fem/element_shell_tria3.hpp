@@ -13,7 +13,8 @@
 //   refinement.
 // - Drilling: as CQUAD4, G t A (theta_z - omega)^2 at the centroid plus the K6ROT penalty on
 //   (theta_z - omega)^2 with the 3-point rule.
-// Section: as CQUAD4 (A, B, D, S of the PSHELL or PCOMP/PCOMPG in element axes; THETA from G1-G2).
+// Section: as CQUAD4 (A, B, D, S of the PSHELL or PCOMP/PCOMPG in element axes; THETA from G1-G2;
+// ZOFFS shifts it).
 // Mass: lumped (rho t + NSM) A / 3 on the translations of each grid; coupled
 // (rho t + NSM) A / 12 [2 1 1; 1 2 1; 1 1 2] on each translation; no rotary inertia.
 #include <Eigen/Core>

@@ -71,6 +71,17 @@ struct ShellSection {
     s.S = rotate_shear_matrix(S, theta);
     return s;
   }
+  /// The section about a reference surface e below its own (CQUAD4/CTRIA3 ZOFFS = e: the section's
+  /// reference plane lies e above the grids, along the element normal): the strain at the section's
+  /// plane is eps0 + e kappa, so A' = A, B' = B + e A, D' = D + 2 e B + e^2 A (the parallel-axis
+  /// shift of lamination theory); S, mass and the stabilisation thickness are unchanged.
+  ShellSection offset(double e) const {
+    if (e == 0.0) return *this;
+    ShellSection s = *this;
+    s.B = B + e * A;
+    s.D = D + 2.0 * e * B + e * e * A;
+    return s;
+  }
 };
 
 /// MAT1, MAT2, MAT8 as shell layers (ShellMaterial). MAT8: Q11 = E1/(1 - nu12 nu21), Q22 =
