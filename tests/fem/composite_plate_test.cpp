@@ -2,7 +2,7 @@
 // references:
 //  - Navier solution of the simply supported specially orthotropic plate (cross-ply [0/90/90/0],
 //    D16 = D26 = 0, B = 0) in classical lamination theory (Reddy, Mechanics of Laminated Composite
-//    Plates and Shells, 2nd ed. (2004), sec. 5.2: for q = q0 sin(pi x/a) sin(pi y/b)
+//    Plates and Shells, 2nd ed. (2004), ch. 5: for q = q0 sin(pi x/a) sin(pi y/b)
 //      w_max = q0 / (pi^4 d11),  omega_mn^2 = pi^4 d_mn / (rho h),
 //      d_mn = D11 (m/a)^4 + 2 (D12 + 2 D66) (m/a)^2 (n/b)^2 + D22 (n/b)^4
 //    without rotary inertia, as the shell mass matrices carry none), with D from the textbook sums
@@ -20,7 +20,7 @@
 //    and as the PSHELL of the same panel (MID1 = MID2 the face, 12I/T^3 = (h^3 - tc^3)/T^3, MID3 the
 //    core with TS/T = d^2/(tc T)): the same frequencies within 1 %, and the lowest three within 1 % of
 //    the Mindlin plate omega^2 = D k^4 / (m (1 + D k^2 / S)), S = G_c d^2 / tc (Mindlin 1951; Zenkert,
-//    An Introduction to Sandwich Construction, ch. 3).
+//    An Introduction to Sandwich Construction).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,7 +1,8 @@
 #pragma once
 // Classical lamination theory written out from the textbook for the fem tests (independent of
-// seflex's section code): Kaw, Mechanics of Composite Materials, 2nd ed. (2006), eqs. 2.93 (Q),
-// 2.104 (Q-bar) and 4.28 (A, B, D); T300/5208 graphite/epoxy from Kaw's Table 2.1.
+// seflex's section code): Kaw, Mechanics of Composite Materials, 2nd ed. (2006), ch. 2 (Q of an
+// orthotropic lamina, Q-bar of an angle lamina) and ch. 4 (A, B, D); T300/5208 graphite/epoxy from
+// Kaw's Table 2.1.
 #include <Eigen/Core>
 #include <cmath>
 #include <vector>
@@ -29,7 +30,7 @@ inline Mat8 t300(double g1z = 0.0, double g2z = 0.0, double rho = 1600.0) {
   return m;
 }
 
-// Kaw eq. 2.93.
+// Kaw ch. 2: Q11 = E1/(1 - nu12 nu21), Q12 = nu12 E2/(1 - nu12 nu21), Q22 = E2/(1 - nu12 nu21), Q66 = G12.
 struct Q4 {
   double Q11, Q12, Q22, Q66;
 };
@@ -38,7 +39,7 @@ inline Q4 lamina_Q() {
   return {kE1 / d, kNu12 * kE2 / d, kE2 / d, kG12};
 }
 
-// Kaw eq. 2.104 (theta in degrees, from x to the fibre, counterclockwise).
+// Kaw ch. 2, Q-bar of an angle lamina (theta in degrees, from x to the fibre, counterclockwise).
 inline Eigen::Matrix3d Qbar(double theta_deg) {
   const Q4 q = lamina_Q();
   const double c = std::cos(theta_deg * kPi / 180), s = std::sin(theta_deg * kPi / 180);
@@ -57,7 +58,7 @@ inline Eigen::Matrix3d Qbar(double theta_deg) {
 struct Abd {
   Eigen::Matrix3d A = Eigen::Matrix3d::Zero(), B = Eigen::Matrix3d::Zero(), D = Eigen::Matrix3d::Zero();
 };
-// Kaw eqs. 4.28, plies bottom up, equal thickness, symmetric about z = 0.
+// Kaw ch. 4: A, B, D as sums over the plies, bottom up, equal thickness, the stack centred on z = 0.
 inline Abd hand_abd(const std::vector<double>& angles_deg, double t = kPly) {
   Abd r;
   const double h = t * angles_deg.size();

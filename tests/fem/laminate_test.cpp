@@ -2,16 +2,17 @@
 // (fem::pshell_section with MAT2, MAT8 and MID4) against references worked out here with the
 // textbook formulae, independently of seflex's code:
 //  - Lamina stiffness Q and transformed Q-bar: Kaw, Mechanics of Composite Materials, 2nd ed. (2006),
-//    eqs. 2.93 and 2.104 (the same as Jones, Mechanics of Composite Materials, 2nd ed., eqs. 2.61 and
-//    2.85); T300/5208 graphite/epoxy E1 = 181 GPa, E2 = 10.3 GPa, nu12 = 0.28, G12 = 7.17 GPa (Kaw,
+//    ch. 2 (Q of an orthotropic lamina from E1, E2, nu12, G12, and Q-bar of an angle
+//    lamina), the same formulae as Jones, Mechanics of Composite Materials, 2nd ed., ch. 2;
+//    T300/5208 graphite/epoxy E1 = 181 GPa, E2 = 10.3 GPa, nu12 = 0.28, G12 = 7.17 GPa (Kaw,
 //    Table 2.1), whose Q Kaw's Example 2.6 prints as 181.8, 2.897, 10.35, 7.170 GPa.
-//  - A, B, D: Kaw eqs. 4.28a-c, A = sum Qbar_k (h_k - h_k-1), B = 1/2 sum Qbar_k (h_k^2 - h_k-1^2),
-//    D = 1/3 sum Qbar_k (h_k^3 - h_k-1^3), h_0 the bottom surface.
+//  - A, B, D: Kaw ch. 4 (classical lamination theory), A = sum Qbar_k (h_k - h_k-1),
+//    B = 1/2 sum Qbar_k (h_k^2 - h_k-1^2), D = 1/3 sum Qbar_k (h_k^3 - h_k-1^3), h_0 the bottom surface.
 //  - Two-layer [0/90] cross-ply (unsymmetric): B11 = -B22 = -(Q11 - Q22) t^2 / 2, B12 = B66 = 0
-//    (from the sums above with h = -t, 0, t; Jones sec. 4.3.2, antisymmetric cross-ply laminates).
+//    (from the sums above with h = -t, 0, t; Jones ch. 4, antisymmetric cross-ply laminates).
 //  - Transverse shear of a homogeneous plate: (5/6) G t (Reissner); of a sandwich with faces rigid in
 //    shear and a core without in-plane stiffness: G_c d^2 / t_c in the thin-face limit (Zenkert, An
-//    Introduction to Sandwich Construction, 1995, ch. 3: shear stiffness S = G_c d^2 / t_c), and
+//    Introduction to Sandwich Construction, 1995: shear stiffness S = G_c d^2 / t_c), and
 //    exactly G_c / (t_c f^2), f = Q (h^2 - t_c^2) / (8 D) the core's shear stress per unit shear force
 //    (equilibrium of the face stresses, Whitney 1973).
 #include <gtest/gtest.h>

@@ -142,7 +142,7 @@ TEST(ModesCli, KrylovBackendsAgreeOnAFreePlate) {
 // A laminated plate from the deck to the eigenvalue table: simply supported [0/90/90/0] T300/5208
 // (PCOMP in large field, MAT8 with a continuation), 0.2 x 0.3 m, 20 x 20 CQUAD4; the four lowest
 // frequencies against the Navier solution of lamination theory (Reddy, Mechanics of Laminated
-// Composite Plates and Shells, 2nd ed., sec. 5.2; D from the textbook sums of
+// Composite Plates and Shells, 2nd ed., ch. 5; D from the textbook sums of
 // tests/fem/laminate_reference.hpp), within 1 % (tests/fem/composite_plate_test.cpp has the same
 // plate through the library: -0.26, -0.52, -0.21, +0.48 %).
 TEST(ModesCli, CrossPlyPcompPlateMatchesNavier) {
