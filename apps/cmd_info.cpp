@@ -40,8 +40,9 @@ void print_model(const seflex::fem::Model& m) {
                                                        {"RBE3", m.rbe3.size()}};
   for (const auto& [name, n] : kinds)
     if (n) row(name, n, 4);
-  row("properties", m.bar_props.size() + m.rod_props.size() + m.shell_props.size() + m.spring_props.size());
-  row("materials", m.mat1.size());
+  row("properties", m.bar_props.size() + m.rod_props.size() + m.shell_props.size() + m.composite_props.size() +
+                         m.spring_props.size());
+  row("materials", m.mat1.size() + m.mat2.size() + m.mat8.size());
   row("SPC entries", m.spcs.size());
   row("MPC equations", m.mpcs.size());
   row("loads (FORCE, MOMENT)", m.point_loads.size());

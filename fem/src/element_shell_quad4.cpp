@@ -72,8 +72,9 @@ Eigen::Matrix2d jacobian(const Geometry& g, const Shape& s) {
   return J;
 }
 
-// The flat element's stiffness splits into two uncoupled 12 x 12 parts: membrane + drilling on
-// (u, v, theta_z) and plate on (w, theta_x, theta_y) of each corner (index 3 i + k below).
+// The flat element's stiffness splits into two 12 x 12 parts, coupled only by the section's B:
+// membrane + drilling on (u, v, theta_z) and plate on (w, theta_x, theta_y) of each corner (index
+// 3 i + k below).
 using Row12 = Eigen::Matrix<double, 1, 12>;
 using Matrix12 = Eigen::Matrix<double, 12, 12>;
 constexpr int kMembraneDof[3] = {kU, kV, kRz};
@@ -116,13 +117,15 @@ const double kGauss = 1.0 / std::sqrt(3.0);
 NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot) {
   const Geometry g = geometry(e);
   const ShellSection& sec = e.section;
-  const Eigen::Matrix3d Am = sec.membrane_matrix();
-  const Eigen::Matrix3d Db = sec.bending_matrix();
+  const Eigen::Matrix3d& Am = sec.A;
+  const Eigen::Matrix3d& Db = sec.D;
+  const Eigen::Matrix3d& Bc = sec.B;  // membrane-bending coupling
+  const bool coupled = !Bc.isZero(0.0);
   // Shear stabilisation (Lyly, Stenberg & Vihinen 1993), h the longest edge (ShellSection).
   double h2 = 0.0;
   for (int k = 0; k < 4; ++k) h2 = std::max(h2, (g.p[(k + 1) % 4] - g.p[k]).squaredNorm());
-  const double ks = sec.stabilised_shear_stiffness(h2);
-  const double kd = sec.has_membrane ? k6rot * 1e-6 * sec.membrane.G * sec.t : 0.0;
+  const Eigen::Matrix2d Ss = sec.stabilised_shear(h2);
+  const double kd = sec.has_membrane ? k6rot * 1e-6 * sec.drill_Gt : 0.0;
 
   // MITC4 tying points: gamma_xi at A (0,-1), C (0,1); gamma_eta at D (-1,0), B (1,0).
   const Row12 gA = covariant_shear(g, 0, -1, 0), gC = covariant_shear(g, 0, 1, 0);
@@ -133,8 +136,8 @@ NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot) {
   const Eigen::Matrix2d J0inv = J0.inverse();
   const double det0 = J0.determinant();
 
-  Matrix12 Km = Matrix12::Zero(), Kp = Matrix12::Zero();
-  Eigen::Matrix<double, 12, 4> Kua = Eigen::Matrix<double, 12, 4>::Zero();
+  Matrix12 Km = Matrix12::Zero(), Kp = Matrix12::Zero(), Kmp = Matrix12::Zero();
+  Eigen::Matrix<double, 12, 4> Kua = Eigen::Matrix<double, 12, 4>::Zero(), Kpa = Eigen::Matrix<double, 12, 4>::Zero();
   Eigen::Matrix4d Kaa = Eigen::Matrix4d::Zero();
   for (double xi : {-kGauss, kGauss})
     for (double eta : {-kGauss, kGauss}) {
@@ -176,13 +179,18 @@ NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot) {
       }
       const Eigen::Matrix<double, 12, 3> BtD = w * Bb.transpose() * Db;
       Kp.noalias() += BtD.lazyProduct(Bb);
+      if (coupled) {  // N = B kappa, M = B^T-side: membrane (incl. incompatible modes) x bending
+        const Eigen::Matrix<double, 3, 12> BcBb = w * Bc * Bb;
+        Kmp.noalias() += Bm.transpose().lazyProduct(BcBb);
+        Kpa.noalias() += BcBb.transpose().lazyProduct(Gm);
+      }
 
       // MITC4 transverse shear: assumed covariant strains, then Cartesian (gxz, gyz) = J^-1 (g_xi, g_eta).
       Eigen::Matrix<double, 2, 12> Gcov;
       Gcov.row(0) = 0.5 * (1 - eta) * gA + 0.5 * (1 + eta) * gC;
       Gcov.row(1) = 0.5 * (1 - xi) * gD + 0.5 * (1 + xi) * gB;
       const Eigen::Matrix<double, 2, 12> Bs = Jinv * Gcov;
-      Kp.noalias() += ((w * ks) * Bs.transpose()).lazyProduct(Bs);
+      Kp.noalias() += (w * Bs.transpose() * Ss).lazyProduct(Bs);
 
       // Drilling penalty on theta_z - omega, omega = (v,x - u,y)/2 of the membrane field including
       // its incompatible modes (so that the exact in-plane bending of QM6 is not penalised).
@@ -201,9 +209,17 @@ NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot) {
     dN.row(0) = s0.dxi.transpose();
     dN.row(1) = s0.deta.transpose();
     const Row12 d = drilling_row(s0.N, J0inv * dN);
-    Km.noalias() += ((4.0 * det0 * sec.membrane.G * sec.t) * d.transpose()).lazyProduct(d);
+    Km.noalias() += ((4.0 * det0 * sec.drill_Gt) * d.transpose()).lazyProduct(d);
   }
-  if (Kaa.trace() > 0.0) Km.noalias() -= (Kua * Kaa.inverse()).lazyProduct(Kua.transpose());
+  // Static condensation of the incompatible modes (coupled to the plate dofs through B).
+  if (Kaa.trace() > 0.0) {
+    const Eigen::Matrix4d Kaa_inv = Kaa.inverse();
+    Km.noalias() -= (Kua * Kaa_inv).lazyProduct(Kua.transpose());
+    if (coupled) {
+      Kmp.noalias() -= (Kua * Kaa_inv).lazyProduct(Kpa.transpose());
+      Kp.noalias() -= (Kpa * Kaa_inv).lazyProduct(Kpa.transpose());
+    }
+  }
 
   Matrix24 K = Matrix24::Zero();
   for (int i = 0; i < 4; ++i)
@@ -212,6 +228,8 @@ NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot) {
         for (int b = 0; b < 3; ++b) {
           K(6 * i + kMembraneDof[a], 6 * j + kMembraneDof[b]) = 0.5 * (Km(3 * i + a, 3 * j + b) + Km(3 * j + b, 3 * i + a));
           K(6 * i + kPlateDof[a], 6 * j + kPlateDof[b]) = 0.5 * (Kp(3 * i + a, 3 * j + b) + Kp(3 * j + b, 3 * i + a));
+          K(6 * i + kMembraneDof[a], 6 * j + kPlateDof[b]) = Kmp(3 * i + a, 3 * j + b);
+          K(6 * j + kPlateDof[b], 6 * i + kMembraneDof[a]) = Kmp(3 * i + a, 3 * j + b);
         }
 
   // Warping: the flat element sits on the projections p_i = x_i - h_i e3 (local offset (0, 0, -h_i)).
@@ -275,7 +293,11 @@ Quad4Element make_quad4_element(const Model& model, const Shell& shell, const Sh
   if (!convex)
     detail::fail(model, shell.ref, "CQUAD4", shell.id, "4-7 (G1-G4)",
                  "corners must form a convex quadrilateral, ordered around its edge (interior angles < 180 deg)");
-  e.section = section ? *section : make_shell_section(model, shell);
+  const Eigen::Vector3d e3 = n.normalized();
+  const Eigen::Vector3d a = (e.x[1] - e.x[0]) - (e.x[1] - e.x[0]).dot(e3) * e3;
+  const Eigen::Vector3d e1 = a.normalized();
+  const double theta = detail::material_angle(model, shell, e1, e3.cross(e1), 0.25 * (e.x[0] + e.x[1] + e.x[2] + e.x[3]));
+  e.section = (section ? *section : make_shell_section(model, shell)).in_element_axes(theta).offset(shell.zoffs);
   return e;
 }
 

@@ -60,8 +60,12 @@ NodeMatrix<3> tria3_stiffness(const Tria3Element& e, double k6rot) {
     Bb(2, 6 * i + kRy) = g.c[i];
     Bb(2, 6 * i + kRx) = -g.b[i];
   }
-  K.noalias() += A * Bm.transpose() * sec.membrane_matrix() * Bm;
-  K.noalias() += A * Bb.transpose() * sec.bending_matrix() * Bb;
+  K.noalias() += A * Bm.transpose() * sec.A * Bm;
+  K.noalias() += A * Bb.transpose() * sec.D * Bb;
+  if (!sec.B.isZero(0.0)) {  // membrane-bending coupling
+    const Eigen::Matrix<double, 18, 18> Kmb = A * Bm.transpose() * sec.B * Bb;
+    K.noalias() += Kmb + Kmb.transpose();
+  }
 
   // MITC3 shear: gamma(x, y) = (a_x - b y, a_y + b x), tangential component at each edge midpoint
   // tied to the edge's (w_j - w_i)/L + (beta_i + beta_j)/2 . t, beta = (theta_y, -theta_x).
@@ -87,15 +91,15 @@ NodeMatrix<3> tria3_stiffness(const Tria3Element& e, double k6rot) {
   // h the longest edge; it removes the residual shear locking of the linear triangle in thin plates.
   double h2 = 0.0;
   for (int k = 0; k < 3; ++k) h2 = std::max(h2, (g.p[(k + 1) % 3] - g.p[k]).squaredNorm());
-  const double ks = sec.stabilised_shear_stiffness(h2);
-  const double kd = sec.has_membrane ? k6rot * 1e-6 * sec.membrane.G * sec.t : 0.0;
+  const Eigen::Matrix2d Ss = sec.stabilised_shear(h2);
+  const double kd = sec.has_membrane ? k6rot * 1e-6 * sec.drill_Gt : 0.0;
   const double omega_row_scale = 0.5;
   for (int q = 0; q < 3; ++q) {  // edge-midpoint rule, exact for quadratics
     const Eigen::Vector2d& x = mid[q];
     Eigen::Matrix<double, 2, 3> P;
     P << 1, 0, -x.y(), 0, 1, x.x();
     const Eigen::Matrix<double, 2, 18> Bs = P * C;
-    K.noalias() += (ks * A / 3.0) * Bs.transpose() * Bs;
+    K.noalias() += (A / 3.0) * Bs.transpose() * Ss * Bs;
     if (kd > 0.0) {
       // Linear shape functions at the midpoint of edge (q, q+1): 1/2, 1/2, 0.
       Row18 d = Row18::Zero();
@@ -116,7 +120,7 @@ NodeMatrix<3> tria3_stiffness(const Tria3Element& e, double k6rot) {
       d(6 * i + kV) = -omega_row_scale * g.b[i];
       d(6 * i + kU) = omega_row_scale * g.c[i];
     }
-    K.noalias() += (A * sec.membrane.G * sec.t) * d.transpose() * d;
+    K.noalias() += (A * sec.drill_Gt) * d.transpose() * d;
   }
   K = 0.5 * (K + K.transpose()).eval();
   rotate_local_to_basic<3>(g.R_BL, K);
@@ -146,7 +150,9 @@ Tria3Element make_tria3_element(const Model& model, const Shell& shell, const Sh
   const Eigen::Vector3d a = e.x[1] - e.x[0], b = e.x[2] - e.x[0];
   if (!(a.cross(b).norm() > 1e-12 * a.norm() * b.norm()))
     detail::fail(model, shell.ref, "CTRIA3", shell.id, "4-6 (G1-G3)", "corners are collinear (zero area)");
-  e.section = section ? *section : make_shell_section(model, shell);
+  const Eigen::Vector3d e1 = a.normalized(), e3 = a.cross(b).normalized();
+  const double theta = detail::material_angle(model, shell, e1, e3.cross(e1), (e.x[0] + e.x[1] + e.x[2]) / 3.0);
+  e.section = (section ? *section : make_shell_section(model, shell)).in_element_axes(theta).offset(shell.zoffs);
   return e;
 }
 

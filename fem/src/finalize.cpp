@@ -102,8 +102,28 @@ class Finalizer {
     index(m_.coords, m_.coord_index, "CORD", "coordinate system");
   }
 
+  /// Map id -> position without a duplicate check (the shared IdSpace reports duplicates, naming
+  /// the card types).
+  template <class Vec>
+  static void index_unchecked(const Vec& items, std::unordered_map<int, std::uint32_t>& map) {
+    map.clear();
+    map.reserve(items.size());
+    for (std::size_t i = 0; i < items.size(); ++i) map.emplace(items[i].id, static_cast<std::uint32_t>(i));
+  }
+
   void index_materials_and_properties() {
+    // one id space for the structural materials
+    IdSpace mats;
+    mats.model = &m_;
+    auto add_mat = [&](int id, const CardRef& ref, const char* card) {
+      mats.add(id, ref, card, "field 2 (MID)", "material", "expected unique material ids across MAT1, MAT2, MAT8");
+    };
     index(m_.mat1, m_.mat1_index, "MAT1", "material");
+    for (const auto& m : m_.mat1) add_mat(m.id, m.ref, "MAT1");
+    for (const auto& m : m_.mat2) add_mat(m.id, m.ref, "MAT2");
+    for (const auto& m : m_.mat8) add_mat(m.id, m.ref, "MAT8");
+    index_unchecked(m_.mat2, m_.mat2_index);
+    index_unchecked(m_.mat8, m_.mat8_index);
     index(m_.bar_props, m_.bar_prop_index, "PBAR", "property");
     index(m_.rod_props, m_.rod_prop_index, "PROD", "property");
     index(m_.shell_props, m_.shell_prop_index, "PSHELL", "property");
@@ -113,20 +133,42 @@ class Finalizer {
     seen.model = &m_;
     auto add = [&](int id, const CardRef& ref, const char* card) {
       seen.add(id, ref, card, "field 2 (PID)", "property",
-               "expected unique property ids across PBAR, PBARL, PBEAM, PBEAML, PROD, PSHELL, PELAS");
+               "expected unique property ids across PBAR, PBARL, PBEAM, PBEAML, PROD, PSHELL, PCOMP, PCOMPG, PELAS");
     };
     for (const auto& p : m_.bar_props) add(p.id, p.ref, bar_prop_name(p));
     for (const auto& p : m_.rod_props) add(p.id, p.ref, "PROD");
     for (const auto& p : m_.shell_props) add(p.id, p.ref, "PSHELL");
+    for (const auto& p : m_.composite_props) add(p.id, p.ref, p.global ? "PCOMPG" : "PCOMP");
     for (const auto& p : m_.spring_props) add(p.id, p.ref, "PELAS");
+    index_unchecked(m_.composite_props, m_.composite_prop_index);
     for (const auto& p : m_.bar_props) need_material(p.mid, p.ref, bar_prop_name(p), p.id, "field 3 (MID)");
     for (const auto& p : m_.rod_props) need_material(p.mid, p.ref, "PROD", p.id, "field 3 (MID)");
     for (const auto& p : m_.shell_props) {
-      if (p.mid1) need_material(p.mid1, p.ref, "PSHELL", p.id, "field 3 (MID1)");
-      if (p.mid2) need_material(p.mid2, p.ref, "PSHELL", p.id, "field 5 (MID2)");
-      if (p.mid3) need_material(p.mid3, p.ref, "PSHELL", p.id, "field 7 (MID3)");
-      if (p.mid4) need_material(p.mid4, p.ref, "PSHELL", p.id, "field 4 of continuation 1 (MID4)");
+      if (p.mid1) need_shell_material(p.mid1, p.ref, "PSHELL", p.id, "field 3 (MID1)");
+      if (p.mid2) need_shell_material(p.mid2, p.ref, "PSHELL", p.id, "field 5 (MID2)");
+      if (p.mid3) need_shell_material(p.mid3, p.ref, "PSHELL", p.id, "field 7 (MID3)");
+      if (p.mid4) need_shell_material(p.mid4, p.ref, "PSHELL", p.id, "field 4 of continuation 1 (MID4)");
     }
+    std::size_t mat2_plies = 0;
+    CardRef first_mat2_ply;
+    for (const auto& p : m_.composite_props)
+      for (std::size_t k = 0; k < p.plies.size(); ++k) {
+        const std::string field = "MID" + std::to_string(k + 1) +
+                                  (p.global ? " (GPLYID " + std::to_string(p.plies[k].gplyid) + ")" : std::string());
+        need_shell_material(p.plies[k].mid, p.ref, p.global ? "PCOMPG" : "PCOMP", p.id, field);
+        if (m_.mat2_index.count(p.plies[k].mid) && mat2_plies++ == 0) first_mat2_ply = p.ref;
+      }
+    if (mat2_plies > 0) note("PCOMP ply of MAT2 (rigid in transverse shear: a MAT2 gives no transverse shear moduli)",
+                             first_mat2_ply, mat2_plies);
+  }
+
+  /// A note of a feature read with an approximation (listed with the unsupported cards, as the
+  /// reader's notes; card usage reports it as approximated). Replaces an earlier note of this name.
+  void note(const std::string& name, const CardRef& first, std::size_t count) {
+    auto it = std::find_if(m_.unsupported.begin(), m_.unsupported.end(), [&](const UnsupportedCard& u) { return u.name == name; });
+    if (it == m_.unsupported.end()) it = m_.unsupported.insert(m_.unsupported.end(), UnsupportedCard{name, 0, first, {}});
+    it->count = count;
+    it->first = first;
   }
 
   /// All elements share one id space: CBAR, CBEAM, CROD, CONROD, CQUAD4, CTRIA3, CONM2, CELAS1/2,
@@ -151,8 +193,18 @@ class Finalizer {
   }
 
   void need_material(int mid, const CardRef& ref, const char* card, int id, const char* field) {
-    if (!m_.mat1_index.count(mid))
-      fail(ref, card, id, field, "references MAT1 " + std::to_string(mid) + undefined(mid) + "; expected the id of a MAT1 card");
+    if (m_.mat1_index.count(mid)) return;
+    const char* other = m_.mat2_index.count(mid) ? "MAT2" : m_.mat8_index.count(mid) ? "MAT8" : nullptr;
+    if (other)
+      fail(ref, card, id, field, "references material " + std::to_string(mid) + ", a " + other +
+                                     " (a shell material); expected the id of a MAT1 card");
+    fail(ref, card, id, field, "references MAT1 " + std::to_string(mid) + undefined(mid) + "; expected the id of a MAT1 card");
+  }
+
+  void need_shell_material(int mid, const CardRef& ref, const char* card, int id, const std::string& field) {
+    if (!m_.mat1_index.count(mid) && !m_.mat2_index.count(mid) && !m_.mat8_index.count(mid))
+      fail(ref, card, id, field, "references material " + std::to_string(mid) + undefined(mid) +
+                                     "; expected the id of a MAT1, MAT2 or MAT8 card");
   }
 
   /// ", which is not defined", or ", a PCOMP card, which seflex does not support" when a card seflex
@@ -236,8 +288,9 @@ class Finalizer {
       const char* card = s.nnode == 4 ? "CQUAD4" : "CTRIA3";
       static const char* gfields[4] = {"field 4 (G1)", "field 5 (G2)", "field 6 (G3)", "field 7 (G4)"};
       for (int k = 0; k < s.nnode; ++k) need_grid(s.g[k], s.ref, card, s.id, gfields[k]);
-      if (!m_.shell_prop_index.count(s.pid))
-        fail(s.ref, card, s.id, "field 3 (PID)", "references property " + std::to_string(s.pid) + undefined(s.pid) + "; expected the id of a PSHELL card");
+      if (!m_.shell_prop_index.count(s.pid) && !m_.composite_prop_index.count(s.pid))
+        fail(s.ref, card, s.id, "field 3 (PID)", "references property " + std::to_string(s.pid) + undefined(s.pid) +
+                                                   "; expected the id of a PSHELL, PCOMP or PCOMPG card");
       if (s.theta_is_mcid) need_coord(s.mcid, s.ref, card, s.id, s.nnode == 4 ? "field 8 (MCID)" : "field 7 (MCID)");
     }
     for (const auto& c : m_.conm2) {

@@ -55,3 +55,23 @@ class ShellSectionCache {
 };
 
 }  // namespace seflex::fem::detail
+
+namespace seflex::fem::detail {
+
+/// MAT1, MAT2 or MAT8 `mid` as a shell layer; throws InputError naming the referring card if it is
+/// none of them.
+ShellMaterial shell_material(const Model& model, int mid, const CardRef& ref, const std::string& card, int id,
+                             const std::string& field);
+
+}  // namespace seflex::fem::detail
+
+namespace seflex::fem::detail {
+
+/// Material angle of a CQUAD4/CTRIA3 (radians, about the element normal, from the element x axis
+/// e1 toward e2; e1 along the projected G1-G2 edge): THETA, or with MCID the angle of the projection
+/// of the x axis of rectangular system MCID (0 = basic) on the element plane (QRG CQUAD4, THETA/MCID).
+/// Throws InputError for an undefined, cylindrical or spherical MCID, or an x axis normal to the element.
+double material_angle(const Model& model, const Shell& shell, const Eigen::Vector3d& e1, const Eigen::Vector3d& e2,
+                      const Eigen::Vector3d& centroid);
+
+}  // namespace seflex::fem::detail

@@ -1,4 +1,4 @@
-// MAT1, PBAR, PBARL, PBEAM, PBEAML, PROD, PSHELL, PELAS.
+// MAT1, MAT2, MAT8, PBAR, PBARL, PBEAM, PBEAML, PROD, PSHELL, PCOMP, PCOMPG, PELAS.
 #include <cmath>
 #include <string>
 
@@ -262,11 +262,152 @@ void parse_pshell(const Card& card, ReaderState& st) {
   p.z1 = card.real_or(8, "Z1", -0.5 * p.t);
   p.z2 = card.real_or(9, "Z2", 0.5 * p.t);
   p.mid4 = card.id_or(10, "MID4", 0);
-  if (p.mid4 != 0) st.note_unsupported("PSHELL MID4 (membrane-bending coupling ignored)", card.ref());
+  // Z1/Z2 only place the fibres of stress recovery, which seflex does not do: said when they differ
+  // from the defaults.
+  if ((!card.blank(8) && p.z1 != -0.5 * p.t) || (!card.blank(9) && p.z2 != 0.5 * p.t))
+    st.note_unsupported("PSHELL Z1/Z2 (fibre distances for stresses, which seflex does not compute: not used)", card.ref());
   if (p.mid1 == 0 && p.mid2 == 0 && p.mid3 == 0)
     card.fail(1, "MID1", "MID1, MID2 and MID3 are all blank; expected at least one material");
   p.ref = card.ref();
   st.model.shell_props.push_back(p);
+}
+
+// MAT2 MID G11 G12 G13 G22 G23 G33 RHO / A1 A2 A3 TREF GE ST SC SS / MCSID
+void parse_mat2(const Card& card, ReaderState& st) {
+  fem::Mat2 m;
+  m.id = card.id(0, "MID");
+  m.G11 = card.real_or(1, "G11", 0.0);
+  m.G12 = card.real_or(2, "G12", 0.0);
+  m.G13 = card.real_or(3, "G13", 0.0);
+  m.G22 = card.real_or(4, "G22", 0.0);
+  m.G23 = card.real_or(5, "G23", 0.0);
+  m.G33 = card.real_or(6, "G33", 0.0);
+  m.rho = card.real_or(7, "RHO", 0.0);
+  static const char* rest[8] = {"A1", "A2", "A3", "TREF", "GE", "ST", "SC", "SS"};
+  for (std::size_t k = 0; k < 8; ++k) card.real_or(8 + k, rest[k], 0.0);  // read for their types
+  m.ge = card.real_or(12, "GE", 0.0);
+  card.integer_or(16, "MCSID", 0);
+  m.ref = card.ref();
+  st.model.mat2.push_back(m);
+}
+
+// MAT8 MID E1 E2 NU12 G12 G1Z G2Z RHO / A1 A2 TREF Xt Xc Yt Yc S / GE F12 STRN
+void parse_mat8(const Card& card, ReaderState& st) {
+  fem::Mat8 m;
+  m.id = card.id(0, "MID");
+  m.E1 = card.real(1, "E1");
+  m.E2 = card.real(2, "E2");
+  m.nu12 = card.real(3, "NU12");
+  if (!(m.E1 > 0.0)) card.fail(1, "E1", card.got(1) + "; expected a modulus > 0");
+  if (!(m.E2 > 0.0)) card.fail(2, "E2", card.got(2) + "; expected a modulus > 0");
+  if (!(m.nu12 * m.nu12 < m.E1 / m.E2))
+    card.fail(3, "NU12", card.got(3) + "; expected NU12^2 < E1/E2 (1 - NU12 NU21 > 0, a positive definite material)");
+  m.G12 = card.real_or(4, "G12", 0.0);
+  m.G1z = card.real_or(5, "G1Z", 0.0);
+  m.G2z = card.real_or(6, "G2Z", 0.0);
+  if (m.G12 < 0.0) card.fail(4, "G12", card.got(4) + "; expected a modulus >= 0 or blank");
+  if (m.G1z < 0.0) card.fail(5, "G1Z", card.got(5) + "; expected a modulus > 0, or blank (rigid in transverse shear)");
+  if (m.G2z < 0.0) card.fail(6, "G2Z", card.got(6) + "; expected a modulus > 0, or blank (rigid in transverse shear)");
+  m.rho = card.real_or(7, "RHO", 0.0);
+  static const char* rest[8] = {"A1", "A2", "TREF", "Xt", "Xc", "Yt", "Yc", "S"};
+  for (std::size_t k = 0; k < 8; ++k) card.real_or(8 + k, rest[k], 0.0);  // read for their types
+  m.ge = card.real_or(16, "GE", 0.0);
+  card.real_or(17, "F12", 0.0);
+  card.real_or(18, "STRN", 0.0);
+  m.ref = card.ref();
+  st.model.mat8.push_back(m);
+}
+
+namespace {
+
+using Lam = fem::CompositeProperty::Lam;
+
+/// PID Z0 NSM SB FT TREF GE LAM: the fields PCOMP and PCOMPG share.
+fem::CompositeProperty composite_header(const Card& card, bool global) {
+  fem::CompositeProperty p;
+  p.global = global;
+  p.id = card.id(0, "PID");
+  p.has_z0 = !card.blank(1);
+  p.z0 = card.real_or(1, "Z0", 0.0);
+  p.nsm = card.real_or(2, "NSM", 0.0);
+  p.sb = card.real_or(3, "SB", 0.0);
+  p.ft = card.text_or(4, "FT", "");
+  p.tref = card.real_or(5, "TREF", 0.0);
+  p.ge = card.real_or(6, "GE", 0.0);
+  const std::string lam = card.text_or(7, "LAM", "");
+  if (lam.empty()) p.lam = Lam::Blank;
+  else if (lam == "SYM" && !global) p.lam = Lam::Sym;
+  else if (lam == "MEM") p.lam = Lam::Mem;
+  else if (lam == "BEND") p.lam = Lam::Bend;
+  else if (lam == "SMEAR") p.lam = Lam::Smear;
+  else if (lam == "SMCORE") p.lam = Lam::SmCore;
+  else
+    card.fail(7, "LAM", card.got(7) + (global ? "; expected blank, MEM, BEND, SMEAR or SMCORE (PCOMPG lists every ply)"
+                                              : "; expected blank, SYM, MEM, BEND, SMEAR or SMCORE"));
+  return p;
+}
+
+/// MIDi Ti THETAi SOUTi of ply k (1-based) at data fields b..b+3; a blank MID or T is the previous
+/// ply's (QRG PCOMP remark 1).
+fem::CompositeProperty::Ply composite_ply(const Card& card, std::size_t b, std::size_t k,
+                                          const fem::CompositeProperty& p) {
+  const std::string n = std::to_string(k);
+  const std::string mid = "MID" + n, t = "T" + n, theta = "THETA" + n, sout = "SOUT" + n;
+  fem::CompositeProperty::Ply ply;
+  const bool first = p.plies.empty();
+  if (first && card.blank(b)) card.fail(b, mid.c_str(), "blank; expected the material of the first ply");
+  if (first && card.blank(b + 1)) card.fail(b + 1, t.c_str(), "blank; expected the thickness of the first ply");
+  ply.mid = card.id_or(b, mid.c_str(), first ? 0 : p.plies.back().mid);
+  ply.t = card.real_or(b + 1, t.c_str(), first ? 0.0 : p.plies.back().t);
+  if (!(ply.t > 0.0)) card.fail(b + 1, t.c_str(), card.got(b + 1) + "; expected a ply thickness > 0");
+  ply.theta_deg = card.real_or(b + 2, theta.c_str(), 0.0);
+  const std::string so = card.text_or(b + 3, sout.c_str(), "NO");
+  if (so != "YES" && so != "NO") card.fail(b + 3, sout.c_str(), card.got(b + 3) + "; expected YES, NO or blank");
+  ply.sout = so == "YES";
+  return ply;
+}
+
+void check_composite(const Card& card, const fem::CompositeProperty& p) {
+  if (p.plies.empty())
+    card.fail_card(std::string("no plies; expected at least one ply (") + (p.global ? "GPLYID1 MID1 T1" : "MID1 T1") +
+                   " ... on a continuation line)");
+  if (p.lam == Lam::SmCore && p.plies.size() < 2)
+    card.fail(7, "LAM", "SMCORE with one ply; expected the face-sheet plies, then the core ply last");
+}
+
+}  // namespace
+
+// PCOMP PID Z0 NSM SB FT TREF GE LAM / MID1 T1 THETA1 SOUT1 MID2 T2 THETA2 SOUT2 / ...
+void parse_pcomp(const Card& card, ReaderState& st) {
+  fem::CompositeProperty p = composite_header(card, false);
+  const std::size_t used = card.used();
+  for (std::size_t b = 8, k = 1; b < used; b += 4) {
+    if (card.blank(b) && card.blank(b + 1) && card.blank(b + 2) && card.blank(b + 3)) continue;  // an empty slot
+    p.plies.push_back(composite_ply(card, b, k++, p));
+  }
+  check_composite(card, p);
+  p.ref = card.ref();
+  st.model.composite_props.push_back(std::move(p));
+}
+
+// PCOMPG PID Z0 NSM SB FT TREF GE LAM / GPLYID1 MID1 T1 THETA1 SOUT1 / GPLYID2 ... (one ply per line)
+void parse_pcompg(const Card& card, ReaderState& st) {
+  fem::CompositeProperty p = composite_header(card, true);
+  const std::size_t used = card.used();
+  for (std::size_t b = 8, k = 1; b < used; b += 8, ++k) {
+    const std::string g = "GPLYID" + std::to_string(k);
+    const int gplyid = card.id(b, g.c_str());
+    for (const auto& q : p.plies)
+      if (q.gplyid == gplyid) card.fail(b, g.c_str(), card.got(b) + ", a repeated global ply id; expected unique GPLYIDs");
+    fem::CompositeProperty::Ply ply = composite_ply(card, b + 1, k, p);
+    ply.gplyid = gplyid;
+    for (std::size_t i = b + 5; i < b + 8; ++i)
+      if (!card.blank(i)) card.fail(i, "(blank)", card.got(i) + "; expected blank (PCOMPG takes one ply per line: GPLYID MID T THETA SOUT)");
+    p.plies.push_back(ply);
+  }
+  check_composite(card, p);
+  p.ref = card.ref();
+  st.model.composite_props.push_back(std::move(p));
 }
 
 // PELAS PID1 K1 GE1 S1 PID2 K2 GE2 S2

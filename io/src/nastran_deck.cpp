@@ -50,7 +50,8 @@ constexpr CardType kCardTypes[] = {
     {"SUPORT", parse_suport},   {"FORCE", parse_force},     {"MOMENT", parse_moment},  {"LOAD", parse_load},
     {"EIGRL", parse_eigrl},     {"EIGR", parse_eigr},       {"PARAM", parse_param},    {"DMIG", parse_dmig},
     {"MPC", parse_mpc},         {"MPCADD", parse_mpcadd},   {"OMIT", parse_omit},      {"OMIT1", parse_omit1},
-    {"RBAR", parse_rbar},       {"RBE3", parse_rbe3},
+    {"RBAR", parse_rbar},       {"RBE3", parse_rbe3},       {"MAT2", parse_mat2},      {"MAT8", parse_mat8},
+    {"PCOMP", parse_pcomp},     {"PCOMPG", parse_pcompg},
 };
 constexpr std::size_t kNumCardTypes = sizeof(kCardTypes) / sizeof(kCardTypes[0]);
 

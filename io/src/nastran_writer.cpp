@@ -142,6 +142,22 @@ void write_mat1(CardWriter& w, const fem::Mat1& m) {
   w.r(m.rho).r(m.alpha).r(m.tref).r(m.ge).end();
 }
 
+void write_composite(CardWriter& w, const fem::CompositeProperty& p) {
+  using Lam = fem::CompositeProperty::Lam;
+  static const char* lam[] = {"", "SYM", "MEM", "BEND", "SMEAR", "SMCORE"};
+  w.start(p.global ? "PCOMPG" : "PCOMP").i(p.id);
+  p.has_z0 ? w.r(p.z0) : w.blank();
+  w.r(p.nsm).r(p.sb);
+  p.ft.empty() ? w.blank() : w.t(p.ft);
+  w.r(p.tref).r(p.ge);
+  p.lam == Lam::Blank ? w.blank() : w.t(lam[static_cast<int>(p.lam)]);
+  for (const auto& ply : p.plies) {
+    if (p.global) w.next_line().i(ply.gplyid);
+    w.i(ply.mid).r(ply.t).r(ply.theta_deg).t(ply.sout ? "YES" : "NO");
+  }
+  w.end();
+}
+
 void write_bar_property(CardWriter& w, const fem::BarProperty& p) {
   using Source = fem::BarProperty::Source;
   w.start(bar_prop_card(p.source)).i(p.id).i(p.mid);
@@ -358,11 +374,21 @@ void write_nastran(const fem::Model& m, std::ostream& stream, const NastranWrite
     w.end();
   }
   for (const auto& mat : m.mat1) write_mat1(w, mat);
+  for (const auto& mat : m.mat2)
+    w.start("MAT2").i(mat.id).r(mat.G11).r(mat.G12).r(mat.G13).r(mat.G22).r(mat.G23).r(mat.G33).r(mat.rho)
+        .next_line().blank(4).r(mat.ge).end();
+  for (const auto& mat : m.mat8) {
+    w.start("MAT8").i(mat.id).r(mat.E1).r(mat.E2).r(mat.nu12).r(mat.G12);
+    mat.G1z > 0.0 ? w.r(mat.G1z) : w.blank();  // blank = rigid in transverse shear
+    mat.G2z > 0.0 ? w.r(mat.G2z) : w.blank();
+    w.r(mat.rho).next_line().blank(8).r(mat.ge).end();
+  }
   for (const auto& p : m.bar_props) write_bar_property(w, p);
   for (const auto& p : m.rod_props) w.start("PROD").i(p.id).i(p.mid).r(p.A).r(p.J).r(p.C).r(p.nsm).end();
   for (const auto& p : m.shell_props)
     w.start("PSHELL").i(p.id).id0(p.mid1).r(p.t).id0(p.mid2).r(p.bend_ratio).id0(p.mid3).r(p.ts_t).r(p.nsm)
         .r(p.z1).r(p.z2).id0(p.mid4).end();
+  for (const auto& p : m.composite_props) write_composite(w, p);
   for (const auto& p : m.spring_props) w.start("PELAS").i(p.id).r(p.k).r(p.ge).r(p.s).end();
   stream << out;
   out.clear();

@@ -57,7 +57,7 @@ const CardRole kRows[] = {
     // properties
     {"PBAR", R::Structure, Y, nullptr}, {"PBARL", R::Structure, Y, nullptr}, {"PBEAM", R::Structure, Y, nullptr},
     {"PBEAML", R::Structure, Y, nullptr}, {"PROD", R::Structure, Y, nullptr}, {"PSHELL", R::Structure, Y, nullptr},
-    {"PELAS", R::Structure, Y, nullptr}, {"PCOMP", R::Structure, N, nullptr}, {"PCOMPG", R::Structure, N, nullptr},
+    {"PELAS", R::Structure, Y, nullptr}, {"PCOMP", R::Structure, Y, nullptr}, {"PCOMPG", R::Structure, Y, nullptr},
     {"PSOLID", R::Structure, N, nullptr}, {"PLSOLID", R::Structure, N, nullptr}, {"PBUSH", R::Structure, N, nullptr},
     {"PBUSH1D", R::Structure, N, nullptr}, {"PBUSH2D", R::Structure, N, nullptr}, {"PBUSHT", R::Nonlinear, N, nullptr},
     {"PMASS", R::Structure, N, nullptr}, {"PSHEAR", R::Structure, N, nullptr}, {"PTUBE", R::Structure, N, nullptr},
@@ -68,8 +68,8 @@ const CardRole kRows[] = {
     {"PDAMP", R::Damping, N, nullptr}, {"PDAMP5", R::Damping, N, nullptr}, {"PVISC", R::Damping, N, nullptr},
     {"PELAST", R::Nonlinear, N, nullptr}, {"PDAMPT", R::Damping, N, nullptr}, {"PSHELL1", R::Structure, N, nullptr},
     // materials
-    {"MAT1", R::Structure, Y, nullptr}, {"MAT2", R::Structure, N, nullptr}, {"MAT3", R::Structure, N, nullptr},
-    {"MAT8", R::Structure, N, nullptr}, {"MAT9", R::Structure, N, nullptr}, {"MAT10", R::Structure, N, nullptr},
+    {"MAT1", R::Structure, Y, nullptr}, {"MAT2", R::Structure, Y, nullptr}, {"MAT3", R::Structure, N, nullptr},
+    {"MAT8", R::Structure, Y, nullptr}, {"MAT9", R::Structure, N, nullptr}, {"MAT10", R::Structure, N, nullptr},
     {"MAT11", R::Structure, N, nullptr}, {"MATS1", R::Nonlinear, N, nullptr}, {"MATS3", R::Nonlinear, N, nullptr},
     {"MATS8", R::Nonlinear, N, nullptr}, {"MATHP", R::Nonlinear, N, nullptr}, {"MATHE", R::Nonlinear, N, nullptr},
     {"CREEP", R::Nonlinear, N, nullptr}, {"MATT1", R::TempMaterial, N, nullptr}, {"MATT2", R::TempMaterial, N, nullptr},

@@ -11,13 +11,18 @@ namespace seflex::fem {
 namespace {
 
 ShellSection steel_section(double t) {
-  ShellSection s;
-  s.t = t;
-  s.has_membrane = s.has_bending = s.has_shear = true;
-  s.membrane = s.bending = s.shear = {1, 2e11, 2e11 / 2.6, 0.3, 7800};
-  s.nsm = 1.5;
-  s.rho = 7800;
-  return s;
+  Mat1 steel;
+  steel.id = 1;
+  steel.E = 2e11;
+  steel.G = 2e11 / 2.6;
+  steel.nu = 0.3;
+  steel.rho = 7800;
+  const ShellMaterial m = shell_material(steel);
+  PshellInput in;
+  in.mid1 = in.mid2 = in.mid3 = &m;
+  in.t = t;
+  in.nsm = 1.5;
+  return pshell_section(in);
 }
 
 // An arbitrary orientation and a distorted (and for the quad, warped) shape.

@@ -157,6 +157,29 @@ TEST(CardUsage, UnsupportedStructureRefusesEverySolution) {
   EXPECT_EQ(find(c, "CHEXA")->reason, "not written: seflex does not model it");
 }
 
+// Composite and anisotropic shell cards are used by every solution (issue 13): no refusal; what they
+// hold that seflex approximates (a MAT2 ply rigid in transverse shear, PSHELL Z1/Z2) is a warning.
+TEST(CardUsage, CompositeShellCardsAreUsed) {
+  const std::string shells =
+      "GRID,11,,0.,1.,0.\nGRID,12,,1.,1.,0.\n"
+      "MAT8,8,1.81+11,1.03+10,.28,7.17+9,5.+9,4.+9,1600.\nMAT2,9,1.+9,2.+8,0.,1.1+9,0.,3.+8,900.\n"
+      "PCOMP,20,,,,,,,\n,8,.001,0.,,9,.001,90.\nPCOMPG,21\n,1,8,.002,45.\n"
+      "PSHELL,22,1,.002,1,,1,,,+S\n+S,-.003,.001,9\n"
+      "CQUAD4,20,20,1,2,12,11\nCQUAD4,21,21,1,2,12,11\nCQUAD4,22,22,1,2,12,11\n";
+  const fem::Model m = test::read_deck(deck("SPC = 1\nLOAD = 7\n", shells));
+  for (const Solution s : {Solution::Statics, Solution::NormalModes, Solution::CraigBampton}) {
+    const auto u = usage(m, s);
+    EXPECT_FALSE(u.refused()) << reduction::solution_name(s);
+    for (const char* card : {"PCOMP", "PCOMPG", "MAT8", "MAT2"})
+      for (const CardUse& e : u.uses) EXPECT_NE(e.card, card) << reduction::describe(m, e);
+  }
+  const auto u = usage(m, Solution::Statics);
+  EXPECT_EQ(find(u, "PCOMP ply of MAT2 (rigid in transverse shear: a MAT2 gives no transverse shear moduli)")->kind,
+            CardUse::Kind::Approximated);
+  EXPECT_EQ(find(u, "PSHELL Z1/Z2 (fibre distances for stresses, which seflex does not compute: not used)")->kind,
+            CardUse::Kind::Approximated);
+}
+
 // Case-control selections seflex does not use: refused where the solution needs them (thermal loads
 // in statics), warnings otherwise.
 TEST(CardUsage, CaseControlSelections) {

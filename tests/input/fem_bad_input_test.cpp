@@ -139,3 +139,27 @@ TEST(FemBadInput, UndefinedSets) {
   }
   EXPECT_EQ(fem::load_vector(m, dofs, 4)[6 + 2], 1.0);
 }
+
+// Shell sections the elements cannot use: the message names the property or element card and field.
+TEST(FemBadInput, ShellSections) {
+  const std::string g = "MAT1,1,2.1+11,,0.3,7800.\nGRID,1,,0.,0.,0.\nGRID,2,,1.,0.,0.\nGRID,3,,1.,1.,0.\nGRID,4,,0.,1.,0.\n";
+  // PSHELL MID4 without MID2, MID4 = MID1, MID3 a MAT8 without G2Z
+  EXPECT_TRUE(mentions(assembly_error(g + "MAT2,5,1.+9\nPSHELL,1,1,.002,,,,,,+S\n+S,,,5\nCQUAD4,1,1,1,2,3,4\n"),
+                       {"deck.bdf:7: PSHELL 1, field 4 of continuation 1 (MID4): membrane-bending coupling without MID1 and MID2"}));
+  EXPECT_TRUE(mentions(assembly_error(g + "PSHELL,1,1,.002,1,,,,,+S\n+S,,,1\nCQUAD4,1,1,1,2,3,4\n"),
+                       {"PSHELL 1, field 4 of continuation 1 (MID4): MID4 = 1 is also MID1 or MID2"}));
+  EXPECT_TRUE(mentions(assembly_error(g + "MAT8,5,1.+10,1.+9,.3,1.+9,1.+8\nPSHELL,1,1,.002,1,,5\nCQUAD4,1,1,1,2,3,4\n"),
+                       {"PSHELL 1, field 7 (MID3): references MAT8 5 whose G1Z or G2Z is blank (infinite)"}));
+  // PCOMP: LAM = BEND, corner thicknesses, a MAT1 ply without G
+  EXPECT_TRUE(mentions(assembly_error(g + "PCOMP,1,,,,,,,BEND\n,1,.001\nCQUAD4,1,1,1,2,3,4\n"),
+                       {"deck.bdf:6: PCOMP 1, field 9 (LAM): BEND is not supported; expected blank, SYM, MEM, SMEAR or SMCORE"}));
+  EXPECT_TRUE(mentions(assembly_error(g + "PCOMP,1,,,,,,,\n,1,.001\nCQUAD4,1,1,1,2,3,4\n,,,,.001,.001,.001,.001\n"),
+                       {"deck.bdf:8: CQUAD4 1, field T1-T4: corner thicknesses with PCOMP 1; expected them blank"}));
+  EXPECT_TRUE(mentions(assembly_error(g + "MAT1,2,2.1+11\nPCOMP,1,,,,,,,\n,2,.001\nCQUAD4,1,1,1,2,3,4\n"),
+                       {"PCOMP 1, field MID1: references MAT1 2 with G = 0; expected a ply material with a shear modulus"}));
+  // MCID: cylindrical, or an x axis normal to the element
+  EXPECT_TRUE(mentions(assembly_error(g + "PSHELL,1,1,.002,1\nCORD2C,5,,0.,0.,0.,0.,0.,1.\n,1.,0.,0.\nCQUAD4,1,1,1,2,3,4,5\n"),
+                       {"deck.bdf:9: CQUAD4 1, field 8 (MCID): coordinate system 5 is cylindrical or spherical; expected a rectangular system"}));
+  EXPECT_TRUE(mentions(assembly_error(g + "PSHELL,1,1,.002,1\nCORD2R,5,,0.,0.,0.,1.,0.,0.\n,0.,0.,1.\nCTRIA3,1,1,1,2,3,5\n"),
+                       {"CTRIA3 1, field 7 (MCID): the x axis of coordinate system 5 is normal to the element"}));
+}

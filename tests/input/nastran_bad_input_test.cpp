@@ -60,7 +60,7 @@ TEST(NastranBadInput, MissingReferences) {
   // the property is there but seflex does not read its card: said so
   EXPECT_TRUE(mentions(read_error(d + "CQUAD4,9,5,1,2,3,4\nPCOMPX,5,,,\n"),
                        {"CQUAD4 9, field 3 (PID): references property 5, a PCOMPX card (deck.bdf:8), which seflex does not support"}));
-  EXPECT_TRUE(mentions(read_error(d + "PSHELL,2,8,.1\n"), {"deck.bdf:7: PSHELL 2, field 3 (MID1): references MAT1 8"}));
+  EXPECT_TRUE(mentions(read_error(d + "PSHELL,2,8,.1\n"), {"deck.bdf:7: PSHELL 2, field 3 (MID1): references material 8, which is not defined"}));
   EXPECT_TRUE(mentions(read_error(d + "GRID,9,3,0.,0.,0.\n"), {"GRID 9, field 3 (CP): references coordinate system 3"}));
   EXPECT_TRUE(mentions(read_error(d + "CONM2,9,1,4,1.\n"), {"CONM2 9, field 4 (CID): references coordinate system 4"}));
   EXPECT_TRUE(mentions(read_error(d + "CBAR,9,1,1,2,0.,0.,1.\n"), {"CBAR 9, field 3 (PID): references property 1", "PBAR or PBARL"}));
@@ -210,4 +210,46 @@ TEST(NastranBadInput, CommandLineExitsThreeForEveryKindOfBadDeck) {
   const auto deck = dir.write("crlf.bdf", crlf);
   const auto r = test::run_seflex("info '" + deck.string() + "'");
   EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
+TEST(NastranBadInput, CompositeCardsAndShellMaterials) {
+  const std::string d = base_deck();  // 6 lines: cards under test start at line 7
+  // MAT8
+  EXPECT_TRUE(mentions(read_error(d + "MAT8,8,,1.+9,.3\n"), {"deck.bdf:7: MAT8 8, field 3 (E1): blank", "expected a real"}));
+  EXPECT_TRUE(mentions(read_error(d + "MAT8,8,1.+10,-1.+9,.3\n"),
+                       {"deck.bdf:7: MAT8 8, field 4 (E2): got real '-1.+9'; expected a modulus > 0"}));
+  EXPECT_TRUE(mentions(read_error(d + "MAT8,8,1.+9,1.+10,.5\n"),
+                       {"MAT8 8, field 5 (NU12): got real '.5'; expected NU12^2 < E1/E2"}));
+  EXPECT_TRUE(mentions(read_error(d + "MAT8,8,1.+10,1.+9,.3,1.+9,-5.\n"),
+                       {"MAT8 8, field 7 (G1Z): got real '-5.'; expected a modulus > 0, or blank (rigid in transverse shear)"}));
+  // PCOMP
+  EXPECT_TRUE(mentions(read_error(d + "PCOMP,10\n"), {"deck.bdf:7: PCOMP 10: no plies; expected at least one ply (MID1 T1 ... on a continuation line)"}));
+  EXPECT_TRUE(mentions(read_error(d + "PCOMP,10,,,,,,,\n,,.001,0.\n"),
+                       {"deck.bdf:8: PCOMP 10, field 2 (MID1): blank; expected the material of the first ply"}));
+  EXPECT_TRUE(mentions(read_error(d + "PCOMP,10,,,,,,,\n,1,.001,0.,,1,-.001\n"),
+                       {"deck.bdf:8: PCOMP 10, field 7 (T2): got real '-.001'; expected a ply thickness > 0"}));
+  EXPECT_TRUE(mentions(read_error(d + "PCOMP,10,,,,,,,FOO\n,1,.001\n"),
+                       {"deck.bdf:7: PCOMP 10, field 9 (LAM): got text 'FOO'; expected blank, SYM, MEM, BEND, SMEAR or SMCORE"}));
+  EXPECT_TRUE(mentions(read_error(d + "PCOMP,10,,,,,,,SMCORE\n,1,.001\n"),
+                       {"PCOMP 10, field 9 (LAM): SMCORE with one ply; expected the face-sheet plies, then the core ply last"}));
+  EXPECT_TRUE(mentions(read_error(d + "PCOMP,10,,,,,,,\n,1,.001,0.,MAYBE\n"),
+                       {"PCOMP 10, field 5 (SOUT1): got text 'MAYBE'; expected YES, NO or blank"}));
+  EXPECT_TRUE(mentions(read_error(d + "PCOMP,10,,,,,,,\n,1,.001,0.,,77\nCQUAD4,9,10,1,2,3,4\n"),
+                       {"deck.bdf:7: PCOMP 10, MID2: references material 77, which is not defined; expected the id of a MAT1, MAT2 or MAT8 card"}));
+  // PCOMPG: one ply per line, unique global ply ids, no SYM
+  EXPECT_TRUE(mentions(read_error(d + "PCOMPG,11,,,,,,,SYM\n,1,1,.001\n"),
+                       {"PCOMPG 11, field 9 (LAM): got text 'SYM'; expected blank, MEM, BEND, SMEAR or SMCORE (PCOMPG lists every ply)"}));
+  EXPECT_TRUE(mentions(read_error(d + "PCOMPG,11\n,5,1,.001\n,5,1,.001\n"),
+                       {"deck.bdf:9: PCOMPG 11, field 2 (GPLYID2): got integer '5', a repeated global ply id; expected unique GPLYIDs"}));
+  EXPECT_TRUE(mentions(read_error(d + "PCOMPG,11\n,5,1,.001,0.,NO,7\n"),
+                       {"deck.bdf:8: PCOMPG 11, field 7", "expected blank (PCOMPG takes one ply per line: GPLYID MID T THETA SOUT)"}));
+  // materials of the right kind
+  EXPECT_TRUE(mentions(read_error(d + "PSHELL,2,8,.1\n"),
+                       {"deck.bdf:7: PSHELL 2, field 3 (MID1): references material 8, which is not defined; expected the id of a MAT1, MAT2 or MAT8 card"}));
+  EXPECT_TRUE(mentions(read_error(d + "MAT8,8,1.+10,1.+9,.3\nPROD,5,8,1.\nCROD,5,5,1,2\n"),
+                       {"PROD 5, field 3 (MID): references material 8, a MAT8 (a shell material); expected the id of a MAT1 card"}));
+  EXPECT_TRUE(mentions(read_error(d + "MAT8,1,1.+10,1.+9,.3\n"),
+                       {"deck.bdf:7: MAT8 1, field 2 (MID): duplicate material id, first defined at deck.bdf:1 (MAT1); expected unique material ids across MAT1, MAT2, MAT8"}));
+  EXPECT_TRUE(mentions(read_error(d + "PCOMP,1,,,,,,,\n,1,.001\n"),
+                       {"deck.bdf:7: PCOMP 1, field 2 (PID): duplicate property id, first defined at deck.bdf:2 (PSHELL)"}));
 }

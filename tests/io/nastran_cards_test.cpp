@@ -211,6 +211,72 @@ TEST(NastranCards, ShellsAndPshellDefaults) {
   EXPECT_DOUBLE_EQ(q.zoffs, .001);
 }
 
+TEST(NastranCards, CompositeCardsMat8Mat2AndPshellMid4) {
+  // PCOMP in small fixed format with a continuation, blank MID/T taken from the ply before (QRG
+  // PCOMP remark 1), an empty ply slot skipped; PCOMPG in large field (one ply per logical line);
+  // MAT8 with its continuation; MAT2; PSHELL with MID4.
+  const std::string deck =
+      base_deck() +
+      fixed_line({"MAT8", "8", "181.+9", "10.3+9", ".28", "7.17+9", "5.+9", "", "1600."}, 8, "+M8") +
+      fixed_line({"+M8", "", "", "", "1.5+9"}, 8, "+M9") + fixed_line({"+M9", ".01"}) +
+      "MAT2,9,1.+9,2.+8,0.,1.1+9,0.,3.+8,900.\n" +
+      fixed_line({"PCOMP", "10", "-.001", ".5", "", "HILL", "", "", "SYM"}, 8, "+P1") +
+      fixed_line({"+P1", "8", ".000125", "0.", "YES", "", "", "45.", ""}, 8, "+P2") +
+      fixed_line({"+P2", "", "", "", "", "9", ".0002", "-45."}) +
+      fixed_line({"PCOMPG*", "11", "", "", ""}, 16, "*G1") + fixed_line({"*G1", "", "", "", "MEM"}, 16, "*G2") +
+      fixed_line({"*G2", "101", "8", ".001", "30."}, 16, "*G3") + fixed_line({"*G3", "NO", "", "", ""}, 16, "*G4") +
+      fixed_line({"*G4", "102", "", "", "-30."}, 16) +
+      "PSHELL,12,1,.002,1,,1,,,+S\n+S,,,9\n"
+      "CQUAD4,20,10,1,2,3,4,0\n"
+      "CTRIA3,21,11,1,2,3,15.\n"
+      "CQUAD4,22,12,1,2,3,4\n";
+  const fem::Model m = read_deck(deck);
+  ASSERT_EQ(m.mat8.size(), 1u);
+  const fem::Mat8& m8 = m.mat8[0];
+  EXPECT_EQ(m8.id, 8);
+  EXPECT_DOUBLE_EQ(m8.E1, 181e9);
+  EXPECT_DOUBLE_EQ(m8.nu12, .28);
+  EXPECT_DOUBLE_EQ(m8.G1z, 5e9);
+  EXPECT_EQ(m8.G2z, 0.0);  // blank: rigid in transverse shear
+  EXPECT_DOUBLE_EQ(m8.rho, 1600.);
+  EXPECT_DOUBLE_EQ(m8.ge, .01);
+  ASSERT_EQ(m.mat2.size(), 1u);
+  EXPECT_DOUBLE_EQ(m.mat2[0].G22, 1.1e9);
+  EXPECT_DOUBLE_EQ(m.mat2[0].G33, 3e8);
+  EXPECT_DOUBLE_EQ(m.mat2[0].rho, 900.);
+  ASSERT_EQ(m.composite_props.size(), 2u);
+  const fem::CompositeProperty& pc = m.composite_props[0];
+  EXPECT_FALSE(pc.global);
+  EXPECT_TRUE(pc.has_z0);
+  EXPECT_DOUBLE_EQ(pc.z0, -.001);
+  EXPECT_DOUBLE_EQ(pc.nsm, .5);
+  EXPECT_EQ(pc.ft, "HILL");
+  EXPECT_EQ(pc.lam, fem::CompositeProperty::Lam::Sym);
+  ASSERT_EQ(pc.plies.size(), 3u);  // the all-blank slot is no ply
+  EXPECT_EQ(pc.plies[1].mid, 8);    // blank MID2 and T2: ply 1's
+  EXPECT_DOUBLE_EQ(pc.plies[1].t, .000125);
+  EXPECT_DOUBLE_EQ(pc.plies[1].theta_deg, 45.);
+  EXPECT_TRUE(pc.plies[0].sout);
+  EXPECT_EQ(pc.plies[2].mid, 9);
+  EXPECT_DOUBLE_EQ(pc.plies[2].theta_deg, -45.);
+  const fem::CompositeProperty& pg = m.composite_props[1];
+  EXPECT_TRUE(pg.global);
+  EXPECT_FALSE(pg.has_z0);
+  EXPECT_EQ(pg.lam, fem::CompositeProperty::Lam::Mem);
+  ASSERT_EQ(pg.plies.size(), 2u);
+  EXPECT_EQ(pg.plies[0].gplyid, 101);
+  EXPECT_EQ(pg.plies[1].gplyid, 102);
+  EXPECT_EQ(pg.plies[1].mid, 8);
+  EXPECT_DOUBLE_EQ(pg.plies[1].t, .001);
+  EXPECT_DOUBLE_EQ(pg.plies[1].theta_deg, -30.);
+  EXPECT_EQ(m.shell_props[1].mid4, 9);
+  // all of it is used; the one note says that the MAT2 ply is rigid in transverse shear
+  ASSERT_EQ(m.unsupported.size(), 1u);
+  EXPECT_EQ(m.unsupported[0].name.rfind("PCOMP ply of MAT2", 0), 0u) << m.unsupported[0].name;
+  EXPECT_TRUE(m.shells[0].theta_is_mcid);
+  EXPECT_EQ(m.shells[0].mcid, 0);
+}
+
 TEST(NastranCards, ShellPidDefaultMustExist) {
   EXPECT_TRUE(mentions(test::read_error(base_deck() + "CQUAD4,8,,1,2,3,4\n"), {"CQUAD4 8, field 3 (PID): references property 8"}));
 }

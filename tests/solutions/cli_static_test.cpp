@@ -52,6 +52,57 @@ TEST(StaticCli, CantileverCsvInBasicMatchesBeamTheory) {
   EXPECT_NE(r.out.find("at grid 11"), std::string::npos) << r.out;
 }
 
+// A 10-ply PCOMPG of a MAT8 fabric, 2 x 2 CQUAD4 in the x-z plane pulled in its plane (fixed-format
+// cards as Simcenter Nastran's preprocessor writes them: PCOMPG with Z0 blank, TSAI, the allowables
+// line of MAT8). The model is pyNastran's models/nx/laminate/laminate_elstrn_fiber_center.bdf (its
+// grids, cards and loads); the reference is its F06, Simcenter Nastran 2306 (8/25/23) SOL 101,
+// DISPLACEMENT VECTOR: translations within 1e-6 of the largest (the drilling rotations R2 are the
+// elements' own and are not compared).
+TEST(StaticCli, PcompgMembraneMatchesSimcenterNastran) {
+  const std::string deck =
+      "SOL 101\nCEND\nSUBCASE 1\n  LOAD = 17\n  SPC = 18\nBEGIN BULK\nPARAM,K6ROT,100.\n"
+      "GRID,1,,10.,0.,12.5\nGRID,2,,0.,0.,12.5\nGRID,3,,10.,0.,0.\nGRID,4,,10.,0.,25.\nGRID,5,,20.,0.,12.5\n"
+      "GRID,6,,0.,0.,25.\nGRID,7,,0.,0.,0.\nGRID,8,,20.,0.,0.\nGRID,9,,20.,0.,25.\n"
+      "CQUAD4         3       2       1       2       7       3\n"
+      "CQUAD4         4       2       5       1       3       8\n"
+      "CQUAD4         1       2       9       4       1       5\n"
+      "CQUAD4         2       2       4       6       2       1\n"
+      "PCOMPG         2          0.000015000.00    TSAI 20.0000  0.0000        +\n"
+      "+              1       60.195580  0.0000     YES                        +\n"
+      "+              2       60.195580 90.0000     YES                        +\n"
+      "+              3       60.195580  0.0000     YES                        +\n"
+      "+              4       60.195580 90.0000     YES                        +\n"
+      "+              5       60.195580  0.0000     YES                        +\n"
+      "+              6       60.195580  0.0000     YES                        +\n"
+      "+              7       60.195580 90.0000     YES                        +\n"
+      "+              8       60.195580  0.0000     YES                        +\n"
+      "+              9       60.195580 90.0000     YES                        +\n"
+      "+             10       60.195580  0.0000     YES\n"
+      "MAT8           66.7141+76.6727+70.0530005.0676+65.0676+65.0676+61.5440-6+\n"
+      "+         0.0000  0.0000        7.5017+56.2781+57.2943+55.8428+588680.21\n"
+      "FORCE         17       4       050000.00  0.0000  0.00001.000000\n"
+      "FORCE         17       6       025000.00  0.0000  0.00001.000000\n"
+      "FORCE         17       9       025000.00  0.0000  0.00001.000000\n"
+      "SPC           18       3  123456  0.0000\nSPC           18       7  123456  0.0000\n"
+      "SPC           18       8  123456  0.0000\nENDDATA\n";
+  test::TempDir dir;
+  dir.write("laminate.bdf", deck);
+  const auto r = test::run_seflex("static laminate.bdf -o out.csv", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::string header;
+  const auto rows = read_csv(dir / "out.csv", header);
+  // Simcenter Nastran: T1, T3 of grids 1, 2, 4, 5, 6, 9 (T2 = 0)
+  const std::map<int, std::pair<double, double>> ref = {
+      {1, {-6.194415e-16, 4.763643e-04}}, {2, {2.520294e-05, 4.780829e-04}},  {4, {-1.255585e-15, 9.553896e-04}},
+      {5, {-2.520294e-05, 4.780829e-04}}, {6, {1.797797e-05, 9.546929e-04}}, {9, {-1.797797e-05, 9.546929e-04}}};
+  const double scale = 9.553896e-04;
+  for (const auto& [g, t] : ref) {
+    EXPECT_NEAR(rows.at(g)[1], t.first, 1e-6 * scale) << "grid " << g;
+    EXPECT_NEAR(rows.at(g)[2], 0.0, 1e-6 * scale) << "grid " << g;
+    EXPECT_NEAR(rows.at(g)[3], t.second, 1e-6 * scale) << "grid " << g;
+  }
+}
+
 TEST(StaticCli, RefusesToOverwriteWithoutForce) {
   test::TempDir dir;
   const auto deck = dir.write("cantilever.bdf", test::cantilever_deck());

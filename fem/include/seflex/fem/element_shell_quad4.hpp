@@ -30,8 +30,13 @@
 // - Warped elements: rigid links from the grids to their projections on the mean plane
 //   (MacNeal, "Finite Elements: Their Design and Performance", 1994, sec. 9.4), which keep the six
 //   rigid-body modes exact.
-// Section: membrane from MID1 with T, bending from MID2 with 12I/T^3, transverse shear from MID3
-// with TS/T (section.hpp). Corner thicknesses T1..T4 are averaged.
+// Section (section.hpp): [N; M] = [A B; B D] [eps0; kappa] and Q = S gamma from the PSHELL (MID1,
+// MID2 with 12I/T^3, MID3 with TS/T, MID4 coupling; MAT1, MAT2, MAT8) or the PCOMP/PCOMPG laminate,
+// rotated from the material axes (THETA from the projected G1-G2 edge, or the projected x axis of
+// MCID) to the element axes; the coupling B ties the membrane (incompatible modes included, so they
+// are condensed together with the plate dofs) to the curvatures. Corner thicknesses T1..T4 of a
+// PSHELL are averaged. ZOFFS (the reference plane that far above the grids along the normal) shifts
+// the section: B + e A, D + 2 e B + e^2 A (ShellSection::offset); the mass stays at the grids.
 // Mass: lumped (Nastran default) m_i = (rho t + NSM) int N_i dA on the translations of grid i
 // (A/4 on a parallelogram); coupled (COUPMASS > 0) (rho t + NSM) int N_i N_j dA on each
 // translation; no rotary inertia either way.
@@ -46,7 +51,7 @@ namespace seflex::fem {
 
 struct Quad4Element {
   std::array<Eigen::Vector3d, 4> x{};  ///< corner positions G1..G4, basic (consecutive around the edge)
-  ShellSection section;
+  ShellSection section;                ///< in element axes (e1 along the projected G1-G2 edge)
 };
 
 /// Stiffness (24 x 24, basic). k6rot: PARAM K6ROT.
@@ -57,8 +62,9 @@ NodeMatrix<4> quad4_mass(const Quad4Element& e, MassKind kind);
 std::array<double, 4> quad4_lumped_masses(const Quad4Element& e);
 
 /// Resolve a CQUAD4 of a finalized model; throws InputError for undefined references, repeated
-/// grids, or a degenerate (zero-area or non-convex) quadrilateral.
-/// `section`, when given, is used instead of resolving the PSHELL again (assembly caches it).
+/// grids, a degenerate (zero-area or non-convex) quadrilateral, or an unusable MCID.
+/// `section` (material axes), when given, is used instead of resolving the property again (assembly
+/// caches it); Quad4Element::section is in element axes.
 Quad4Element make_quad4_element(const Model& model, const Shell& shell, const ShellSection* section = nullptr);
 
 }  // namespace seflex::fem

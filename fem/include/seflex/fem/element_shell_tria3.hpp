@@ -13,6 +13,8 @@
 //   refinement.
 // - Drilling: as CQUAD4, G t A (theta_z - omega)^2 at the centroid plus the K6ROT penalty on
 //   (theta_z - omega)^2 with the 3-point rule.
+// Section: as CQUAD4 (A, B, D, S of the PSHELL or PCOMP/PCOMPG in element axes; THETA from G1-G2;
+// ZOFFS shifts it).
 // Mass: lumped (rho t + NSM) A / 3 on the translations of each grid; coupled
 // (rho t + NSM) A / 12 [2 1 1; 1 2 1; 1 1 2] on each translation; no rotary inertia.
 #include <Eigen/Core>
@@ -34,7 +36,8 @@ NodeMatrix<3> tria3_mass(const Tria3Element& e, MassKind kind);      ///< before
 
 /// Resolve a CTRIA3 of a finalized model; throws InputError for undefined references, repeated
 /// grids or a zero area.
-/// `section`, when given, is used instead of resolving the PSHELL again (assembly caches it).
+/// `section` (material axes), when given, is used instead of resolving the property again (assembly
+/// caches it); Tria3Element::section is in element axes.
 Tria3Element make_tria3_element(const Model& model, const Shell& shell, const ShellSection* section = nullptr);
 
 }  // namespace seflex::fem

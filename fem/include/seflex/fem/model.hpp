@@ -82,6 +82,46 @@ struct Mat1 {
   CardRef ref;
 };
 
+/// MAT2: anisotropic plane-stress material, G = [G11 G12 G13; G12 G22 G23; G13 G23 G33] (Voigt xx,
+/// yy, xy with engineering shear strain). As a PSHELL MID3 (transverse shear), [G11 G12; G12 G22] is
+/// the 2 x 2 transverse shear matrix (QRG MAT2).
+struct Mat2 {
+  int id = 0;
+  double G11 = 0, G12 = 0, G13 = 0, G22 = 0, G23 = 0, G33 = 0;
+  double rho = 0, ge = 0;
+  CardRef ref;
+};
+
+/// MAT8: orthotropic plane-stress material in its axes 1 (fibre), 2. G1Z, G2Z: transverse shear
+/// moduli; 0 (blank) = infinite (rigid in transverse shear), as the QRG says for MAT8.
+struct Mat8 {
+  int id = 0;
+  double E1 = 0, E2 = 0, nu12 = 0, G12 = 0, G1z = 0, G2z = 0;
+  double rho = 0, ge = 0;
+  CardRef ref;
+};
+
+/// PCOMP or PCOMPG: a laminate of plies listed from the bottom (most negative z) up.
+struct CompositeProperty {
+  enum class Lam : std::uint8_t { Blank, Sym, Mem, Bend, Smear, SmCore };
+  struct Ply {
+    int gplyid = 0;                 ///< PCOMPG global ply id (0 for PCOMP)
+    int mid = 0;
+    double t = 0;
+    double theta_deg = 0;           ///< ply angle from the element's material x axis, degrees
+    bool sout = false;
+  };
+  int id = 0;
+  bool global = false;              ///< PCOMPG
+  bool has_z0 = false;
+  double z0 = 0;                    ///< bottom surface from the reference plane (blank: -T/2)
+  double nsm = 0, sb = 0, tref = 0, ge = 0;
+  std::string ft;                   ///< failure theory (not used)
+  Lam lam = Lam::Blank;
+  std::vector<Ply> plies;           ///< as written (LAM = SYM: the lower half only)
+  CardRef ref;
+};
+
 /// Bar/beam section, from PBAR, PBARL, PBEAM (end A) or PBEAML (end A), in element axes.
 struct BarProperty {
   enum class Source : std::uint8_t { PBAR, PBARL, PBEAM, PBEAML };
@@ -112,7 +152,7 @@ struct ShellProperty {  ///< PSHELL
   double ts_t = 0.833333;           ///< TS/T (blank = .833333)
   double nsm = 0;
   double z1 = 0, z2 = 0;            ///< fibre distances (stress only)
-  int mid4 = 0;
+  int mid4 = 0;                     ///< membrane-bending coupling (0 = none): B = T^2 G4
   CardRef ref;
 };
 
@@ -365,9 +405,12 @@ struct Model {
   GridDefaults grdset;
 
   std::vector<Mat1> mat1;
+  std::vector<Mat2> mat2;
+  std::vector<Mat8> mat8;
   std::vector<BarProperty> bar_props;
   std::vector<RodProperty> rod_props;
   std::vector<ShellProperty> shell_props;
+  std::vector<CompositeProperty> composite_props;  ///< PCOMP, PCOMPG
   std::vector<SpringProperty> spring_props;
 
   BarDefaults baror, beamor;
@@ -399,8 +442,8 @@ struct Model {
   std::map<std::string, std::vector<int>> node_sets;
 
   // Lookups, built by fem::finalize (id -> position in the vector above).
-  std::unordered_map<int, std::uint32_t> grid_index, coord_index, mat1_index, bar_prop_index,
-      rod_prop_index, shell_prop_index, spring_prop_index, spoint_index;
+  std::unordered_map<int, std::uint32_t> grid_index, coord_index, mat1_index, mat2_index, mat8_index,
+      bar_prop_index, rod_prop_index, shell_prop_index, composite_prop_index, spring_prop_index, spoint_index;
   bool finalized = false;
 };
 

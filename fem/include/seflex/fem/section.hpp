@@ -1,10 +1,12 @@
 #pragma once
 // Cross-section data of line and shell elements, resolved from the property cards (PBAR/PBEAM,
-// PSHELL) and their materials.
+// PSHELL, PCOMP/PCOMPG) and their materials.
 #include <Eigen/Core>
-#include <cmath>
+#include <optional>
+#include <vector>
 
 #include "seflex/fem/material.hpp"
+#include "seflex/fem/model.hpp"
 
 namespace seflex::fem {
 
@@ -16,72 +18,130 @@ struct BarSection {
   double A = 0, I1 = 0, I2 = 0, I12 = 0, J = 0, K1 = 0, K2 = 0, nsm = 0;
 };
 
-/// PSHELL resolved: membrane (MID1, thickness t), bending (MID2, 12I/T^3), transverse shear
-/// (MID3, TS/T), non-structural mass per area.
+/// A shell section as the CQUAD4 and CTRIA3 use it, whichever card defined it (PSHELL with MAT1, MAT2
+/// or MAT8, PCOMP, PCOMPG): the resultants of the Reissner-Mindlin shell per unit length,
+///   [N; M] = [A B; B D] [eps0; kappa],   Q = S gamma,
+/// eps0 the reference-surface strains (xx, yy, xy engineering), kappa = (theta_y,x, -theta_x,y,
+/// theta_y,y - theta_x,x) the curvatures (strain at height z: eps0 + z kappa, z along the element
+/// normal), gamma the transverse shear strains (xz, yz). Matrices are in the axes of the section:
+/// the material axes (x along the element's THETA/MCID direction) as resolved, the element axes
+/// after in_element_axes().
 struct ShellSection {
-  double t = 0;                          ///< membrane thickness
-  bool has_membrane = false, has_bending = false, has_shear = false;
-  IsotropicMaterial membrane, bending, shear;  ///< MID1, MID2, MID3 (valid when has_*)
-  double bend_ratio = 1.0;               ///< 12 I / T^3
-  double ts_t = 0.833333;                ///< TS / T
-  double nsm = 0;                        ///< non-structural mass per area
-  double rho = 0;                        ///< structural density (MID1's, else MID2's)
-
-  /// Membrane stiffness A = t * D_plane_stress(MID1) (3 x 3, force per length per strain).
-  Eigen::Matrix3d membrane_matrix() const {
-    return has_membrane ? Eigen::Matrix3d(t * plane_stress(membrane)) : Eigen::Matrix3d::Zero();
-  }
-  /// Bending stiffness D = (12I/T^3) t^3/12 * D_plane_stress(MID2) (moment per length per curvature).
-  Eigen::Matrix3d bending_matrix() const {
-    return has_bending ? Eigen::Matrix3d(bend_ratio * t * t * t / 12.0 * plane_stress(bending))
-                       : Eigen::Matrix3d::Zero();
-  }
-  /// Transverse shear stiffness per length G3 * TS. Nastran: MID3 blank means no transverse shear
-  /// flexibility; seflex then uses 1000 x (5/6) G2 t_b (t_b = (12 I)^(1/3), the thickness of the
-  /// homogeneous plate with the section's bending stiffness), a Kirchhoff limit whose shear energy is
-  /// negligible (the MITC shear interpolation does not lock, so the penalty is harmless).
-  double shear_stiffness() const {
-    if (has_shear) return shear.G * ts_t * t;
-    if (has_bending) return 1000.0 * physical_shear_stiffness();
-    return 0.0;
-  }
-  /// The shear stiffness that defines the section's bending-to-shear ratio: G3 TS, or with MID3
-  /// blank that of the homogeneous plate of the same bending stiffness, (5/6) G2 t_b.
-  double physical_shear_stiffness() const {
-    if (has_shear) return shear.G * ts_t * t;
-    return has_bending ? (5.0 / 6.0) * bending.G * std::cbrt(bend_ratio) * t : 0.0;
-  }
+  Eigen::Matrix3d A = Eigen::Matrix3d::Zero();  ///< membrane (force per length)
+  Eigen::Matrix3d B = Eigen::Matrix3d::Zero();  ///< membrane-bending coupling (force)
+  Eigen::Matrix3d D = Eigen::Matrix3d::Zero();  ///< bending (moment per length per curvature)
+  /// Transverse shear stiffness (force per length). With no transverse shear flexibility (PSHELL MID3
+  /// blank, plies rigid in transverse shear) a Kirchhoff penalty, 1000 x that of the homogeneous plate
+  /// of the same bending stiffness, harmless with the MITC interpolation (it does not lock).
+  Eigen::Matrix2d S = Eigen::Matrix2d::Zero();
+  bool has_membrane = false, has_bending = false;
+  bool shear_flexible = false;  ///< S is the physical transverse shear stiffness (not the penalty)
+  bool isotropic = false;       ///< MAT1 only and no coupling: A, B, D, S do not change with rotation
+  double t = 0;                 ///< membrane thickness (PSHELL T or the corner average; PCOMP: total)
+  /// In-plane shear stiffness per length of the elements' drilling terms: G T of MID1 (MAT1), the
+  /// orientation average (ShellMaterial::G_iso) for MAT2/MAT8 and, summed over the plies, for PCOMP.
+  double drill_Gt = 0;
   /// Squared thickness of the homogeneous (5/6 shear factor) plate whose bending-to-shear stiffness
-  /// ratio the section has: t_s^2 = (5/6) G2 (12 I) / S, S = physical_shear_stiffness(). For a
-  /// homogeneous PSHELL (12I/T^3 = 1, MID3 = MID2, TS/T = 5/6) it is T^2; for a sandwich (12I/T^3 =
-  /// 11200, TS/T = 19.13) about (22 T)^2, where T, the face-sheet thickness, would be 22x too thin.
-  /// The shear stabilisation of the MITC elements is written in this thickness (Lyly, Stenberg &
-  /// Vihinen, Comput. Mech. 13 (1993) 371-387, state the plate in the scaled form in which t^2 is
-  /// exactly this ratio).
-  double shear_thickness_squared() const {
-    const double S = physical_shear_stiffness();
-    if (!has_bending || !(S > 0.0)) return t * t;
-    return (5.0 / 6.0) * bending.G * bend_ratio * t * t * t / S;
-  }
+  /// ratio the section has, t_s^2 = 10 Dg / Sg, Dg the bending stiffness and Sg the transverse shear
+  /// stiffness as scalars: PSHELL Dg = G2 (12 I)/12, Sg = G3 TS (MID3 blank: (5/6) G2 (12 I)^(1/3));
+  /// PCOMP Dg = sum G_k int (z - zc)^2 dz over the plies (zc the G-weighted centroid), Sg = trace(S)/2;
+  /// G the material's G_iso. For a homogeneous plate t_s = T; for a sandwich with a soft core it
+  /// exceeds the total thickness (its shear is softer than its bending suggests). The MITC shear stabilisation is written in it (Lyly, Stenberg & Vihinen, Comput. Mech.
+  /// 13 (1993) 371-387, state the plate in the scaled form in which t^2 is exactly this ratio).
+  double ts2 = 0;
+  double mass_per_area_value = 0;  ///< structural + non-structural, before WTMASS
+
   /// Transverse shear stiffness of an element whose longest edge squared is h2, stabilised (ibid.):
-  /// shear_stiffness() t_s^2 / (t_s^2 + alpha h^2), alpha = 0.1; it removes the residual shear
-  /// locking of thin plates and vanishes under refinement (h -> 0).
-  double stabilised_shear_stiffness(double h2) const {
+  /// S t_s^2 / (t_s^2 + alpha h^2), alpha = 0.1; it removes the residual shear locking of thin plates
+  /// and vanishes under refinement (h -> 0).
+  Eigen::Matrix2d stabilised_shear(double h2) const {
     constexpr double alpha = 0.1;
-    const double ts2 = shear_thickness_squared();
-    return shear_stiffness() * ts2 / (ts2 + alpha * h2);
+    return S * (ts2 / (ts2 + alpha * h2));
   }
   /// Mass per area (structural + non-structural), before WTMASS.
-  double mass_per_area() const { return rho * t + nsm; }
+  double mass_per_area() const { return mass_per_area_value; }
+  /// The section in axes rotated by -theta: for a section whose x axis is at angle theta (radians,
+  /// about the normal) from the element's x axis, the same section in element axes.
+  ShellSection in_element_axes(double theta) const {
+    if (isotropic || theta == 0.0) return *this;
+    ShellSection s = *this;
+    s.A = rotate_plane_matrix(A, theta);
+    s.B = rotate_plane_matrix(B, theta);
+    s.D = rotate_plane_matrix(D, theta);
+    s.S = rotate_shear_matrix(S, theta);
+    return s;
+  }
+  /// The section about a reference surface e below its own (CQUAD4/CTRIA3 ZOFFS = e: the section's
+  /// reference plane lies e above the grids, along the element normal): the strain at the section's
+  /// plane is eps0 + e kappa, so A' = A, B' = B + e A, D' = D + 2 e B + e^2 A (the parallel-axis
+  /// shift of lamination theory); S, mass and the stabilisation thickness are unchanged.
+  ShellSection offset(double e) const {
+    if (e == 0.0) return *this;
+    ShellSection s = *this;
+    s.B = B + e * A;
+    s.D = D + 2.0 * e * B + e * e * A;
+    return s;
+  }
 };
 
-}  // namespace seflex::fem
+/// MAT1, MAT2, MAT8 as shell layers (ShellMaterial). MAT8: Q11 = E1/(1 - nu12 nu21), Q22 =
+/// E2/(1 - nu12 nu21), Q12 = nu12 E2/(1 - nu12 nu21), Q33 = G12, nu21 = nu12 E2/E1 (Jones, ch. 2).
+ShellMaterial shell_material(const Mat1& m);
+ShellMaterial shell_material(const Mat2& m);
+ShellMaterial shell_material(const Mat8& m);
 
-namespace seflex::fem {
-struct Model;
-struct Shell;
-/// PSHELL of a CQUAD4/CTRIA3 with its materials and the element's corner thicknesses (averaged;
-/// TFLAG = 1 makes them fractions of T). Throws InputError for undefined references, a missing
-/// thickness, or a PSHELL with none of MID1/MID2.
+/// PSHELL data with its materials resolved (nullptr = blank MID).
+struct PshellInput {
+  const ShellMaterial* mid1 = nullptr;  ///< membrane
+  const ShellMaterial* mid2 = nullptr;  ///< bending
+  const ShellMaterial* mid3 = nullptr;  ///< transverse shear (MAT1: G; MAT2: [G11 G12; G12 G22]; MAT8: diag(G1Z, G2Z))
+  const ShellMaterial* mid4 = nullptr;  ///< membrane-bending coupling
+  double t = 0, bend_ratio = 1.0, ts_t = 0.833333, nsm = 0;
+};
+
+/// The PSHELL section (MSC Nastran QRG PSHELL, remarks on the stiffness matrices):
+///   A = T G1,  D = (12I/T^3) T^3/12 G2,  B = T^2 G4,  S = (TS/T) T G3,
+/// Gi the plane-stress matrix of MIDi (MAT1: E/(1-nu^2) [1 nu 0; nu 1 0; 0 0 (1-nu)/2] with G33 = G;
+/// MAT2: Gij; MAT8: the orthotropic Q). Mass per area rho1 T + NSM (rho2 if MID1 is blank).
+/// Throws InputError (via the caller) never: the caller checks the references.
+ShellSection pshell_section(const PshellInput& in);
+
+/// One ply of a laminate: material, thickness, angle of its 1 axis from the laminate's x axis
+/// (radians, about the normal).
+struct Ply {
+  ShellMaterial material;
+  double t = 0;
+  double theta = 0;
+};
+
+/// A laminate (PCOMP/PCOMPG) by classical lamination theory, plies listed bottom (most negative z)
+/// up (Jones, Mechanics of Composite Materials, 2nd ed., ch. 4; Reddy, Mechanics of Laminated
+/// Composite Plates and Shells, 2nd ed., sec. 3.3):
+///   A = sum Qbar_k (z_k+1 - z_k),  B = sum Qbar_k (z_k+1^2 - z_k^2)/2,  D = sum Qbar_k (z_k+1^3 - z_k^3)/3,
+/// z_1 = z0 (blank: -T/2), Qbar_k = T(theta_k)^T Q_k T(theta_k). Mass per area sum rho_k t_k + nsm.
+/// Transverse shear: the laminate's shear compliance H = int F(z)^T C(z) F(z) dz, S = H^-1, where
+/// C(z) is the ply's transverse shear compliance in laminate axes and F(z) (2 x 2) gives the
+/// transverse shear stresses per unit shear force from equilibrium of the bending stresses,
+///   tau_xz,z = -(sigma_x,x + tau_xy,y),  tau_yz,z = -(tau_xy,x + sigma_y,y),
+/// of the two cylindrical bending states M_x,x = Q_x and M_y,y = Q_y (N = 0, mixed derivatives of the
+/// moments neglected): Whitney, "Shear correction factors for orthotropic laminates under static
+/// load", J. Appl. Mech. 40 (1973) 302-304, generalised to the coupled 2 x 2 case as in Rolfes &
+/// Rohwer, IJNME 40 (1997) 51-60, and the FeResPost manual, sec. II.1.6.6 (energetic approach). A
+/// homogeneous ply gives S = (5/6) G T; a sandwich G_core d^2 / t_core (d: distance between the face
+/// mid-planes). Plies rigid in transverse shear (MAT8 G1Z/G2Z blank, MAT2) add no compliance; a
+/// laminate without any gets the Kirchhoff penalty (ShellSection::S).
+/// lam: Blank (full), Sym (plies mirrored about the top of the list), Mem (membrane only), Smear
+/// (stacking ignored: A, D = A T^2/12, no coupling, rigid in shear), SmCore (last ply the core, the
+/// others smeared into two face sheets of half their total thickness each side of it). Bend is not
+/// supported (the caller refuses it).
+ShellSection laminate_section(std::vector<Ply> plies, std::optional<double> z0, double nsm,
+                              CompositeProperty::Lam lam = CompositeProperty::Lam::Blank);
+
+/// The section of a CQUAD4/CTRIA3 of a finalized model, in the property's material axes (the element
+/// rotates it by its THETA/MCID): its PSHELL (corner thicknesses averaged; TFLAG = 1 makes them
+/// fractions of T) or its PCOMP/PCOMPG. Throws InputError for undefined references, a missing
+/// thickness, a PSHELL with none of MID1/MID2, a MID4 without MID1 and MID2, a PCOMP with corner
+/// thicknesses or LAM = BEND.
 ShellSection make_shell_section(const Model& model, const Shell& shell);
+
 }  // namespace seflex::fem

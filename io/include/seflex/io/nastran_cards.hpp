@@ -58,12 +58,16 @@ void parse_celas2(const Card&, ReaderState&);
 void parse_rbe2(const Card&, ReaderState&);
 // Materials and properties (nastran_cards_properties.cpp)
 void parse_mat1(const Card&, ReaderState&);
+void parse_mat2(const Card&, ReaderState&);
+void parse_mat8(const Card&, ReaderState&);
 void parse_pbar(const Card&, ReaderState&);
 void parse_pbarl(const Card&, ReaderState&);
 void parse_pbeam(const Card&, ReaderState&);
 void parse_pbeaml(const Card&, ReaderState&);
 void parse_prod(const Card&, ReaderState&);
 void parse_pshell(const Card&, ReaderState&);
+void parse_pcomp(const Card&, ReaderState&);
+void parse_pcompg(const Card&, ReaderState&);
 void parse_pelas(const Card&, ReaderState&);
 // Constraints, sets and loads (nastran_cards_constraints.cpp)
 void parse_spc(const Card&, ReaderState&);
