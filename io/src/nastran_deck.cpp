@@ -50,7 +50,8 @@ constexpr CardType kCardTypes[] = {
     {"SUPORT", parse_suport},   {"FORCE", parse_force},     {"MOMENT", parse_moment},  {"LOAD", parse_load},
     {"EIGRL", parse_eigrl},     {"EIGR", parse_eigr},       {"PARAM", parse_param},    {"DMIG", parse_dmig},
     {"MPC", parse_mpc},         {"MPCADD", parse_mpcadd},   {"OMIT", parse_omit},      {"OMIT1", parse_omit1},
-    {"RBAR", parse_rbar},       {"RBE3", parse_rbe3},
+    {"RBAR", parse_rbar},       {"RBE3", parse_rbe3},       {"PLOAD2", parse_pload2},  {"GRAV", parse_grav},
+    {"RFORCE", parse_rforce},   {"TEMP", parse_temp},       {"TEMPD", parse_tempd},    {"TEMPRB", parse_temprb},
 };
 constexpr std::size_t kNumCardTypes = sizeof(kCardTypes) / sizeof(kCardTypes[0]);
 
