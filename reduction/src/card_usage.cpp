@@ -246,7 +246,9 @@ class Classifier {
     heated_shells(*c.temperature);
   }
 
-  /// Shells with thermal expansion that thermal load set `sid` gives a temperature other than TREF.
+  /// Shells with thermal expansion that thermal load set `sid` gives a temperature other than TREF
+  /// (fem::thermal_load_vector computes bars and rods only; an element type added later with a
+  /// thermal expansion coefficient belongs here until its thermal load is computed).
   void heated_shells(int sid) {
     std::optional<double> tempd;
     std::map<int, double> grid_t;

@@ -5,9 +5,14 @@
 // FORCE  SID G CID F N1 N2 N3:  force  F (N1, N2, N3) in system CID (axes at the grid) on G's T1-T3;
 // MOMENT SID G CID M N1 N2 N3:  moment M (N1, N2, N3) on G's R1-R3.
 // PLOAD2 SID P EID...:          uniform pressure P on CQUAD4/CTRIA3, along the element normal
-//                               (right-hand rule on G1 G2 G3 [G4]); work-equivalent corner forces
-//                               f_i = P int N_i n dA (bilinear N_i of the quad, 2 x 2 Gauss, exact
-//                               also when warped; a triangle gives P A n / 3 per corner); no moments.
+//                               (right-hand rule on G1 G2 G3 [G4], MSC QRG PLOAD2 remark); work-
+//                               equivalent corner forces f_i = P int N_i n dA (bilinear N_i of the
+//                               quad, 2 x 2 Gauss, exact also when warped; a triangle gives P A n / 3
+//                               per corner); no moments: the resultant acts through the element's
+//                               centroid as Nastran's (NX Nastran User's Guide, "Distributed Loads":
+//                               the CQUAD4's total force "is distributed to corner grid points using
+//                               the geometric shape of the element"), and it is the consistent load
+//                               of MITC4/MITC3, whose deflection comes from the corner deflections.
 // GRAV   SID CID A N1 N2 N3:    acceleration g = A (N1, N2, N3) (magnitude A |N|, MSC QRG GRAV) in
 //                               rectangular system CID, applied to every mass:  p = M a_g.
 // RFORCE SID G CID A R1 R2 R3 METHOD / RACC: steady rotation w = 2 pi A R and angular acceleration
@@ -35,7 +40,8 @@
 //   CROD/CONROD: axial force E A alpha (T - TREF) (TEMPRB TA/TB or the grids' temperatures).
 // Grid temperatures give a bar/rod T = mean of its two grids and no gradient. Shells with thermal
 // expansion (ALPHA != 0) are refused (reduction::check_card_usage): their thermal loads are not
-// computed.
+// computed. A new element type with a thermal expansion coefficient must either get its thermal
+// load here or be refused there, never be skipped silently.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
