@@ -46,9 +46,9 @@ void print_model(const seflex::fem::Model& m) {
   row("MPC equations", m.mpcs.size());
   row("loads (FORCE, MOMENT)", m.point_loads.size());
   if (const std::size_t n = m.pressure_loads.size() + m.gravity_loads.size() + m.rotational_loads.size())
-    row("loads (PLOAD2, GRAV, RFORCE)", n);
+    row("pressure, inertia loads", n);
   if (const std::size_t n = m.grid_temperatures.size() + m.default_temperatures.size() + m.bar_temperatures.size())
-    row("temperatures (TEMP, TEMPD, TEMPRB)", n);
+    row("temperature cards", n);
   row("eigenvalue methods", m.eigen_methods.size());
   row("DMIG matrices", m.dmigs.size());
 
