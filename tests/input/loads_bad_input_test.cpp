@@ -66,6 +66,17 @@ TEST(LoadsBadInput, SelectedLoadReferencesAreChecked) {
                        {"GRAV 3", "CID", "not rectangular"}));
   EXPECT_TRUE(
       mentions(solve_error(deck("LOAD = 4\n", "RFORCE,4,77,,1.,0.,0.,1.\n")), {"RFORCE 4", "GRID 77", "not defined"}));
+  // an unselected GRAV/RFORCE/PLOAD2 set is a warning, whatever it references; the deck runs
+  const fem::Model w = test::read_deck(
+      deck("LOAD = 3\n", "GRAV,3,,9.81,0.,0.,1.\nGRAV,4,6,1.,0.,0.,1.\nRFORCE,5,77,,1.,0.,0.,1.\nPLOAD2,6,1.,2\n"));
+  const auto u = reduction::check_card_usage(w, reduction::Solution::Statics, reduction::select_cases(w));
+  EXPECT_FALSE(u.refused());
+  std::size_t unselected = 0;
+  for (const auto& e : u.uses)
+    unselected += e.reason.find(" not selected by any subcase") != std::string::npos &&
+                  (e.card == "GRAV" || e.card == "RFORCE" || e.card == "PLOAD2");
+  EXPECT_EQ(unselected, 3u);
+  EXPECT_NO_THROW(reduction::solve_static(w));
   // a LOAD combining a set no load card defines
   EXPECT_TRUE(mentions(solve_error(deck("LOAD = 9\n", "GRAV,3,,9.81,0.,0.,1.\nLOAD,9,1.,1.,3,1.,6\n")),
                        {"LOAD 9", "load set 6"}));
