@@ -46,6 +46,10 @@ void print_model(const seflex::fem::Model& m) {
   row("SPC entries", m.spcs.size());
   row("MPC equations", m.mpcs.size());
   row("loads (FORCE, MOMENT)", m.point_loads.size());
+  if (const std::size_t n = m.pressure_loads.size() + m.gravity_loads.size() + m.rotational_loads.size())
+    row("pressure, inertia loads", n);
+  if (const std::size_t n = m.grid_temperatures.size() + m.default_temperatures.size() + m.bar_temperatures.size())
+    row("temperature cards", n);
   row("eigenvalue methods", m.eigen_methods.size());
   row("DMIG matrices", m.dmigs.size());
 

@@ -41,8 +41,10 @@ void print_summary(const seflex::fem::Model& model, const red::StaticSolution& s
   if (!s.selection.label.empty()) std::printf(" (%s)", s.selection.label.c_str());
   if (s.selection.load)
     std::printf(": LOAD %d", *s.selection.load);
-  else
+  else if (!s.selection.temperature)
     std::printf(": no LOAD (enforced displacements only)");
+  if (s.selection.temperature)
+    std::printf("%s TEMPERATURE(LOAD) %d", s.selection.load ? "," : ":", *s.selection.temperature);
   if (s.selection.spc) std::printf(", SPC %d", *s.selection.spc);
   if (s.selection.mpc) std::printf(", MPC %d", *s.selection.mpc);
   std::printf("\n  %zu grids, %ld free dofs, backward error %.1E\n", model.grids.size(), static_cast<long>(s.n_free),

@@ -173,6 +173,35 @@ NodeMatrix<2> bar_stiffness(const BarElement& e) {
   return K;
 }
 
+Eigen::Matrix<double, 12, 1> bar_thermal_load(const BarElement& e, double alpha, const BarTemperatureField& t) {
+  const double L = bar_length(e);
+  const BarSection& s = e.section;
+  // Curvature sources of the two planes: inv([I1 I12; I12 I2]) (I1 TP1, I2 TP2) at each end.
+  const double det = s.I1 * s.I2 - s.I12 * s.I12;
+  auto curvature = [&](double tp1, double tp2) -> Eigen::Vector2d {
+    if (!(det > 0.0)) return {s.I1 > 0.0 ? tp1 : 0.0, s.I2 > 0.0 ? tp2 : 0.0};
+    return {(s.I2 * s.I1 * tp1 - s.I12 * s.I2 * tp2) / det, (-s.I12 * s.I1 * tp1 + s.I1 * s.I2 * tp2) / det};
+  };
+  const Eigen::Vector2d kA = curvature(t.tp1a, t.tp2a), kB = curvature(t.tp1b, t.tp2b);
+  Eigen::Matrix<double, 12, 1> u = Eigen::Matrix<double, 12, 1>::Zero();  // end B clamped
+  u(kU) = -alpha * L * t.dT;
+  u(kV) = -alpha * L * L * (kA(0) / 6.0 + kB(0) / 3.0);
+  u(kW) = -alpha * L * L * (kA(1) / 6.0 + kB(1) / 3.0);
+  u(kRz) = alpha * L * 0.5 * (kA(0) + kB(0));
+  u(kRy) = -alpha * L * 0.5 * (kA(1) + kB(1));
+  Matrix12 K = bar_stiffness_element_axes(e);
+  SEFLEX_DEMAND(condense_pins(e.pin_A, e.pin_B, K), "bar pin flags release dofs without stiffness");
+  Eigen::Matrix<double, 12, 1> f = K * u;  // element axes at the bar ends
+  const Eigen::Matrix3d R = bar_axes(e);
+  const std::array<Eigen::Vector3d, 2> w = {e.w_A, e.w_B};
+  for (int n = 0; n < 2; ++n) {
+    const Eigen::Vector3d F = R * f.segment<3>(6 * n), M = R * f.segment<3>(6 * n + 3);
+    f.segment<3>(6 * n) = F;
+    f.segment<3>(6 * n + 3) = M + w[n].cross(F);  // the force at the offset end, moved to the grid
+  }
+  return f;
+}
+
 NodeMatrix<2> bar_mass(const BarElement& e, MassKind kind) {
   const double L = bar_length(e);
   const BarSection& s = e.section;

@@ -41,6 +41,15 @@ NodeMatrix<2> rod_mass(const RodElement& e, MassKind kind) {
   return M;
 }
 
+Eigen::Matrix<double, 12, 1> rod_thermal_load(const RodElement& e, double alpha, double dT) {
+  const Eigen::Vector3d d = e.x_B - e.x_A;
+  const Eigen::Vector3d F = e.material.E * e.A * alpha * dT * d.normalized();
+  Eigen::Matrix<double, 12, 1> f = Eigen::Matrix<double, 12, 1>::Zero();
+  f.segment<3>(0) = -F;
+  f.segment<3>(6) = F;
+  return f;
+}
+
 RodElement make_rod_element(const Model& model, const Rod& rod) {
   const std::string card = rod.inline_property ? "CONROD" : "CROD";
   RodElement e;

@@ -1,48 +1,220 @@
-// FORCE / MOMENT / LOAD (see loads.hpp).
+// FORCE / MOMENT / PLOAD2 / GRAV / RFORCE / LOAD (see loads.hpp).
 #include "seflex/fem/loads.hpp"
 
+#include <cmath>
+#include <optional>
+#include <unordered_map>
+
 #include "model_lookup.hpp"
-#include "seflex/fem/finalize.hpp"
 #include "seflex/common/error.hpp"
+#include "seflex/fem/assembly.hpp"
+#include "seflex/fem/finalize.hpp"
 
 namespace seflex::fem {
 namespace {
 
-// Add the FORCE/MOMENT cards of set `sid` times `scale`; returns whether any card has this SID.
-bool add_point_loads(const Model& model, const DofMap& dofs, int sid, double scale, Eigen::VectorXd& p) {
-  bool found = false;
-  for (const PointLoad& l : model.point_loads) {
-    if (l.sid != sid) continue;
-    found = true;
-    const char* card = l.kind == PointLoad::Kind::Force ? "FORCE" : "MOMENT";
-    const Eigen::Index gi = detail::grid_index(model, l.grid, l.ref, card, l.sid, "3 (G)");
-    const Grid& g = model.grids[gi];
-    const Eigen::Matrix3d A_cid = detail::axes_at(model, l.cid, g.x_basic, l.ref, card, l.sid, "4 (CID)");
-    const Eigen::Matrix3d A_cd = detail::axes_at(model, g.cd, g.x_basic, g.ref, "GRID", g.id, "7 (CD)");
-    const Eigen::Vector3d f_cd = A_cd.transpose() * (A_cid * (l.scale * l.n));
-    const int c0 = l.kind == PointLoad::Kind::Force ? 1 : 4;
-    for (int k = 0; k < 3; ++k) p[dofs.grid_dof(gi, c0 + k)] += scale * f_cd[k];
+constexpr double kTwoPi = 6.283185307179586476925286766559;
+
+/// What one load_vector call shares: the grids' CD axes, the shells by id, the inertia accelerations.
+class LoadBuilder {
+ public:
+  LoadBuilder(const Model& model, const DofMap& dofs, Eigen::VectorXd& p)
+      : m_(model), dofs_(dofs), p_(p), cd_(grid_cd_axes(model)) {}
+
+  /// Add the cards of set `sid` times `scale`; returns whether any card has this SID.
+  bool add_set(int sid, double scale) {
+    bool found = false;
+    for (const PointLoad& l : m_.point_loads)
+      if (l.sid == sid) found = true, point_load(l, scale);
+    for (const PressureLoad& l : m_.pressure_loads)
+      if (l.sid == sid) found = true, pressure_load(l, scale);
+    for (const GravityLoad& g : m_.gravity_loads)
+      if (g.sid == sid) found = true, gravity(g, scale);
+    for (const RotationalLoad& r : m_.rotational_loads)
+      if (r.sid == sid) found = true, rotation(r, scale);
+    return found;
   }
-  return found;
-}
+
+  /// p += M a for the accumulated grid accelerations of GRAV and RFORCE (one product for all).
+  void finish(const Eigen::SparseMatrix<double>* M) {
+    if (!acc_) return;
+    SEFLEX_DEMAND(M != nullptr && M->rows() == dofs_.size(), "load_vector: GRAV/RFORCE need the assembled mass matrix");
+    p_ += *M * *acc_;
+  }
+
+ private:
+  /// Basic vector v at grid index gi as components in the grid's CD system.
+  Eigen::Vector3d to_cd(std::size_t gi, const Eigen::Vector3d& v) const {
+    return cd_[gi] ? Eigen::Vector3d(cd_[gi]->transpose() * v) : v;
+  }
+
+  void add_grid(std::size_t gi, int c0, const Eigen::Vector3d& v_basic, double scale, Eigen::VectorXd& into) const {
+    const Eigen::Vector3d v = to_cd(gi, v_basic);
+    for (int k = 0; k < 3; ++k) into[dofs_.grid_dof(static_cast<Eigen::Index>(gi), c0 + k)] += scale * v[k];
+  }
+
+  void point_load(const PointLoad& l, double scale) {
+    const char* card = l.kind == PointLoad::Kind::Force ? "FORCE" : "MOMENT";
+    const std::uint32_t gi = detail::grid_index(m_, l.grid, l.ref, card, l.sid, "3 (G)");
+    const Eigen::Matrix3d A_cid = detail::axes_at(m_, l.cid, m_.grids[gi].x_basic, l.ref, card, l.sid, "4 (CID)");
+    add_grid(gi, l.kind == PointLoad::Kind::Force ? 1 : 4, A_cid * (l.scale * l.n), scale, p_);
+  }
+
+  // -------------------------------------------------------------------------------------------
+  // PLOAD2
+  const std::unordered_map<int, std::size_t>& shells() {
+    if (!shell_index_) {
+      shell_index_.emplace();
+      for (std::size_t k = 0; k < m_.shells.size(); ++k) shell_index_->emplace(m_.shells[k].id, k);
+    }
+    return *shell_index_;
+  }
+
+  /// The card kind of a non-shell element id, or "" if no element has it (for messages).
+  std::string other_element(int id) const {
+    for (const Bar& b : m_.bars)
+      if (b.id == id) return b.is_beam ? "CBEAM" : "CBAR";
+    for (const Rod& r : m_.rods)
+      if (r.id == id) return r.inline_property ? "CONROD" : "CROD";
+    for (const Spring& s : m_.springs)
+      if (s.id == id) return s.inline_property ? "CELAS2" : "CELAS1";
+    for (const Conm2& c : m_.conm2)
+      if (c.id == id) return "CONM2";
+    for (const Rbe2& r : m_.rbe2)
+      if (r.id == id) return "RBE2";
+    for (const Rbar& r : m_.rbars)
+      if (r.id == id) return "RBAR";
+    for (const Rbe3& r : m_.rbe3)
+      if (r.id == id) return "RBE3";
+    return "";
+  }
+
+  void pressure_load(const PressureLoad& l, double scale) {
+    const auto& index = shells();
+    auto one = [&](int eid) -> bool {
+      const auto it = index.find(eid);
+      if (it == index.end()) return false;
+      shell_pressure(m_.shells[it->second], l, scale);
+      return true;
+    };
+    if (l.thru) {  // QRG PLOAD2 remark: ids of the range that are not shells are skipped
+      for (int eid = l.elements[0]; eid <= l.elements[1]; ++eid) one(eid);
+      return;
+    }
+    for (const int eid : l.elements) {
+      if (one(eid)) continue;
+      const std::string kind = other_element(eid);
+      detail::fail(m_, l.ref, "PLOAD2", l.sid, "EID",
+                   "element " + std::to_string(eid) + (kind.empty() ? " is not defined" : " is a " + kind) +
+                       "; expected a CQUAD4 or CTRIA3");
+    }
+  }
+
+  void shell_pressure(const Shell& s, const PressureLoad& l, double scale) {
+    const char* card = s.nnode == 4 ? "CQUAD4" : "CTRIA3";
+    std::array<std::uint32_t, 4> gi{};
+    std::array<Eigen::Vector3d, 4> x;
+    for (int k = 0; k < s.nnode; ++k) {
+      gi[k] = detail::grid_index(m_, s.g[k], s.ref, card, s.id,
+                                 std::to_string(k + 4) + " (G" + std::to_string(k + 1) + ")");
+      x[k] = m_.grids[gi[k]].x_basic;
+    }
+    std::array<Eigen::Vector3d, 4> f;
+    if (s.nnode == 3) {
+      const Eigen::Vector3d nA = 0.5 * (x[1] - x[0]).cross(x[2] - x[0]);  // area times unit normal
+      for (int k = 0; k < 3; ++k) f[k] = l.p * nA / 3.0;
+    } else {
+      // f_i = p int N_i (x_xi X x_eta) dxi deta: the integrand is biquadratic, 2 x 2 Gauss is exact.
+      for (auto& v : f) v.setZero();
+      static const double xi_n[4] = {-1, 1, 1, -1}, eta_n[4] = {-1, -1, 1, 1};
+      const double g = 1.0 / std::sqrt(3.0);
+      for (const double xi : {-g, g})
+        for (const double eta : {-g, g}) {
+          Eigen::Vector3d x_xi = Eigen::Vector3d::Zero(), x_eta = Eigen::Vector3d::Zero();
+          double N[4];
+          for (int k = 0; k < 4; ++k) {
+            N[k] = 0.25 * (1 + xi_n[k] * xi) * (1 + eta_n[k] * eta);
+            x_xi += 0.25 * xi_n[k] * (1 + eta_n[k] * eta) * x[k];
+            x_eta += 0.25 * eta_n[k] * (1 + xi_n[k] * xi) * x[k];
+          }
+          const Eigen::Vector3d ndA = x_xi.cross(x_eta);
+          for (int k = 0; k < 4; ++k) f[k] += l.p * N[k] * ndA;
+        }
+    }
+    for (int k = 0; k < s.nnode; ++k) add_grid(gi[k], 1, f[k], scale, p_);
+  }
+
+  // -------------------------------------------------------------------------------------------
+  // GRAV, RFORCE: grid accelerations, multiplied by M in finish()
+  Eigen::VectorXd& acc() {
+    if (!acc_) acc_ = Eigen::VectorXd::Zero(dofs_.size());
+    return *acc_;
+  }
+
+  /// Axes (columns, basic) of the rectangular system `cid` of an inertia load card.
+  Eigen::Matrix3d rectangular_axes(int cid, const CardRef& ref, const char* card, int sid) const {
+    if (cid == 0) return Eigen::Matrix3d::Identity();
+    const auto it = m_.coord_index.find(cid);
+    if (it == m_.coord_index.end())
+      detail::fail(m_, ref, card, sid, "CID",
+                   "references coordinate system " + std::to_string(cid) + ", which is not defined");
+    const CoordSys& c = m_.coords[it->second];
+    if (c.type != CoordType::Rectangular)
+      detail::fail(m_, ref, card, sid, "CID",
+                   "references coordinate system " + std::to_string(cid) +
+                       ", which is not rectangular; expected a rectangular system (CORD1R/CORD2R) or 0");
+    return c.axes;
+  }
+
+  void gravity(const GravityLoad& g, double scale) {
+    const Eigen::Vector3d a = rectangular_axes(g.cid, g.ref, "GRAV", g.sid) * (g.a * g.n);  // basic
+    Eigen::VectorXd& A = acc();
+    for (std::size_t gi = 0; gi < m_.grids.size(); ++gi) add_grid(gi, 1, a, scale, A);
+  }
+
+  void rotation(const RotationalLoad& r, double scale) {
+    const Eigen::Vector3d R = rectangular_axes(r.cid, r.ref, "RFORCE", r.sid) * r.r;
+    const Eigen::Vector3d w = kTwoPi * r.a * R, alpha = kTwoPi * r.racc * R;  // rad per unit time (squared)
+    Eigen::Vector3d x_axis = Eigen::Vector3d::Zero();
+    if (r.grid != 0) x_axis = m_.grids[detail::grid_index(m_, r.grid, r.ref, "RFORCE", r.sid, "3 (G)")].x_basic;
+    Eigen::VectorXd& A = acc();
+    for (std::size_t gi = 0; gi < m_.grids.size(); ++gi) {
+      const Eigen::Vector3d d = m_.grids[gi].x_basic - x_axis;
+      const Eigen::Vector3d a = w.cross(w.cross(d)) + alpha.cross(d);
+      add_grid(gi, 1, a, -scale, A);  // p = -M a
+      if (r.racc != 0.0) add_grid(gi, 4, alpha, -scale, A);
+    }
+  }
+
+  const Model& m_;
+  const DofMap& dofs_;
+  Eigen::VectorXd& p_;
+  std::vector<std::optional<Eigen::Matrix3d>> cd_;
+  std::optional<std::unordered_map<int, std::size_t>> shell_index_;
+  std::optional<Eigen::VectorXd> acc_;
+};
 
 }  // namespace
 
-Eigen::VectorXd load_vector(const Model& model, const DofMap& dofs, int sid) {
+Eigen::VectorXd load_vector(const Model& model, const DofMap& dofs, int sid, const Eigen::SparseMatrix<double>* M_gg) {
   Eigen::VectorXd p = Eigen::VectorXd::Zero(dofs.size());
+  LoadBuilder b(model, dofs, p);
   for (const LoadCombination& lc : model.load_combinations) {
     if (lc.sid != sid) continue;
     for (const auto& [si, li] : lc.terms)
-      if (!add_point_loads(model, dofs, li, lc.s * si, p))
+      if (!b.add_set(li, lc.s * si))
         throw InputError(where(model, lc.ref), "LOAD " + std::to_string(lc.sid) + ": references load set " +
-                                                               std::to_string(li) +
-                                                               ", but no FORCE or MOMENT card has that SID");
+                                                   std::to_string(li) +
+                                                   ", but no FORCE, MOMENT, PLOAD2, GRAV or RFORCE card has that SID");
+    b.finish(M_gg);
     return p;
   }
-  if (!add_point_loads(model, dofs, sid, 1.0, p))
+  if (!b.add_set(sid, 1.0))
     throw InputError(SourceRef{model.files.empty() ? std::string() : model.files.front(), 0},
                      "case control LOAD = " + std::to_string(sid) +
-                         ": no LOAD, FORCE or MOMENT bulk data card has SID " + std::to_string(sid));
+                         ": no LOAD, FORCE, MOMENT, PLOAD2, GRAV or RFORCE bulk data card has SID " +
+                         std::to_string(sid));
+  b.finish(M_gg);
   return p;
 }
 

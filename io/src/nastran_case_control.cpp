@@ -122,6 +122,14 @@ void CaseControlReader::command(const std::string& text, const std::string& file
       throw InputError(where + ": case control " + name + ": got " + quote_field(value) + "; expected a set id (integer > 0)");
     target = id;
   };
+  if (is_command(key, "TEMPERATURE")) {  // TEMPERATURE(LOAD | BOTH) or bare: the thermal load set
+    const std::size_t open = u.find('('), close = u.find(')');
+    std::string describer;
+    if (open != std::string::npos && open < eq && close != std::string::npos && close < eq && open < close)
+      describer = std::string(trim(std::string_view(u).substr(open + 1, close - open - 1)));
+    if (describer.empty() || describer == "LOAD" || describer == "BOTH")
+      return set_id(sc.temperature, describer.empty() ? "TEMPERATURE" : ("TEMPERATURE(" + describer + ")").c_str());
+  }
   for (const std::string_view command : kSelectionCommands) {
     if (!(key == command || is_command(key, command))) continue;
     fem::CaseCommand c;
@@ -169,6 +177,7 @@ void CaseControlReader::finish() {
     if (!s.load) s.load = cc.global.load;
     if (!s.method) s.method = cc.global.method;
     if (!s.mpc) s.mpc = cc.global.mpc;
+    if (!s.temperature) s.temperature = cc.global.temperature;
     if (s.k2gg.empty()) s.k2gg = cc.global.k2gg;
     if (s.m2gg.empty()) s.m2gg = cc.global.m2gg;
     if (s.label.empty()) s.label = cc.global.label;

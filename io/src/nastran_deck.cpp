@@ -51,7 +51,8 @@ constexpr CardType kCardTypes[] = {
     {"EIGRL", parse_eigrl},     {"EIGR", parse_eigr},       {"PARAM", parse_param},    {"DMIG", parse_dmig},
     {"MPC", parse_mpc},         {"MPCADD", parse_mpcadd},   {"OMIT", parse_omit},      {"OMIT1", parse_omit1},
     {"RBAR", parse_rbar},       {"RBE3", parse_rbe3},       {"MAT2", parse_mat2},      {"MAT8", parse_mat8},
-    {"PCOMP", parse_pcomp},     {"PCOMPG", parse_pcompg},
+    {"PCOMP", parse_pcomp},     {"PCOMPG", parse_pcompg},   {"PLOAD2", parse_pload2},  {"GRAV", parse_grav},
+    {"RFORCE", parse_rforce},   {"TEMP", parse_temp},       {"TEMPD", parse_tempd},    {"TEMPRB", parse_temprb},
 };
 constexpr std::size_t kNumCardTypes = sizeof(kCardTypes) / sizeof(kCardTypes[0]);
 

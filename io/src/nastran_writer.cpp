@@ -105,6 +105,7 @@ void write_case_control(const fem::Model& m, std::string& out) {
     if (s.mpc) out += std::string(indent) + "MPC = " + std::to_string(*s.mpc) + "\n";
     if (s.load) out += std::string(indent) + "LOAD = " + std::to_string(*s.load) + "\n";
     if (s.method) out += std::string(indent) + "METHOD = " + std::to_string(*s.method) + "\n";
+    if (s.temperature) out += std::string(indent) + "TEMPERATURE(LOAD) = " + std::to_string(*s.temperature) + "\n";
     for (const auto* names : {&s.k2gg, &s.m2gg}) {
       if (names->empty()) continue;
       out += std::string(indent) + (names == &s.k2gg ? "K2GG = " : "M2GG = ");
@@ -114,7 +115,7 @@ void write_case_control(const fem::Model& m, std::string& out) {
   };
   const fem::Subcase& g = cc.global;
   const bool any = cc.sol || !cc.title.empty() || !cc.subtitle.empty() || !cc.subcases.empty() || !g.label.empty() ||
-                   g.spc || g.mpc || g.load || g.method || !g.k2gg.empty() || !g.m2gg.empty();
+                   g.spc || g.mpc || g.load || g.method || g.temperature || !g.k2gg.empty() || !g.m2gg.empty();
   if (!any) return;
   if (cc.sol) out += "SOL " + *cc.sol + "\n";
   out += "CEND\n";
@@ -286,6 +287,25 @@ void write_constraints_and_loads(const fem::Model& m, CardWriter& w) {
   for (const auto& l : m.point_loads)
     w.start(l.kind == fem::PointLoad::Kind::Force ? "FORCE" : "MOMENT").i(l.sid).i(l.grid).i(l.cid).r(l.scale)
         .r(l.n.x()).r(l.n.y()).r(l.n.z()).end();
+  for (const auto& l : m.pressure_loads) {
+    w.start("PLOAD2").i(l.sid).r(l.p);
+    if (l.thru)
+      w.i(l.elements[0]).t("THRU").i(l.elements[1]);
+    else
+      for (const int e : l.elements) w.i(e);  // continued after six ids (the reader accepts it)
+    w.end();
+  }
+  for (const auto& g : m.gravity_loads)
+    w.start("GRAV").i(g.sid).id0(g.cid).r(g.a).r(g.n.x()).r(g.n.y()).r(g.n.z()).end();
+  for (const auto& r : m.rotational_loads) {
+    w.start("RFORCE").i(r.sid).id0(r.grid).id0(r.cid).r(r.a).r(r.r.x()).r(r.r.y()).r(r.r.z()).i(r.method);
+    if (r.racc != 0.0) w.r(r.racc);
+    w.end();
+  }
+  for (const auto& t : m.grid_temperatures) w.start("TEMP").i(t.sid).i(t.grid).r(t.t).end();
+  for (const auto& t : m.default_temperatures) w.start("TEMPD").i(t.sid).r(t.t).end();
+  for (const auto& t : m.bar_temperatures)
+    w.start("TEMPRB").i(t.sid).i(t.element).r(t.ta).r(t.tb).r(t.tp1a).r(t.tp1b).r(t.tp2a).r(t.tp2b).end();
   for (const auto& l : m.load_combinations) {
     w.start("LOAD").i(l.sid).r(l.s);
     for (const auto& [s, id] : l.terms) w.r(s).i(id);

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <map>
+#include <optional>
 #include <set>
 #include <tuple>
 
@@ -142,13 +143,17 @@ class Classifier {
     for (const CardRole* r : detail::supported_set_cards()) {
       std::vector<Member> members;
       r->members(m_, members);
-      for (const Member& mb : members) load_defined_.insert(mb.sid);
+      std::set<int>& defined = r->role == Role::TemperatureLoad ? temp_defined_ : load_defined_;
+      for (const Member& mb : members) defined.insert(mb.sid);
       if (r->role == Role::Load) supported_loads_.emplace_back(r, std::move(members));
+      if (r->role == Role::TemperatureLoad) supported_temps_.emplace_back(r, std::move(members));
     }
     for (const auto& u : m_.unsupported) {
       const CardRole* r = detail::find_card_role(u.name);
       if (r && r->role == Role::Load)
         for (const Member& mb : u.members) load_defined_.insert(mb.sid);
+      if (r && r->role == Role::TemperatureLoad)
+        for (const Member& mb : u.members) temp_defined_.insert(mb.sid);
     }
     for (const auto& l : m_.load_combinations) load_defined_.insert(l.sid);
     if (!runs(s_)) return;
@@ -161,6 +166,7 @@ class Classifier {
           for (const auto& [si, li] : it->second->terms) used_load_.insert(li);
       }
       if (uses_methods() && c.method) used_method_.insert(*c.method);
+      if (s_ == Solution::Statics && c.temperature) used_temp_.insert(*c.temperature);
     }
   }
 
@@ -184,8 +190,9 @@ class Classifier {
       if (uses_loads() && c.load) {
         if (!load_defined_.count(*c.load))
           report_.add(Kind::Refused, "case control LOAD", at,
-                      in + ": LOAD = " + std::to_string(*c.load) + " selects no load card (no LOAD, FORCE, MOMENT or other "
-                           "load card has that SID)");
+                      in + ": LOAD = " + std::to_string(*c.load) +
+                          " selects no load card (no LOAD, FORCE, MOMENT, PLOAD2, "
+                          "GRAV, RFORCE or other load card has that SID)");
         else if (const auto it = load_combos_.find(*c.load); it != load_combos_.end())
           for (const auto& [si, li] : it->second->terms)
             if (!load_defined_.count(li))
@@ -193,9 +200,11 @@ class Classifier {
                           "LOAD " + std::to_string(*c.load) + " (selected by " + in + ") references load set " +
                               std::to_string(li) + ", which no load card defines");
       }
-      if (s_ == Solution::Statics && !c.load && !enforced_displacement(c))
+      if (s_ == Solution::Statics && !c.load && !c.temperature && !enforced_displacement(c))
         report_.add(Kind::Unused, "case control LOAD", at,
-                    in + " selects no LOAD and no enforced displacement (SPC D): its displacements are zero");
+                    in + " selects no LOAD, no TEMPERATURE(LOAD) and no enforced displacement (SPC D): its "
+                         "displacements are zero");
+      if (c.temperature) temperature_selection(c);
       if (c.spc && !spc_defined_.count(*c.spc))
         report_.add(Kind::Refused, "case control SPC", at,
                     in + ": SPC = " + std::to_string(*c.spc) + " selects no SPC, SPC1 or SPCADD card");
@@ -222,6 +231,55 @@ class Classifier {
     }
   }
 
+  /// TEMPERATURE(LOAD) of a subcase: applied by statics (bars and rods), refused by buckling, unused
+  /// by the others; shells that the set would heat are refused (their thermal loads are not computed).
+  void temperature_selection(const CaseSelection& c) {
+    const std::string in = case_name(c);
+    const std::string what = in + ": TEMPERATURE(LOAD) = " + std::to_string(*c.temperature);
+    if (s_ == Solution::Buckling)
+      return report_.add(Kind::Refused, "case control TEMPERATURE(LOAD)", c.ref,
+                         what + " selects thermal loads, which seflex does not apply in buckling");
+    if (s_ != Solution::Statics)
+      return report_.add(Kind::Unused, "case control TEMPERATURE(LOAD)", c.ref,
+                         what + ": temperatures are not used by " + std::string(sol()));
+    if (!temp_defined_.count(*c.temperature))
+      return report_.add(Kind::Refused, "case control TEMPERATURE(LOAD)", c.ref,
+                         what + " selects no TEMP, TEMPD or TEMPRB card");
+    heated_shells(*c.temperature);
+  }
+
+  /// Shells with thermal expansion that thermal load set `sid` gives a temperature other than TREF
+  /// (fem::thermal_load_vector computes bars and rods only; an element type added later with a
+  /// thermal expansion coefficient belongs here until its thermal load is computed).
+  void heated_shells(int sid) {
+    std::optional<double> tempd;
+    std::map<int, double> grid_t;
+    for (const auto& t : m_.default_temperatures)
+      if (t.sid == sid) tempd = t.t;
+    for (const auto& t : m_.grid_temperatures)
+      if (t.sid == sid) grid_t[t.grid] = t.t;
+    for (const auto& sh : m_.shells) {
+      const auto pit = m_.shell_prop_index.find(sh.pid);
+      if (pit == m_.shell_prop_index.end()) continue;
+      const fem::ShellProperty& p = m_.shell_props[pit->second];
+      for (const int mid : {p.mid1, p.mid2}) {
+        const auto mit = m_.mat1_index.find(mid);
+        if (mit == m_.mat1_index.end() || m_.mat1[mit->second].alpha == 0.0) continue;
+        bool heated = false;
+        for (int k = 0; k < sh.nnode; ++k) {
+          const auto it = grid_t.find(sh.g[k]);
+          const std::optional<double> T = it != grid_t.end() ? std::optional<double>(it->second) : tempd;
+          heated = heated || (T && *T != m_.mat1[mit->second].tref);
+        }
+        if (heated)
+          report_.add_set(Kind::Refused, sh.nnode == 4 ? "CQUAD4" : "CTRIA3", sh.ref, "thermal load set", sid,
+                          " gives shells with thermal expansion (MAT1 ALPHA) a temperature other than TREF, and seflex "
+                          "computes thermal loads of CBAR, CBEAM, CROD and CONROD only");
+        if (heated) break;
+      }
+    }
+  }
+
   bool enforced_displacement(const CaseSelection& c) const {
     if (!c.spc) return false;
     const std::set<int> sets = fem::expand_sets(*c.spc, m_.spcadds);
@@ -234,10 +292,7 @@ class Classifier {
     const std::string card = "case control " + cmd.name;
     const std::string what = case_name(c) + ": " + cmd.name + " = " + cmd.value;
     const std::string& n = cmd.name;
-    const bool thermal_load = n == "TEMPERATURE" || n == "TEMPERATURE(LOAD)" || n == "TEMPERATURE(BOTH)";
     if (s_ == Solution::Statics || s_ == Solution::Buckling) {
-      if (thermal_load)
-        return report_.add(Kind::Refused, card, cmd.ref, what + " selects thermal loads, which seflex does not apply");
       if (n == "DEFORM")
         return report_.add(Kind::Refused, card, cmd.ref, what + " selects enforced element deformations (DEFORM), which seflex does not apply");
       if (n == "SUPORT1")
@@ -248,9 +303,14 @@ class Classifier {
     if (n == "BC" || n == "AXISYMMETRIC" || n == "HARMONICS" || n == "SUPER" || n == "SEALL")
       return report_.add(runs(s_) ? Kind::Refused : Kind::Unused, card, cmd.ref,
                          what + ": seflex does not model " + n + " (multiple boundary conditions, axisymmetric or superelement runs)");
+    if (n.rfind("TEMPERATURE(INIT", 0) == 0 && s_ == Solution::Statics)
+      return report_.add(Kind::Unused, card, cmd.ref,
+                         what +
+                             ": thermal strains are measured from each material's TREF (MAT1), not from an initial "
+                             "temperature set");
     if (n.rfind("TEMPERATURE", 0) == 0)
       return report_.add(Kind::Unused, card, cmd.ref,
-                         what + ": temperatures are not used by " + std::string(sol()) + " (no thermal strain, no temperature-dependent materials)");
+                         what + ": not used by " + std::string(sol()) + " (no temperature-dependent materials)");
     report_.add(Kind::Unused, card, cmd.ref, what + ": not used by " + std::string(sol()));
   }
 
@@ -275,6 +335,9 @@ class Classifier {
                     "load set " + std::to_string(l.sid) + ": references coordinate system " + std::to_string(l.cid) +
                         ", which is not defined" + (used ? "" : " (the set is not used)"));
     }
+    for (const auto& [role, members] : supported_temps_)
+      for (const Member& mb : members)
+        if (!used_temp_.count(mb.sid)) unused_temperature(std::string(role->name), mb.sid, mb.ref);
     for (const auto& l : m_.load_combinations) {
       const bool used = uses_loads() && used_load_.count(l.sid);
       if (!used) unused_load("LOAD", l.sid, l.ref);
@@ -285,6 +348,14 @@ class Classifier {
                         "LOAD " + std::to_string(l.sid) + " references load set " + std::to_string(li) +
                             ", which no load card defines (the LOAD is not used)");
     }
+  }
+
+  void unused_temperature(const std::string& card, int sid, const fem::CardRef& ref) {
+    if (s_ != Solution::Statics)
+      report_.add(Kind::Unused, card, ref, std::string("temperatures are not used by ") + sol());
+    else
+      report_.add_set(Kind::Unused, card, ref, "thermal load set", sid,
+                      std::string(" not selected by TEMPERATURE(LOAD) of any subcase ") + sol() + " runs");
   }
 
   void unused_load(const std::string& card, int sid, const fem::CardRef& ref) {
@@ -450,10 +521,7 @@ class Classifier {
       switch (r->role) {
         case Role::Load: load_cards(u); break;
         case Role::TemperatureLoad:
-          report_.add(Kind::Unused, u.name, u.first,
-                      std::string("temperatures are not used by ") + sol() +
-                          (s_ == Solution::Statics ? " unless TEMPERATURE(LOAD) selects them (then refused)" : ""),
-                      u.count);
+          temperature_cards(u);
           break;
         case Role::Geometry:
         case Role::Structure:
@@ -482,6 +550,21 @@ class Classifier {
         default: report_.add(Kind::Unused, u.name, u.first, role_phrase(r->role), u.count); break;
       }
     }
+  }
+
+  void temperature_cards(const fem::UnsupportedCard& u) {
+    std::size_t counted = 0;
+    for (const Member& mb : u.members) {
+      ++counted;
+      if (used_temp_.count(mb.sid))
+        report_.add_set(
+            Kind::Refused, u.name, mb.ref, "thermal load set", mb.sid,
+            " selected by TEMPERATURE(LOAD) holds them, and seflex does not apply " + u.name + " temperatures");
+      else
+        unused_temperature(u.name, mb.sid, mb.ref);
+    }
+    if (counted < u.count)
+      report_.add(Kind::Unused, u.name, u.first, "cards without a set id in field 2; not used", u.count - counted);
   }
 
   void load_cards(const fem::UnsupportedCard& u) {
@@ -529,10 +612,12 @@ class Classifier {
         report_.add(k, u.name, u.first, "read with the approximation stated", u.count);
     for (const auto& r : m_.rbe3)
       if (r.has_alpha && r.alpha != 0.0)
-        report_.add(k, "RBE3 ALPHA", r.ref, "thermal expansion coefficient of the element: read, not used (no thermal loads)");
+        report_.add(k, "RBE3 ALPHA", r.ref,
+                    "thermal expansion coefficient of the element: read, not used (rigid elements do not expand)");
     for (const auto& r : m_.rbars)
       if (r.alpha != 0.0)
-        report_.add(k, "RBAR ALPHA", r.ref, "thermal expansion coefficient of the element: read, not used (no thermal loads)");
+        report_.add(k, "RBAR ALPHA", r.ref,
+                    "thermal expansion coefficient of the element: read, not used (rigid elements do not expand)");
     drilling();
   }
 
@@ -562,9 +647,9 @@ class Classifier {
   unsigned interface_;
   Report report_;
   std::multimap<int, const fem::LoadCombination*> load_combos_;
-  std::set<int> spc_defined_, mpc_defined_, load_defined_;
-  std::set<int> used_spc_, used_mpc_, used_load_, used_method_;
-  std::vector<std::pair<const CardRole*, std::vector<Member>>> supported_loads_;
+  std::set<int> spc_defined_, mpc_defined_, load_defined_, temp_defined_;
+  std::set<int> used_spc_, used_mpc_, used_load_, used_method_, used_temp_;
+  std::vector<std::pair<const CardRole*, std::vector<Member>>> supported_loads_, supported_temps_;
 };
 
 }  // namespace

@@ -20,6 +20,25 @@ void moment_members(const fem::Model& m, MemberList& out) {
     if (l.kind == fem::PointLoad::Kind::Moment) out.push_back({l.sid, l.ref});
 }
 
+void pload2_members(const fem::Model& m, MemberList& out) {
+  for (const auto& l : m.pressure_loads) out.push_back({l.sid, l.ref});
+}
+void grav_members(const fem::Model& m, MemberList& out) {
+  for (const auto& l : m.gravity_loads) out.push_back({l.sid, l.ref});
+}
+void rforce_members(const fem::Model& m, MemberList& out) {
+  for (const auto& l : m.rotational_loads) out.push_back({l.sid, l.ref});
+}
+void temp_members(const fem::Model& m, MemberList& out) {
+  for (const auto& t : m.grid_temperatures) out.push_back({t.sid, t.ref});
+}
+void tempd_members(const fem::Model& m, MemberList& out) {
+  for (const auto& t : m.default_temperatures) out.push_back({t.sid, t.ref});
+}
+void temprb_members(const fem::Model& m, MemberList& out) {
+  for (const auto& t : m.bar_temperatures) out.push_back({t.sid, t.ref});
+}
+
 using R = Role;
 constexpr bool Y = true, N = false;
 
@@ -79,14 +98,14 @@ const CardRole kRows[] = {
     {"FORCE", R::Load, Y, force_members}, {"MOMENT", R::Load, Y, moment_members}, {"LOAD", R::LoadCombination, Y, nullptr},
     {"FORCE1", R::Load, N, nullptr}, {"FORCE2", R::Load, N, nullptr}, {"MOMENT1", R::Load, N, nullptr},
     {"MOMENT2", R::Load, N, nullptr}, {"PLOAD", R::Load, N, nullptr}, {"PLOAD1", R::Load, N, nullptr},
-    {"PLOAD2", R::Load, N, nullptr}, {"PLOAD4", R::Load, N, nullptr}, {"PLOADX1", R::Load, N, nullptr},
-    {"GRAV", R::Load, N, nullptr}, {"RFORCE", R::Load, N, nullptr}, {"RFORCE1", R::Load, N, nullptr},
+    {"PLOAD2", R::Load, Y, pload2_members}, {"PLOAD4", R::Load, N, nullptr}, {"PLOADX1", R::Load, N, nullptr},
+    {"GRAV", R::Load, Y, grav_members}, {"RFORCE", R::Load, Y, rforce_members}, {"RFORCE1", R::Load, N, nullptr},
     {"ACCEL", R::Load, N, nullptr}, {"ACCEL1", R::Load, N, nullptr}, {"SPCD", R::Load, N, nullptr},
     {"SLOAD", R::Load, N, nullptr}, {"PLOADB3", R::Load, N, nullptr}, {"PRESAX", R::Load, N, nullptr},
     {"LSEQ", R::Load, N, nullptr}, {"DEFORM", R::Load, N, nullptr},
     // temperatures (selected by TEMPERATURE)
-    {"TEMP", R::TemperatureLoad, N, nullptr}, {"TEMPD", R::TemperatureLoad, N, nullptr},
-    {"TEMPP1", R::TemperatureLoad, N, nullptr}, {"TEMPRB", R::TemperatureLoad, N, nullptr},
+    {"TEMP", R::TemperatureLoad, Y, temp_members}, {"TEMPD", R::TemperatureLoad, Y, tempd_members},
+    {"TEMPP1", R::TemperatureLoad, N, nullptr}, {"TEMPRB", R::TemperatureLoad, Y, temprb_members},
     {"TEMPF", R::TemperatureLoad, N, nullptr}, {"TEMPAX", R::TemperatureLoad, N, nullptr},
     {"TEMPB3", R::TemperatureLoad, N, nullptr},
     // constraints and dof sets

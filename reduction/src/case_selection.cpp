@@ -12,6 +12,7 @@ CaseSelection from(const fem::CaseControl& cc, const fem::Subcase* chosen) {
   sel.load = cc.global.load;
   sel.method = cc.global.method;
   sel.mpc = cc.global.mpc;
+  sel.temperature = cc.global.temperature;
   sel.label = cc.global.label;
   sel.other = cc.global.other;
   if (chosen != nullptr) {  // the reader already completed subcases with the global selections
@@ -21,6 +22,7 @@ CaseSelection from(const fem::CaseControl& cc, const fem::Subcase* chosen) {
     if (chosen->load) sel.load = chosen->load;
     if (chosen->method) sel.method = chosen->method;
     if (chosen->mpc) sel.mpc = chosen->mpc;
+    if (chosen->temperature) sel.temperature = chosen->temperature;
     if (!chosen->label.empty()) sel.label = chosen->label;
     if (!chosen->other.empty()) sel.other = chosen->other;
   }

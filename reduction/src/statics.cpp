@@ -61,7 +61,9 @@ std::vector<StaticSolution> solve(const fem::Model& model, const std::vector<Cas
       s.selection = cases[k];
       s.dofs = g.dofs;
       s.n_free = c.n_free();
-      s.p_g = s.selection.load ? fem::load_vector(model, g.dofs, *s.selection.load) : Eigen::VectorXd::Zero(g.dofs.size());
+      s.p_g = s.selection.load ? fem::load_vector(model, g.dofs, *s.selection.load, &g.M)
+                               : Eigen::VectorXd::Zero(g.dofs.size());
+      if (s.selection.temperature) s.p_g += fem::thermal_load_vector(model, g.dofs, *s.selection.temperature);
       Eigen::VectorXd u_f = fem::reduce_load(c, g, s.p_g);
       if (factor) {
         const Eigen::VectorXd p_f = u_f;

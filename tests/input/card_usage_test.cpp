@@ -180,21 +180,29 @@ TEST(CardUsage, CompositeShellCardsAreUsed) {
             CardUse::Kind::Approximated);
 }
 
-// Case-control selections seflex does not use: refused where the solution needs them (thermal loads
-// in statics), warnings otherwise.
+// Case-control selections: refused where the solution needs what is missing (a thermal load set no
+// card defines, thermal loads in buckling), warnings otherwise.
 TEST(CardUsage, CaseControlSelections) {
   const std::string temps = "TEMPD,21,100.\n";
-  const fem::Model m = test::read_deck(deck("SPC = 1\nSUBCASE 1\nLOAD = 7\nSUBCASE 2\nTEMP(LOAD) = 21\n", temps));
-  EXPECT_TRUE(mentions(refusal(m, Solution::Statics),
-                       {"deck.bdf:7: case control TEMPERATURE(LOAD): SUBCASE 2: TEMPERATURE(LOAD) = 21 selects thermal "
-                        "loads, which seflex does not apply"}));
+  const fem::Model m = test::read_deck(deck("SPC = 1\nSUBCASE 1\nLOAD = 7\nSUBCASE 2\nTEMP(LOAD) = 22\n", temps));
+  EXPECT_TRUE(
+      mentions(refusal(m, Solution::Statics),
+               {"deck.bdf:6: case control TEMPERATURE(LOAD): SUBCASE 2: TEMPERATURE(LOAD) = 22 selects no TEMP, "
+                "TEMPD or TEMPRB card"}));
+  const fem::Model t = test::read_deck(deck("SPC = 1\nSUBCASE 1\nLOAD = 7\nSUBCASE 2\nTEMP(LOAD) = 21\n", temps));
+  EXPECT_FALSE(usage(t, Solution::Statics).refused());
+  const auto b = reduction::check_card_usage(t, Solution::Buckling, reduction::select_cases(t));
+  ASSERT_TRUE(b.refused());
+  EXPECT_TRUE(mentions(b.uses.front().reason, {"TEMPERATURE(LOAD) = 21 selects thermal loads", "in buckling"}));
   // the first subcase alone does not need it; TEMP(INIT) and DLOAD are warnings
   const fem::Model w = test::read_deck(deck("SPC = 1\nTEMP(INIT) = 21\nDLOAD = 4\nLOAD = 7\n", temps));
   const auto u = usage(w, Solution::Statics);
   EXPECT_FALSE(u.refused());
   EXPECT_EQ(find(u, "case control TEMPERATURE(INIT)")->kind, CardUse::Kind::Unused);
   EXPECT_TRUE(mentions(find(u, "case control DLOAD")->reason, {"DLOAD = 4: not used by linear statics (SOL 101)"}));
-  EXPECT_TRUE(mentions(find(u, "TEMPD")->reason, {"temperatures are not used"}));
+  EXPECT_TRUE(mentions(find(u, "TEMPD")->reason, {"thermal load set 21 not selected by TEMPERATURE(LOAD)"}));
+  EXPECT_TRUE(
+      mentions(find(usage(w, Solution::NormalModes), "TEMPD")->reason, {"temperatures are not used by normal modes"}));
 }
 
 // Output, optimisation, aero and other solvers' cards, unselected MPC sets and unknown PARAMs: warnings.

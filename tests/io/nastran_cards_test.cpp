@@ -5,10 +5,12 @@
 
 #include <Eigen/LU>
 #include <cmath>
+#include <sstream>
 
 #include "nastran_test_util.hpp"
 #include "seflex/fem/components.hpp"
 #include "seflex/fem/finalize.hpp"
+#include "seflex/io/nastran_writer.hpp"
 
 using namespace seflex;
 using seflex::test::base_deck;
@@ -433,9 +435,75 @@ TEST(NastranCards, MultipointConstraintsAndOmitSets) {
   ASSERT_EQ(cc.subcases[0].other.size(), 2u);  // DLOAD, and TEMPERATURE(INIT) inherited
   EXPECT_EQ(cc.subcases[0].other[0].name, "DLOAD");
   EXPECT_EQ(cc.subcases[0].other[1].name, "TEMPERATURE(INIT)");
-  EXPECT_EQ(cc.subcases[1].other[0].name, "TEMPERATURE(LOAD)");
-  EXPECT_EQ(cc.subcases[1].other[0].value, "6");
+  // TEMPERATURE(LOAD) is the thermal load set; TEMP(INIT) is kept among the unused selections
+  EXPECT_EQ(cc.subcases[1].temperature.value_or(0), 6);
+  ASSERT_EQ(cc.subcases[1].other.size(), 1u);
+  EXPECT_EQ(cc.subcases[1].other[0].name, "TEMPERATURE(INIT)");
+  EXPECT_FALSE(cc.subcases[0].temperature.has_value());
   EXPECT_EQ(cc.subcases[1].ref.line, 6u);
+}
+
+// PLOAD2 (list, continued, THRU), GRAV, RFORCE (continuation RACC), TEMP, TEMPD, TEMPRB (with the
+// element list of its third line); TEMPERATURE, TEMP(BOTH) and TEMP = n select the thermal set.
+TEST(NastranCards, PressureInertiaAndThermalLoads) {
+  const fem::Model m = read_deck(
+      "SOL 101\nCEND\nTEMP = 3\nSUBCASE 1\nTEMPERATURE(BOTH) = 4\nSUBCASE 2\n"
+      "BEGIN BULK\n" +
+      base_deck() +
+      "PLOAD2,1,-2.5,1,2,3,4,5,6\n,7\nPLOAD2,2,3.,10,THRU,20\n"
+      "GRAV,5,3,9.81,0.,0.,-1.,-1\nRFORCE,6,4,2,10.,0.,1.,0.,2,+R\n+R,0.5,0\n"
+      "TEMP,3,1,20.,2,30.,4,50.\nTEMPD,3,10.,4,-5.\n"
+      "TEMPRB,3,8,1.,2.,3.,4.,5.,6.\n,,,,,,,,\n,9,11,THRU,13\n");
+  ASSERT_EQ(m.pressure_loads.size(), 2u);
+  EXPECT_EQ(m.pressure_loads[0].elements, (std::vector<int>{1, 2, 3, 4, 5, 6, 7}));
+  EXPECT_DOUBLE_EQ(m.pressure_loads[0].p, -2.5);
+  EXPECT_TRUE(m.pressure_loads[1].thru);
+  EXPECT_EQ(m.pressure_loads[1].elements, (std::vector<int>{10, 20}));
+  ASSERT_EQ(m.gravity_loads.size(), 1u);
+  EXPECT_EQ(m.gravity_loads[0].cid, 3);
+  EXPECT_EQ(m.gravity_loads[0].n, Eigen::Vector3d(0, 0, -1));
+  ASSERT_EQ(m.rotational_loads.size(), 1u);
+  const fem::RotationalLoad& r = m.rotational_loads[0];
+  EXPECT_EQ(r.grid, 4);
+  EXPECT_EQ(r.cid, 2);
+  EXPECT_DOUBLE_EQ(r.a, 10.0);
+  EXPECT_EQ(r.method, 2);
+  EXPECT_DOUBLE_EQ(r.racc, 0.5);
+  ASSERT_EQ(m.grid_temperatures.size(), 3u);
+  EXPECT_EQ(m.grid_temperatures[2].grid, 4);
+  EXPECT_DOUBLE_EQ(m.grid_temperatures[2].t, 50.0);
+  ASSERT_EQ(m.default_temperatures.size(), 2u);
+  EXPECT_EQ(m.default_temperatures[1].sid, 4);
+  EXPECT_DOUBLE_EQ(m.default_temperatures[1].t, -5.0);
+  ASSERT_EQ(m.bar_temperatures.size(), 5u);  // 8, then 9, 11, 12, 13
+  EXPECT_EQ(m.bar_temperatures[4].element, 13);
+  EXPECT_DOUBLE_EQ(m.bar_temperatures[4].tp2b, 6.0);
+  // RFORCE METHOD 2 is read with the stated approximation
+  bool noted = false;
+  for (const auto& u : m.unsupported) noted = noted || u.name.rfind("RFORCE METHOD 2", 0) == 0;
+  EXPECT_TRUE(noted);
+  const auto& cc = m.case_control;
+  EXPECT_EQ(cc.global.temperature.value_or(0), 3);
+  EXPECT_EQ(cc.subcases[0].temperature.value_or(0), 4);
+  EXPECT_EQ(cc.subcases[1].temperature.value_or(0), 3);  // inherited
+  // seflex convert writes them back: the same cards read again
+  std::ostringstream out;
+  io::write_nastran(m, out);
+  const fem::Model w = read_deck(out.str());
+  ASSERT_EQ(w.pressure_loads.size(), 2u);
+  EXPECT_EQ(w.pressure_loads[0].elements, m.pressure_loads[0].elements);
+  EXPECT_EQ(w.pressure_loads[1].elements, m.pressure_loads[1].elements);
+  EXPECT_TRUE(w.pressure_loads[1].thru);
+  ASSERT_EQ(w.gravity_loads.size(), 1u);
+  EXPECT_EQ(w.gravity_loads[0].n, m.gravity_loads[0].n);
+  ASSERT_EQ(w.rotational_loads.size(), 1u);
+  EXPECT_DOUBLE_EQ(w.rotational_loads[0].racc, 0.5);
+  EXPECT_EQ(w.rotational_loads[0].method, 2);
+  EXPECT_EQ(w.grid_temperatures.size(), 3u);
+  EXPECT_EQ(w.default_temperatures.size(), 2u);
+  ASSERT_EQ(w.bar_temperatures.size(), 5u);
+  EXPECT_DOUBLE_EQ(w.bar_temperatures[4].tp2b, 6.0);
+  EXPECT_EQ(w.case_control.subcases[0].temperature.value_or(0), 4);
 }
 
 TEST(NastranCards, EigenMethodsParamsAndDmig) {

@@ -137,9 +137,14 @@ TEST(NastranValidationDecks, CraigBamptonFrame) {
 TEST(NastranValidationDecks, MixedElements) {
   const auto p = deck("mystran_mixed_cbar_crod_cquad4_ctria3_celas_modes/ALL-ELEM-TEST-GIV.DAT");
   const fem::Model m = io::read_nastran(p);
-  expect_unsupported(m, p, "PLOAD2", 1);
   expect_unsupported(m, p, "DEBUG", 3);
-  EXPECT_EQ(m.unsupported.size(), 2u);
+  EXPECT_EQ(m.unsupported.size(), 1u);
+  // PLOAD2 1991 -.75 on CQUAD4 11, 12 and CTRIA3 21-24 (read since PLOAD2 is supported)
+  ASSERT_EQ(m.pressure_loads.size(), 1u);
+  EXPECT_EQ(m.pressure_loads[0].sid, 1991);
+  EXPECT_DOUBLE_EQ(m.pressure_loads[0].p, -0.75);
+  EXPECT_EQ(m.pressure_loads[0].elements, (std::vector<int>{11, 12, 21, 22, 23, 24}));
+  EXPECT_FALSE(m.pressure_loads[0].thru);
   EXPECT_EQ(m.case_control.global.label, "EIGENVALUES");
   EXPECT_EQ(m.case_control.global.spc.value_or(0), 998);
   EXPECT_EQ(m.case_control.global.method.value_or(0), 2);

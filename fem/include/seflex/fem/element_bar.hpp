@@ -58,6 +58,20 @@ NodeMatrix<2> bar_stiffness(const BarElement& e);
 /// Mass (12 x 12, basic, grid dofs), before WTMASS.
 NodeMatrix<2> bar_mass(const BarElement& e, MassKind kind);
 
+/// Temperatures of a bar for its thermal load (TEMPRB, or the mean of its grids' temperatures).
+struct BarTemperatureField {
+  double dT = 0;                                  ///< mean temperature (TA + TB)/2 minus the material's TREF
+  double tp1a = 0, tp1b = 0, tp2a = 0, tp2b = 0;  ///< effective gradients along element y (1) and z (2) at A, B
+};
+
+/// Equivalent grid loads (12, basic, grid dofs) of the bar's free thermal deformation with expansion
+/// coefficient alpha: f = K u_free, u_free the motion of end A with end B clamped (element axes):
+///   u_A = -alpha L dT;  (v_A, w_A) = -alpha L^2 (k_A / 6 + k_B / 3);  theta_z,A = alpha L (k1A + k1B)/2,
+///   theta_y,A = -alpha L (k2A + k2B)/2, with (k1, k2) = inv([I1 I12; I12 I2]) (I1 TP1, I2 TP2)
+/// (linear gradients along the bar; MYSTRAN BAR1 thermal loads). K is the pinned, offset stiffness,
+/// so the result is exact for this element (a pin releases the thermal deformation it frees).
+Eigen::Matrix<double, 12, 1> bar_thermal_load(const BarElement& e, double alpha, const BarTemperatureField& t);
+
 /// Resolve a CBAR/CBEAM of a finalized model (property, material, orientation, offsets).
 /// Throws InputError naming the card for undefined references, zero length, v along the axis,
 /// or a section with I1 I2 <= I12^2.

@@ -22,6 +22,10 @@ struct RodElement {
 NodeMatrix<2> rod_stiffness(const RodElement& e);
 NodeMatrix<2> rod_mass(const RodElement& e, MassKind kind);  ///< before WTMASS
 
+/// Equivalent grid loads (12, basic) of a free thermal expansion alpha dT of the rod: the axial
+/// force E A alpha dT pushing the ends apart.
+Eigen::Matrix<double, 12, 1> rod_thermal_load(const RodElement& e, double alpha, double dT);
+
 /// Resolve a CROD (PROD) or CONROD of a finalized model; throws InputError for undefined
 /// references or a zero length.
 RodElement make_rod_element(const Model& model, const Rod& rod);

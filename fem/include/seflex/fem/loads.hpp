@@ -1,11 +1,49 @@
 #pragma once
-// Static load vectors on the g-set.
+// Static load vectors on the g-set (every grid's six components in its displacement (CD) system,
+// then the scalar points; dof_map.hpp).
 //
 // FORCE  SID G CID F N1 N2 N3:  force  F (N1, N2, N3) in system CID (axes at the grid) on G's T1-T3;
-// MOMENT SID G CID M N1 N2 N3:  moment M (N1, N2, N3) on G's R1-R3;
-// both rotated to the grid's displacement (CD) system.
-// LOAD   SID S S1 L1 S2 L2 ...:  S * sum_i S_i * (FORCE/MOMENT set L_i).
+// MOMENT SID G CID M N1 N2 N3:  moment M (N1, N2, N3) on G's R1-R3.
+// PLOAD2 SID P EID...:          uniform pressure P on CQUAD4/CTRIA3, along the element normal
+//                               (right-hand rule on G1 G2 G3 [G4], MSC QRG PLOAD2 remark); work-
+//                               equivalent corner forces f_i = P int N_i n dA (bilinear N_i of the
+//                               quad, 2 x 2 Gauss, exact also when warped; a triangle gives P A n / 3
+//                               per corner); no moments: the resultant acts through the element's
+//                               centroid as Nastran's (NX Nastran User's Guide, "Distributed Loads":
+//                               the CQUAD4's total force "is distributed to corner grid points using
+//                               the geometric shape of the element"), and it is the consistent load
+//                               of MITC4/MITC3, whose deflection comes from the corner deflections.
+// GRAV   SID CID A N1 N2 N3:    acceleration g = A (N1, N2, N3) (magnitude A |N|, MSC QRG GRAV) in
+//                               rectangular system CID, applied to every mass:  p = M a_g.
+// RFORCE SID G CID A R1 R2 R3 METHOD / RACC: steady rotation w = 2 pi A R and angular acceleration
+//                               alpha = 2 pi RACC R (R = (R1, R2, R3) in rectangular system CID; A in
+//                               revolutions per unit time) about the axis through grid G (0: basic
+//                               origin):  p = -M a,  a_i = w x (w x r_i) + alpha x r_i on the
+//                               translations and alpha on the rotations of grid i, r_i from G to grid i
+//                               (MSC QRG RFORCE remark 1; MYSTRAN RFORCE_PROC has the same signs).
+// LOAD   SID S S1 L1 S2 L2 ...:  S * sum_i S_i * (load set L_i); a set is every FORCE, MOMENT,
+//                               PLOAD2, GRAV and RFORCE card with that SID.
+//
+// GRAV and RFORCE use the assembled mass matrix (WTMASS and M2GG included), once for all of them:
+// the grid accelerations of every inertia card of the set (scaled) are summed into one g-set vector
+// a and p += M a. With a lumped mass this is Nastran's per-grid 6 x 6 mass times the grid's rigid-
+// body acceleration (MYSTRAN GRAV_PROC, RFORCE_PROC); with COUPMASS the coupling terms are kept,
+// which for GRAV is exact (M times a rigid-body acceleration) and for RFORCE is Nastran's METHOD 1.
+//
+// Thermal loads (TEMPERATURE(LOAD) = SID): TEMP SID G T (grid temperatures), TEMPD SID T (the
+// default of the set's grids), TEMPRB SID EID TA TB TP1A TP1B TP2A TP2B (line elements). Equivalent
+// element loads of the free thermal deformation, f_e = K_e u_free (exact for the flexibility-based
+// bar):
+//   CBAR/CBEAM: mean temperature T = (TA + TB)/2, axial strain alpha (T - TREF); curvatures from
+//               the effective gradients TP1, TP2 (linear along the bar), thermal moments
+//               E alpha (I1 TP1, I2 TP2) (as MYSTRAN BAR1 computes them);
+//   CROD/CONROD: axial force E A alpha (T - TREF) (TEMPRB TA/TB or the grids' temperatures).
+// Grid temperatures give a bar/rod T = mean of its two grids and no gradient. Shells with thermal
+// expansion (ALPHA != 0) are refused (reduction::check_card_usage): their thermal loads are not
+// computed. A new element type with a thermal expansion coefficient must either get its thermal
+// load here or be refused there, never be skipped silently.
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include "seflex/fem/dof_map.hpp"
 #include "seflex/fem/model.hpp"
@@ -13,8 +51,17 @@
 namespace seflex::fem {
 
 /// Load vector (size dofs.size()) of load set `sid`: a LOAD combination if one has this SID,
-/// otherwise the FORCE/MOMENT cards with this SID. Throws InputError if nothing has this SID, if a
-/// LOAD references an undefined set, or a card references an undefined grid or system.
-Eigen::VectorXd load_vector(const Model& model, const DofMap& dofs, int sid);
+/// otherwise the load cards with this SID. `M_gg` is the assembled g-set mass matrix (assembly.hpp),
+/// needed when the set holds GRAV or RFORCE cards (InvariantError if it is then null).
+/// Throws InputError if nothing has this SID, if a LOAD references an undefined set, or a card
+/// references an undefined grid, element or coordinate system, or a PLOAD2 element is not a shell.
+Eigen::VectorXd load_vector(const Model& model, const DofMap& dofs, int sid,
+                            const Eigen::SparseMatrix<double>* M_gg = nullptr);
+
+/// Equivalent nodal loads (size dofs.size()) of thermal load set `sid` (TEMP, TEMPD, TEMPRB) on the
+/// CBAR/CBEAM/CROD/CONROD elements. Throws InputError if no temperature card has this SID, if a
+/// TEMPRB names an element that is not a bar or rod, or if a bar/rod without TEMPRB has a grid
+/// with no temperature in the set (no TEMP for it and no TEMPD).
+Eigen::VectorXd thermal_load_vector(const Model& model, const DofMap& dofs, int sid);
 
 }  // namespace seflex::fem

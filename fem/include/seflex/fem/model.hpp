@@ -315,6 +315,59 @@ struct PointLoad {  ///< FORCE or MOMENT: value = scale * (n1, n2, n3) in system
   CardRef ref;
 };
 
+/// PLOAD2: uniform pressure p on CQUAD4/CTRIA3 elements, positive along the element normal (right-hand
+/// rule on the grid order). `thru`: elements = {EID1, EID2} of "EID1 THRU EID2", whose ids that are
+/// not shells are skipped (QRG PLOAD2 remark); otherwise the ids listed, which must be shells.
+struct PressureLoad {
+  int sid = 0;
+  double p = 0;
+  std::vector<int> elements;
+  bool thru = false;
+  CardRef ref;
+};
+
+/// GRAV: acceleration A (N1, N2, N3) in rectangular system CID applied to every mass: p = M a.
+struct GravityLoad {
+  int sid = 0, cid = 0;
+  double a = 0;
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  CardRef ref;
+};
+
+/// RFORCE: steady rotation omega = 2 pi A (R1, R2, R3)/|R| (A in revolutions per unit time) and
+/// angular acceleration 2 pi RACC (same axis) about the axis through grid G (0: basic origin),
+/// components in rectangular system CID. METHOD 1 and 2 are computed alike (mass matrix times the
+/// acceleration of every grid).
+struct RotationalLoad {
+  int sid = 0, grid = 0, cid = 0;
+  double a = 0, racc = 0;
+  Eigen::Vector3d r = Eigen::Vector3d::Zero();
+  int method = 1;
+  CardRef ref;
+};
+
+/// Temperatures of a thermal load set (selected by case control TEMPERATURE(LOAD)):
+/// TEMP SID G1 T1 G2 T2 G3 T3 (grid temperatures) ...
+struct GridTemperature {
+  int sid = 0, grid = 0;
+  double t = 0;
+  CardRef ref;
+};
+/// ... TEMPD SID1 T1 ... (the temperature of every grid set SID does not give) ...
+struct DefaultTemperature {
+  int sid = 0;
+  double t = 0;
+  CardRef ref;
+};
+/// ... and TEMPRB SID EID1 TA TB TP1A TP1B TP2A TP2B / TCA ... / EID2 ... (line elements: mean
+/// temperatures at ends A and B, effective linear gradients in the element's y (1) and z (2)
+/// directions; the stress-point temperatures TCA ... are read and not used).
+struct BarTemperature {
+  int sid = 0, element = 0;
+  double ta = 0, tb = 0, tp1a = 0, tp1b = 0, tp2a = 0, tp2b = 0;
+  CardRef ref;
+};
+
 struct LoadCombination {  ///< LOAD: overall scale s, then (si, li) pairs
   int sid = 0;
   double s = 1;
@@ -355,7 +408,7 @@ struct Param {
 
 // ---------------------------------------------------------------------------------------------
 // Executive and case control (what seflex keeps of it)
-/// A case-control command that selects analysis input seflex does not use (TEMPERATURE(LOAD),
+/// A case-control command that selects analysis input seflex does not use (TEMPERATURE(INIT),
 /// DLOAD, DEFORM, SUPORT1, ...): kept so that a solution that would need it can refuse the deck.
 struct CaseCommand {
   std::string name;                 ///< upper case, with its describer: "TEMPERATURE(LOAD)", "DLOAD"
@@ -367,6 +420,7 @@ struct Subcase {
   int id = 0;                       ///< 0 = the global (above any SUBCASE) selections
   std::string label;
   std::optional<int> spc, load, method, mpc;
+  std::optional<int> temperature;   ///< TEMPERATURE(LOAD), (BOTH) or bare: the thermal load set
   std::vector<std::string> k2gg, m2gg;
   std::vector<CaseCommand> other;   ///< selections seflex does not use (global ones are inherited)
   CardRef ref;                      ///< the SUBCASE line (file 0, line 0 for the global level)
@@ -429,7 +483,13 @@ struct Model {
   std::vector<MpcAdd> mpcadds;
   std::vector<DofSetEntry> aset, omit, bset, suport;
   std::vector<PointLoad> point_loads;
+  std::vector<PressureLoad> pressure_loads;
+  std::vector<GravityLoad> gravity_loads;
+  std::vector<RotationalLoad> rotational_loads;
   std::vector<LoadCombination> load_combinations;
+  std::vector<GridTemperature> grid_temperatures;
+  std::vector<DefaultTemperature> default_temperatures;
+  std::vector<BarTemperature> bar_temperatures;
   std::vector<EigenMethod> eigen_methods;
   std::vector<Dmig> dmigs;
   std::vector<Param> params;

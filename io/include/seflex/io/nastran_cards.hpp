@@ -87,6 +87,13 @@ void parse_suport(const Card&, ReaderState&);
 void parse_force(const Card&, ReaderState&);
 void parse_moment(const Card&, ReaderState&);
 void parse_load(const Card&, ReaderState&);
+// Pressure, inertia and thermal loads (nastran_cards_loads.cpp)
+void parse_pload2(const Card&, ReaderState&);
+void parse_grav(const Card&, ReaderState&);
+void parse_rforce(const Card&, ReaderState&);
+void parse_temp(const Card&, ReaderState&);
+void parse_tempd(const Card&, ReaderState&);
+void parse_temprb(const Card&, ReaderState&);
 // Solution control and matrices (nastran_cards_solution.cpp)
 void parse_eigrl(const Card&, ReaderState&);
 void parse_eigr(const Card&, ReaderState&);

@@ -9,8 +9,9 @@
 // back with io::read_nastran gives the same model numbers and bitwise the same assembled matrices.
 //
 // What is written: the executive and case control seflex keeps (SOL, TITLE, SUBTITLE, LABEL, SUBCASE,
-// SPC, LOAD, METHOD, MPC, K2GG, M2GG), then every card of the model (incl. RBE2, RBAR, RBE3, MPC,
-// MPCADD, ASET, OMIT, BSET, SUPORT; SPC1 entries as SPC) with the defaults the reader
+// SPC, LOAD, METHOD, MPC, TEMPERATURE(LOAD), K2GG, M2GG), then every card of the model (incl. RBE2,
+// RBAR, RBE3, MPC, MPCADD, ASET, OMIT, BSET, SUPORT, PLOAD2, GRAV, RFORCE, TEMP, TEMPD, TEMPRB (one per
+// element); SPC1 entries as SPC) with the defaults the reader
 // applied made explicit (GRDSET, BAROR/BEAMOR and blank PIDs are resolved; MAT1 keeps blank the one of
 // E, G, NU that the reader's rule reproduces exactly). Case-control PARAMs are written as bulk PARAMs.
 // Named node sets become `$seflex set NAME ID ...` comment lines (read back by io::read_model).

@@ -16,6 +16,7 @@ struct CaseSelection {
   int subcase_id = 0;  ///< 0: the global (above any SUBCASE) selections
   std::string label;
   std::optional<int> spc, load, method, mpc;
+  std::optional<int> temperature;       ///< TEMPERATURE(LOAD) (or BOTH): thermal load set
   std::vector<fem::CaseCommand> other;  ///< selections seflex does not use (fem::Subcase::other)
   fem::CardRef ref;                     ///< the SUBCASE line (line 0: the global level)
 };

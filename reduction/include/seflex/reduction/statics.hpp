@@ -6,7 +6,9 @@
 //   q_g = K_gg u_g - p_g  on the constrained dofs (SPC, GRID PS, AUTOSPC, SUPORT): forces of
 //   single-point constraint; by equilibrium their resultant is minus the applied load's.
 //
-// A subcase without LOAD is solved with zero load (its enforced displacements, SPC D, drive it).
+// p_g is the load of the subcase's LOAD set plus the thermal load of its TEMPERATURE(LOAD) set
+// (fem/loads.hpp; GRAV and RFORCE through the assembled mass matrix). A subcase without either is
+// solved with zero load (its enforced displacements, SPC D, drive it).
 // SUPORT dofs are held at zero, as Nastran's SOL 101 does without inertia relief (PARAM INREL).
 // ASET/OMIT need nothing: static condensation is exact in statics. Subcases that share their SPC and
 // MPC sets share one factorisation of K_ff. K_ff is factorised by the default sparse backend (CHOLMOD
