@@ -258,8 +258,26 @@ class Classifier {
       if (t.sid == sid) tempd = t.t;
     for (const auto& t : m_.grid_temperatures)
       if (t.sid == sid) grid_t[t.grid] = t.t;
+    auto has_temperature = [&](const fem::Shell& sh) {
+      if (tempd) return true;
+      for (int k = 0; k < sh.nnode; ++k)
+        if (grid_t.count(sh.g[k])) return true;
+      return false;
+    };
     for (const auto& sh : m_.shells) {
+      // PCOMP/PCOMPG plies and MAT2/MAT8 materials: their expansion coefficients are not kept, so any
+      // temperature the set gives such a shell may load it.
+      bool unknown_expansion = m_.composite_prop_index.count(sh.pid) > 0;
       const auto pit = m_.shell_prop_index.find(sh.pid);
+      if (pit != m_.shell_prop_index.end())
+        for (const int mid : {m_.shell_props[pit->second].mid1, m_.shell_props[pit->second].mid2})
+          unknown_expansion = unknown_expansion || m_.mat2_index.count(mid) || m_.mat8_index.count(mid);
+      if (unknown_expansion && has_temperature(sh)) {
+        report_.add_set(Kind::Refused, sh.nnode == 4 ? "CQUAD4" : "CTRIA3", sh.ref, "thermal load set", sid,
+                        " gives a temperature to shells of a PCOMP/PCOMPG or of MAT2/MAT8 materials, and seflex "
+                        "computes thermal loads of CBAR, CBEAM, CROD and CONROD only");
+        continue;
+      }
       if (pit == m_.shell_prop_index.end()) continue;
       const fem::ShellProperty& p = m_.shell_props[pit->second];
       for (const int mid : {p.mid1, p.mid2}) {

@@ -114,6 +114,24 @@ TEST(LoadsBadInput, ThermalSelections) {
   EXPECT_NO_THROW(reduction::solve_static(ok));
 }
 
+// Shells of a PCOMP or of MAT8/MAT2 materials: their expansion coefficients are not kept, so a
+// selected thermal set that gives them any temperature is refused (MYSTRAN's VD0114 subcase 2, a
+// heated [0/45/-45/90]s PCOMP, ran before with no load at all: zero displacements).
+TEST(LoadsBadInput, ThermalSetsOnCompositeShellsAreRefused) {
+  const std::string pcomp = "MAT8,8,1.81+11,1.03+10,.28,7.17+9,5.+9,4.+9,1600.\nPCOMP,3\n,8,.001,0.,,8,.001,90.\n"
+                            "GRID,7,,0.,2.,0.\nGRID,8,,1.,2.,0.\nCQUAD4,11,3,4,5,8,7\n";
+  EXPECT_TRUE(mentions(solve_error(deck("TEMP(LOAD) = 7\n", pcomp + "TEMP,7,7,80.\n")),
+                       {"CQUAD4", "thermal load set 7 gives a temperature to shells of a PCOMP/PCOMPG or of MAT2/MAT8",
+                        "CBAR, CBEAM, CROD and CONROD only"}));
+  const std::string mat8_pshell = "MAT8,8,1.81+11,1.03+10,.28,7.17+9,5.+9,4.+9,1600.\nPSHELL,3,8,.002,8\n"
+                                  "GRID,7,,0.,2.,0.\nGRID,8,,1.,2.,0.\nCQUAD4,11,3,4,5,8,7\n";
+  EXPECT_TRUE(mentions(solve_error(deck("TEMP(LOAD) = 7\n", mat8_pshell + "TEMPRB,7,1,30.,30.\nTEMPRB,7,2,30.,30.\nTEMP,7,8,80.\n")),
+                       {"CQUAD4", "shells of a PCOMP/PCOMPG or of MAT2/MAT8"}));
+  // a set that reaches only the bars runs
+  EXPECT_NO_THROW(reduction::solve_static(
+      test::read_deck(deck("TEMP(LOAD) = 7\n", pcomp + "TEMPRB,7,1,30.,30.\nTEMPRB,7,2,30.,30.\n"))));
+}
+
 TEST(LoadsBadInput, CommandLineExitsThree) {
   test::TempDir dir;
   dir.write("bad.bdf", deck("LOAD = 5\n", "PLOAD2,5,1.,2\n"));
