@@ -172,6 +172,7 @@ ShellSection pshell_section(const PshellInput& in) {
 ShellSection laminate_section(std::vector<Ply> plies, std::optional<double> z0, double nsm, Lam lam) {
   if (lam == Lam::Sym) {
     const std::size_t n = plies.size();
+    plies.reserve(2 * n);  // no reallocation while plies[k] is copied
     for (std::size_t k = n; k-- > 0;) plies.push_back(plies[k]);
   }
   if (lam == Lam::SmCore && plies.size() >= 2) plies = smcore_plies(plies);

@@ -116,7 +116,7 @@ struct Ply {
 
 /// A laminate (PCOMP/PCOMPG) by classical lamination theory, plies listed bottom (most negative z)
 /// up (Jones, Mechanics of Composite Materials, 2nd ed., ch. 4; Reddy, Mechanics of Laminated
-/// Composite Plates and Shells, 2nd ed., sec. 3.3):
+/// Composite Plates and Shells, 2nd ed., ch. 3):
 ///   A = sum Qbar_k (z_k+1 - z_k),  B = sum Qbar_k (z_k+1^2 - z_k^2)/2,  D = sum Qbar_k (z_k+1^3 - z_k^3)/3,
 /// z_1 = z0 (blank: -T/2), Qbar_k = T(theta_k)^T Q_k T(theta_k). Mass per area sum rho_k t_k + nsm.
 /// Transverse shear: the laminate's shear compliance H = int F(z)^T C(z) F(z) dz, S = H^-1, where
