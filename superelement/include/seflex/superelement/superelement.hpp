@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "seflex/superelement/inertia_invariants.hpp"
+
 namespace seflex::se {
 
 /// One interface node of the body.
@@ -83,6 +85,9 @@ struct Superelement {
   std::vector<MeshCell> cells;
 
   TruncationReport truncation;
+
+  // ---- inertia invariants (full inertia without the mesh; inertia_invariants.hpp); n == 0 when absent
+  InertiaInvariants invariants;
 
   int num_interfaces() const { return static_cast<int>(interfaces.size()); }
   int size() const { return 6 * num_interfaces() + num_modes; }
