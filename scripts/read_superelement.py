@@ -51,6 +51,6 @@ if __name__ == "__main__":
     print("mass", header["mass_properties"]["mass"], "K[0,0]", repr(float(data["K"][0, 0])),
           "trace(M)", repr(float(np.trace(data["M"]))))
     inv = sum(a.nbytes for k, a in data.items() if k.startswith("inv."))
-    print(f"format {header['format_version']}; inertia invariants:",
-          f"{inv} bytes" if inv else "absent", "; mesh part:",
-          f"{header['num_fe_nodes']} FE nodes" if header["num_fe_nodes"] else "absent")
+    nfe = header["num_fe_nodes"]
+    print(f"format {header['format_version']}; inertia invariants: {f'{inv} bytes' if inv else 'absent'}; "
+          f"mesh part: {f'{nfe} FE nodes' if nfe else 'absent'}")
