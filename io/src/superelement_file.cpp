@@ -121,8 +121,13 @@ class FileSource final : public ByteSource {
  public:
   explicit FileSource(const std::filesystem::path& path) : path_(path), in_(path, std::ios::binary) {
     if (!in_) throw InputError(SourceRef{path.string(), 0}, "cannot open superelement file");
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+      throw InputError(SourceRef{path.string(), 0}, "is not a regular file; expected a superelement file (.se)");
     in_.seekg(0, std::ios::end);
-    size_ = static_cast<std::uint64_t>(in_.tellg());
+    const auto end = in_.tellg();
+    if (end < 0) throw InputError(SourceRef{path.string(), 0}, "cannot read superelement file");
+    size_ = static_cast<std::uint64_t>(end);
   }
   std::uint64_t size() const override { return size_; }
   void read(std::uint64_t offset, std::size_t n, void* dst) const override {

@@ -238,6 +238,16 @@ TEST(SuperelementParts, BadInvariantDatasetsAreRefusedByName) {
             std::string::npos);
 }
 
+TEST(SuperelementParts, MissingFileOrFolderIsNamed) {
+  test::TempDir tmp;
+  const std::string missing = message_of([&] { io::load_superelement(tmp / "none.se"); });
+  EXPECT_NE(missing.find("none.se: cannot open superelement file"), std::string::npos) << missing;
+  const std::string folder = message_of([&] { io::load_superelement(tmp.path()); });
+  EXPECT_NE(folder.find(tmp.path().string() + ": is not a regular file; expected a superelement file (.se)"),
+            std::string::npos)
+      << folder;
+}
+
 TEST(SuperelementParts, Format11FileIsStillRead) {
   // A 1.1 file: the same bytes as 1.2 without invariants, with minor version 1.
   const se::Superelement s = beam(2);
