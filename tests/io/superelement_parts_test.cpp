@@ -264,6 +264,43 @@ TEST(SuperelementParts, Format11FileIsStillRead) {
   EXPECT_TRUE(same_bits(Eigen::MatrixXd(r.M_fe), Eigen::MatrixXd(s.M_fe)));
 }
 
+// H_k(P) of inertia_invariants.hpp by its definition, stored (3n) x n with row r + 3c, column k:
+// sum over FE nodes i of P_t,i[:, k] x (M P)_t,i[:, c].
+Eigen::MatrixXd reference_HP(const se::Superelement& s) {
+  const Eigen::Index n = s.size(), nfe = s.p_BoI_B.cols();
+  const Eigen::MatrixXd MP = s.M_fe * s.recovery;
+  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(3 * n, n);
+  for (Eigen::Index i = 0; i < nfe; ++i)
+    for (Eigen::Index k = 0; k < n; ++k)
+      for (Eigen::Index c = 0; c < n; ++c)
+        H.block<3, 1>(3 * c, k) += Eigen::Vector3d(s.recovery.block<3, 1>(6 * i, k))
+                                       .cross(Eigen::Vector3d(MP.block<3, 1>(6 * i, c)));
+  return H;
+}
+
+// keep_internal_modes keeps the top-left corner of each invariant: checked on P^T M P and H_k(P)
+// computed here from their definitions (the other fields share the layout rule).
+TEST(SuperelementParts, FewerModesKeepTheInvariantsOfTheKeptColumns) {
+  se::Superelement s = beam(4);
+  s.invariants = random_invariants(s.size(), 14);
+  s.invariants.Mpp = s.recovery.transpose() * (s.M_fe * s.recovery);
+  s.invariants.HP = reference_HP(s);
+  const se::Superelement t = io::keep_internal_modes(s, 1);
+  ASSERT_EQ(t.size(), 13);
+  ASSERT_EQ(t.invariants.n, 13);
+  const Eigen::MatrixXd Mpp = t.recovery.transpose() * (t.M_fe * t.recovery), HP = reference_HP(t);
+  EXPECT_LE((t.invariants.Mpp - Mpp).cwiseAbs().maxCoeff(), 1e-14 * Mpp.cwiseAbs().maxCoeff());
+  ASSERT_EQ(t.invariants.HP.rows(), HP.rows());
+  ASSERT_EQ(t.invariants.HP.cols(), HP.cols());
+  EXPECT_LE((t.invariants.HP - HP).cwiseAbs().maxCoeff(), 1e-14 * HP.cwiseAbs().maxCoeff());
+  EXPECT_GT(HP.cwiseAbs().maxCoeff(), 0.0);
+  // Every field has its shape for n = 13 (else the writer refuses it) and the fixed ones are kept.
+  EXPECT_NO_THROW(io::serialize_superelement(t));
+  EXPECT_TRUE(same_bits(t.invariants.EgOO, s.invariants.EgOO));
+  EXPECT_TRUE(same_bits(t.invariants.HE1, Eigen::MatrixXd(s.invariants.HE1.topLeftCorner(9 * 13, 13))));
+  EXPECT_TRUE(same_bits(t.invariants.E0mLP[4], Eigen::MatrixXd(s.invariants.E0mLP[4].leftCols(13))));
+}
+
 // keep_internal_modes truncates the invariants exactly: equal to the invariants computed from the
 // truncated recovery matrix (needs reduction::compute_inertia_invariants).
 TEST(SuperelementParts, FewerModesTruncateTheInvariantsExactly) {
