@@ -11,10 +11,10 @@
 namespace seflex::io::detail {
 
 /// Calls f(name, matrix, rows, cols) for every field of `inv` (const or not), with the shape the
-/// field must have for a body of reduced size n. Dataset names are "inv." + the field name, and
+/// field must have for a body of reduced size n with m fixed-interface modes. Dataset names are "inv." + the field name, and
 /// "inv.FIELD.k" for the k-th member of an array field. Fixed-size fields pass their Eigen matrix.
 template <class Inv, class F>
-void for_each_invariant_dataset(Inv& inv, Eigen::Index n, F&& f) {
+void for_each_invariant_dataset(Inv& inv, Eigen::Index n, Eigen::Index m, F&& f) {
   static_assert(std::is_same_v<std::remove_const_t<Inv>, se::InertiaInvariants>);
   auto each = [&](const char* field, auto& arr, Eigen::Index rows, Eigen::Index cols) {
     for (std::size_t k = 0; k < arr.size(); ++k)
@@ -40,13 +40,14 @@ void for_each_invariant_dataset(Inv& inv, Eigen::Index n, F&& f) {
   f(p + "EgOO", inv.EgOO, 3, 9);
   each("PgOV", inv.PgOV, n, n);
   each("EgOV", inv.EgOV, 3, n);
+  f(p + "mode_max_translation", inv.mode_max_translation, m, 1);
 }
 
 /// Total bytes of the invariants' datasets for reduced size n (float64).
-inline std::uint64_t invariant_bytes(Eigen::Index n) {
+inline std::uint64_t invariant_bytes(Eigen::Index n, Eigen::Index m) {
   se::InertiaInvariants dummy;
   std::uint64_t total = 0;
-  for_each_invariant_dataset(dummy, n, [&](const std::string&, auto&, Eigen::Index r, Eigen::Index c) {
+  for_each_invariant_dataset(dummy, n, m, [&](const std::string&, auto&, Eigen::Index r, Eigen::Index c) {
     total += static_cast<std::uint64_t>(r * c) * 8;
   });
   return total;
@@ -61,7 +62,8 @@ inline se::InertiaInvariants truncate_invariants(const se::InertiaInvariants& in
   if (!inv.present()) return inv;
   se::InertiaInvariants out = inv;
   out.n = static_cast<int>(n_new);
-  for_each_invariant_dataset(out, n_new, [](const std::string&, auto& A, Eigen::Index r, Eigen::Index c) {
+  const Eigen::Index m_new = n_new - (inv.n - inv.mode_max_translation.size());  // the 6N interface columns stay
+  for_each_invariant_dataset(out, n_new, m_new, [](const std::string&, auto& A, Eigen::Index r, Eigen::Index c) {
     if (A.rows() != r || A.cols() != c) A = A.topLeftCorner(r, c).eval();
   });
   return out;

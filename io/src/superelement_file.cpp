@@ -320,7 +320,7 @@ class Reader {
   void read_invariants(const YAML::Node& table, se::Superelement& s) const {
     std::string first_present, first_missing;
     se::InertiaInvariants probe;
-    detail::for_each_invariant_dataset(probe, s.size(), [&](const std::string& name, auto&, Eigen::Index, Eigen::Index) {
+    detail::for_each_invariant_dataset(probe, s.size(), s.num_modes, [&](const std::string& name, auto&, Eigen::Index, Eigen::Index) {
       if (table[name] && first_present.empty()) first_present = name;
       if (!table[name] && first_missing.empty()) first_missing = name;
     });
@@ -328,7 +328,7 @@ class Reader {
     if (!first_missing.empty())
       fail("dataset '" + first_missing + "' is missing; the file has '" + first_present +
            "', and the inertia invariants are stored complete or not at all");
-    detail::for_each_invariant_dataset(s.invariants, s.size(),
+    detail::for_each_invariant_dataset(s.invariants, s.size(), s.num_modes,
                                        [&](const std::string& name, auto& A, Eigen::Index r, Eigen::Index c) {
                                          fill(table, name, A, r, c);
                                        });
@@ -516,7 +516,7 @@ std::string serialize_superelement(const se::Superelement& s) {
     if (s.invariants.n != s.size())
       throw InvariantError("cannot save superelement '" + s.name + "': its inertia invariants are for n = " +
                            std::to_string(s.invariants.n) + ", the body has n = " + std::to_string(s.size()));
-    detail::for_each_invariant_dataset(s.invariants, s.size(),
+    detail::for_each_invariant_dataset(s.invariants, s.size(), s.num_modes,
                                        [&](const std::string& name, const auto& A, Eigen::Index r, Eigen::Index c) {
                                          if (A.rows() != r || A.cols() != c)
                                            throw InvariantError("cannot save superelement '" + s.name + "': invariant " +
@@ -690,7 +690,7 @@ std::uint64_t superelement_memory_bytes(const se::Superelement& s) {
                                                        s.p_BoI_B.size() + s.mode_frequencies_hz.size());
   total += 4 * s.fe_node_ids.size() + sizeof(se::MeshCell) * s.cells.size();
   total += 12 * static_cast<std::uint64_t>(s.M_fe.nonZeros()) + 4 * static_cast<std::uint64_t>(s.M_fe.outerSize() + 1);
-  detail::for_each_invariant_dataset(s.invariants, s.size(), [&](const std::string&, const auto& A, Eigen::Index, Eigen::Index) {
+  detail::for_each_invariant_dataset(s.invariants, s.size(), s.num_modes, [&](const std::string&, const auto& A, Eigen::Index, Eigen::Index) {
     total += 8 * static_cast<std::uint64_t>(A.size());
   });
   return total;

@@ -30,7 +30,7 @@ void randomize(A& a, Eigen::Index r, Eigen::Index c, std::mt19937& rng) {
 
 // Every field of se::InertiaInvariants (superelement/inertia_invariants.hpp) with random numbers
 // spanning 40 decades (bit-exactness is then a real test of the number path).
-se::InertiaInvariants random_invariants(Eigen::Index n, unsigned seed) {
+se::InertiaInvariants random_invariants(Eigen::Index n, Eigen::Index m, unsigned seed) {
   std::mt19937 rng(seed);
   se::InertiaInvariants v;
   v.n = static_cast<int>(n);
@@ -53,6 +53,7 @@ se::InertiaInvariants random_invariants(Eigen::Index n, unsigned seed) {
   randomize(v.EgOO, 3, 9, rng);
   for (auto& a : v.PgOV) randomize(a, n, n, rng);
   for (auto& a : v.EgOV) randomize(a, 3, n, rng);
+  randomize(v.mode_max_translation, m, 1, rng);
   return v;
 }
 
@@ -140,7 +141,7 @@ std::string edit_header(std::string bytes, const std::string& from, const std::s
 TEST(SuperelementParts, InvariantsRoundTripBitExactly) {
   test::TempDir tmp;
   se::Superelement s = beam(3);
-  s.invariants = random_invariants(s.size(), 11);
+  s.invariants = random_invariants(s.size(), s.num_modes, 11);
   io::save_superelement(s, tmp / "body.se");
   const std::string bytes = test::read_file(tmp / "body.se");
   EXPECT_EQ(bytes.substr(8, 8), std::string("\x01\0\0\0\x02\0\0\0", 8));  // format 1.2
@@ -170,7 +171,7 @@ TEST(SuperelementParts, InvariantsRoundTripBitExactly) {
 TEST(SuperelementParts, DynamicsLoadSkipsTheMeshButChecksEveryByte) {
   test::TempDir tmp;
   se::Superelement s = beam(2);
-  s.invariants = random_invariants(s.size(), 12);
+  s.invariants = random_invariants(s.size(), s.num_modes, 12);
   io::save_superelement(s, tmp / "body.se");
   const se::Superelement d = io::load_superelement(tmp / "body.se", {io::SuperelementParts::Dynamics});
   EXPECT_TRUE(d.fe_node_ids.empty());
@@ -203,8 +204,8 @@ TEST(SuperelementParts, DynamicsLoadSkipsTheMeshButChecksEveryByte) {
   EXPECT_EQ(info.num_fe_nodes, 5);
   const auto n = static_cast<std::uint64_t>(s.size());
   // n^2 (Mpp) + 6n (PmE0) + 36 + 3n^2 (HP) + 18n + 9n^2 + 6n + 36 + 6 n^2 + 36n + 18n + 18n^2 + 3n^2 + 18n + 9n^2
-  // + 9n + 27 + 3n^2 + 9n: 52 n^2 + 120 n + 99 numbers
-  EXPECT_EQ(info.invariant_bytes(), 8 * (52 * n * n + 120 * n + 99));
+  // + 9n + 27 + 3n^2 + 9n: 52 n^2 + 120 n + 99 numbers, and the m mode amplitudes
+  EXPECT_EQ(info.invariant_bytes(), 8 * (52 * n * n + 120 * n + 99 + static_cast<std::uint64_t>(s.num_modes)));
   // Mesh part: ids (int32), positions, recovery, M_fe (colptr 31, rowind and values nnz), 4 line cells.
   const auto nnz = static_cast<std::uint64_t>(s.M_fe.nonZeros());
   EXPECT_EQ(info.bytes_of(true), 4 * 5 + 8 * 15 + 8 * 30 * n + 8 * 31 + 16 * nnz + 4 * (4 + 4 + 16));
@@ -213,7 +214,7 @@ TEST(SuperelementParts, DynamicsLoadSkipsTheMeshButChecksEveryByte) {
 
 TEST(SuperelementParts, BadInvariantDatasetsAreRefusedByName) {
   se::Superelement s = beam(0);  // n = 12
-  s.invariants = random_invariants(s.size(), 13);
+  s.invariants = random_invariants(s.size(), s.num_modes, 13);
   const std::string bytes = io::serialize_superelement(s);
   // A wrong shape (the byte count then also differs: the shape is checked first).
   const std::string msg1 = message_of(
@@ -282,7 +283,7 @@ Eigen::MatrixXd reference_HP(const se::Superelement& s) {
 // computed here from their definitions (the other fields share the layout rule).
 TEST(SuperelementParts, FewerModesKeepTheInvariantsOfTheKeptColumns) {
   se::Superelement s = beam(4);
-  s.invariants = random_invariants(s.size(), 14);
+  s.invariants = random_invariants(s.size(), s.num_modes, 14);
   s.invariants.Mpp = s.recovery.transpose() * (s.M_fe * s.recovery);
   s.invariants.HP = reference_HP(s);
   const se::Superelement t = io::keep_internal_modes(s, 1);
