@@ -39,7 +39,7 @@ for size in $sizes; do
     /usr/bin/time -f "%U %S" -o "$work/time" "$bin" run "$work/scene.yaml" -o "$out" --no-animation > "$work/log" 2>&1 || { cat "$work/log"; exit 1; }
     read -r u s < "$work/time"
     it=$(sed -n 's/.* \([0-9]*\) Newton iterations.*/\1/p' "$work/log")
-    cpu=$(echo "$u + $s" | bc -l)
-    printf "%-8s %7d  %-40s %9.2f %10d %12.1f\n" "$size" "$grids" "$bin" "$cpu" "$it" "$(echo "1e6 * $cpu / $it" | bc -l)"
+    awk -v sz="$size" -v g="$grids" -v b="$bin" -v u="$u" -v s="$s" -v it="$it" \
+      'BEGIN { printf "%-8s %7d  %-40s %9.2f %10d %12.1f\n", sz, g, b, u + s, it, 1e6 * (u + s) / it }'
   done
 done

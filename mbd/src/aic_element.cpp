@@ -8,6 +8,7 @@
 
 #include "seflex/common/error.hpp"
 #include "seflex/common/so3.hpp"
+#include "aic_inertia_detail.hpp"
 
 namespace seflex::mbd {
 
@@ -255,17 +256,6 @@ MatrixXd to_world_matrix(const AicElement& e, const Matrix3d& R_WB, const Matrix
   return B;
 }
 
-namespace {
-
-/// Stacked skew matrices of the 2N 3-vector chunks of y (rows of the eta part zero): n x 3.
-MatrixXd stacked_skew(const AicElement& e, const VectorXd& y) {
-  MatrixXd S = MatrixXd::Zero(e.n, 3);
-  for (int i = 0; i < 2 * e.N; ++i) S.middleRows<3>(3 * i) = skew(y.segment<3>(3 * i));
-  return S;
-}
-
-}  // namespace
-
 void elastic_force(const AicElement& e, const AicKinematics& kin, TangentModel tangent, VectorXd& f, MatrixXd* Kt) {
   // Tx = I - R6 Zx with R6 = [Phi_rig; 0] (rank-6 defect): every product with Tx is O(n^2).
   const int N = e.N, nb = 6 * N;
@@ -296,7 +286,7 @@ void elastic_force(const AicElement& e, const AicKinematics& kin, TangentModel t
   GT.noalias() -= GPhi * ZxL;
   Kw.noalias() += kin.Zx.middleRows<3>(3).transpose() * GT;
   // Geometric part from the rotation of the forces with R_WB: -Ftilde E_r ZxL.
-  Kw.noalias() -= stacked_skew(e, fw) * ZxL.middleRows<3>(3);
+  Kw.noalias() -= detail::stacked_skew(e, fw) * ZxL.middleRows<3>(3);
   *Kt = to_world_matrix(e, kin.frame.R_WB, Kw);
 }
 
