@@ -9,11 +9,10 @@
 // alpha_m = (2 rho - 1)/(rho + 1), alpha_f = rho/(rho + 1), gamma = 1/2 + alpha_f - alpha_m,
 // beta = (gamma + 1/2)^2 / 4. Newton on h Dq with S = K J_l(h Dq) + gamma/(beta h) C + beta' M,
 // beta' = (1 - alpha_m)/((1 - alpha_f) beta h^2), started from vdot_{n+1} extrapolated linearly from
-// the last two steps. Newton has converged when the residual and the
-// increment are below their tolerances, or when the distance to the solution estimated from the
-// contraction of the corrections (Hairer-Wanner IV.8) is below a fraction of the local error
-// tolerance; the matrix is kept over the iterations of a step while the residual falls by 10 per
-// iteration.
+// the last two steps. Newton has converged when the residual and the increment are below their
+// tolerances, or when the distance to the solution estimated from the contraction of the
+// corrections (Hairer-Wanner IV.8) is below a fraction of the local error tolerance; the matrix is
+// kept over the iterations of a step while the residual falls by 10 per iteration.
 // Step-size control from the local error estimate h^2 |beta - 1/6| |vdot_{n+1} - vdot_n|; lock
 // crossings located by Hermite interpolation of the hinge angle and the step redone to end there.
 #include "seflex/mbd/data.hpp"
