@@ -46,7 +46,11 @@ StepResult newton_step(const Model& model, const State& s0, double h, const Coef
   StepResult out;
   rate.start_step();
   // Iteration error admitted: a fraction of the local error tolerance (weighted like the increment).
-  const double rate_bound = st.newton_error_fraction * std::min(st.tol_position, st.tol_angle);
+  // Residual and increment tests only with a constant step (the tolerance controls nothing there)
+  // and with rho_inf = 1 (no numerical damping: iteration errors accumulate in the energy; the
+  // energy-conservation test T11 drifts by 1.2 % instead of 0.02 % with the contraction test).
+  const bool use_rate = st.adaptive && st.rho_inf < 1.0;
+  const double rate_bound = use_rate ? st.newton_error_fraction * std::min(st.tol_position, st.tol_angle) : 0.0;
   bool rate_converged = false;
   s1 = s0;
   // Predictor: vdot_{n+1} as predicted by the caller, a_{n+1} from (1 - alpha_m) a_{n+1} + alpha_m a_n =
