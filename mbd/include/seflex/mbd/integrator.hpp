@@ -36,6 +36,7 @@ struct IntegratorSettings {
   /// Newton also stops when theta/(1 - theta) |dx| <= this fraction of the local error tolerance
   /// (theta: contraction rate of the weighted corrections dx; 0: residual and increment tests only).
   /// The iteration error then stays 1000x below what the step-size control admits per step.
+  /// Used only when `adaptive` and rho_inf < 1 (a constant step or no numerical damping: off).
   double newton_error_fraction = 1e-3;
   bool reuse_iteration_matrix = true;  ///< modified Newton: re-form only when convergence is slow
   double event_tol = 1e-9;        ///< located lock crossing: |phi - phi_lock| [rad]
