@@ -298,9 +298,13 @@ struct Reader {
     }
     if (f.has("newton")) {
       const YamlField n = f["newton"];
-      n.check_keys({"tolerance", "increment_tolerance", "max_iterations"});
+      n.check_keys({"tolerance", "increment_tolerance", "error_fraction", "max_iterations"});
       if (n.has("tolerance")) s.newton_residual_tol = n["tolerance"].positive();
       if (n.has("increment_tolerance")) s.newton_increment_tol = n["increment_tolerance"].positive();
+      if (n.has("error_fraction")) {
+        s.newton_error_fraction = n["error_fraction"].non_negative();
+        if (!(s.newton_error_fraction < 1.0)) n["error_fraction"].fail("expected a fraction of the local error tolerance in [0, 1)");
+      }
       if (n.has("max_iterations")) {
         s.newton_max_iterations = n["max_iterations"].integer();
         if (s.newton_max_iterations < 1) n["max_iterations"].fail("expected a number >= 1");

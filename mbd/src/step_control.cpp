@@ -41,6 +41,7 @@ void validate_settings(const IntegratorSettings& st, double t0) {
   if (!(st.output_interval >= 0.0)) bad("output interval must be >= 0");
   if (st.newton_max_iterations < 1 || !(st.newton_residual_tol > 0.0) || !(st.newton_increment_tol > 0.0))
     bad("Newton iterations must be >= 1 and tolerances positive");
+  if (!(st.newton_error_fraction >= 0.0 && st.newton_error_fraction < 1.0)) bad("Newton error fraction must lie in [0, 1)");
   if (!(st.event_tol > 0.0)) bad("event tolerance must be positive");
 }
 

@@ -3,6 +3,7 @@
 // (internal). A formulation supplies its Newton step and state through the Stepper interface; the
 // driver (drive_steps) owns the loop: error test, step growth and shrinkage, landing on output
 // times, locating lock crossings by Hermite interpolation of the hinge angle, latching, samples.
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,39 @@ class Stepper {
   virtual void prepare_failure_sample() {}
   /// "largest residuals: ..." of the last failed attempt.
   virtual std::string describe_residual() const = 0;
+};
+
+/// Newton convergence from the contraction of the corrections (Hairer and Wanner, Solving ODEs II,
+/// sec. IV.8; SUNDIALS IDA): after the k-th correction dx_k the iterate is about
+/// eta |dx_k| from the solution, eta = theta / (1 - theta), theta = |dx_k| / |dx_{k-1}|. For k = 1
+/// theta is the last rate measured (in an earlier step; at least `theta_floor`, and 1/2 before any
+/// rate is known). The norm is the caller's (weighted: relative to the length scale, rad).
+class NewtonRate {
+ public:
+  explicit NewtonRate(double theta_floor = 1e-3) : floor_(theta_floor) {}
+  /// A new step: forget the corrections of the last one (its rate is kept).
+  void start_step() {
+    k_ = 0;
+    prev_inc_ = 0.0;
+  }
+  /// Record the norm of the correction just applied; true when the estimated distance to the
+  /// solution is at most `bound`. Corrections that do not shrink (theta >= 1) never converge.
+  bool converged(double inc, double bound) {
+    ++k_;
+    if (k_ >= 2) theta_ = prev_inc_ > 0.0 ? inc / prev_inc_ : 0.0;
+    prev_inc_ = inc;
+    if (!(theta_ < 1.0)) return false;
+    const double theta = std::max(theta_, floor_);
+    return theta / (1.0 - theta) * inc <= bound;
+  }
+  /// Last measured contraction rate.
+  double theta() const { return theta_; }
+
+ private:
+  double floor_;
+  double theta_ = 0.5;
+  double prev_inc_ = 0.0;
+  int k_ = 0;
 };
 
 /// Check the settings (InputError naming the setting).
