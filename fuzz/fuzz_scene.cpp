@@ -10,12 +10,36 @@
 // dictionary fuzz/dict/scene.dict.
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "fuzz_support.hpp"
+#include "seflex/io/nastran.hpp"
 #include "seflex/io/scene.hpp"
+#include "seflex/io/superelement_file.hpp"
+#include "seflex/reduction/craig_bampton_superelement.hpp"
 
 namespace {
+
+/// Reduce examples/scenes/link.bdf (interface grids 1 and 5, frame grid 3, 3 fixed-interface modes:
+/// the double-pendulum link) and save it in the scratch folder. Aborts if that fails.
+void write_link_superelement(const std::string& name) {
+  try {
+    const seflex::fem::Model model = seflex::io::read_nastran(std::filesystem::path(SEFLEX_SOURCE_DIR) / "examples/scenes/link.bdf");
+    seflex::reduction::SuperelementOptions o;
+    o.interface_ids = {1, 5};
+    o.frame_node = 3;
+    o.modes.modes = 3;
+    o.name = "link";
+    seflex::io::SaveOptions save;
+    save.overwrite = true;
+    seflex::io::save_superelement(seflex::reduction::reduce_to_superelement(model, o), seflex::fuzz::scratch_dir() / name, save);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "seflex fuzz: cannot make %s: %s\n", name.c_str(), e.what());
+    std::abort();
+  }
+}
 
 /// True if `p` lies in the scratch folder (lexically: no "..", same parent).
 bool in_scratch(const std::filesystem::path& p) {
@@ -26,7 +50,7 @@ bool in_scratch(const std::filesystem::path& p) {
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  seflex::fuzz::write_link_superelement("link.se");
+  write_link_superelement("link.se");
   return 0;
 }
 

@@ -9,10 +9,7 @@
 #include <typeinfo>
 
 #include "seflex/common/error.hpp"
-#include "seflex/io/nastran.hpp"
 #include "seflex/io/sha256.hpp"
-#include "seflex/io/superelement_file.hpp"
-#include "seflex/reduction/craig_bampton_superelement.hpp"
 
 namespace seflex::fuzz {
 
@@ -66,23 +63,6 @@ void run(const std::function<void()>& read) {
     std::abort();
   } catch (...) {
     std::fprintf(stderr, "seflex fuzz: not an InputError: a non-std exception\n");
-    std::abort();
-  }
-}
-
-void write_link_superelement(const std::string& name) {
-  try {
-    const fem::Model model = io::read_nastran(std::filesystem::path(SEFLEX_SOURCE_DIR) / "examples/scenes/link.bdf");
-    reduction::SuperelementOptions o;
-    o.interface_ids = {1, 5};
-    o.frame_node = 3;
-    o.modes.modes = 3;
-    o.name = "link";
-    io::SaveOptions save;
-    save.overwrite = true;
-    io::save_superelement(reduction::reduce_to_superelement(model, o), scratch_dir() / name, save);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "seflex fuzz: cannot make %s: %s\n", name.c_str(), e.what());
     std::abort();
   }
 }

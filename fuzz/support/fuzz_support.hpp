@@ -24,10 +24,6 @@ std::filesystem::path write_scratch(const std::string& name, std::string_view by
 /// exception's type and message on stderr).
 void run(const std::function<void()>& read);
 
-/// Reduce examples/scenes/link.bdf (interface grids 1 and 5, frame grid 3, 3 fixed-interface modes:
-/// the double-pendulum link) and save it as scratch_dir()/name. Aborts if that fails.
-void write_link_superelement(const std::string& name);
-
 /// `body` followed by a valid superelement trailer ("SEFLXEND" + SHA-256 of `body`).
 std::string with_sha256_trailer(const std::string& body);
 

@@ -93,6 +93,14 @@ Dataset matrix_dataset(const std::string& name, const Eigen::MatrixXd& A) {
 
 // ---------------------------------------------------------------------------------------------
 // Reading
+/// "a list", "an object", ... for messages about a header value of the wrong kind.
+std::string node_kind(const YAML::Node& n) {
+  if (n.IsScalar()) return "the value '" + n.Scalar() + "'";
+  if (n.IsSequence()) return "an array";
+  if (n.IsMap()) return "an object";
+  return "null";
+}
+
 class Reader {
  public:
   Reader(const std::string& bytes, std::string name) : bytes_(bytes), name_(std::move(name)) {}
@@ -141,6 +149,8 @@ class Reader {
  private:
   template <class T>
   T get(const YAML::Node& node, const std::string& key) const {
+    // yaml-cpp throws its own exception (not an InputError) for a key looked up in a scalar or a list
+    if (!node.IsMap()) fail("header: expected an object with the key '" + key + "', got " + node_kind(node));
     const YAML::Node v = node[key];
     if (!v) fail("header: missing key '" + key + "'");
     try {
@@ -182,6 +192,7 @@ class Reader {
       if (required) fail("dataset '" + name + "' is missing");
       return nullptr;
     }
+    if (!d.IsMap()) fail("dataset '" + name + "': its table entry must be an object");
     if (get<std::string>(d, "dtype") != dtype) fail("dataset '" + name + "' must have dtype " + dtype);
     const auto got = get<std::vector<std::int64_t>>(d, "shape");
     if (got != shape) {
@@ -232,7 +243,10 @@ class Reader {
     s.created = get<std::string>(h, "created");
     if (const YAML::Node w = h["source_warnings"]; w) {  // format 1.1
       if (!w.IsSequence()) fail("header: 'source_warnings' must be an array of strings");
-      for (const auto& line : w) s.source_warnings.push_back(line.as<std::string>());
+      for (const auto& line : w) {
+        if (!line.IsScalar()) fail("header: 'source_warnings' must be an array of strings, got " + node_kind(line));
+        s.source_warnings.push_back(line.Scalar());
+      }
     }
     const YAML::Node frame = h["frame_node"];
     if (!frame || !frame.IsMap()) fail("header: missing object 'frame_node'");
