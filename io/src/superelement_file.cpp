@@ -299,7 +299,8 @@ class Reader {
       std::vector<Eigen::Triplet<double>> trips;
       trips.reserve(static_cast<std::size_t>(nnz));
       for (std::int64_t c = 0; c < 6 * nfe; ++c) {
-        if (colptr[c + 1] < colptr[c]) fail("dataset 'M_fe.colptr' is not non-decreasing");
+        if (colptr[c + 1] < colptr[c] || colptr[c + 1] > nnz)  // checked before rowind[k] is read
+          fail("dataset 'M_fe.colptr' is not non-decreasing from 0 to the length of M_fe.values");
         for (std::int64_t k = colptr[c]; k < colptr[c + 1]; ++k) {
           if (rowind[k] < 0 || rowind[k] >= 6 * nfe) fail("dataset 'M_fe.rowind' has a row index out of range");
           trips.emplace_back(static_cast<int>(rowind[k]), static_cast<int>(c), values[k]);

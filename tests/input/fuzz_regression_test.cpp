@@ -87,6 +87,15 @@ TEST(FuzzRegression, SuperelementHeaderValueOfTheWrongKindIsAnInputError) {
                        {"source_warning_object.se", "header: 'source_warnings' must be an array of strings, got an object"}));
 }
 
+// M_fe's column pointers were checked one column at a time, after the rows of the previous column had
+// been read: a pointer beyond the number of values read past the end of M_fe.rowind (ASan:
+// heap-buffer-overflow; found by fuzz_superelement in its first 8,000 executions).
+TEST(FuzzRegression, SuperelementMassColumnPointerBeyondTheValuesIsRefusedBeforeItIsUsed) {
+  EXPECT_TRUE(mentions(se_error("mfe_colptr_beyond_values.se"),
+                       {"mfe_colptr_beyond_values.se",
+                        "dataset 'M_fe.colptr' is not non-decreasing from 0 to the length of M_fe.values"}));
+}
+
 TEST(FuzzRegression, SuperelementCommandExitsThreeWithOneErrorLine) {
   test::TempDir dir;
   const auto r = test::run_seflex("export '" + regression("superelement/interface_scalar.se").string() + "' --dmig '" +
