@@ -98,7 +98,9 @@ for h in "${harnesses[@]}"; do
        "$dir/$h/corpus" "$dir/$h/seeds")
   echo "== $h: ${cmd[*]}"
   rc=0
+  t0=$(date +%s)
   "${cmd[@]}" >"$log" 2>&1 || rc=$?
+  elapsed=$(($(date +%s) - t0))
   after=$(find "$dir/$h/findings" -type f | wc -l)
   last=$(grep -E '^#[0-9]+.*(cov|DONE)' "$log" | tail -1 || true)
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
@@ -107,7 +109,7 @@ for h in "${harnesses[@]}"; do
   ft=$(echo "$last" | sed -n 's/.* ft: \([0-9]*\).*/\1/p')
   files=$(find "$dir/$h/corpus" -type f | wc -l)
   bytes=$(du -sk "$dir/$h/corpus" | cut -f1)
-  rows+=("$(printf '%-13s %6s %10s %8s %7s %7s %7s %8s %9s' "$h" "$seconds" "${execs:-?}" "${rate:-?}" \
+  rows+=("$(printf '%-13s %6s %10s %8s %7s %7s %7s %8s %9s' "$h" "$elapsed" "${execs:-?}" "${rate:-?}" \
     "${cov:-?}" "${ft:-?}" "$files" "${bytes}K" "$((after - before))")")
   if [ "$rc" -ne 0 ] || [ "$after" -gt "$before" ]; then
     status=1

@@ -169,14 +169,60 @@ class Checker {
       const std::string_view size = c.token();
       known_ = !v.empty();
       v4_ = !v.empty() && v[0] >= '4' && v[0] <= '9';
+      v40_ = v == "4" || v == "4.0";
       binary_ = type == "1";
       size_t_ = integer(size) == 4 ? 4 : 8;
       return;
     }
     if (!known_) return;  // no $MeshFormat first: gmsh refuses the file itself
+    if (name == "Entities" && v4_) return binary_ ? entities_binary(c, header_line) : entities_ascii(c);
     if (name == "Nodes") return binary_ ? nodes_binary(c, header_line) : nodes_ascii(c);
     if (name == "Elements") return binary_ ? elements_binary(c, header_line) : elements_ascii(c);
     if (name == "NodeData" || name == "ElementData" || name == "ElementNodeData") return data(name, c, header_line);
+  }
+
+  // Format 4: numPoints numCurves numSurfaces numVolumes, then per entity: tag, its box (points of
+  // 4.1: X Y Z), numPhysicalTags and the tags, and (curves and up) numBounding and the tags.
+  void entities_ascii(Cursor& c) {
+    std::optional<long long> count[4];
+    for (auto& n : count) n = integer(c.token());
+    const int line = c.token_line();
+    for (int dim = 0; dim < 4; ++dim) {
+      bound(line, "Entities", count[dim], "entities of dimension " + std::to_string(dim), 5, c.remaining_tokens());
+      if (!count[dim]) return;
+    }
+    for (int dim = 0; dim < 4; ++dim)
+      for (long long e = 0; e < *count[dim]; ++e) {
+        const int doubles = dim == 0 && !v40_ ? 3 : 6;
+        for (int k = 0; k < 1 + doubles; ++k) c.token();
+        for (int list = 0; list < (dim == 0 ? 1 : 2); ++list) {
+          const std::optional<long long> n = integer(c.token());
+          if (!n) return;
+          bound(c.token_line(), "Entities", n, list == 0 ? "physical tags of an entity" : "bounding entities of an entity", 1,
+                c.remaining_tokens());
+          for (long long k = 0; k < *n; ++k) c.token();
+        }
+      }
+  }
+
+  void entities_binary(Cursor& c, int line) {
+    std::uint64_t count[4] = {};
+    for (auto& n : count)
+      if (!c.binary(size_t_, n)) return;
+    for (int dim = 0; dim < 4; ++dim)
+      bound_u(line, "Entities", count[dim], "entities of dimension " + std::to_string(dim), 4 + 24 + size_t_,
+              c.remaining_bytes());
+    for (int dim = 0; dim < 4; ++dim)
+      for (std::uint64_t e = 0; e < count[dim]; ++e) {
+        c.skip_bytes(4 + 8 * (dim == 0 && !v40_ ? 3 : 6));
+        for (int list = 0; list < (dim == 0 ? 1 : 2); ++list) {
+          std::uint64_t n = 0;
+          if (!c.binary(size_t_, n)) return;
+          bound_u(line, "Entities", n, list == 0 ? "physical tags of an entity" : "bounding entities of an entity", 4,
+                  c.remaining_bytes());
+          c.skip_bytes(static_cast<std::size_t>(4 * n));
+        }
+      }
   }
 
   void nodes_ascii(Cursor& c) {
@@ -281,7 +327,7 @@ class Checker {
 
   std::string_view bytes_;
   const std::string& file_;
-  bool known_ = false, v4_ = false, binary_ = false;
+  bool known_ = false, v4_ = false, v40_ = false, binary_ = false;
   std::size_t size_t_ = 8;
 };
 

@@ -3,10 +3,11 @@
 //
 // libgmsh 4.8 trusts the counts of a .msh file: a node block that declares 2,000,000,000 nodes in a
 // 150-byte file makes it allocate tens of gigabytes before it notices the data is missing (found by
-// fuzz/fuzz_gmsh.cpp). check_msh_counts reads the section headers that size gmsh's allocations - the
-// node blocks of $Nodes, the counts of $Elements and the entity count of $NodeData, $ElementData and
-// $ElementNodeData - in ASCII and binary files of formats 2 and 4, and refuses a count the rest of its
-// section cannot hold (each node, element or value takes at least a few tokens or bytes).
+// fuzz/fuzz_gmsh.cpp). check_msh_counts reads the counts that size gmsh's allocations - the entities and
+// their tag lists of $Entities (format 4), the node blocks of $Nodes, the counts of $Elements and the
+// entity count of $NodeData, $ElementData and $ElementNodeData - in ASCII and binary files of formats
+// 2 and 4, and refuses a count the rest of its section cannot hold (each item takes at least a few
+// tokens or bytes).
 // It checks nothing else: everything else is gmsh's to read and report.
 #include <filesystem>
 #include <string>

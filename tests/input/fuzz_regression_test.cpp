@@ -64,6 +64,14 @@ TEST(FuzzRegression, GmshNodeDataEntityCountBeyondTheFileIsRefused) {
                        {"node_data_count.msh:29: $NodeData: 2000000000 entities, but the rest of the section holds at most 0"}));
 }
 
+// A binary MSH 4.1 file whose $Entities declares 3,959,422,977 physical tags for one entity (the
+// fuzzer's mutation of the panel mesh): libgmsh spent more than 10 s allocating and clearing memory.
+TEST(FuzzRegression, GmshEntityTagCountBeyondTheFileIsRefused) {
+  EXPECT_TRUE(mentions(msh_error("entities_physical_tags_binary.msh"),
+                       {"entities_physical_tags_binary.msh:21: $Entities: 3959422977 physical tags of an entity, but the rest "
+                        "of the section holds at most 1884"}));
+}
+
 TEST(FuzzRegression, GmshCountCheckAcceptsEveryFormatGmshWrites) {
   // text and binary, formats 2.2 and 4.1: the check refuses none of the valid meshes
   for (const char* name : {"panel_msh2.msh", "panel_msh4.msh", "panel_msh4_binary.msh"}) {
