@@ -9,6 +9,7 @@
 #   SEFLEX_JOBS        build parallelism (default 1)
 #   SEFLEX_FUZZ_NICE   nice level of the fuzzers (default 15)
 #   SEFLEX_FUZZ_NO_BUILD=1  use the binaries already built
+#   SEFLEX_FUZZ_SEED   libFuzzer's -seed (CI sets 1: the same mutations every run; default random)
 # The corpus of each harness ($SEFLEX_FUZZ_DIR/<harness>/corpus) is kept between runs and grows; the
 # seeds are copied afresh each run from tests/, meshes/, examples/, bench/study/ and ../shared/validation/.
 # A finding (crash, sanitizer report, leak, timeout > 10 s, > 2 GB) is saved under <harness>/findings/;
@@ -94,8 +95,9 @@ for h in "${harnesses[@]}"; do
   log="$dir/$h/last.log"
   before=$(find "$dir/$h/findings" -type f | wc -l)
   cmd=(nice -n "$nice_level" "$exe" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=65536
-       -dict="$root/fuzz/dict/$h.dict" -artifact_prefix="$dir/$h/findings/" -print_final_stats=1
-       "$dir/$h/corpus" "$dir/$h/seeds")
+       -dict="$root/fuzz/dict/$h.dict" -artifact_prefix="$dir/$h/findings/" -print_final_stats=1)
+  [ -n "${SEFLEX_FUZZ_SEED:-}" ] && cmd+=(-seed="$SEFLEX_FUZZ_SEED")
+  cmd+=("$dir/$h/corpus" "$dir/$h/seeds")
   echo "== $h: ${cmd[*]}"
   rc=0
   t0=$(date +%s)

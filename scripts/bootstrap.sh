@@ -44,6 +44,6 @@ configure build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSEFLEX_FUZZ=ON -DCMAKE_
   -DSEFLEX_BUILD_BENCH=OFF -DSEFLEX_BUILD_EXAMPLES=OFF
 cmake --build build-fuzz -j "$jobs" --target seflex test_input fuzz_all
 (cd build-fuzz && ctest --output-on-failure -j "$jobs" -L input --timeout 900)
-SEFLEX_FUZZ_NO_BUILD=1 SEFLEX_FUZZ_BUILD=build-fuzz SEFLEX_FUZZ_DIR="$(pwd)/build-fuzz/fuzz-corpus" SEFLEX_FUZZ_NICE=0 \
+SEFLEX_FUZZ_NO_BUILD=1 SEFLEX_FUZZ_BUILD=build-fuzz SEFLEX_FUZZ_DIR="$(pwd)/build-fuzz/fuzz-corpus" SEFLEX_FUZZ_NICE=0 SEFLEX_FUZZ_SEED=1 \
   bench/fuzz.sh "${SEFLEX_FUZZ_SECONDS:-20}"
 echo "bootstrap: all tests passed"
