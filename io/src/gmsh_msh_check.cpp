@@ -113,6 +113,9 @@ class Checker {
  public:
   Checker(std::string_view bytes, const std::string& file) : bytes_(bytes), file_(file) {}
 
+  // A section's body runs to the next line that starts with '$' (where gmsh, too, looks for the next
+  // keyword): a damaged or missing $End line must not hide the sections after it. Binary bodies run to
+  // their $End line, as a '$' after a newline may be data there.
   void run() {
     std::size_t pos = 0;
     int line = 1;
@@ -123,14 +126,13 @@ class Checker {
       if (text.size() > 1 && text[0] == '$' && text.rfind("$End", 0) != 0) {
         const std::string name(text.substr(1));
         const std::size_t body_begin = std::min(eol + 1, bytes_.size());
-        const std::size_t end = bytes_.find("\n$End" + name, eol);
+        std::size_t end = std::string_view::npos;
+        if (binary_ && name != "MeshFormat") end = bytes_.find("\n$End" + name, eol);
+        if (end == std::string_view::npos) end = bytes_.find("\n$", eol);
         const std::size_t body_end = end == std::string_view::npos ? bytes_.size() : end + 1;
         section(name, bytes_.substr(body_begin, body_end - body_begin), line);
-        const std::size_t after = body_end >= bytes_.size() ? bytes_.size()
-                                                            : std::min(bytes_.find('\n', body_end), bytes_.size());
-        line += static_cast<int>(std::count(bytes_.begin() + static_cast<long>(pos), bytes_.begin() + static_cast<long>(after), '\n'));
-        pos = after < bytes_.size() ? after + 1 : after;
-        if (after < bytes_.size()) ++line;
+        line += static_cast<int>(std::count(bytes_.begin() + static_cast<long>(pos), bytes_.begin() + static_cast<long>(body_end), '\n'));
+        pos = body_end;
         continue;
       }
       pos = eol + 1;
