@@ -73,7 +73,7 @@ make_seeds() {  # harness
     superelement)  # first byte odd: the file as is; even: body, the harness appends the SHA-256 trailer
       local t; t="$(mktemp -d)"
       "$build/apps/seflex" reduce examples/scenes/link.bdf --interface 1,5 --frame 3 --modes 3 -o "$t/link.se" >/dev/null
-      "$build/apps/seflex" reduce examples/scenes/link.bdf --interface 1,5 --modes 0 --no-mesh -o "$t/guyan.se" >/dev/null
+      "$build/apps/seflex" reduce examples/scenes/link.bdf --interface 1,5 --modes 1 --no-mesh -o "$t/nomesh.se" >/dev/null
       for f in "$t"/*.se; do
         { printf '\001'; cat "$f"; } >"$s/file_$(basename "$f")"
         { printf '\000'; head -c $(($(stat -c %s "$f") - 40)) "$f"; } >"$s/body_$(basename "$f")"
