@@ -1,12 +1,14 @@
 // seflex info DECK: what a Nastran deck holds - files read, counts of grids, elements and cards,
 // unsupported cards with their first location, and the rigid-body mass properties the way Nastran's
-// grid point weight generator reports them.
+// grid point weight generator reports them. seflex info BODY.se: a superelement file
+// (info_superelement.cpp).
 #include <cstdio>
 #include <limits>
 #include <optional>
 #include <string>
 
 #include "command.hpp"
+#include "info_superelement.hpp"
 #include "seflex/fem/finalize.hpp"
 #include "seflex/fem/mass_properties.hpp"
 #include "seflex/fem/model.hpp"
@@ -133,6 +135,13 @@ int run_info(seflex::app::Args& args) {
   constexpr int kUnset = std::numeric_limits<int>::min();
   const int grdpnt = args.integer("grdpnt", kUnset);
   args.finish();
+  if (seflex::app::is_superelement_file(deck)) {
+    if (grdpnt != kUnset || model_options.properties || !model_options.parameters.empty())
+      throw seflex::app::UsageError(deck + " is a superelement file; --grdpnt, --properties and --set apply to a model");
+    seflex::app::print_superelement_info(deck);
+    std::fflush(stdout);
+    return seflex::app::kOk;
+  }
   const seflex::fem::Model m = seflex::io::read_model(deck, model_options);
   std::printf("deck        %s\n", deck.c_str());
   std::printf("files read  %zu\n", m.files.size());
@@ -157,7 +166,8 @@ int run_info(seflex::app::Args& args) {
 
 }  // namespace
 
-SEFLEX_COMMAND(info, "DECK [--grdpnt G]",
+SEFLEX_COMMAND(info, "DECK [--grdpnt G] | BODY.se",
                "counts of grids, elements and cards, unsupported cards, and mass properties (like Nastran's GPWG; "
-               "reference point PARAM GRDPNT or --grdpnt) of a Nastran deck",
+               "reference point PARAM GRDPNT or --grdpnt) of a Nastran deck; of a superelement file: provenance, "
+               "interfaces, modes, mass properties, inertia invariants, mesh part and truncation report",
                run_info);

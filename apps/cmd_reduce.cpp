@@ -23,6 +23,7 @@
 #include "seflex/io/sha256.hpp"
 #include "seflex/io/superelement_file.hpp"
 #include "seflex/reduction/craig_bampton_superelement.hpp"
+#include "seflex/reduction/inertia_invariants.hpp"
 
 namespace {
 
@@ -209,7 +210,7 @@ int run_reduce(seflex::app::Args& args) {
     o.modes.modes = modes == kAbsent ? 0 : modes;
   o.modes.backend = *backend;
   o.name = name ? *name : std::filesystem::path(model_path).stem().string();
-  o.full_mesh = !no_mesh;
+  o.full_mesh = true;  // the inertia invariants are computed from the mesh part before --no-mesh drops it
   const auto t1 = std::chrono::steady_clock::now();
   red::SuperelementInfo info;
   seflex::se::Superelement s = red::reduce_to_superelement(model, o, &info);
@@ -220,6 +221,10 @@ int run_reduce(seflex::app::Args& args) {
   s.source_hash = source_hash(model);
   s.created = iso_utc_now();
   s.seflex_version = seflex::kVersion;
+  if (!s.invariants.present() && s.recovery.size() != 0 && s.M_fe.size() != 0)
+    s.invariants = red::compute_inertia_invariants(s);
+  const std::size_t mesh_nodes = s.fe_node_ids.size(), mesh_cells = s.cells.size();
+  if (no_mesh) seflex::io::drop_mesh(s);
 
   std::printf("seflex reduce %s -> %s (body '%s')\n", model_path.c_str(), out->c_str(), s.name.c_str());
   print_summary(s, info, model);
@@ -236,6 +241,15 @@ int run_reduce(seflex::app::Args& args) {
   const auto sec = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };
   std::printf("\nwrote %s (%.1f MB)\n", out->c_str(),
               static_cast<double>(std::filesystem::file_size(*out)) / (1024.0 * 1024.0));
+  if (s.invariants.present())
+    std::printf("  inertia invariants: stored (full inertia without the mesh)\n");
+  else
+    std::printf("  inertia invariants: not computed (full inertia will need the mesh part)\n");
+  if (no_mesh)
+    std::printf("  mesh part: left out (--no-mesh; %zu FE nodes, %zu cells not written: no animation or recovery)\n",
+                mesh_nodes, mesh_cells);
+  else
+    std::printf("  mesh part: %zu FE nodes, %zu cells\n", mesh_nodes, mesh_cells);
   const auto& st = info.stats;
   std::printf("time: read %.2f s, reduce %.2f s, summary and write %.2f s\n", sec(t0, t1), sec(t1, t2), sec(t2, t3));
   std::printf("work: K_ii %ld dofs, factor %.3g nonzeros; ", static_cast<long>(st.n_interior),
@@ -257,5 +271,6 @@ SEFLEX_COMMAND(reduce,
                "[--properties FILE] [--set NAME=VALUE]...",
                "Craig-Bampton reduction to an absolute-interface-coordinate superelement: constraint modes of all six "
                "dofs of the interface grids plus fixed-interface modes; prints mass properties, the truncation report "
-               "and the reduced model's free-free frequencies (--compare K: against the full model's)",
+               "and the reduced model's free-free frequencies (--compare K: against the full model's); --no-mesh writes the "
+               "dynamics only (reduced matrices and inertia invariants, no FE mesh, recovery or FE mass)",
                run_reduce);

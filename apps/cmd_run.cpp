@@ -15,6 +15,7 @@
 #include "seflex/io/run_output.hpp"
 #include "seflex/io/scene.hpp"
 #include "seflex/io/solve_scene.hpp"
+#include "seflex/io/superelement_file.hpp"
 #include "seflex/mbd/integrator.hpp"
 #include "seflex/mbd/state.hpp"
 
@@ -94,10 +95,25 @@ int run_run(seflex::app::Args& args) {
   }
   const auto t0 = std::chrono::steady_clock::now();
   const std::clock_t c0 = std::clock();
-  const io::Scene scene = io::build_scene(d);
+  // The mesh part of the superelement files serves the animation and the floating-frame baseline
+  // only; without them a run reads the dynamics (reduced matrices, inertia invariants).
+  io::SceneBuildOptions bo;
+  bo.keep_mesh = (!no_animation && d.output.animation_interval) || formulation == io::Formulation::FfrfLm;
+  const io::Scene scene = io::build_scene(d, bo);
+  std::uint64_t se_bytes = 0;
+  bool meshless = false, with_mesh = false;
+  for (const auto& s : scene.superelements) {
+    se_bytes += io::superelement_memory_bytes(s);
+    meshless = meshless || s.fe_node_ids.empty();
+    with_mesh = with_mesh || !s.fe_node_ids.empty() || s.recovery.size() != 0;
+  }
   std::printf("seflex run %s -> %s\n  %s\n  %zu bodies, %zu hinges, %zu force elements, %d dofs; t_end = %g s\n",
               scene_path.c_str(), out->c_str(), d.title.c_str(), d.bodies.size(), scene.model.hinges.size(),
               scene.model.force_elements.size(), scene.model.num_dofs, d.integrator.t_end);
+  std::printf("  superelements in memory: %.1f kB (%s)\n", static_cast<double>(se_bytes) / 1024.0,
+              with_mesh ? "with mesh parts" : "dynamics only, mesh parts not read");
+  if (!no_animation && d.output.animation_interval && meshless)
+    std::printf("  note: a superelement without its mesh part (seflex reduce --no-mesh) is not drawn in the animation\n");
   std::fflush(stdout);
 
   io::RunOutputOptions oo;

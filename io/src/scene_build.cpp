@@ -10,6 +10,8 @@
 #include "seflex/io/scene.hpp"
 #include "seflex/io/superelement_file.hpp"
 #include "seflex/mbd/drive_profile.hpp"
+#include "seflex/reduction/inertia_invariants.hpp"
+#include "invariant_datasets.hpp"
 
 namespace seflex::io {
 
@@ -48,7 +50,9 @@ struct Builder {
   std::vector<mbd::HingeIndex> hinge_ids;
   std::map<std::pair<std::string, int>, mbd::SuperelementIndex> se_ids;  // shared AIC data
 
-  explicit Builder(const SceneDescription& desc) : d(desc) { scene.description = desc; }
+  SceneBuildOptions options;
+
+  Builder(const SceneDescription& desc, const SceneBuildOptions& o) : d(desc), options(o) { scene.description = desc; }
 
   int find(int s) { return uf[static_cast<std::size_t>(s)] == s ? s : uf[static_cast<std::size_t>(s)] = find(uf[static_cast<std::size_t>(s)]); }
   const se::Superelement& se_of(int b) const { return scene.superelements[static_cast<std::size_t>(b)]; }
@@ -79,11 +83,41 @@ struct Builder {
     r.where.fail("grid " + std::to_string(r.grid) + " is not an interface node of body '" + r.body + "' (its interface grids: " + ids + ")");
   }
 
+  /// A superelement file with the parts the run needs. `full_inertia`: the first body that uses the
+  /// file with full inertia (nullptr: none does).
+  se::Superelement load_file(const SceneBody& b, const SceneBody* full_inertia) const {
+    const auto load = [&](SuperelementParts parts) {
+      return at(b.file_where, [&] { return load_superelement(b.superelement, LoadOptions{parts}); });
+    };
+    se::Superelement s = load(options.keep_mesh ? SuperelementParts::All : SuperelementParts::Dynamics);
+    if (!full_inertia || s.invariants.present()) return s;
+    // Full inertia from a file without invariants (format 1.0/1.1, or a reduction that did not
+    // compute them): compute them from the mesh part when the file has one.
+    if (!options.keep_mesh) s = load(SuperelementParts::All);
+    if (s.recovery.size() == 0 || s.M_fe.size() == 0)
+      full_inertia->where.fail(
+          "inertia: full needs the inertia invariants of superelement " + b.superelement.string() +
+          " or its mesh part (recovery matrix and FE mass), and the file has neither (format written by seflex " +
+          s.seflex_version + (s.fe_node_ids.empty() ? ", reduced with --no-mesh" : ", reduced without recovery and FE mass") +
+          "); re-run `seflex reduce` with this seflex (superelement format 1.2 stores the inertia invariants, with or "
+          "without --no-mesh), or use inertia: simplified for this body");
+    s.invariants = at(b.file_where, [&] { return reduction::compute_inertia_invariants(s); });
+    if (!options.keep_mesh && s.invariants.present()) drop_mesh(s);
+    return s;
+  }
+
   void load_bodies() {
+    std::map<std::string, const SceneBody*> full_inertia;  // file -> first body that needs its full inertia
+    for (const SceneBody& b : d.bodies)
+      if (b.fidelity == Fidelity::Flexible && b.inertia == mbd::InertiaModel::Full)
+        full_inertia.emplace(b.superelement.string(), &b);
     std::map<std::string, se::Superelement> files;
     for (const SceneBody& b : d.bodies) {
       const std::string key = b.superelement.string();
-      if (!files.count(key)) files[key] = at(b.file_where, [&] { return load_superelement(b.superelement); });
+      if (!files.count(key)) {
+        const auto it = full_inertia.find(key);
+        files[key] = load_file(b, it == full_inertia.end() ? nullptr : it->second);
+      }
       const se::Superelement& full = files[key];
       int m = full.num_modes;
       if (b.internal_modes >= 0 && b.fidelity == Fidelity::Flexible) {
@@ -330,14 +364,15 @@ se::Superelement keep_internal_modes(const se::Superelement& s, int modes) {
   r.M = s.M.topLeftCorner(n, n);
   r.Phi_f = s.Phi_f.leftCols(n);
   if (s.recovery.size() != 0) r.recovery = s.recovery.leftCols(n);
+  r.invariants = detail::truncate_invariants(s.invariants, n);
   r.mode_frequencies_hz = s.mode_frequencies_hz.head(modes);
   if (modes < s.num_modes) r.truncation.first_neglected_hz = s.mode_frequencies_hz(modes);
   r.truncation.max_kept_hz = modes > 0 ? s.mode_frequencies_hz(modes - 1) : 0.0;
   return r;
 }
 
-Scene build_scene(const SceneDescription& d) {
-  Builder b(d);
+Scene build_scene(const SceneDescription& d, const SceneBuildOptions& options) {
+  Builder b(d, options);
   b.load_bodies();
   b.merge_nodes();
   b.build_nodes_and_bodies();

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "atomic_write.hpp"
+#include "invariant_datasets.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/common/version.hpp"
 #include "seflex/io/sha256.hpp"
@@ -92,7 +93,83 @@ Dataset matrix_dataset(const std::string& name, const Eigen::MatrixXd& A) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Reading
+// Reading: random access to the bytes of a string or of a file (a file is never read whole).
+class ByteSource {
+ public:
+  virtual ~ByteSource() = default;
+  virtual std::uint64_t size() const = 0;
+  /// Copy n bytes at offset to dst (the range lies inside size()).
+  virtual void read(std::uint64_t offset, std::size_t n, void* dst) const = 0;
+  /// Hash the first n bytes.
+  virtual void hash(std::uint64_t n, Sha256& h) const = 0;
+};
+
+class StringSource final : public ByteSource {
+ public:
+  explicit StringSource(const std::string& bytes) : bytes_(bytes) {}
+  std::uint64_t size() const override { return bytes_.size(); }
+  void read(std::uint64_t offset, std::size_t n, void* dst) const override {
+    if (n > 0) std::memcpy(dst, bytes_.data() + offset, n);
+  }
+  void hash(std::uint64_t n, Sha256& h) const override { h.update(bytes_.data(), n); }
+
+ private:
+  const std::string& bytes_;
+};
+
+class FileSource final : public ByteSource {
+ public:
+  explicit FileSource(const std::filesystem::path& path) : path_(path), in_(path, std::ios::binary) {
+    if (!in_) throw InputError(SourceRef{path.string(), 0}, "cannot open superelement file");
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+      throw InputError(SourceRef{path.string(), 0}, "is not a regular file; expected a superelement file (.se)");
+    in_.seekg(0, std::ios::end);
+    const auto end = in_.tellg();
+    if (end < 0) throw InputError(SourceRef{path.string(), 0}, "cannot read superelement file");
+    size_ = static_cast<std::uint64_t>(end);
+  }
+  std::uint64_t size() const override { return size_; }
+  void read(std::uint64_t offset, std::size_t n, void* dst) const override {
+    if (n == 0) return;
+    in_.clear();
+    in_.seekg(static_cast<std::streamoff>(offset));
+    in_.read(static_cast<char*>(dst), static_cast<std::streamsize>(n));
+    if (!in_) throw InputError(SourceRef{path_.string(), 0}, "read error in the superelement file");
+  }
+  void hash(std::uint64_t n, Sha256& h) const override {
+    std::vector<char> buf(1 << 20);
+    in_.clear();
+    in_.seekg(0);
+    while (n > 0) {
+      const std::size_t k = static_cast<std::size_t>(std::min<std::uint64_t>(n, buf.size()));
+      in_.read(buf.data(), static_cast<std::streamsize>(k));
+      if (!in_) throw InputError(SourceRef{path_.string(), 0}, "read error in the superelement file");
+      h.update(buf.data(), k);
+      n -= k;
+    }
+  }
+
+ private:
+  std::filesystem::path path_;
+  mutable std::ifstream in_;
+  std::uint64_t size_ = 0;
+};
+
+bool is_mesh_dataset(const std::string& name) {
+  return name == "fe_node_ids" || name == "fe_positions" || name == "recovery" || name.rfind("M_fe.", 0) == 0 ||
+         name.rfind("cells.", 0) == 0;
+}
+
+std::string shape_text(const std::vector<std::int64_t>& v) {
+  std::string t;
+  for (auto x : v) {
+    if (!t.empty()) t += 'x';
+    t += std::to_string(x);
+  }
+  return t;
+}
+
 /// "a list", "an object", ... for messages about a header value of the wrong kind.
 std::string node_kind(const YAML::Node& n) {
   if (n.IsScalar()) return "the value '" + n.Scalar() + "'";
@@ -103,40 +180,50 @@ std::string node_kind(const YAML::Node& n) {
 
 class Reader {
  public:
-  Reader(const std::string& bytes, std::string name) : bytes_(bytes), name_(std::move(name)) {}
+  Reader(const ByteSource& src, std::string name, SuperelementParts parts)
+      : src_(src), name_(std::move(name)), parts_(parts) {}
 
   [[noreturn]] void fail(const std::string& what) const { throw InputError(SourceRef{name_, 0}, what); }
 
   se::Superelement read() {
-    if (bytes_.size() < kPreamble + kTrailer || std::memcmp(bytes_.data(), kMagic, 8) != 0) {
-      if (bytes_.size() >= 8 && std::memcmp(bytes_.data(), kMagic, 8) == 0)
-        fail("truncated superelement file: only " + std::to_string(bytes_.size()) + " bytes");
+    const std::uint64_t size = src_.size();
+    char pre[kPreamble] = {};
+    src_.read(0, static_cast<std::size_t>(std::min<std::uint64_t>(size, kPreamble)), pre);
+    if (size < kPreamble + kTrailer || std::memcmp(pre, kMagic, 8) != 0) {
+      if (size >= 8 && std::memcmp(pre, kMagic, 8) == 0)
+        fail("truncated superelement file: only " + std::to_string(size) + " bytes");
       fail("not a seflex superelement file (expected the magic bytes 'SEFLEXSE' at the start)");
     }
     std::uint32_t major, minor;
     std::uint64_t header_len;
-    std::memcpy(&major, bytes_.data() + 8, 4);
-    std::memcpy(&minor, bytes_.data() + 12, 4);
-    std::memcpy(&header_len, bytes_.data() + 16, 8);
+    std::memcpy(&major, pre + 8, 4);
+    std::memcpy(&minor, pre + 12, 4);
+    std::memcpy(&header_len, pre + 16, 8);
+    major_ = static_cast<int>(major);
+    minor_ = static_cast<int>(minor);
     if (static_cast<int>(major) != kSuperelementFormatMajor)
       fail("superelement file format " + std::to_string(major) + "." + std::to_string(minor) +
            " is not supported; this seflex reads format " + std::to_string(kSuperelementFormatMajor) + ".x");
-    if (header_len > bytes_.size() - kPreamble - kTrailer)
+    if (header_len > size - kPreamble - kTrailer)
       fail("truncated superelement file: the header promises " + std::to_string(header_len) + " bytes but the file has " +
-           std::to_string(bytes_.size()) + " bytes in all");
-    // Trailer: the declared total length and the checksum.
-    const std::size_t body_len = bytes_.size() - kTrailer;
-    if (std::memcmp(bytes_.data() + body_len, kTrailerMagic, 8) != 0)
+           std::to_string(size) + " bytes in all");
+    // Trailer: the end marker and the checksum of every byte before it (streamed).
+    const std::uint64_t body_len = size - kTrailer;
+    char trailer[kTrailer];
+    src_.read(body_len, kTrailer, trailer);
+    if (std::memcmp(trailer, kTrailerMagic, 8) != 0)
       fail("truncated or corrupted superelement file: the end-of-file marker 'SEFLXEND' is missing");
     Sha256 h;
-    h.update(bytes_.data(), body_len);
+    src_.hash(body_len, h);
     const auto digest = h.digest();
-    if (std::memcmp(digest.data(), bytes_.data() + body_len + 8, 32) != 0)
+    if (std::memcmp(digest.data(), trailer + 8, 32) != 0)
       fail("corrupted superelement file: SHA-256 checksum mismatch (the file was modified or damaged)");
 
+    std::string header_text(static_cast<std::size_t>(header_len), '\0');
+    src_.read(kPreamble, header_text.size(), header_text.data());
     YAML::Node header;
     try {
-      header = YAML::Load(std::string(bytes_.data() + kPreamble, header_len));
+      header = YAML::Load(header_text);
     } catch (const YAML::Exception& e) {
       fail(std::string("unreadable JSON header: ") + e.what());
     }
@@ -145,6 +232,12 @@ class Reader {
     data_end_ = body_len;
     return build(header);
   }
+
+  int major() const { return major_; }
+  int minor() const { return minor_; }
+  std::int64_t num_fe_nodes() const { return nfe_; }
+  std::int64_t num_cells() const { return ncells_; }
+  const std::vector<DatasetEntry>& table() const { return entries_; }
 
  private:
   template <class T>
@@ -184,28 +277,19 @@ class Reader {
     return A;
   }
 
-  // Locate a dataset; checks dtype, shape and that its bytes lie inside the data region.
-  const char* dataset(const YAML::Node& table, const std::string& name, const std::string& dtype,
-                      std::vector<std::int64_t> shape, bool required = true) const {
+  // Locate a dataset; checks dtype, shape and that its bytes lie inside the data region. Returns
+  // its offset, or 0 when it is absent and not required.
+  std::uint64_t dataset(const YAML::Node& table, const std::string& name, const std::string& dtype,
+                        std::vector<std::int64_t> shape, bool required = true) const {
     const YAML::Node d = table[name];
     if (!d) {
       if (required) fail("dataset '" + name + "' is missing");
-      return nullptr;
+      return 0;
     }
     if (!d.IsMap()) fail("dataset '" + name + "': its table entry must be an object");
     if (get<std::string>(d, "dtype") != dtype) fail("dataset '" + name + "' must have dtype " + dtype);
     const auto got = get<std::vector<std::int64_t>>(d, "shape");
-    if (got != shape) {
-      auto text = [](const std::vector<std::int64_t>& v) {
-        std::string t;
-        for (auto x : v) {
-          if (!t.empty()) t += 'x';
-          t += std::to_string(x);
-        }
-        return t;
-      };
-      fail("dataset '" + name + "' has shape " + text(got) + ", expected " + text(shape));
-    }
+    if (got != shape) fail("dataset '" + name + "' has shape " + shape_text(got) + ", expected " + shape_text(shape));
     const auto offset = get<std::uint64_t>(d, "offset");
     const auto nbytes = get<std::uint64_t>(d, "bytes");
     std::uint64_t count = 1;
@@ -214,25 +298,70 @@ class Reader {
     if (nbytes != count * width) fail("dataset '" + name + "': byte count does not match its shape");
     if (offset < data_begin_ || offset > data_end_ || nbytes > data_end_ - offset)
       fail("dataset '" + name + "' lies outside the file's data section (truncated file?)");
-    return bytes_.data() + offset;
+    return offset;
+  }
+
+  bool skip_mesh() const { return parts_ == SuperelementParts::Dynamics; }
+
+  template <class Derived>
+  void fill(const YAML::Node& table, const std::string& name, Eigen::PlainObjectBase<Derived>& A, Eigen::Index rows,
+            Eigen::Index cols) const {
+    const std::uint64_t offset = dataset(table, name, "float64", {rows, cols});
+    A.resize(rows, cols);
+    src_.read(offset, sizeof(double) * static_cast<std::size_t>(A.size()), A.data());
+    if (A.size() > 0 && !A.allFinite()) fail("dataset '" + name + "' has non-finite entries");
   }
 
   Eigen::MatrixXd matrix(const YAML::Node& table, const std::string& name, Eigen::Index rows, Eigen::Index cols) const {
-    Eigen::MatrixXd A(rows, cols);
-    const char* p = dataset(table, name, "float64", {rows, cols});
-    if (A.size() > 0) std::memcpy(A.data(), p, sizeof(double) * static_cast<std::size_t>(A.size()));
+    Eigen::MatrixXd A;
+    fill(table, name, A, rows, cols);
     return A;
   }
 
   template <class T>
   std::vector<T> array(const YAML::Node& table, const std::string& name, const char* dtype, std::int64_t n) const {
     std::vector<T> v(static_cast<std::size_t>(n));
-    const char* p = dataset(table, name, dtype, {n});
-    if (n > 0) std::memcpy(v.data(), p, sizeof(T) * v.size());
+    const std::uint64_t offset = dataset(table, name, dtype, {n});
+    src_.read(offset, sizeof(T) * v.size(), v.data());
     return v;
   }
 
-  se::Superelement build(const YAML::Node& h) const {
+  // Format 1.2: the inertia invariants, all datasets or none.
+  void read_invariants(const YAML::Node& table, se::Superelement& s) const {
+    std::string first_present, first_missing;
+    se::InertiaInvariants probe;
+    detail::for_each_invariant_dataset(probe, s.size(), s.num_modes, [&](const std::string& name, auto&, Eigen::Index, Eigen::Index) {
+      if (table[name] && first_present.empty()) first_present = name;
+      if (!table[name] && first_missing.empty()) first_missing = name;
+    });
+    if (first_present.empty()) return;
+    if (!first_missing.empty())
+      fail("dataset '" + first_missing + "' is missing; the file has '" + first_present +
+           "', and the inertia invariants are stored complete or not at all");
+    detail::for_each_invariant_dataset(s.invariants, s.size(), s.num_modes,
+                                       [&](const std::string& name, auto& A, Eigen::Index r, Eigen::Index c) {
+                                         fill(table, name, A, r, c);
+                                       });
+    s.invariants.n = s.size();
+    if (s.size() == 0) fail("the inertia invariants are stored for a body of size 0");
+  }
+
+  void list_table(const YAML::Node& table) {
+    for (const auto& kv : table) {
+      DatasetEntry e;
+      e.name = kv.first.as<std::string>();
+      const YAML::Node d = kv.second;
+      if (!d.IsMap()) fail("dataset '" + e.name + "': its table entry must be an object");
+      e.dtype = get<std::string>(d, "dtype");
+      e.shape = get<std::vector<std::int64_t>>(d, "shape");
+      e.offset = get<std::uint64_t>(d, "offset");
+      e.bytes = get<std::uint64_t>(d, "bytes");
+      e.mesh = is_mesh_dataset(e.name);
+      entries_.push_back(std::move(e));
+    }
+  }
+
+  se::Superelement build(const YAML::Node& h) {
     se::Superelement s;
     if (get<std::string>(h, "format") != "seflex-superelement") fail("header: 'format' is not seflex-superelement");
     s.name = get<std::string>(h, "name");
@@ -278,54 +407,37 @@ class Reader {
 
     const YAML::Node table = h["datasets"];
     if (!table || !table.IsMap()) fail("header: missing object 'datasets'");
+    list_table(table);
     const Eigen::Index n = s.size();
     s.K = matrix(table, "K", n, n);
     s.M = matrix(table, "M", n, n);
     s.Phi_f = matrix(table, "Phi_f", 6, n);
+    read_invariants(table, s);
+
     const std::int64_t nfe = get<std::int64_t>(h, "num_fe_nodes");
-    if (nfe < 0 || static_cast<std::uint64_t>(nfe) > bytes_.size()) fail("header: 'num_fe_nodes' out of range");
-    s.fe_node_ids = array<std::int32_t>(table, "fe_node_ids", "int32", nfe);
-    s.p_BoI_B = matrix(table, "fe_positions", 3, nfe);
-    if (table["recovery"]) s.recovery = matrix(table, "recovery", 6 * nfe, n);
-    if (table["M_fe.values"]) {
-      const auto shape = get<std::vector<std::int64_t>>(table["M_fe.values"], "shape");
-      if (shape.size() != 1 || shape[0] < 0 || static_cast<std::uint64_t>(shape[0]) > bytes_.size())
-        fail("dataset 'M_fe.values' must be a vector of a plausible length");
-      const std::int64_t nnz = shape[0];
-      const auto colptr = array<std::int64_t>(table, "M_fe.colptr", "int64", 6 * nfe + 1);
-      const auto rowind = array<std::int64_t>(table, "M_fe.rowind", "int64", nnz);
-      const auto values = array<double>(table, "M_fe.values", "float64", nnz);
-      if (colptr.front() != 0 || colptr.back() != nnz) fail("dataset 'M_fe.colptr' is inconsistent with M_fe.values");
-      std::vector<Eigen::Triplet<double>> trips;
-      trips.reserve(static_cast<std::size_t>(nnz));
-      for (std::int64_t c = 0; c < 6 * nfe; ++c) {
-        if (colptr[c + 1] < colptr[c] || colptr[c + 1] > nnz)  // checked before rowind[k] is read
-          fail("dataset 'M_fe.colptr' is not non-decreasing from 0 to the length of M_fe.values");
-        for (std::int64_t k = colptr[c]; k < colptr[c + 1]; ++k) {
-          if (rowind[k] < 0 || rowind[k] >= 6 * nfe) fail("dataset 'M_fe.rowind' has a row index out of range");
-          trips.emplace_back(static_cast<int>(rowind[k]), static_cast<int>(c), values[k]);
-        }
-      }
-      s.M_fe.resize(6 * nfe, 6 * nfe);
-      s.M_fe.setFromTriplets(trips.begin(), trips.end());
-      if (!s.M_fe.isCompressed()) s.M_fe.makeCompressed();
-    }
+    if (nfe < 0 || static_cast<std::uint64_t>(nfe) > src_.size()) fail("header: 'num_fe_nodes' out of range");
+    nfe_ = nfe;
     const std::int64_t ncells = get<std::int64_t>(h, "num_cells");
-    if (ncells < 0 || static_cast<std::uint64_t>(ncells) > bytes_.size()) fail("header: 'num_cells' out of range");
-    if (ncells > 0) {
-      const auto types = array<std::int32_t>(table, "cells.type", "int32", ncells);
-      const auto eids = array<std::int32_t>(table, "cells.element_id", "int32", ncells);
-      std::vector<std::int32_t> nodes(static_cast<std::size_t>(4 * ncells));
-      std::memcpy(nodes.data(), dataset(table, "cells.nodes", "int32", {4, ncells}), nodes.size() * 4);
-      s.cells.resize(static_cast<std::size_t>(ncells));
-      for (std::int64_t c = 0; c < ncells; ++c) {
-        auto& cell = s.cells[static_cast<std::size_t>(c)];
-        if (types[c] != 2 && types[c] != 3 && types[c] != 4) fail("dataset 'cells.type' has an unknown cell type");
-        cell.type = static_cast<se::MeshCell::Type>(types[c]);
-        cell.element_id = eids[c];
-        for (int k = 0; k < 4; ++k) cell.nodes[k] = nodes[static_cast<std::size_t>(4 * c + k)];
+    if (ncells < 0 || static_cast<std::uint64_t>(ncells) > src_.size()) fail("header: 'num_cells' out of range");
+    ncells_ = ncells;
+    // Format 1.2: the mesh part is optional (`seflex reduce --no-mesh`): no fe_node_ids, no fe_positions.
+    const bool mesh_ids = nfe > 0 || table["fe_node_ids"];
+    if (skip_mesh()) {
+      if (mesh_ids) {
+        dataset(table, "fe_node_ids", "int32", {nfe});
+        dataset(table, "fe_positions", "float64", {3, nfe});
       }
+      dataset(table, "recovery", "float64", {6 * nfe, n}, false);
+      s.p_BoI_B.resize(3, 0);
+    } else {
+      if (mesh_ids) {
+        s.fe_node_ids = array<std::int32_t>(table, "fe_node_ids", "int32", nfe);
+        fill(table, "fe_positions", s.p_BoI_B, 3, nfe);
+      }
+      if (table["recovery"]) s.recovery = matrix(table, "recovery", 6 * nfe, n);
     }
+    if (table["M_fe.values"]) read_fe_mass(table, nfe, s);
+    if (ncells > 0) read_cells(table, ncells, s);
     const auto problems = se::check_consistency(s);
     if (!problems.empty()) {
       std::string msg = "inconsistent superelement:";
@@ -336,9 +448,66 @@ class Reader {
     return s;
   }
 
-  const std::string& bytes_;
+  void read_fe_mass(const YAML::Node& table, std::int64_t nfe, se::Superelement& s) const {
+    const YAML::Node v = table["M_fe.values"];
+    if (!v.IsMap()) fail("dataset 'M_fe.values': its table entry must be an object");
+    const auto shape = get<std::vector<std::int64_t>>(v, "shape");
+    if (shape.size() != 1 || shape[0] < 0 || static_cast<std::uint64_t>(shape[0]) > src_.size())
+      fail("dataset 'M_fe.values' must be a vector of a plausible length");
+    const std::int64_t nnz = shape[0];
+    if (skip_mesh()) {
+      dataset(table, "M_fe.colptr", "int64", {6 * nfe + 1});
+      dataset(table, "M_fe.rowind", "int64", {nnz});
+      dataset(table, "M_fe.values", "float64", {nnz});
+      return;
+    }
+    const auto colptr = array<std::int64_t>(table, "M_fe.colptr", "int64", 6 * nfe + 1);
+    const auto rowind = array<std::int64_t>(table, "M_fe.rowind", "int64", nnz);
+    const auto values = array<double>(table, "M_fe.values", "float64", nnz);
+    if (colptr.front() != 0 || colptr.back() != nnz) fail("dataset 'M_fe.colptr' is inconsistent with M_fe.values");
+    std::vector<Eigen::Triplet<double>> trips;
+    trips.reserve(static_cast<std::size_t>(nnz));
+    for (std::int64_t c = 0; c < 6 * nfe; ++c) {
+      if (colptr[c + 1] < colptr[c] || colptr[c + 1] > nnz)  // checked before rowind[k] is read
+        fail("dataset 'M_fe.colptr' is not non-decreasing from 0 to the length of M_fe.values");
+      for (std::int64_t k = colptr[c]; k < colptr[c + 1]; ++k) {
+        if (rowind[k] < 0 || rowind[k] >= 6 * nfe) fail("dataset 'M_fe.rowind' has a row index out of range");
+        trips.emplace_back(static_cast<int>(rowind[k]), static_cast<int>(c), values[k]);
+      }
+    }
+    s.M_fe.resize(6 * nfe, 6 * nfe);
+    s.M_fe.setFromTriplets(trips.begin(), trips.end());
+    if (!s.M_fe.isCompressed()) s.M_fe.makeCompressed();
+  }
+
+  void read_cells(const YAML::Node& table, std::int64_t ncells, se::Superelement& s) const {
+    if (skip_mesh()) {
+      dataset(table, "cells.type", "int32", {ncells});
+      dataset(table, "cells.element_id", "int32", {ncells});
+      dataset(table, "cells.nodes", "int32", {4, ncells});
+      return;
+    }
+    const auto types = array<std::int32_t>(table, "cells.type", "int32", ncells);
+    const auto eids = array<std::int32_t>(table, "cells.element_id", "int32", ncells);
+    std::vector<std::int32_t> nodes(static_cast<std::size_t>(4 * ncells));
+    src_.read(dataset(table, "cells.nodes", "int32", {4, ncells}), nodes.size() * 4, nodes.data());
+    s.cells.resize(static_cast<std::size_t>(ncells));
+    for (std::int64_t c = 0; c < ncells; ++c) {
+      auto& cell = s.cells[static_cast<std::size_t>(c)];
+      if (types[c] != 2 && types[c] != 3 && types[c] != 4) fail("dataset 'cells.type' has an unknown cell type");
+      cell.type = static_cast<se::MeshCell::Type>(types[c]);
+      cell.element_id = eids[c];
+      for (int k = 0; k < 4; ++k) cell.nodes[k] = nodes[static_cast<std::size_t>(4 * c + k)];
+    }
+  }
+
+  const ByteSource& src_;
   std::string name_;
+  SuperelementParts parts_;
   std::uint64_t data_begin_ = 0, data_end_ = 0;
+  int major_ = 0, minor_ = 0;
+  std::int64_t nfe_ = 0, ncells_ = 0;
+  std::vector<DatasetEntry> entries_;
 };
 
 }  // namespace
@@ -352,13 +521,33 @@ std::string serialize_superelement(const se::Superelement& s) {
   }
   const auto nfe = static_cast<std::int64_t>(s.fe_node_ids.size());
 
+  // The dynamics part first (a reader that skips the mesh reads one contiguous block), then the mesh.
   std::vector<Dataset> data;
   data.push_back(matrix_dataset("K", s.K));
   data.push_back(matrix_dataset("M", s.M));
   data.push_back(matrix_dataset("Phi_f", s.Phi_f));
-  std::vector<std::int32_t> ids(s.fe_node_ids.begin(), s.fe_node_ids.end());
-  data.push_back(make_dataset("fe_node_ids", "int32", ids.data(), {nfe}));
-  data.push_back(make_dataset("fe_positions", "float64", s.p_BoI_B.data(), {3, nfe}));
+  if (s.invariants.present()) {
+    if (s.invariants.n != s.size())
+      throw InvariantError("cannot save superelement '" + s.name + "': its inertia invariants are for n = " +
+                           std::to_string(s.invariants.n) + ", the body has n = " + std::to_string(s.size()));
+    detail::for_each_invariant_dataset(s.invariants, s.size(), s.num_modes,
+                                       [&](const std::string& name, const auto& A, Eigen::Index r, Eigen::Index c) {
+                                         if (A.rows() != r || A.cols() != c)
+                                           throw InvariantError("cannot save superelement '" + s.name + "': invariant " +
+                                                                name + " is " + std::to_string(A.rows()) + "x" +
+                                                                std::to_string(A.cols()) + ", expected " +
+                                                                std::to_string(r) + "x" + std::to_string(c));
+                                         if (A.size() > 0 && !A.allFinite())
+                                           throw InvariantError("cannot save superelement '" + s.name + "': invariant " +
+                                                                name + " has non-finite entries");
+                                         data.push_back(make_dataset(name, "float64", A.data(), {r, c}));
+                                       });
+  }
+  if (nfe > 0) {  // format 1.2: no mesh part, no fe_node_ids/fe_positions
+    std::vector<std::int32_t> ids(s.fe_node_ids.begin(), s.fe_node_ids.end());
+    data.push_back(make_dataset("fe_node_ids", "int32", ids.data(), {nfe}));
+    data.push_back(make_dataset("fe_positions", "float64", s.p_BoI_B.data(), {3, nfe}));
+  }
   if (s.recovery.size() > 0) data.push_back(matrix_dataset("recovery", s.recovery));
   if (s.M_fe.nonZeros() > 0) {
     Eigen::SparseMatrix<double> A = s.M_fe;
@@ -464,16 +653,69 @@ void save_superelement(const se::Superelement& s, const std::filesystem::path& p
   detail::write_file_atomically(path, serialize_superelement(s), options.overwrite);
 }
 
-se::Superelement parse_superelement(const std::string& bytes, const std::string& name) {
-  return Reader(bytes, name).read();
+se::Superelement parse_superelement(const std::string& bytes, const std::string& name, const LoadOptions& options) {
+  const StringSource src(bytes);
+  return Reader(src, name, options.parts).read();
 }
 
-se::Superelement load_superelement(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(SourceRef{path.string(), 0}, "cannot open superelement file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return parse_superelement(ss.str(), path.string());
+se::Superelement load_superelement(const std::filesystem::path& path, const LoadOptions& options) {
+  const FileSource src(path);
+  return Reader(src, path.string(), options.parts).read();
+}
+
+SuperelementFileInfo inspect_superelement(const std::filesystem::path& path) {
+  const FileSource src(path);
+  Reader r(src, path.string(), SuperelementParts::Dynamics);
+  SuperelementFileInfo info;
+  info.dynamics = r.read();
+  info.format_major = r.major();
+  info.format_minor = r.minor();
+  info.file_bytes = src.size();
+  info.num_fe_nodes = r.num_fe_nodes();
+  info.num_cells = r.num_cells();
+  info.datasets = r.table();
+  return info;
+}
+
+bool SuperelementFileInfo::has(const std::string& dataset) const {
+  for (const auto& d : datasets)
+    if (d.name == dataset) return true;
+  return false;
+}
+
+bool SuperelementFileInfo::has_mesh() const { return num_fe_nodes > 0 || has("recovery") || has("M_fe.values"); }
+
+std::uint64_t SuperelementFileInfo::bytes_of(bool mesh) const {
+  std::uint64_t total = 0;
+  for (const auto& d : datasets)
+    if (d.mesh == mesh) total += d.bytes;
+  return total;
+}
+
+std::uint64_t SuperelementFileInfo::invariant_bytes() const {
+  std::uint64_t total = 0;
+  for (const auto& d : datasets)
+    if (d.name.rfind("inv.", 0) == 0) total += d.bytes;
+  return total;
+}
+
+std::uint64_t superelement_memory_bytes(const se::Superelement& s) {
+  std::uint64_t total = 8 * static_cast<std::uint64_t>(s.K.size() + s.M.size() + s.Phi_f.size() + s.recovery.size() +
+                                                       s.p_BoI_B.size() + s.mode_frequencies_hz.size());
+  total += 4 * s.fe_node_ids.size() + sizeof(se::MeshCell) * s.cells.size();
+  total += 12 * static_cast<std::uint64_t>(s.M_fe.nonZeros()) + 4 * static_cast<std::uint64_t>(s.M_fe.outerSize() + 1);
+  detail::for_each_invariant_dataset(s.invariants, s.size(), s.num_modes, [&](const std::string&, const auto& A, Eigen::Index, Eigen::Index) {
+    total += 8 * static_cast<std::uint64_t>(A.size());
+  });
+  return total;
+}
+
+void drop_mesh(se::Superelement& s) {
+  s.fe_node_ids = {};
+  s.p_BoI_B.resize(3, 0);
+  s.recovery = Eigen::MatrixXd();
+  s.M_fe = Eigen::SparseMatrix<double>();
+  s.cells = {};
 }
 
 }  // namespace seflex::io

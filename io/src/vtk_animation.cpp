@@ -24,7 +24,7 @@ void deformed_mesh(const se::Superelement& se, const BodySnapshot& s, Eigen::Mat
   positions.resize(3, nfe);
   elastic.setZero(3, nfe);
   Eigen::VectorXd U;
-  if (s.q.size() > 0) {
+  if (s.q.size() > 0 && nfe > 0) {  // a body without its mesh part (reduce --no-mesh) has no points
     SEFLEX_DEMAND(s.q.size() == se.size(), "snapshot q has the wrong size for body " + se.name);
     SEFLEX_DEMAND(se.recovery.rows() == 6 * nfe, "body " + se.name + " has no recovery matrix to animate");
     U = se.recovery * s.q;

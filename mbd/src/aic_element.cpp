@@ -99,6 +99,14 @@ AicElement make_aic_element(const se::Superelement& s) {
         if (r / 6 == c / 6 && r % 6 >= 3 && c % 6 >= 3) e.J_node[c / 6](r % 6 - 3, c % 6 - 3) = it.value();
       }
   }
+  if (s.invariants.present()) {
+    if (s.invariants.n != e.n || s.invariants.Mpp.rows() != e.n || s.invariants.mode_max_translation.size() != e.m)
+      throw InputError(who(name) + ": its inertia invariants are for " + std::to_string(s.invariants.n) +
+                       " reduced coordinates, the superelement has " + std::to_string(e.n));
+    e.inv = s.invariants;
+  } else if (e.has_fe_data) {
+    e.inv = se::compute_inertia_invariants(s);
+  }
   e.eta_amplitude = VectorXd::Ones(e.m);
   e.omega_modes = VectorXd::Zero(e.m);
   for (int k = 0; k < e.m; ++k) {
@@ -106,8 +114,8 @@ AicElement make_aic_element(const se::Superelement& s) {
     const double mkk = e.M(c, c);
     e.omega_modes[k] = mkk > 0 ? std::sqrt(std::max(0.0, e.K(c, c) / mkk)) : 0.0;
     double amp = 0.0;
-    if (e.has_fe_data) {
-      for (Eigen::Index i = 0; i < nfe; ++i) amp = std::max(amp, e.Psi.block(6 * i, c, 3, 1).norm());
+    if (e.inv.present()) {
+      amp = e.inv.mode_max_translation[k];
     } else {
       amp = 1.0 / std::sqrt(e.mass);
     }
@@ -259,22 +267,33 @@ MatrixXd stacked_skew(const AicElement& e, const VectorXd& y) {
 }  // namespace
 
 void elastic_force(const AicElement& e, const AicKinematics& kin, TangentModel tangent, VectorXd& f, MatrixXd* Kt) {
-  const int N = e.N, n = e.n;
+  // Tx = I - R6 Zx with R6 = [Phi_rig; 0] (rank-6 defect): every product with Tx is O(n^2).
+  const int N = e.N, nb = 6 * N;
+  const MatrixXd& Phi = kin.Phi_rig;
   const VectorXd g = e.K * kin.xi;
-  const VectorXd fw = kin.Tx.transpose() * g;
+  VectorXd fw = g;  // Tx^T g
+  fw.noalias() -= kin.Zx.transpose() * (Phi.transpose() * g.head(nb));
   f = to_world(e, kin.frame.R_WB, fw);
   if (!Kt) return;
   const bool exact = tangent == TangentModel::Exact;
   const MatrixXd& ZxL = exact ? kin.ZxL : kin.Zx;
-  const MatrixXd& TxL = exact ? kin.TxL : kin.Tx;
   MatrixXd KL = e.K;  // K Lambda_x
   if (exact)
     for (int j = 0; j < N; ++j) KL.middleCols<3>(6 * j + 3) = e.K.middleCols<3>(6 * j + 3) * kin.Lambda[j];
-  // Material part.
-  MatrixXd Kw = kin.Tx.transpose() * (KL * TxL);
+  // Material part Tx^T KL TxL, TxL = I - R6 ZxL.
+  MatrixXd Kw = KL;
+  Kw.noalias() -= (KL.leftCols(nb) * Phi) * ZxL;
+  const Eigen::Matrix<double, 6, Eigen::Dynamic> PK = Phi.transpose() * Kw.topRows(nb);
+  Kw.noalias() -= kin.Zx.transpose() * PK;
   // Geometric part from the variation of T: Zx^T E_r^T G TxL, G = [f_u1~, 0, f_u2~, 0, ...].
-  MatrixXd GT = MatrixXd::Zero(3, n);
-  for (int j = 0; j < N; ++j) GT.noalias() += skew(fw.segment<3>(6 * j)) * TxL.middleRows<3>(6 * j);
+  Eigen::Matrix<double, 3, Eigen::Dynamic> GT = Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, e.n);
+  Eigen::Matrix<double, 3, 6> GPhi = Eigen::Matrix<double, 3, 6>::Zero();
+  for (int j = 0; j < N; ++j) {
+    const Matrix3d F = skew(fw.segment<3>(6 * j));
+    GT.middleCols<3>(6 * j) += F;
+    GPhi.noalias() += F * Phi.middleRows<3>(6 * j);
+  }
+  GT.noalias() -= GPhi * ZxL;
   Kw.noalias() += kin.Zx.middleRows<3>(3).transpose() * GT;
   // Geometric part from the rotation of the forces with R_WB: -Ftilde E_r ZxL.
   Kw.noalias() -= stacked_skew(e, fw) * ZxL.middleRows<3>(3);

@@ -151,9 +151,10 @@ FlexibleBodyIndex ModelBuilder::add_flexible_body(const std::string& name, Super
   if (static_cast<int>(nodes.size()) != e.N)
     throw InputError(who + ": superelement '" + e.name + "' has " + std::to_string(e.N) + " interface nodes, " +
                      std::to_string(nodes.size()) + " nodes were given");
-  if (options.inertia == InertiaModel::Full && !e.has_fe_data)
-    throw InputError(who + ": full inertia needs the FE recovery matrix, FE node positions and FE mass matrix (M_fe) of superelement '" +
-                     e.name + "', which it does not carry");
+  if (options.inertia == InertiaModel::Full && !e.inv.present())
+    throw InputError(who + ": full inertia needs the inertia invariants of superelement '" + e.name +
+                     "' (or its FE recovery matrix and FE mass to compute them), which it does not carry: reduce it again "
+                     "with this seflex (`seflex reduce` stores the invariants, also with --no-mesh), or use the simplified inertia");
   if (!(options.stiffness_damping >= 0.0) || !(options.modal_damping >= 0.0))
     throw InputError(who + ": damping coefficients must be non-negative");
   FlexibleBody b;

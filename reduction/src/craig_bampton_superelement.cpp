@@ -138,15 +138,6 @@ RigidMass rigid_mass(const Eigen::Matrix<double, 6, 6>& M0, const Eigen::Vector3
   return r;
 }
 
-/// Rows [first, first + count) of a column-major sparse matrix, dense.
-Eigen::MatrixXd sparse_rows(const SparseMatrixd& A, Eigen::Index first, Eigen::Index count) {
-  Eigen::MatrixXd R = Eigen::MatrixXd::Zero(count, A.cols());
-  for (Eigen::Index j = 0; j < A.outerSize(); ++j)
-    for (SparseMatrixd::InnerIterator it(A, j); it; ++it)
-      if (it.row() >= first && it.row() < first + count) R(it.row() - first, j) = it.value();
-  return R;
-}
-
 /// The 6 x 6 block rotation of a grid's (t, r) components from CD to basic.
 Eigen::Matrix<double, 6, 6> cd_to_basic(const std::optional<Eigen::Matrix3d>& A) {
   Eigen::Matrix<double, 6, 6> B = Eigen::Matrix<double, 6, 6>::Identity();
@@ -366,21 +357,11 @@ se::Superelement reduce_to_superelement(const fem::Model& model, const Superelem
         U.middleRows<3>(6 * i + 3) = *A * U.middleRows<3>(6 * i + 3);
       }
   };
-  if (options.full_mesh) {
-    s.recovery.resize(6 * ng, n);
-    s.recovery.leftCols(nb) = Eigen::MatrixXd(c.T * cb.Psi).topRows(6 * ng);
-    if (m > 0) s.recovery.rightCols(m) = Eigen::MatrixXd(c.T * cb.Phi).topRows(6 * ng);
-    to_basic_rows(s.recovery, 0);
-    s.Phi_f = s.recovery.middleRows(6 * static_cast<Eigen::Index>(frame), 6);
-  } else {
-    const Eigen::MatrixXd T_f = sparse_rows(c.T, 6 * static_cast<Eigen::Index>(frame), 6);
-    s.Phi_f.resize(6, n);
-    s.Phi_f.leftCols(nb) = T_f * cb.Psi;
-    s.Phi_f.rightCols(m) = T_f * cb.Phi;
-    Eigen::MatrixXd P = s.Phi_f;
-    to_basic_rows(P, static_cast<Eigen::Index>(frame));
-    s.Phi_f = P;
-  }
+  s.recovery.resize(6 * ng, n);
+  s.recovery.leftCols(nb) = Eigen::MatrixXd(c.T * cb.Psi).topRows(6 * ng);
+  if (m > 0) s.recovery.rightCols(m) = Eigen::MatrixXd(c.T * cb.Phi).topRows(6 * ng);
+  to_basic_rows(s.recovery, 0);
+  s.Phi_f = s.recovery.middleRows(6 * static_cast<Eigen::Index>(frame), 6);
 
   // 5. Full-mesh data.
   s.fe_node_ids.reserve(model.grids.size());
@@ -389,7 +370,7 @@ se::Superelement reduce_to_superelement(const fem::Model& model, const Superelem
     s.fe_node_ids.push_back(model.grids[static_cast<std::size_t>(i)].id);
     s.p_BoI_B.col(i) = model.grids[static_cast<std::size_t>(i)].x_basic - X_f;
   }
-  if (options.full_mesh) {
+  {
     std::vector<Eigen::Triplet<double>> t;
     t.reserve(static_cast<std::size_t>(6 * ng * 2));
     for (Eigen::Index i = 0; i < ng; ++i) {
@@ -402,7 +383,16 @@ se::Superelement reduce_to_superelement(const fem::Model& model, const Superelem
     A.setFromTriplets(t.begin(), t.end());
     s.M_fe = A * g.M * SparseMatrixd(A.transpose());
     s.M_fe.prune(0.0, 0.0);
+  }
+  // 6. Inertia invariants (the full inertia without the mesh), then the mesh part if it is wanted.
+  s.invariants = se::compute_inertia_invariants(s);
+  if (options.full_mesh) {
     s.cells = mesh_cells(model);
+  } else {
+    s.recovery.resize(0, 0);
+    s.M_fe.resize(0, 0);
+    s.fe_node_ids.clear();
+    s.p_BoI_B.resize(3, 0);
   }
   return s;
 }

@@ -133,11 +133,22 @@ SceneDescription read_scene(const std::filesystem::path& file);
 /// Same, from text (`file` names it in messages and anchors relative paths).
 SceneDescription parse_scene(const std::string& text, const std::filesystem::path& file);
 
-/// Load the superelement files and build the multibody model.
-Scene build_scene(const SceneDescription& description);
+/// What build_scene keeps of the superelement files.
+struct SceneBuildOptions {
+  /// Keep each file's mesh part (FE nodes, recovery, FE mass, cells): needed for the animation and
+  /// the floating-frame baseline. Without it a file is read without its mesh datasets
+  /// (SuperelementParts::Dynamics) unless a full-inertia body needs the mesh because the file
+  /// carries no inertia invariants.
+  bool keep_mesh = true;
+};
+
+/// Load the superelement files and build the multibody model. A body with full inertia whose file
+/// has no inertia invariants gets them computed from the file's mesh part
+/// (reduction::compute_inertia_invariants); when the file has neither, InputError says what to do.
+Scene build_scene(const SceneDescription& description, const SceneBuildOptions& options = {});
 
 /// The superelement with only its first `modes` fixed-interface modes (exact truncation of the
-/// Craig-Bampton basis: K, M, Phi_f, recovery lose the trailing columns).
+/// Craig-Bampton basis: K, M, Phi_f, recovery and the inertia invariants lose the trailing columns).
 se::Superelement keep_internal_modes(const se::Superelement& s, int modes);
 
 }  // namespace seflex::io

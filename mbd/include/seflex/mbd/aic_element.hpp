@@ -47,7 +47,12 @@ struct AicElement {
   Eigen::Vector3d p_BoCm_B = Eigen::Vector3d::Zero();
   Eigen::Matrix3d I_Cm_B = Eigen::Matrix3d::Zero();
 
-  // Full-inertia data (section 2.4); present when the superelement carries recovery and M_fe.
+  // Full inertia (section 2.4) from the inertia invariants (docs/inertia-invariants.md): taken from
+  // the superelement, or computed here from its recovery and M_fe when the file predates them.
+  se::InertiaInvariants inv;
+
+  // FE-level data (FFRF baseline, the nodal reference of the tests); present when the superelement
+  // carries recovery and M_fe.
   bool has_fe_data = false;
   Eigen::MatrixXd Psi;                    ///< 6 n_fe x n recovery matrix [Psi | Phi_n]
   Eigen::SparseMatrix<double> M_fe;       ///< 6 n_fe square FE mass
@@ -119,6 +124,13 @@ struct InertiaResult {
 void inertia_force(const AicElement& e, const AicKinematics& kin, InertiaModel model,
                    const Eigen::Ref<const Eigen::VectorXd>& v, const Eigen::Ref<const Eigen::VectorXd>& a,
                    bool want_matrices, InertiaResult& out);
+
+/// The full inertia evaluated by sums over the FE nodes (formulation 2.4; needs has_fe_data): the
+/// reference the invariant evaluation is tested against. elastic_gyro = false leaves out the
+/// gyroscopic moment quadratic in the elastic rotation rates, the one term the invariants drop.
+void inertia_force_nodal(const AicElement& e, const AicKinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& v,
+                         const Eigen::Ref<const Eigen::VectorXd>& a, bool want_matrices, bool elastic_gyro,
+                         InertiaResult& out);
 
 /// Position of the deformed centre of mass from the frame origin, in B: p_BoCm_B + (1/m) sum m_i U_i.
 Eigen::Vector3d deformed_com(const AicElement& e, const Eigen::Ref<const Eigen::VectorXd>& xi);

@@ -54,7 +54,7 @@ struct SuperelementOptions {
   std::optional<int> frame_node;   ///< default: see above
   CraigBamptonOptions modes;       ///< fixed-interface modes (count or frequency limit)
   std::string name;                ///< body name
-  bool full_mesh = true;           ///< recovery, M_fe and cells (animation, full inertia)
+  bool full_mesh = true;           ///< keep recovery, M_fe and cells (animation, recovery); the invariants are always computed
 };
 
 /// What was done, for the summary of `seflex reduce` and the benchmark.

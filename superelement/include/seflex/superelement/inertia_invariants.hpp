@@ -55,7 +55,18 @@ struct InertiaInvariants {
   std::array<Eigen::MatrixXd, 3> PgOV;  ///< n x n     sum_i P_r,i^T (e_a~ J_i - (J_i e_a)~) P_r,i
   std::array<Eigen::MatrixXd, 3> EgOV;  ///< 3 x n     sum_i (e_a~ J_i - (J_i e_a)~) P_r,i
 
+  // Not an inertia integral, but mesh data the time loop needs: the largest FE translation of each
+  // fixed-interface mode per unit amplitude (m = n - 6N entries; scales the error estimate of eta).
+  Eigen::VectorXd mode_max_translation;  ///< m [m]
+
   bool present() const { return n > 0; }
 };
+
+struct Superelement;
+
+/// Compute the invariants of `body` from body.recovery, body.p_BoI_B and body.M_fe (any symmetric
+/// FE mass: lumped, CONM2 with offsets, coupled). Cost O(n_fe n^2); memory a few recovery-sized
+/// arrays. Throws InputError naming the body when the recovery matrix or the FE mass is missing.
+InertiaInvariants compute_inertia_invariants(const Superelement& body);
 
 }  // namespace seflex::se

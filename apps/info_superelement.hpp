@@ -1,0 +1,16 @@
+#pragma once
+// `seflex info BODY.se`: what a superelement file holds (the Nastran-deck half of `seflex info` is
+// cmd_info.cpp).
+#include <string>
+
+namespace seflex::app {
+
+/// True when the file starts with the superelement magic bytes "SEFLEXSE".
+bool is_superelement_file(const std::string& path);
+
+/// Print provenance, units, frame node, interfaces, modes, mass properties, inertia invariants,
+/// mesh part, truncation report and source warnings of a superelement file. Throws InputError
+/// (from the reader) when the file is damaged.
+void print_superelement_info(const std::string& path);
+
+}  // namespace seflex::app
