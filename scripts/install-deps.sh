@@ -10,6 +10,7 @@ set -euo pipefail
 
 packages=(
   g++ cmake make ninja-build pkg-config git
+  clang libclang-rt-14-dev llvm-14
   libeigen3-dev libspectra-dev libarpack2-dev libmetis-dev libsuitesparse-dev libopenblas-dev
   libgmsh-dev gmsh libvtk9-dev libyaml-cpp-dev libgtest-dev
   python3 python3-numpy python3-scipy python3-matplotlib

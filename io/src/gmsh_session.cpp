@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "gmsh_msh_check.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/io/gmsh_mesh.hpp"
 #include "seflex/io/nastran_lines.hpp"
@@ -209,6 +210,8 @@ MeshData load_gmsh_mesh(const std::filesystem::path& path, const std::vector<Gms
   if (!parameters.empty() && !geo)
     throw InputError(mesh.file + ": parameter '" + parameters.front().name +
                      "' given for a mesh file; expected parameters only for a .geo file, which gmsh meshes");
+
+  if (!geo) check_msh_counts(path, mesh.file);  // before gmsh trusts them (gmsh_msh_check.hpp)
 
   Session session;
   checked(session, mesh.file, "gmsh cannot read it", [&] { ::gmsh::open(path.string()); });

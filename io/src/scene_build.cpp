@@ -185,8 +185,10 @@ struct Builder {
   bool has(int cls) const { return created.count(cls) > 0; }
 
   void build_nodes_and_bodies() {
-    for (const auto& [cls, w] : grounded)
-      created[cls] = at(w, [&] { return mb.add_ground(slot_name(cls), pose(cls)); });
+    for (const auto& g : grounded) {
+      const int cls = g.first;  // not a structured binding: clang 14 cannot capture one in a lambda
+      created[cls] = at(g.second, [&] { return mb.add_ground(slot_name(cls), pose(cls)); });
+    }
     const std::size_t nb = d.bodies.size();
     std::vector<bool> hinge_done(d.hinges.size(), false), body_done(nb, false);
     hinge_ids.assign(d.hinges.size(), mbd::HingeIndex());

@@ -170,6 +170,14 @@ std::string shape_text(const std::vector<std::int64_t>& v) {
   return t;
 }
 
+/// "a list", "an object", ... for messages about a header value of the wrong kind.
+std::string node_kind(const YAML::Node& n) {
+  if (n.IsScalar()) return "the value '" + n.Scalar() + "'";
+  if (n.IsSequence()) return "an array";
+  if (n.IsMap()) return "an object";
+  return "null";
+}
+
 class Reader {
  public:
   Reader(const ByteSource& src, std::string name, SuperelementParts parts)
@@ -234,6 +242,8 @@ class Reader {
  private:
   template <class T>
   T get(const YAML::Node& node, const std::string& key) const {
+    // yaml-cpp throws its own exception (not an InputError) for a key looked up in a scalar or a list
+    if (!node.IsMap()) fail("header: expected an object with the key '" + key + "', got " + node_kind(node));
     const YAML::Node v = node[key];
     if (!v) fail("header: missing key '" + key + "'");
     try {
@@ -362,7 +372,10 @@ class Reader {
     s.created = get<std::string>(h, "created");
     if (const YAML::Node w = h["source_warnings"]; w) {  // format 1.1
       if (!w.IsSequence()) fail("header: 'source_warnings' must be an array of strings");
-      for (const auto& line : w) s.source_warnings.push_back(line.as<std::string>());
+      for (const auto& line : w) {
+        if (!line.IsScalar()) fail("header: 'source_warnings' must be an array of strings, got " + node_kind(line));
+        s.source_warnings.push_back(line.Scalar());
+      }
     }
     const YAML::Node frame = h["frame_node"];
     if (!frame || !frame.IsMap()) fail("header: missing object 'frame_node'");
@@ -455,7 +468,8 @@ class Reader {
     std::vector<Eigen::Triplet<double>> trips;
     trips.reserve(static_cast<std::size_t>(nnz));
     for (std::int64_t c = 0; c < 6 * nfe; ++c) {
-      if (colptr[c + 1] < colptr[c]) fail("dataset 'M_fe.colptr' is not non-decreasing");
+      if (colptr[c + 1] < colptr[c] || colptr[c + 1] > nnz)  // checked before rowind[k] is read
+        fail("dataset 'M_fe.colptr' is not non-decreasing from 0 to the length of M_fe.values");
       for (std::int64_t k = colptr[c]; k < colptr[c + 1]; ++k) {
         if (rowind[k] < 0 || rowind[k] >= 6 * nfe) fail("dataset 'M_fe.rowind' has a row index out of range");
         trips.emplace_back(static_cast<int>(rowind[k]), static_cast<int>(c), values[k]);

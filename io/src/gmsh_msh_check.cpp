@@ -1,0 +1,345 @@
+#include "gmsh_msh_check.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <optional>
+#include <string_view>
+
+#include "seflex/common/error.hpp"
+
+namespace seflex::io::gmsh {
+namespace {
+
+bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f'; }
+
+std::string_view trimmed(std::string_view s) {
+  while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
+  while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+std::size_t count_tokens(std::string_view s) {
+  std::size_t n = 0;
+  bool in = false;
+  for (const char c : s) {
+    const bool sp = is_space(c);
+    if (!sp && !in) ++n;
+    in = !sp;
+  }
+  return n;
+}
+
+/// Reads a section body: ASCII tokens and lines (with line numbers), or binary numbers.
+class Cursor {
+ public:
+  Cursor(std::string_view body, int first_line) : s_(body), line_(first_line) {}
+
+  int line() const { return line_; }
+  /// The line of the last token() read.
+  int token_line() const { return token_line_; }
+  std::size_t remaining_bytes() const { return s_.size() - pos_; }
+  /// Tokens from here to the end of the section (counted once, then kept up to date).
+  std::size_t remaining_tokens() {
+    if (!tokens_known_) {
+      tokens_ = count_tokens(s_.substr(pos_));
+      tokens_known_ = true;
+    }
+    return tokens_;
+  }
+
+  /// The next whitespace-separated token (empty at the end); counts the lines it passes.
+  std::string_view token() {
+    while (pos_ < s_.size() && is_space(s_[pos_])) advance();
+    token_line_ = line_;
+    const std::size_t start = pos_;
+    while (pos_ < s_.size() && !is_space(s_[pos_])) ++pos_;
+    if (pos_ > start && tokens_known_) --tokens_;
+    return s_.substr(start, pos_ - start);
+  }
+
+  /// The rest of the current line (without its newline); moves to the next line.
+  std::string_view rest_of_line() {
+    const std::size_t start = pos_;
+    const std::size_t eol = s_.find('\n', pos_);
+    const std::size_t end = eol == std::string_view::npos ? s_.size() : eol;
+    pos_ = end;
+    tokens_known_ = false;
+    if (pos_ < s_.size()) advance();
+    return s_.substr(start, end - start);
+  }
+
+  /// A little-endian unsigned number of `width` bytes (4 or 8); false at the end of the section.
+  bool binary(std::size_t width, std::uint64_t& value) {
+    if (remaining_bytes() < width) return false;
+    value = 0;
+    for (std::size_t k = 0; k < width; ++k)
+      value |= static_cast<std::uint64_t>(static_cast<unsigned char>(s_[pos_ + k])) << (8 * k);
+    pos_ += width;
+    tokens_known_ = false;
+    return true;
+  }
+  void skip_bytes(std::size_t n) {
+    pos_ += std::min(n, remaining_bytes());
+    tokens_known_ = false;
+  }
+
+ private:
+  void advance() {
+    if (s_[pos_] == '\n') ++line_;
+    ++pos_;
+  }
+  std::string_view s_;
+  std::size_t pos_ = 0;
+  int line_;
+  int token_line_ = 0;
+  std::size_t tokens_ = 0;
+  bool tokens_known_ = false;
+};
+
+/// An ASCII integer; none if `t` is not one (gmsh then reports the syntax itself).
+std::optional<long long> integer(std::string_view t) {
+  t = trimmed(t);
+  long long v = 0;
+  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+  if (t.empty() || ec != std::errc() || end != t.data() + t.size()) return std::nullopt;
+  return v;
+}
+
+class Checker {
+ public:
+  Checker(std::string_view bytes, const std::string& file) : bytes_(bytes), file_(file) {}
+
+  // A section's body runs to the next line that starts with '$' (where gmsh, too, looks for the next
+  // keyword): a damaged or missing $End line must not hide the sections after it. Binary bodies run to
+  // their $End line, as a '$' after a newline may be data there.
+  void run() {
+    std::size_t pos = 0;
+    int line = 1;
+    while (pos < bytes_.size()) {
+      const std::size_t eol = std::min(bytes_.find('\n', pos), bytes_.size());
+      std::string_view text = bytes_.substr(pos, eol - pos);
+      if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
+      if (text.size() > 1 && text[0] == '$' && text.rfind("$End", 0) != 0) {
+        const std::string name(text.substr(1));
+        const std::size_t body_begin = std::min(eol + 1, bytes_.size());
+        std::size_t end = std::string_view::npos;
+        if (binary_ && name != "MeshFormat") end = bytes_.find("\n$End" + name, eol);
+        if (end == std::string_view::npos) end = bytes_.find("\n$", eol);
+        const std::size_t body_end = end == std::string_view::npos ? bytes_.size() : end + 1;
+        section(name, bytes_.substr(body_begin, body_end - body_begin), line);
+        line += static_cast<int>(std::count(bytes_.begin() + static_cast<long>(pos), bytes_.begin() + static_cast<long>(body_end), '\n'));
+        pos = body_end;
+        continue;
+      }
+      pos = eol + 1;
+      ++line;
+    }
+  }
+
+ private:
+  [[noreturn]] void too_many(int line, const std::string& section, std::uint64_t count, const std::string& what,
+                             std::uint64_t most) const {
+    throw InputError(SourceRef{file_, line},
+                     "$" + section + ": " + std::to_string(count) + " " + what + ", but the rest of the section holds at most " +
+                         std::to_string(most) + "; expected a count that matches the data (a truncated or corrupted .msh file?)");
+  }
+  /// Refuse `count` items of at least `unit` tokens/bytes each in `available` (no count: gmsh's error).
+  void bound(int line, const std::string& section, std::optional<long long> count, const std::string& what,
+             std::uint64_t unit, std::uint64_t available) const {
+    if (!count) return;
+    if (*count < 0)
+      throw InputError(SourceRef{file_, line}, "$" + section + ": " + std::to_string(*count) + " " + what +
+                                                   "; expected a count >= 0");
+    if (static_cast<std::uint64_t>(*count) > available / unit)
+      too_many(line, section, static_cast<std::uint64_t>(*count), what, available / unit);
+  }
+  /// The same for a binary count (unsigned).
+  void bound_u(int line, const std::string& section, std::uint64_t count, const std::string& what, std::uint64_t unit,
+               std::uint64_t available) const {
+    if (count > available / unit) too_many(line, section, count, what, available / unit);
+  }
+
+  void section(const std::string& name, std::string_view body, int header_line) {
+    Cursor c(body, header_line + 1);
+    if (name == "MeshFormat") {
+      const std::string_view v = c.token();
+      const std::string_view type = c.token();
+      const std::string_view size = c.token();
+      known_ = !v.empty();
+      v4_ = !v.empty() && v[0] >= '4' && v[0] <= '9';
+      v40_ = v == "4" || v == "4.0";
+      binary_ = type == "1";
+      size_t_ = integer(size) == 4 ? 4 : 8;
+      return;
+    }
+    if (!known_) return;  // no $MeshFormat first: gmsh refuses the file itself
+    if (name == "Entities" && v4_) return binary_ ? entities_binary(c, header_line) : entities_ascii(c);
+    if (name == "Nodes") return binary_ ? nodes_binary(c, header_line) : nodes_ascii(c);
+    if (name == "Elements") return binary_ ? elements_binary(c, header_line) : elements_ascii(c);
+    if (name == "NodeData" || name == "ElementData" || name == "ElementNodeData") return data(name, c, header_line);
+  }
+
+  // Format 4: numPoints numCurves numSurfaces numVolumes, then per entity: tag, its box (points of
+  // 4.1: X Y Z), numPhysicalTags and the tags, and (curves and up) numBounding and the tags.
+  void entities_ascii(Cursor& c) {
+    std::optional<long long> count[4];
+    for (auto& n : count) n = integer(c.token());
+    const int line = c.token_line();
+    for (int dim = 0; dim < 4; ++dim) {
+      bound(line, "Entities", count[dim], "entities of dimension " + std::to_string(dim), 5, c.remaining_tokens());
+      if (!count[dim]) return;
+    }
+    for (int dim = 0; dim < 4; ++dim)
+      for (long long e = 0; e < *count[dim]; ++e) {
+        const int doubles = dim == 0 && !v40_ ? 3 : 6;
+        for (int k = 0; k < 1 + doubles; ++k) c.token();
+        for (int list = 0; list < (dim == 0 ? 1 : 2); ++list) {
+          const std::optional<long long> n = integer(c.token());
+          if (!n) return;
+          bound(c.token_line(), "Entities", n, list == 0 ? "physical tags of an entity" : "bounding entities of an entity", 1,
+                c.remaining_tokens());
+          for (long long k = 0; k < *n; ++k) c.token();
+        }
+      }
+  }
+
+  void entities_binary(Cursor& c, int line) {
+    std::uint64_t count[4] = {};
+    for (auto& n : count)
+      if (!c.binary(size_t_, n)) return;
+    for (int dim = 0; dim < 4; ++dim)
+      bound_u(line, "Entities", count[dim], "entities of dimension " + std::to_string(dim), 4 + 24 + size_t_,
+              c.remaining_bytes());
+    for (int dim = 0; dim < 4; ++dim)
+      for (std::uint64_t e = 0; e < count[dim]; ++e) {
+        c.skip_bytes(4 + 8 * (dim == 0 && !v40_ ? 3 : 6));
+        for (int list = 0; list < (dim == 0 ? 1 : 2); ++list) {
+          std::uint64_t n = 0;
+          if (!c.binary(size_t_, n)) return;
+          bound_u(line, "Entities", n, list == 0 ? "physical tags of an entity" : "bounding entities of an entity", 4,
+                  c.remaining_bytes());
+          c.skip_bytes(static_cast<std::size_t>(4 * n));
+        }
+      }
+  }
+
+  void nodes_ascii(Cursor& c) {
+    if (!v4_) {  // N, then N lines "tag x y z"
+      const std::optional<long long> n = integer(c.token());
+      bound(c.token_line(), "Nodes", n, "nodes", 4, c.remaining_tokens());
+      return;
+    }
+    const std::optional<long long> blocks = integer(c.token());
+    const int line = c.token_line();
+    const std::optional<long long> total = integer(c.token());
+    c.token();
+    c.token();
+    bound(line, "Nodes", blocks, "node blocks", 4, c.remaining_tokens());
+    bound(line, "Nodes", total, "nodes", 4, c.remaining_tokens());
+    for (long long b = 0; blocks && b < *blocks; ++b) {
+      const long long dim = integer(c.token()).value_or(0);
+      c.token();
+      const long long parametric = integer(c.token()).value_or(0);
+      const std::optional<long long> n = integer(c.token());
+      if (!n) return;
+      const long long per_node = 4 + (parametric == 1 && dim > 0 && dim <= 3 ? dim : 0);
+      bound(c.token_line(), "Nodes", n, "nodes in a block", static_cast<std::uint64_t>(per_node), c.remaining_tokens());
+      for (long long k = 0; k < *n * per_node; ++k) c.token();
+    }
+  }
+
+  void nodes_binary(Cursor& c, int line) {
+    if (!v4_) {  // "N\n", then N records of int tag + 3 doubles
+      const int at = c.line();
+      const std::optional<long long> n = integer(c.rest_of_line());
+      bound(at, "Nodes", n, "nodes", 28, c.remaining_bytes());
+      return;
+    }
+    std::uint64_t blocks = 0, total = 0, min_tag = 0, max_tag = 0;
+    if (!c.binary(size_t_, blocks) || !c.binary(size_t_, total) || !c.binary(size_t_, min_tag) || !c.binary(size_t_, max_tag)) return;
+    bound_u(line, "Nodes", blocks, "node blocks", 12 + size_t_, c.remaining_bytes());
+    bound_u(line, "Nodes", total, "nodes", size_t_ + 24, c.remaining_bytes());
+    for (std::uint64_t b = 0; b < blocks; ++b) {
+      std::uint64_t dim = 0, tag = 0, parametric = 0, n = 0;
+      if (!c.binary(4, dim) || !c.binary(4, tag) || !c.binary(4, parametric) || !c.binary(size_t_, n)) return;
+      const std::uint64_t per_node = size_t_ + 8 * (3 + (parametric == 1 && dim <= 3 ? dim : 0));
+      bound_u(line, "Nodes", n, "nodes in a block", per_node, c.remaining_bytes());
+      c.skip_bytes(static_cast<std::size_t>(n * per_node));
+    }
+  }
+
+  void elements_ascii(Cursor& c) {
+    if (!v4_) {  // N, then N lines "tag type ntags tags... nodes..."
+      const std::optional<long long> n = integer(c.token());
+      bound(c.token_line(), "Elements", n, "elements", 4, c.remaining_tokens());
+      return;
+    }
+    const std::optional<long long> blocks = integer(c.token());
+    const int line = c.token_line();
+    const std::optional<long long> total = integer(c.token());
+    bound(line, "Elements", blocks, "element blocks", 4, c.remaining_tokens() + 2);
+    bound(line, "Elements", total, "elements", 2, c.remaining_tokens() + 2);
+  }
+
+  void elements_binary(Cursor& c, int line) {
+    if (!v4_) {
+      const int at = c.line();
+      const std::optional<long long> n = integer(c.rest_of_line());
+      bound(at, "Elements", n, "elements", 8, c.remaining_bytes());
+      return;
+    }
+    std::uint64_t blocks = 0, total = 0;
+    if (!c.binary(size_t_, blocks) || !c.binary(size_t_, total)) return;
+    bound_u(line, "Elements", blocks, "element blocks", 12 + size_t_, c.remaining_bytes());
+    bound_u(line, "Elements", total, "elements", 2 * size_t_, c.remaining_bytes());
+  }
+
+  // String tags, real tags, integer tags (time step, components, entities[, partition]), then one
+  // record per entity: its tag and the values.
+  void data(const std::string& name, Cursor& c, int header_line) {
+    long long components = 1;
+    std::optional<long long> entities;
+    int entities_line = header_line;
+    for (int kind = 0; kind < 3; ++kind) {
+      const int line = c.line();
+      const std::optional<long long> n = integer(c.rest_of_line());
+      if (!n || *n < 0) return;  // gmsh's syntax error to report
+      bound(line, name, n, "tags", 1, c.remaining_tokens());
+      for (long long k = 0; k < *n; ++k) {
+        const int tline = c.line();
+        const std::string_view t = c.rest_of_line();
+        if (kind == 2 && k == 1) components = std::max(1LL, integer(t).value_or(1));
+        if (kind == 2 && k == 2) {
+          entities = integer(t);
+          entities_line = tline;
+        }
+      }
+    }
+    if (binary_)
+      bound(entities_line, name, entities, "entities", 4 + 8 * static_cast<std::uint64_t>(std::min(components, 1LL << 20)),
+            c.remaining_bytes());
+    else
+      bound(entities_line, name, entities, "entities", 1 + static_cast<std::uint64_t>(std::min(components, 1LL << 20)),
+            c.remaining_tokens());
+  }
+
+  std::string_view bytes_;
+  const std::string& file_;
+  bool known_ = false, v4_ = false, v40_ = false, binary_ = false;
+  std::size_t size_t_ = 8;
+};
+
+}  // namespace
+
+void check_msh_counts(const std::filesystem::path& path, const std::string& file) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(file + ": cannot open it; expected a readable gmsh .msh file");
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  Checker(bytes, file).run();
+}
+
+}  // namespace seflex::io::gmsh

@@ -1,0 +1,121 @@
+// Inputs the fuzzers (fuzz/, bench/fuzz.sh) found that a reader mishandled, kept as regressions: each
+// must now be refused with an InputError naming the file (and line or header key) and what was
+// expected - not crash, not throw yaml-cpp's own exception, not allocate gigabytes.
+// The inputs are in tests/data/fuzz-regressions/<harness>/ (README.md there says where each came from).
+// These tests also run under AddressSanitizer + UndefinedBehaviorSanitizer in CI.
+#include <gtest/gtest.h>
+
+#include "nastran_test_util.hpp"
+#include "seflex/common/error.hpp"
+#include "seflex/io/gmsh.hpp"
+#include "seflex/io/superelement_file.hpp"
+#include "test_support.hpp"
+
+using namespace seflex;
+using seflex::test::mentions;
+
+namespace {
+
+std::filesystem::path regression(const std::string& rel) { return test::data_dir() / "fuzz-regressions" / rel; }
+
+template <class F>
+std::string input_error(F&& read) {
+  try {
+    read();
+  } catch (const InputError& e) {
+    return e.what();
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << "not an InputError: " << e.what();
+    return e.what();
+  }
+  ADD_FAILURE() << "read without error";
+  return "";
+}
+
+/// The InputError of reading a regression .msh (copied beside a valid companion file).
+std::string msh_error(const std::string& name) {
+  test::TempDir dir;
+  const auto mesh = dir.write(name, test::read_file(regression("gmsh/" + name)));
+  io::ModelReadOptions o;
+  o.properties = dir.write("m.props.bdf", "$seflex group plate PSHELL 1\nMAT1,1,7.e10,,0.3\nPSHELL,1,1,0.001,1\n");
+  return input_error([&] { io::read_gmsh(mesh, o); });
+}
+
+std::string se_error(const std::string& name) {
+  return input_error([&] { io::load_superelement(regression("superelement/" + name)); });
+}
+
+}  // namespace
+
+// libgmsh allocates what a node block declares before reading it: 2e9 nodes in a 150-byte file took
+// more than 10 GB in 20 s. The declared counts are now checked against the section's size first.
+TEST(FuzzRegression, GmshNodeBlockCountBeyondTheFileIsRefusedBeforeGmshAllocatesIt) {
+  EXPECT_TRUE(mentions(msh_error("node_block_ascii.msh"),
+                       {"node_block_ascii.msh:9: $Nodes: 2000000000 nodes in a block, but the rest of the section holds at most 2",
+                        "expected a count that matches the data"}));
+  EXPECT_TRUE(mentions(msh_error("node_block_binary.msh"),
+                       {"node_block_binary.msh:27: $Nodes: 2000000000 nodes in a block, but the rest of the section holds at most 88"}));
+  EXPECT_TRUE(mentions(msh_error("node_count_msh2.msh"),
+                       {"node_count_msh2.msh:5: $Nodes: 2000000000 nodes, but the rest of the section holds at most 1"}));
+}
+
+TEST(FuzzRegression, GmshNodeDataEntityCountBeyondTheFileIsRefused) {
+  EXPECT_TRUE(mentions(msh_error("node_data_count.msh"),
+                       {"node_data_count.msh:29: $NodeData: 2000000000 entities, but the rest of the section holds at most 0"}));
+}
+
+// A binary MSH 4.1 file whose $Entities declares 3,959,422,977 physical tags for one entity (the
+// fuzzer's mutation of the panel mesh): libgmsh spent more than 10 s allocating and clearing memory.
+TEST(FuzzRegression, GmshEntityTagCountBeyondTheFileIsRefused) {
+  EXPECT_TRUE(mentions(msh_error("entities_physical_tags_binary.msh"),
+                       {"entities_physical_tags_binary.msh:21: $Entities: 3959422977 physical tags of an entity, but the rest "
+                        "of the section holds at most"}));
+}
+
+// Two meshes pasted into one file, the first with a damaged $PhysicalNames: the check took everything up
+// to the missing $EndPhysicalNames as one section and never saw the $NodeData of 2,000,000,000 entities
+// near the end, which gmsh found (timeout). A section now ends at the next line starting with '$'.
+TEST(FuzzRegression, GmshSectionAfterADamagedOneIsStillChecked) {
+  EXPECT_TRUE(mentions(msh_error("node_data_after_damaged_section.msh"),
+                       {"node_data_after_damaged_section.msh:70: $NodeData: 2000000000 entities"}));
+}
+
+TEST(FuzzRegression, GmshCountCheckAcceptsEveryFormatGmshWrites) {
+  // text and binary, formats 2.2 and 4.1: the check refuses none of the valid meshes
+  for (const char* name : {"panel_msh2.msh", "panel_msh4.msh", "panel_msh4_binary.msh"}) {
+    test::TempDir dir;
+    const auto mesh = dir.write(name, test::read_file(test::data_dir() / "gmsh" / name));
+    io::ModelReadOptions o;
+    o.properties = test::source_dir() / "meshes" / "panel.props.bdf";
+    EXPECT_NO_THROW(io::read_gmsh(mesh, o)) << name;
+  }
+}
+
+// A header value of the wrong kind where the reader looks up a key (a scalar or a list instead of an
+// object) made yaml-cpp throw its own exception ("operator[] call on a scalar"): `seflex` exited 1 with
+// a message naming neither the file nor the key.
+TEST(FuzzRegression, SuperelementHeaderValueOfTheWrongKindIsAnInputError) {
+  EXPECT_TRUE(mentions(se_error("dataset_entry_scalar.se"),
+                       {"dataset_entry_scalar.se", "dataset 'K': its table entry must be an object"}));
+  EXPECT_TRUE(mentions(se_error("interface_scalar.se"),
+                       {"interface_scalar.se", "header: expected an object with the key 'id', got the value '7'"}));
+  EXPECT_TRUE(mentions(se_error("source_warning_object.se"),
+                       {"source_warning_object.se", "header: 'source_warnings' must be an array of strings, got an object"}));
+}
+
+// M_fe's column pointers were checked one column at a time, after the rows of the previous column had
+// been read: a pointer beyond the number of values read past the end of M_fe.rowind (ASan:
+// heap-buffer-overflow; found by fuzz_superelement in its first 8,000 executions).
+TEST(FuzzRegression, SuperelementMassColumnPointerBeyondTheValuesIsRefusedBeforeItIsUsed) {
+  EXPECT_TRUE(mentions(se_error("mfe_colptr_beyond_values.se"),
+                       {"mfe_colptr_beyond_values.se",
+                        "dataset 'M_fe.colptr' is not non-decreasing from 0 to the length of M_fe.values"}));
+}
+
+TEST(FuzzRegression, SuperelementCommandExitsThreeWithOneErrorLine) {
+  test::TempDir dir;
+  const auto r = test::run_seflex("export '" + regression("superelement/interface_scalar.se").string() + "' --dmig '" +
+                                  (dir / "x.bdf").string() + "'");
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_TRUE(mentions(r.err, {"error: ", "interface_scalar.se", "expected an object with the key 'id'"}));
+}
