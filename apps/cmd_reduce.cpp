@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "info_superelement.hpp"
 #include "model_args.hpp"
 #include "usage_warnings.hpp"
 #include "seflex/reduction/card_usage.hpp"
@@ -128,18 +129,7 @@ void print_modes(const seflex::se::Superelement& s, const red::CraigBamptonOptio
   if (o.fmax_hz) std::printf(" (all up to %g Hz)", *o.fmax_hz);
   std::printf("\n");
   for (int k = 0; k < s.num_modes; ++k) std::printf("  %4d %14.6f Hz\n", k + 1, s.mode_frequencies_hz(k));
-  const auto& t = s.truncation;
-  std::printf("\ntruncation: what the kept modes retain of the fixed-interface dynamics\n");
-  std::printf("  modal effective mass fraction (of the interior's, about the frame node)\n");
-  std::printf("    %9s %9s %9s %9s %9s %9s\n", "x", "y", "z", "rx", "ry", "rz");
-  std::printf("   ");
-  for (double f : t.effective_mass_fraction) std::printf(" %8.4f%%", 100.0 * f);
-  std::printf("\n");
-  if (t.max_kept_hz > 0) std::printf("  highest kept mode          %14.6f Hz\n", t.max_kept_hz);
-  if (t.first_neglected_hz > 0)
-    std::printf("  first neglected mode       %14.6f Hz\n", t.first_neglected_hz);
-  else
-    std::printf("  first neglected mode       none (all interior modes kept)\n");
+  seflex::app::print_truncation(s.truncation, "none (all interior modes kept)");
 }
 
 void print_free_free(const seflex::se::Superelement& s, int elastic, const Eigen::VectorXd* full) {

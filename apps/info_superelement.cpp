@@ -87,7 +87,17 @@ void print_superelement_info(const std::string& path) {
   std::printf("dynamics part                %s (reduced matrices%s)\n", size_text(info.bytes_of(false)).c_str(),
               info.has_invariants() ? ", invariants" : "");
 
-  const auto& t = s.truncation;
+  print_truncation(s.truncation, "none computed (all interior modes kept, or none asked)");
+
+  if (s.source_warnings.empty()) {
+    std::printf("\nsource warnings: none\n");
+  } else {
+    std::printf("\nsource warnings (printed by seflex reduce about the source model)\n");
+    for (const auto& w : s.source_warnings) std::printf("  %s\n", w.c_str());
+  }
+}
+
+void print_truncation(const se::TruncationReport& t, const char* none_neglected) {
   std::printf("\ntruncation: what the kept modes retain of the fixed-interface dynamics\n");
   std::printf("  modal effective mass fraction (of the interior's, about the frame node)\n");
   std::printf("    %9s %9s %9s %9s %9s %9s\n", "x", "y", "z", "rx", "ry", "rz");
@@ -98,14 +108,7 @@ void print_superelement_info(const std::string& path) {
   if (t.first_neglected_hz > 0)
     std::printf("  first neglected mode       %14.6f Hz\n", t.first_neglected_hz);
   else
-    std::printf("  first neglected mode       none computed (all interior modes kept, or none asked)\n");
-
-  if (s.source_warnings.empty()) {
-    std::printf("\nsource warnings: none\n");
-  } else {
-    std::printf("\nsource warnings (printed by seflex reduce about the source model)\n");
-    for (const auto& w : s.source_warnings) std::printf("  %s\n", w.c_str());
-  }
+    std::printf("  first neglected mode       %s\n", none_neglected);
 }
 
 }  // namespace seflex::app

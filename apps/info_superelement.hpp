@@ -3,6 +3,8 @@
 // cmd_info.cpp).
 #include <string>
 
+#include "seflex/superelement/superelement.hpp"
+
 namespace seflex::app {
 
 /// True when the file starts with the superelement magic bytes "SEFLEXSE".
@@ -12,5 +14,9 @@ bool is_superelement_file(const std::string& path);
 /// mesh part, truncation report and source warnings of a superelement file. Throws InputError
 /// (from the reader) when the file is damaged.
 void print_superelement_info(const std::string& path);
+
+/// Print the truncation report (modal effective mass fractions, highest kept and first neglected
+/// mode); `none_neglected` is printed when no neglected mode was computed. Shared by reduce and info.
+void print_truncation(const se::TruncationReport& t, const char* none_neglected);
 
 }  // namespace seflex::app

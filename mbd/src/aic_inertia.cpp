@@ -172,22 +172,17 @@ void full(const AicElement& e, const AicKinematics& kin, const VectorXd& w, cons
 
 void inertia_force(const AicElement& e, const AicKinematics& kin, InertiaModel model, const Eigen::Ref<const VectorXd>& v,
                    const Eigen::Ref<const VectorXd>& a, bool want_matrices, InertiaResult& out) {
-  const Matrix3d& R = kin.frame.R_WB;
-  const VectorXd w = to_body(e, R, v);
-  const VectorXd ab = to_body(e, R, a);
-  VectorXd fw(e.n);
-  MatrixXd Mw, Cw, Kw;
   if (model == InertiaModel::Full) {
     SEFLEX_DEMAND(e.inv.present(), "full inertia needs the inertia invariants of superelement " + e.name);
-    full(e, kin, w, ab, want_matrices, Mw, Cw, Kw, fw, out.kinetic);
-  } else {
-    simplified(e, kin, w, ab, want_matrices, Mw, Cw, Kw, fw, out.kinetic);
   }
-  out.f = to_world(e, R, fw);
-  if (!want_matrices) return;
-  out.Mt = to_world_matrix(e, R, Mw);
-  out.Ct = to_world_matrix(e, R, Cw);
-  out.Kt = to_world_matrix(e, R, Kw);
+  detail::inertia_in_world(e, kin, v, a, want_matrices, out,
+                           [&](const VectorXd& w, const VectorXd& ab, bool want, MatrixXd& Mw, MatrixXd& Cw, MatrixXd& Kw,
+                               VectorXd& fw, double& kinetic) {
+                             if (model == InertiaModel::Full)
+                               full(e, kin, w, ab, want, Mw, Cw, Kw, fw, kinetic);
+                             else
+                               simplified(e, kin, w, ab, want, Mw, Cw, Kw, fw, kinetic);
+                           });
 }
 
 }  // namespace seflex::mbd

@@ -51,4 +51,23 @@ inline Eigen::MatrixXd times_velocity_accelerations_tangent(const AicElement& e,
   return out;
 }
 
+/// Evaluate an inertia model in body axes and rotate the result to world components:
+/// body(w, ab, want, Mw, Cw, Kw, fw, kinetic) with w, ab the body-axis velocities and accelerations.
+template <class BodyInertia>
+void inertia_in_world(const AicElement& e, const AicKinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& v,
+                      const Eigen::Ref<const Eigen::VectorXd>& a, bool want_matrices, InertiaResult& out,
+                      BodyInertia&& body) {
+  const Eigen::Matrix3d& R = kin.frame.R_WB;
+  const Eigen::VectorXd w = to_body(e, R, v);
+  const Eigen::VectorXd ab = to_body(e, R, a);
+  Eigen::VectorXd fw(e.n);
+  Eigen::MatrixXd Mw, Cw, Kw;
+  body(w, ab, want_matrices, Mw, Cw, Kw, fw, out.kinetic);
+  out.f = to_world(e, R, fw);
+  if (!want_matrices) return;
+  out.Mt = to_world_matrix(e, R, Mw);
+  out.Ct = to_world_matrix(e, R, Cw);
+  out.Kt = to_world_matrix(e, R, Kw);
+}
+
 }  // namespace seflex::mbd::detail

@@ -79,17 +79,11 @@ void full_nodal(const AicElement& e, const AicKinematics& kin, const VectorXd& w
 void inertia_force_nodal(const AicElement& e, const AicKinematics& kin, const Eigen::Ref<const VectorXd>& v,
                          const Eigen::Ref<const VectorXd>& a, bool want_matrices, bool elastic_gyro, InertiaResult& out) {
   SEFLEX_DEMAND(e.has_fe_data, "the nodal inertia needs the FE recovery matrix and FE mass of superelement " + e.name);
-  const Matrix3d& R = kin.frame.R_WB;
-  const VectorXd w = to_body(e, R, v);
-  const VectorXd ab = to_body(e, R, a);
-  VectorXd fw(e.n);
-  MatrixXd Mw, Cw, Kw;
-  full_nodal(e, kin, w, ab, want_matrices, elastic_gyro, Mw, Cw, Kw, fw, out.kinetic);
-  out.f = to_world(e, R, fw);
-  if (!want_matrices) return;
-  out.Mt = to_world_matrix(e, R, Mw);
-  out.Ct = to_world_matrix(e, R, Cw);
-  out.Kt = to_world_matrix(e, R, Kw);
+  detail::inertia_in_world(e, kin, v, a, want_matrices, out,
+                           [&](const VectorXd& w, const VectorXd& ab, bool want, MatrixXd& Mw, MatrixXd& Cw, MatrixXd& Kw,
+                               VectorXd& fw, double& kinetic) {
+                             full_nodal(e, kin, w, ab, want, elastic_gyro, Mw, Cw, Kw, fw, kinetic);
+                           });
 }
 
 }  // namespace seflex::mbd
