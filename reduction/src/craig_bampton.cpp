@@ -153,7 +153,8 @@ CraigBamptonBasis craig_bampton(const SparseMatrixd& K_ff, const SparseMatrixd& 
   cb.eigenvalues = lambda.head(m);
   cb.neglected_eigenvalues = lambda.tail(lambda.size() - m);
   cb.Phi = Eigen::MatrixXd::Zero(n, m);
-  for (Eigen::Index r = 0; r < ni; ++r) cb.Phi.row(cb.interior[static_cast<std::size_t>(r)]) = X.row(r).head(m);
+  if (m > 0)  // X may be empty when no mode is kept (--modes 0): no row of it may be taken then
+    for (Eigen::Index r = 0; r < ni; ++r) cb.Phi.row(cb.interior[static_cast<std::size_t>(r)]) = X.row(r).head(m);
 
   // Reduced matrices.
   const Eigen::Index nr = nb + m;
