@@ -24,7 +24,6 @@
 #include "seflex/io/sha256.hpp"
 #include "seflex/io/superelement_file.hpp"
 #include "seflex/reduction/craig_bampton_superelement.hpp"
-#include "seflex/reduction/inertia_invariants.hpp"
 
 namespace {
 
@@ -211,8 +210,6 @@ int run_reduce(seflex::app::Args& args) {
   s.source_hash = source_hash(model);
   s.created = iso_utc_now();
   s.seflex_version = seflex::kVersion;
-  if (!s.invariants.present() && s.recovery.size() != 0 && s.M_fe.size() != 0)
-    s.invariants = red::compute_inertia_invariants(s);
   const std::size_t mesh_nodes = s.fe_node_ids.size(), mesh_cells = s.cells.size();
   if (no_mesh) seflex::io::drop_mesh(s);
 
