@@ -16,13 +16,19 @@ esac
 
 scripts/install-deps.sh
 
-generator=()
-command -v ninja >/dev/null 2>&1 && generator=(-G Ninja)
+cmake_args=()
+command -v ninja >/dev/null 2>&1 && cmake_args=(-G Ninja)
+# A compiler cache (ccache, installed by install-deps.sh) makes a rebuild of unchanged sources in
+# any checkout of the project a cache hit; paths are taken relative to the checkout.
+if command -v ccache >/dev/null 2>&1; then
+  cmake_args+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+  export CCACHE_BASEDIR="$PWD"
+fi
 
 configure() {  # build-dir, extra cmake args
   local dir="$1"; shift
   if [ ! -f "$dir/CMakeCache.txt" ]; then
-    cmake -S . -B "$dir" "${generator[@]}" "$@"
+    cmake -S . -B "$dir" "${cmake_args[@]}" "$@"
   fi
 }
 

@@ -9,7 +9,7 @@
 set -euo pipefail
 
 packages=(
-  g++ cmake make ninja-build pkg-config git
+  g++ cmake make ninja-build pkg-config git ccache
   clang libclang-rt-14-dev llvm-14
   libeigen3-dev libspectra-dev libarpack2-dev libmetis-dev libsuitesparse-dev libopenblas-dev
   libgmsh-dev gmsh libvtk9-dev libyaml-cpp-dev libgtest-dev
