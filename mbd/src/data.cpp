@@ -2,6 +2,7 @@
 #include "seflex/mbd/data.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "seflex/common/error.hpp"
 
@@ -121,6 +122,34 @@ Data::Data(const Model& model) {
   K.assign(nnz, 0.0);
   C.assign(nnz, 0.0);
   M.assign(nnz, 0.0);
+}
+
+bool Data::factorize(const Eigen::SparseMatrix<double>& S) {
+  if (S.rows() <= kDenseDofs) {
+    dense_.setZero(S.rows(), S.cols());
+    for (int c = 0; c < S.outerSize(); ++c)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(S, c); it; ++it) dense_(it.row(), it.col()) = it.value();
+    dense_lu_.compute(dense_);
+    // PartialPivLU does not report singularity: a zero or non-finite pivot (relative to the largest
+    // entry) marks it.
+    const double scale = dense_.cwiseAbs().maxCoeff();
+    const auto pivots = dense_lu_.matrixLU().diagonal().cwiseAbs();
+    return std::isfinite(pivots.sum()) && pivots.minCoeff() > 1e-14 * scale;
+  }
+  if (!analyzed_) {
+    lu_.analyzePattern(S);
+    analyzed_ = true;
+  }
+  lu_.factorize(S);
+  return lu_.info() == Eigen::Success;
+}
+
+void Data::solve_negated(const Eigen::VectorXd& r, Eigen::VectorXd& x) const {
+  if (r.size() <= kDenseDofs)
+    x = dense_lu_.solve(r);
+  else
+    x = lu_.solve(r);
+  x = -x;
 }
 
 }  // namespace seflex::mbd

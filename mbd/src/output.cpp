@@ -24,33 +24,57 @@ Energies energies(const Model& model, const State& s, const Data& data) {
   return E;
 }
 
-ElementSample element_sample(const HingeForceResult& r, const LockState* lock) {
-  ElementSample es;
+namespace {
+
+void fill_element_sample(const HingeForceResult& r, const LockState* lock, ElementSample& es) {
   es.value = r.value;
   es.energy = r.energy;
-  es.hinge_torques.assign(r.tau.data(), r.tau.data() + r.tau.size());
-  if (lock) {
-    es.latched = lock->latched;
-    es.t_latch = lock->t_latch;
-  }
+  es.hinge_torques.assign(r.tau.data(), r.tau.data() + r.tau.size());  // same size each time: no allocation
+  es.latched = lock ? lock->latched : false;
+  es.t_latch = lock ? lock->t_latch : 0.0;
+}
+
+}  // namespace
+
+ElementSample element_sample(const HingeForceResult& r, const LockState* lock) {
+  ElementSample es;
+  fill_element_sample(r, lock, es);
   return es;
+}
+
+void make_sample(const Model& model, const State& s, const Data& data, Sample& out) {
+  out.t = s.t;
+  out.nodes.resize(data.nodes.size());
+  for (std::size_t k = 0; k < data.nodes.size(); ++k) out.nodes[k] = Pose{data.nodes[k].R, data.nodes[k].p};
+  out.hinges.resize(data.hinges.size());
+  for (std::size_t k = 0; k < data.hinges.size(); ++k) {
+    const auto& hk = data.hinges[k];
+    out.hinges[k] = HingeSample{hk.phi, hk.phidot, hk.phiddot, hk.joint_torque};
+  }
+  out.elements.resize(model.force_elements.size());
+  for (std::size_t i = 0; i < model.force_elements.size(); ++i)
+    fill_element_sample(data.forces[i], i < s.locks.size() ? &s.locks[i] : nullptr, out.elements[i]);
+  out.flexible.resize(data.flex.size());
+  for (std::size_t b = 0; b < data.flex.size(); ++b) {
+    const auto& fd = data.flex[b];
+    FlexibleBodySample& fs = out.flexible[b];
+    fs.frame = Pose{fd.kin.frame.R_WB, fd.kin.frame.p_WBo};
+    fs.xi = fd.kin.xi;
+    fs.kinetic = fd.kinetic;
+    fs.elastic = fd.elastic;
+  }
+  out.rigid.resize(model.rigid_bodies.size());
+  for (std::size_t b = 0; b < model.rigid_bodies.size(); ++b) {
+    const RigidBody& rb = model.rigid_bodies[b];
+    const NodeKinematics& A = data.nodes[static_cast<std::size_t>(rb.anchor.value)];
+    out.rigid[b] = RigidBodySample{Pose{A.R * rb.R_NB, A.p + A.R * rb.p_NBo_N}, data.rigid[b].kinetic};
+  }
+  out.energy = energies(model, s, data);
 }
 
 Sample make_sample(const Model& model, const State& s, const Data& data) {
   Sample out;
-  out.t = s.t;
-  for (const auto& nk : data.nodes) out.nodes.push_back(Pose{nk.R, nk.p});
-  for (const auto& hk : data.hinges) out.hinges.push_back(HingeSample{hk.phi, hk.phidot, hk.phiddot, hk.joint_torque});
-  for (std::size_t i = 0; i < model.force_elements.size(); ++i)
-    out.elements.push_back(element_sample(data.forces[i], i < s.locks.size() ? &s.locks[i] : nullptr));
-  for (const auto& fd : data.flex)
-    out.flexible.push_back(FlexibleBodySample{Pose{fd.kin.frame.R_WB, fd.kin.frame.p_WBo}, fd.kin.xi, fd.kinetic, fd.elastic});
-  for (std::size_t b = 0; b < model.rigid_bodies.size(); ++b) {
-    const RigidBody& rb = model.rigid_bodies[b];
-    const NodeKinematics& A = data.nodes[static_cast<std::size_t>(rb.anchor.value)];
-    out.rigid.push_back(RigidBodySample{Pose{A.R * rb.R_NB, A.p + A.R * rb.p_NBo_N}, data.rigid[b].kinetic});
-  }
-  out.energy = energies(model, s, data);
+  make_sample(model, s, data, out);
   return out;
 }
 

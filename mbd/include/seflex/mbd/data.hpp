@@ -3,12 +3,13 @@
 // results, the assembled residual and matrices on a fixed sparse pattern, the sparse LU.
 // Made once per model (Data data(model)); every algorithm overwrites what it uses.
 #include <Eigen/Core>
+#include <Eigen/LU>
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
 #include <vector>
 
-#include "seflex/mbd/aic_element.hpp"
-#include "seflex/mbd/hinge_force.hpp"
+#include "seflex/mbd/bodies/aic_element.hpp"
+#include "seflex/mbd/forces/hinge_force.hpp"
 #include "seflex/mbd/model.hpp"
 
 namespace seflex::mbd {
@@ -34,10 +35,35 @@ struct HingeKinematics {
   double joint_torque = 0.0;  ///< torque the hinge transmits about its axis (driven: drive torque)
 };
 
+/// How the node-space rows of one element map onto its dof clique: per node block (6 rows) the
+/// node's Jacobian columns and their clique positions (identity for a Free node), then scalar rows
+/// (modal dofs) with their clique positions.
+struct ElementMap {
+  std::vector<const std::vector<Vector6d>*> J;
+  std::vector<const std::vector<int>*> pos;
+  std::vector<char> identity;
+  const std::vector<int>* extra = nullptr;
+  int rows() const { return 6 * static_cast<int>(J.size()) + (extra ? static_cast<int>(extra->size()) : 0); }
+};
+
+/// Scratch of one flexible body's assembly, sized at its first evaluation and reused.
+struct FlexibleBodyScratch {
+  AicWorkspace aic;
+  InertiaResult inertia;
+  std::vector<Eigen::Matrix3d> R_WI;
+  std::vector<Eigen::Vector3d> p_WI;
+  Eigen::VectorXd v, a, f, w, fw, sc;
+  Eigen::MatrixXd Kl, D, DT, Dw, Cd;  ///< D: the damping matrix in body axes (constant, made once)
+  ElementMap map, gmap;
+  std::vector<const std::vector<Vector6d>*> G;
+  std::vector<Eigen::MatrixXd> Y;     ///< scatter blocks
+};
+
 struct FlexibleBodyData {
   AicKinematics kin;
   Eigen::VectorXd f_el, f_in, f_damp;  ///< n each (world on the interface part)
   double kinetic = 0.0, elastic = 0.0;
+  FlexibleBodyScratch scratch;
 };
 
 struct RigidBodyData {
@@ -71,8 +97,25 @@ struct Data {
   std::vector<std::vector<std::vector<int>>> flex_node_pos;  ///< [body][interface][k] clique position of node_dofs[k]
   std::vector<std::vector<int>> flex_eta_pos;                ///< [body][k] clique position of eta dof k
   std::vector<double> K, C, M;  ///< values on the pattern
-  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
-  bool analyzed = false;
+  std::vector<double> K_rotated;  ///< K with the rotation columns times J_l (combine_matrices)
+  Eigen::VectorXd hinge_phi, hinge_phidot;  ///< scratch of the force-element assembly
+  std::vector<int> force_pos;
+
+  /// Factorise a matrix on the pattern (iteration matrix, mass, tangent stiffness): a dense LU with
+  /// partial pivoting up to kDenseDofs dofs (no allocation once sized; the cost of a 100-dof dense
+  /// factorisation is that of assembling it), the sparse LU (pattern analysed once) above.
+  /// False when the matrix is singular.
+  bool factorize(const Eigen::SparseMatrix<double>& S);
+  /// x = -S^-1 r with the last factorisation (the Newton correction of residual r; x is resized
+  /// only when its size differs).
+  void solve_negated(const Eigen::VectorXd& r, Eigen::VectorXd& x) const;
+  static constexpr int kDenseDofs = 150;
+
+ private:
+  Eigen::MatrixXd dense_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> dense_lu_;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu_;
+  bool analyzed_ = false;
 };
 
 }  // namespace seflex::mbd

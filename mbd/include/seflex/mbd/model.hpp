@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "seflex/mbd/aic_element.hpp"
-#include "seflex/mbd/force_element.hpp"
+#include "seflex/mbd/bodies/aic_element.hpp"
+#include "seflex/mbd/forces/force_element.hpp"
 #include "seflex/mbd/ids.hpp"
 #include "seflex/superelement/superelement.hpp"
 

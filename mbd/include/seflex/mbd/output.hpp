@@ -77,6 +77,8 @@ ElementSample element_sample(const HingeForceResult& r, const LockState* lock);
 
 /// Build a sample from `state` and `data` assembled at that state.
 Sample make_sample(const Model& model, const State& state, const Data& data);
+/// Same, into `out`, reusing its storage (no allocation once `out` has been filled for this model).
+void make_sample(const Model& model, const State& state, const Data& data, Sample& out);
 
 /// Energies of `data` assembled at `state`.
 Energies energies(const Model& model, const State& state, const Data& data);

@@ -10,7 +10,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "seflex/mbd/aic_element.hpp"
+#include "seflex/mbd/bodies/aic_element.hpp"
 #include "seflex/mbd/model.hpp"
 
 namespace seflex::mbd {

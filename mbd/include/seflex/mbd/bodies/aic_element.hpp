@@ -1,0 +1,152 @@
+#pragma once
+// The absolute-interface-coordinate (AIC) superelement kernel (formulation.md sections 1-3, 2.5):
+// everything one flexible body computes from the absolute poses of its N interface nodes.
+//
+// Frames: W world, B the floating frame (origin at the superelement's frame node f, axes parallel
+// to the FE model's basic axes at t = 0), I_j the triad of interface j. Vectors of size
+// n = 6N + m are ordered like the superelement's q: [u_1; theta_1; ...; u_N; theta_N; eta].
+//
+// Per evaluation (AicKinematics): the floating frame (R_WB, p_WBo) is recovered from the interface
+// poses by Newton on the frame condition Phi_f xi = 0 (section 1.5, algorithm A "Newton6" or the
+// decoupled algorithm B "Decoupled3"), warm-started from the previous frame. Then
+//   u_j = R_WB^T (p_WI_j - p_WBo) - x_j,  theta_j = log(R_WB^T R_WI_j C_j^T)        (1.6)
+//   Zx = (Phi_fb Phi_rig(u))^-1 [Phi_fb, Phi_fn]          6 x n   frame increments  (1.4, 2.5)
+//   Tx = I_n - [Phi_rig(u); 0] Zx                          n x n   local increments
+// so that, with w = blockdiag(R_WB^T ..., I_m) [dr_1; dpi_1; ...; deta] (body-axis interface
+// increments; spatial rotation increments), d[r_B; pi_B]_B = Zx w and d xi = Tx w.
+// Elastic force in body axes f_w = Tx^T K xi (2.2); world: f = Rhat f_w, Rhat = blockdiag(R_WB x 2N, I_m).
+// The exact tangent (3) uses Lambda_j = J_l^-1(theta_j); the simplified tangent sets Lambda = I.
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <string>
+#include <vector>
+
+#include "seflex/mbd/bodies/aic_workspace.hpp"
+#include "seflex/superelement/superelement.hpp"
+
+namespace seflex::mbd {
+
+enum class FrameRecovery { Newton6, Decoupled3 };
+enum class TangentModel { Exact, Simplified };
+enum class InertiaModel { Simplified, Full };
+
+/// Configuration-independent data of one superelement, precomputed once (make_aic_element).
+struct AicElement {
+  std::string name;
+  int N = 0;  ///< interface nodes
+  int m = 0;  ///< internal (fixed-interface) modes
+  int n = 0;  ///< 6N + m
+  std::vector<Eigen::Vector3d> x;  ///< x_j = p_BoI_B of interface j (undeformed)
+  std::vector<Eigen::Matrix3d> C;  ///< C_j = R_BI of interface j (undeformed triad in B)
+  Eigen::MatrixXd Phi_f;           ///< 6 x n frame-node rows of the CB basis
+  Eigen::MatrixXd K, M;            ///< n x n reduced stiffness and mass
+  double length = 1.0;             ///< size of the body (max |x_j|, at least 1e-3): scales tolerances
+  double K_abs_max = 0.0;          ///< largest |K_ij| (round-off level of the elastic force)
+
+  // Rigid-body mass properties implied by M (Phi_rig0^T M_bb Phi_rig0), about the frame origin, in B.
+  double mass = 0.0;
+  Eigen::Vector3d p_BoCm_B = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d I_Cm_B = Eigen::Matrix3d::Zero();
+
+  // Full inertia (section 2.4) from the inertia invariants (docs/inertia-invariants.md): taken from
+  // the superelement, or computed here from its recovery and M_fe when the file predates them.
+  se::InertiaInvariants inv;
+
+  // FE-level data (FFRF baseline, the nodal reference of the tests); present when the superelement
+  // carries recovery and M_fe.
+  bool has_fe_data = false;
+  Eigen::MatrixXd Psi;                    ///< 6 n_fe x n recovery matrix [Psi | Phi_n]
+  Eigen::SparseMatrix<double> M_fe;       ///< 6 n_fe square FE mass
+  Eigen::Matrix3Xd X;                     ///< undeformed FE node positions from the frame origin
+  std::vector<Eigen::Matrix3d> J_node;    ///< rotary inertia block of each FE node (gyroscopic term)
+  Eigen::VectorXd eta_amplitude;          ///< m: largest FE translation of mode k per unit eta [m]
+  Eigen::VectorXd omega_modes;            ///< m: sqrt(K_kk / M_kk) of the internal modes (rad/s)
+};
+
+/// Validate a superelement for the AIC formulation and precompute its data.
+/// Throws InputError (naming the superelement) when sizes are inconsistent, the frame node rows do
+/// not reproduce rigid motion (Phi_f Phi_rig0 = I within 1e-6), or K/M are not symmetric.
+AicElement make_aic_element(const se::Superelement& s);
+
+/// Pose of the floating frame B in W.
+struct FloatingFrame {
+  Eigen::Matrix3d R_WB = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d p_WBo = Eigen::Vector3d::Zero();
+};
+
+/// Configuration-dependent kernel quantities of one body at one evaluation.
+struct AicKinematics {
+  FloatingFrame frame;
+  Eigen::VectorXd xi;       ///< n local elastic coordinates [q; eta]
+  Eigen::MatrixXd Phi_rig;  ///< 6N x 6 rigid modes at the deformed interface positions
+  Eigen::MatrixXd Zx, Tx;   ///< 6 x n and n x n (Lambda = I)
+  Eigen::MatrixXd ZxL, TxL; ///< the same with Lambda: exact frame/local increments (section 3)
+  std::vector<Eigen::Matrix3d> Lambda;  ///< N blocks J_l^-1(theta_j)
+  int iterations = 0;       ///< frame-recovery iterations used
+};
+
+/// Recover the floating frame from the interface poses (R_WI[j], p_WI[j]) and the modal
+/// coordinates eta (size m), starting from `frame` (warm start), and fill `kin`.
+/// Throws ConvergenceError naming the body when the recovery does not converge in 30 iterations
+/// (deformation far outside the small-strain range).
+void recover_frame(const AicElement& e, const std::vector<Eigen::Matrix3d>& R_WI,
+                   const std::vector<Eigen::Vector3d>& p_WI, const Eigen::Ref<const Eigen::VectorXd>& eta,
+                   FrameRecovery method, const FloatingFrame& warm_start, AicKinematics& kin);
+/// Same, with the scratch of `ws` (no allocation once sized).
+void recover_frame(const AicElement& e, const std::vector<Eigen::Matrix3d>& R_WI,
+                   const std::vector<Eigen::Vector3d>& p_WI, const Eigen::Ref<const Eigen::VectorXd>& eta,
+                   FrameRecovery method, const FloatingFrame& warm_start, AicKinematics& kin, AicWorkspace& ws);
+
+/// A first guess of the floating frame from interface 0 (used at t = 0).
+FloatingFrame frame_guess(const AicElement& e, const Eigen::Matrix3d& R_WI0, const Eigen::Vector3d& p_WI0);
+
+/// Elastic force f (n; world components on the 6N interface part: forces and moments about the
+/// interface nodes; generalised forces on eta) and, if Kt != nullptr, its tangent (n x n) with
+/// respect to [dr_1; dpi_1; ...; deta] (spatial rotation increments). Formulation sections 2.2, 3.
+void elastic_force(const AicElement& e, const AicKinematics& kin, TangentModel tangent, Eigen::VectorXd& f,
+                   Eigen::MatrixXd* Kt);
+void elastic_force(const AicElement& e, const AicKinematics& kin, TangentModel tangent, Eigen::VectorXd& f,
+                   Eigen::MatrixXd* Kt, AicWorkspace& ws);
+
+/// Rotate between world components and body-axis components: y = Rhat^T x (to_body) or Rhat x.
+Eigen::VectorXd to_body(const AicElement& e, const Eigen::Matrix3d& R_WB, const Eigen::Ref<const Eigen::VectorXd>& x);
+Eigen::VectorXd to_world(const AicElement& e, const Eigen::Matrix3d& R_WB, const Eigen::Ref<const Eigen::VectorXd>& x);
+/// A_world = Rhat A_body Rhat^T for an n x n matrix.
+Eigen::MatrixXd to_world_matrix(const AicElement& e, const Eigen::Matrix3d& R_WB, const Eigen::MatrixXd& A);
+/// The same three without allocation: into y, or A rotated in place.
+void to_body(const AicElement& e, const Eigen::Matrix3d& R_WB, const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::VectorXd& y);
+void to_world(const AicElement& e, const Eigen::Matrix3d& R_WB, const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::VectorXd& y);
+void rotate_to_world(const AicElement& e, const Eigen::Matrix3d& R_WB, Eigen::MatrixXd& A);
+
+/// Rigid-body modes Phi_rig(u) (6N x 6) for interface displacements taken from xi.
+Eigen::MatrixXd rigid_modes(const AicElement& e, const Eigen::Ref<const Eigen::VectorXd>& xi);
+
+/// Inertia of one body (formulation 2.3 simplified, 2.4 full). Inputs in world components:
+/// velocities v (n: [dr_1/dt; omega_1; ...; deta/dt]) and accelerations a (n, gravity already
+/// subtracted from the translational entries). Outputs: force f (n, world), and, when requested,
+/// the mass matrix Mt, the velocity derivative Ct (gyroscopic/Coriolis, full inertia only) and an
+/// approximate configuration derivative Kt (rotation of the inertia force with the frame), all
+/// n x n in world components. kinetic = 1/2 v^T M0 v.
+struct InertiaResult {
+  Eigen::VectorXd f;
+  Eigen::MatrixXd Mt, Ct, Kt;
+  double kinetic = 0.0;
+};
+void inertia_force(const AicElement& e, const AicKinematics& kin, InertiaModel model,
+                   const Eigen::Ref<const Eigen::VectorXd>& v, const Eigen::Ref<const Eigen::VectorXd>& a,
+                   bool want_matrices, InertiaResult& out);
+void inertia_force(const AicElement& e, const AicKinematics& kin, InertiaModel model,
+                   const Eigen::Ref<const Eigen::VectorXd>& v, const Eigen::Ref<const Eigen::VectorXd>& a,
+                   bool want_matrices, InertiaResult& out, AicWorkspace& ws);
+
+/// The full inertia evaluated by sums over the FE nodes (formulation 2.4; needs has_fe_data): the
+/// reference the invariant evaluation is tested against. elastic_gyro = false leaves out the
+/// gyroscopic moment quadratic in the elastic rotation rates, the one term the invariants drop.
+void inertia_force_nodal(const AicElement& e, const AicKinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& v,
+                         const Eigen::Ref<const Eigen::VectorXd>& a, bool want_matrices, bool elastic_gyro,
+                         InertiaResult& out);
+
+/// Position of the deformed centre of mass from the frame origin, in B: p_BoCm_B + (1/m) sum m_i U_i.
+Eigen::Vector3d deformed_com(const AicElement& e, const Eigen::Ref<const Eigen::VectorXd>& xi);
+
+}  // namespace seflex::mbd

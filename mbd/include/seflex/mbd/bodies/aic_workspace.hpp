@@ -1,0 +1,38 @@
+#pragma once
+// Scratch of the AIC kernel (frame recovery, elastic force, inertia) for one body: every
+// intermediate matrix of an evaluation lives here, sized at the first evaluation and reused, so
+// the time loop allocates nothing (issue 12; tests/alloc). Held per body in Data (FlexibleBodyData).
+// Names follow the kernels (aic_element.cpp, aic_inertia.cpp); sizes with n = 6N + m.
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+namespace seflex::mbd {
+
+struct AicWorkspace {
+  // Frame recovery.
+  Eigen::MatrixXd PhifL;             ///< 6 x n  [Phi_fb Lambda, Phi_fn]
+  // Elastic force and tangent.
+  Eigen::VectorXd g, fw;             ///< n      K xi, Tx^T K xi
+  Eigen::MatrixXd KL, Kw;            ///< n x n
+  Eigen::MatrixXd n6;                ///< n x 6  products with Phi_rig
+  Eigen::MatrixXd PK;                ///< 6 x n
+  Eigen::MatrixXd GT;                ///< 3 x n
+  Eigen::MatrixXd S3;                ///< n x 3  stacked skew matrices
+  // Inertia in body axes and its world rotation.
+  Eigen::VectorXd w, ab, fi, c, xid; ///< n
+  Eigen::MatrixXd Mw, Cw, Ki;        ///< n x n
+  // Full inertia from the invariants.
+  Eigen::MatrixXd PmE, MR, Q;        ///< n x 6
+  Eigen::MatrixXd sixn;              ///< 6 x n
+  Eigen::VectorXd t, q, pm, v1, v2;  ///< n, 9n (q), scratch
+  Eigen::MatrixXd CLp, GPp, GVp, DOp, n3;  ///< n x 6, n x 3 (GPp, GVp, DOp, n3)
+  std::array<Eigen::MatrixXd, 3> HGPxi;    ///< 3 x n
+  Eigen::MatrixXd Ap, Ae, Xp, Xe;    ///< n x n, 6 x n, n x n, 6 x n
+  Eigen::MatrixXd nn;                ///< n x n scratch
+  Eigen::MatrixXd AOm, AD, ADPhi;    ///< n x 3, n x n, n x 6 (velocity-acceleration tangent)
+  // Damping.
+  Eigen::MatrixXd Dw;                ///< n x n  Tx^T D Tx
+};
+
+}  // namespace seflex::mbd

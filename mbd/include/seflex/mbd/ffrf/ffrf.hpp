@@ -1,0 +1,140 @@
+#pragma once
+// The classic floating frame of reference formulation with Lagrange multipliers (FFRF-LM), and
+// rigid bodies with multipliers (rigid-LM): the baselines of the AIC formulation (issue 7), run on
+// the SAME mbd::Model (docs/ffrf.md has the equations).
+//
+// Coordinates: per body a floating frame (p_WB; R_WB on SO(3), spatial rotation increments) and,
+// for a flexible body, k modal coordinates z of the superelement's Craig-Bampton basis with the
+// frame node clamped (the n - 6 dimensional null space of Phi_f, diagonalised: the lowest k
+// "frame-clamped" normal modes with mass, mass-normalised), so that the local elastic coordinates of the
+// superelement are xi = V z; per undriven hinge its angle (never wrapped). Joints: every body
+// interface is constrained to the node it sits on (6 equations), where a node is given by the first
+// body that carries it, by ground, or through its parent node and hinge (R_WC = R_WP exp(phi a~) R_PC).
+// A hinge between two bodies is therefore 3 position + 3 rotation constraints with the hinge angle
+// as an extra coordinate, so force elements and lock laws act on the same unwrapped angle as in AIC.
+// Index-3 DAE, Lie-group generalized-alpha (Arnold and Bruls 2007), equations of motion scaled by
+// beta h^2 and multipliers mu = beta h^2 lambda (Bottasso, Bauchau and Cardona 2007) for a
+// step-independent conditioning; Newton on [h Dq; mu]; step control and lock events as `simulate`.
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <string>
+#include <vector>
+
+#include "seflex/mbd/solvers/integrator.hpp"
+#include "seflex/mbd/model.hpp"
+#include "seflex/mbd/output.hpp"
+#include "seflex/mbd/state.hpp"
+
+namespace seflex::mbd {
+
+struct FfrfOptions {
+  bool rigid = false;              ///< every flexible body rigid (mass properties only): rigid-LM
+  int modes = -1;                  ///< frame-clamped modes kept per flexible body (-1: all n - 6 that carry mass)
+  bool scale_constraints = true;   ///< beta h^2 scaling of the equations of motion and multipliers
+  bool condition_estimate = false; ///< 2-norm condition number of each iteration matrix (dense SVD: small models)
+};
+
+/// What an FFRF run reports beyond RunStats.
+struct FfrfStats {
+  RunStats run;
+  int coordinates = 0;            ///< generalised coordinates (frames, modes, hinge angles)
+  int constraints = 0;            ///< constraint equations (multipliers)
+  double drift_position = 0.0;    ///< max |g_position| over the accepted states [m]
+  double drift_rotation = 0.0;    ///< max |g_rotation| [rad]
+  double drift_velocity = 0.0;    ///< max |dg_position/dt| [m/s] (index 3: velocities are not enforced)
+  double drift_angular = 0.0;     ///< max |dg_rotation/dt| [rad/s]
+  double condition_min = 0.0;     ///< over the iteration matrices (condition_estimate only)
+  double condition_max = 0.0;
+};
+
+/// Integrate `model` from t = 0 to settings.t_end with FFRF-LM (or rigid-LM). Samples go to
+/// `observer` as with `simulate` (flexible bodies report xi = V z in the superelement's order).
+/// Throws InputError when the model cannot be expressed (a Free node that no body carries; a
+/// flexible body whose superelement has no FE recovery/mass data, unless options.rigid), and
+/// ConvergenceError (after delivering the last accepted state) when Newton fails at h_min.
+FfrfStats simulate_ffrf(const Model& model, const IntegratorSettings& settings, const FfrfOptions& options = {},
+                        Observer* observer = nullptr);
+
+// ---- The system, exposed for tests and studies --------------------------------------------------
+
+/// One body: coordinates [p_WB (3); rotation (3); z (k)] from `coord` on.
+struct FfrfBody {
+  std::string name;
+  bool flexible = false;            ///< false: rigid kernel (mass, centre of mass, inertia)
+  int model_index = -1;             ///< index in Model::flexible_bodies (flexible or made rigid) or rigid_bodies
+  bool from_rigid = false;          ///< the source is a Model::rigid_bodies entry
+  int coord = 0, k = 0, z_offset = 0;
+  Pose X_WB0;
+  double mass = 0.0;
+  Eigen::Vector3d p_BoCm_B = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d I_Cm_B = Eigen::Matrix3d::Zero();
+  Eigen::MatrixXd V;                ///< n x k frame-clamped modes: xi = V z, V^T M V = I, Phi_f V = 0
+  Eigen::MatrixXd PV;               ///< 6 n_fe x k FE displacements per mode (recovery * V)
+  Eigen::VectorXd omega2;           ///< k squared frequencies: V^T K V = diag(omega2)
+  double stiffness_damping = 0.0;   ///< beta of D = beta K
+  std::vector<NodeIndex> nodes;     ///< one per interface
+  std::vector<Pose> X_BN;           ///< node pose in B at z = 0 (rigid: exact; flexible: undeformed)
+  std::vector<Eigen::Matrix3d> R_IN;///< flexible: node triad in the interface's (R_NI^T)
+};
+
+/// Where a node's pose comes from.
+struct FfrfNodeSource {
+  enum class Kind { Fixed, Body, Chain } kind = Kind::Fixed;
+  int body = -1, interface = -1;  ///< Kind::Body
+};
+
+/// Six equations: interface `interface` of body `body` coincides with `node` (as its source gives it,
+/// or, when `chain`, as its parent node and hinge give it).
+struct FfrfConstraint {
+  int body = -1, interface = -1;
+  NodeIndex node;
+  bool chain = false;
+};
+
+struct FfrfSystem {
+  const Model* model = nullptr;  ///< must outlive the system
+  FfrfOptions options;
+  std::vector<FfrfBody> bodies;
+  std::vector<FfrfNodeSource> node_source;  ///< per model node
+  std::vector<FfrfConstraint> constraints;
+  std::vector<int> hinge_coord;             ///< per hinge; -1 when driven
+  int num_coords = 0, num_z = 0;
+  std::vector<char> kind;                   ///< per coordinate: 't', 'r', 'e' (mode), 'h' (hinge)
+  std::vector<int> owner;                   ///< per coordinate: its body ('t', 'r', 'e') or hinge ('h')
+  Eigen::VectorXd weight;                   ///< per coordinate: 1 / natural scale
+  int num_multipliers() const { return 6 * static_cast<int>(constraints.size()); }
+};
+
+/// Build the FFRF system of a model (InputError as for simulate_ffrf).
+FfrfSystem make_ffrf_system(const Model& model, const FfrfOptions& options);
+
+struct FfrfState {
+  double t = 0.0;
+  std::vector<Eigen::Matrix3d> R_WB;  ///< per body
+  std::vector<Eigen::Vector3d> p_WB;
+  Eigen::VectorXd z;                  ///< modal coordinates of all bodies
+  Eigen::VectorXd phi;                ///< per hinge (driven: the drive's value at t)
+  Eigen::VectorXd v, vdot, a;         ///< num_coords: [dp/dt; omega (world); dz/dt] per body, then hinge rates
+  Eigen::VectorXd lambda;             ///< multipliers: [force (3); moment (3)] per constraint
+  std::vector<LockState> locks;       ///< per force element
+};
+
+/// The state at t = 0: frames where the model places the bodies, z = 0, velocities from the
+/// model's initial node velocities and hinge rates projected onto the velocity constraints
+/// (mass-weighted), consistent accelerations and multipliers.
+FfrfState ffrf_initial_state(const FfrfSystem& system);
+
+/// Residual R and (if S != nullptr) iteration matrix dR/dx of the Newton system of one
+/// generalized-alpha step of size h from s0, at the unknowns x = [h Dq (num_coords); mu
+/// (multipliers)]; s1 receives the configuration, velocities, accelerations and multipliers.
+void ffrf_step_system(const FfrfSystem& system, const FfrfState& s0, double h, double rho_inf, const Eigen::VectorXd& x,
+                      FfrfState& s1, Eigen::VectorXd& R, Eigen::SparseMatrix<double>* S);
+
+/// Constraint residual g (6 per constraint: position [m], rotation log(R_B^T R_A) [rad]) and its
+/// time derivative at state s.
+void ffrf_constraints(const FfrfSystem& system, const FfrfState& s, Eigen::VectorXd& g, Eigen::VectorXd& gdot);
+
+/// A sample of state s (same content as the AIC solver's).
+Sample ffrf_sample(const FfrfSystem& system, const FfrfState& s);
+
+}  // namespace seflex::mbd

@@ -1,0 +1,356 @@
+// The AIC superelement kernel: validation/precomputation, frame recovery, local coordinates,
+// Z/T, elastic force and tangent. Formulas: formulation.md sections 1.4-1.6, 2.2, 2.5, 3.
+#include "seflex/mbd/bodies/aic_element.hpp"
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <sstream>
+
+#include "seflex/common/error.hpp"
+#include "seflex/common/so3.hpp"
+#include "bodies/aic_inertia_detail.hpp"
+
+namespace seflex::mbd {
+
+using Eigen::Matrix3d;
+using Eigen::MatrixXd;
+using Eigen::Vector3d;
+using Eigen::VectorXd;
+using so3::skew;
+
+namespace {
+
+void rigid_modes_at(const std::vector<Vector3d>& x, const VectorXd* xi, MatrixXd& P) {
+  const int N = static_cast<int>(x.size());
+  P.setZero(6 * N, 6);
+  for (int j = 0; j < N; ++j) {
+    Vector3d s = x[j];
+    if (xi) s += xi->segment<3>(6 * j);
+    P.block<3, 3>(6 * j, 0).setIdentity();
+    P.block<3, 3>(6 * j, 3) = -skew(s);
+    P.block<3, 3>(6 * j + 3, 3).setIdentity();
+  }
+}
+
+MatrixXd rigid_modes_at(const std::vector<Vector3d>& x, const VectorXd* xi) {
+  MatrixXd P;
+  rigid_modes_at(x, xi, P);
+  return P;
+}
+
+std::string who(const std::string& name) { return "superelement '" + name + "'"; }
+
+}  // namespace
+
+AicElement make_aic_element(const se::Superelement& s) {
+  const std::string name = s.name.empty() ? std::string("(unnamed)") : s.name;
+  const auto problems = se::check_consistency(s, 1e-8);
+  if (!problems.empty()) {
+    std::string msg = who(name) + " cannot be used as a flexible body:";
+    for (const auto& p : problems) msg += " " + p + ";";
+    throw InputError(msg);
+  }
+  AicElement e;
+  e.name = name;
+  e.N = s.num_interfaces();
+  e.m = s.num_modes;
+  e.n = s.size();
+  e.Phi_f = s.Phi_f;
+  e.K = 0.5 * (s.K + s.K.transpose());
+  e.M = 0.5 * (s.M + s.M.transpose());
+  e.K_abs_max = e.K.cwiseAbs().maxCoeff();
+  double len = 1e-3;
+  for (const auto& itf : s.interfaces) {
+    e.x.push_back(itf.p_BoN_B);
+    e.C.push_back(itf.R_BN);
+    len = std::max(len, itf.p_BoN_B.norm());
+    if ((itf.R_BN.transpose() * itf.R_BN - Matrix3d::Identity()).norm() > 1e-8 || itf.R_BN.determinant() < 0)
+      throw InputError(who(name) + ": interface " + std::to_string(itf.id) + ": nodal triad R_BN is not a rotation matrix");
+  }
+  e.length = len;
+
+  // Rigid-body reproduction by the frame-node rows: Phi_fb Phi_rig0 = I (formulation 1.3).
+  const MatrixXd P0 = rigid_modes_at(e.x, nullptr);
+  const MatrixXd A0 = e.Phi_f.leftCols(6 * e.N) * P0;
+  const double err = (A0 - Eigen::Matrix<double, 6, 6>::Identity()).cwiseAbs().maxCoeff();
+  if (!(err < 1e-6)) {
+    std::ostringstream os;
+    os << who(name) << ": the frame-node rows Phi_f do not reproduce rigid motion (|Phi_f Phi_rig0 - I| = " << err
+       << ", expected < 1e-6); the AIC formulation needs the raw (not orthonormalised) constraint modes of a free-free "
+          "model and a frame node that is not an interface node";
+    throw InputError(os.str());
+  }
+
+  // Mass properties implied by M (exactly those of the FE model for a consistent reduction).
+  const MatrixXd Mr = P0.transpose() * e.M.topLeftCorner(6 * e.N, 6 * e.N) * P0;
+  e.mass = Mr(0, 0);
+  if (!(e.mass > 0.0)) throw InputError(who(name) + ": the reduced mass matrix carries no mass (rigid-body mass " + std::to_string(e.mass) + ")");
+  const Matrix3d mc = 0.5 * (Mr.block<3, 3>(3, 0) - Mr.block<3, 3>(0, 3));  // m c~
+  e.p_BoCm_B = so3::vee(mc) / e.mass;
+  const Matrix3d cx = skew(e.p_BoCm_B);
+  e.I_Cm_B = Mr.block<3, 3>(3, 3) + e.mass * cx * cx;
+
+  // Full-inertia data.
+  const auto nfe = static_cast<Eigen::Index>(s.fe_node_ids.size());
+  e.has_fe_data = nfe > 0 && s.recovery.rows() == 6 * nfe && s.recovery.cols() == e.n && s.M_fe.rows() == 6 * nfe &&
+                  s.p_BoI_B.cols() == nfe;
+  if (e.has_fe_data) {
+    e.Psi = s.recovery;
+    e.M_fe = s.M_fe;
+    e.X = s.p_BoI_B;
+    e.J_node.assign(nfe, Matrix3d::Zero());
+    for (int c = 0; c < e.M_fe.outerSize(); ++c)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(e.M_fe, c); it; ++it) {
+        const auto r = it.row();
+        if (r / 6 == c / 6 && r % 6 >= 3 && c % 6 >= 3) e.J_node[c / 6](r % 6 - 3, c % 6 - 3) = it.value();
+      }
+  }
+  if (s.invariants.present()) {
+    if (s.invariants.n != e.n || s.invariants.Mpp.rows() != e.n || s.invariants.mode_max_translation.size() != e.m)
+      throw InputError(who(name) + ": its inertia invariants are for " + std::to_string(s.invariants.n) +
+                       " reduced coordinates, the superelement has " + std::to_string(e.n));
+    e.inv = s.invariants;
+  } else if (e.has_fe_data) {
+    e.inv = se::compute_inertia_invariants(s);
+  }
+  e.eta_amplitude = VectorXd::Ones(e.m);
+  e.omega_modes = VectorXd::Zero(e.m);
+  for (int k = 0; k < e.m; ++k) {
+    const int c = 6 * e.N + k;
+    const double mkk = e.M(c, c);
+    e.omega_modes[k] = mkk > 0 ? std::sqrt(std::max(0.0, e.K(c, c) / mkk)) : 0.0;
+    double amp = 0.0;
+    if (e.inv.present()) {
+      amp = e.inv.mode_max_translation[k];
+    } else {
+      amp = 1.0 / std::sqrt(e.mass);
+    }
+    e.eta_amplitude[k] = amp;
+  }
+  return e;
+}
+
+MatrixXd rigid_modes(const AicElement& e, const Eigen::Ref<const VectorXd>& xi) {
+  const VectorXd x = xi;
+  return rigid_modes_at(e.x, &x);
+}
+
+FloatingFrame frame_guess(const AicElement& e, const Matrix3d& R_WI0, const Vector3d& p_WI0) {
+  FloatingFrame f;
+  f.R_WB = R_WI0 * e.C[0].transpose();
+  f.p_WBo = p_WI0 - f.R_WB * e.x[0];
+  return f;
+}
+
+namespace {
+
+void local_coordinates(const AicElement& e, const std::vector<Matrix3d>& R_WI, const std::vector<Vector3d>& p_WI,
+                       const Matrix3d& R, const Vector3d& p, VectorXd& xi) {
+  for (int j = 0; j < e.N; ++j) {
+    xi.segment<3>(6 * j) = R.transpose() * (p_WI[j] - p) - e.x[j];
+    xi.segment<3>(6 * j + 3) = so3::log(R.transpose() * R_WI[j] * e.C[j].transpose());
+  }
+}
+
+}  // namespace
+
+void recover_frame(const AicElement& e, const std::vector<Matrix3d>& R_WI, const std::vector<Vector3d>& p_WI,
+                   const Eigen::Ref<const VectorXd>& eta, FrameRecovery method, const FloatingFrame& warm_start,
+                   AicKinematics& kin) {
+  AicWorkspace ws;
+  recover_frame(e, R_WI, p_WI, eta, method, warm_start, kin, ws);
+}
+
+void recover_frame(const AicElement& e, const std::vector<Matrix3d>& R_WI, const std::vector<Vector3d>& p_WI,
+                   const Eigen::Ref<const VectorXd>& eta, FrameRecovery method, const FloatingFrame& warm_start,
+                   AicKinematics& kin, AicWorkspace& ws) {
+  SEFLEX_DEMAND(static_cast<int>(R_WI.size()) == e.N && static_cast<int>(p_WI.size()) == e.N, "interface count");
+  SEFLEX_DEMAND(eta.size() == e.m, "modal coordinate count");
+  const int N = e.N, nb = 6 * N;
+  Matrix3d R = warm_start.R_WB;
+  Vector3d p = warm_start.p_WBo;
+  double scale = e.length;
+  for (const auto& pj : p_WI) scale = std::max(scale, pj.norm());
+  kin.xi.resize(e.n);
+  if (e.m > 0) kin.xi.tail(e.m) = eta;
+  const auto Phi_fb = e.Phi_f.leftCols(nb);
+  const double tol = 1e-9;
+  bool converged = false;
+  int it = 0;
+  for (; it < 30 && !converged; ++it) {
+    if (method == FrameRecovery::Newton6) {
+      local_coordinates(e, R_WI, p_WI, R, p, kin.xi);
+      Eigen::Matrix<double, 6, 1> g;
+      g.noalias() = e.Phi_f * kin.xi;
+      Eigen::Matrix<double, 6, 6> A = Eigen::Matrix<double, 6, 6>::Zero();
+      for (int j = 0; j < N; ++j) {
+        Eigen::Matrix<double, 6, 6> B = Eigen::Matrix<double, 6, 6>::Zero();
+        B.topLeftCorner<3, 3>().setIdentity();
+        B.topRightCorner<3, 3>() = -skew(e.x[j] + kin.xi.segment<3>(6 * j));
+        B.bottomRightCorner<3, 3>() = so3::jl_inv(kin.xi.segment<3>(6 * j + 3));
+        A.noalias() += Phi_fb.middleCols<6>(6 * j) * B;
+      }
+      const Eigen::Matrix<double, 6, 1> d = A.partialPivLu().solve(g);
+      if (!d.allFinite()) break;
+      p += R * d.head<3>();
+      R = R * so3::exp(d.tail<3>());
+      converged = d.head<3>().norm() / scale + d.tail<3>().norm() <= tol;
+    } else {
+      Vector3d g = Vector3d::Zero();
+      Matrix3d J = Matrix3d::Zero();
+      for (int j = 0; j < N; ++j) {
+        const auto A = Phi_fb.middleCols<6>(6 * j);
+        const Vector3d b = R.transpose() * p_WI[j];
+        const Vector3d th = so3::log(R.transpose() * R_WI[j] * e.C[j].transpose());
+        g += A.block<3, 3>(3, 0) * (b - e.x[j]) + A.block<3, 3>(3, 3) * th;
+        J += A.block<3, 3>(3, 3) * so3::jl_inv(th) - A.block<3, 3>(3, 0) * skew(b);
+      }
+      if (e.m > 0) g.noalias() += e.Phi_f.block(3, nb, 3, e.m) * eta;
+      const Vector3d d = J.partialPivLu().solve(g);
+      if (!d.allFinite()) break;
+      R = R * so3::exp(d);
+      converged = d.norm() <= tol;
+      if (converged || it == 29) {
+        Vector3d t = Vector3d::Zero();
+        for (int j = 0; j < N; ++j) {
+          const auto A = Phi_fb.middleCols<6>(6 * j);
+          const Vector3d b = R.transpose() * p_WI[j];
+          const Vector3d th = so3::log(R.transpose() * R_WI[j] * e.C[j].transpose());
+          t += A.block<3, 3>(0, 0) * (b - e.x[j]) + A.block<3, 3>(0, 3) * th;
+        }
+        if (e.m > 0) t.noalias() += e.Phi_f.block(0, nb, 3, e.m) * eta;
+        p = R * t;
+      }
+    }
+  }
+  if (!converged) {
+    std::ostringstream os;
+    os << "floating-frame recovery of body with superelement '" << e.name << "' did not converge in " << it
+       << " iterations (the interface poses are far from a small-strain state of the body)";
+    throw ConvergenceError(os.str());
+  }
+  R = so3::orthonormalize(R);
+  kin.frame.R_WB = R;
+  kin.frame.p_WBo = p;
+  kin.iterations = it;
+  local_coordinates(e, R_WI, p_WI, R, p, kin.xi);
+  rigid_modes_at(e.x, &kin.xi, kin.Phi_rig);
+  Eigen::Matrix<double, 6, 6> A0;
+  A0.noalias() = Phi_fb * kin.Phi_rig;
+  const Eigen::PartialPivLU<Eigen::Matrix<double, 6, 6>> A0_lu(A0);
+  kin.Zx.resize(6, e.n);
+  kin.Zx.noalias() = A0_lu.solve(e.Phi_f);
+  kin.Tx.setIdentity(e.n, e.n);
+  kin.Tx.topRows(nb).noalias() -= kin.Phi_rig * kin.Zx;
+  kin.Lambda.resize(N);
+  for (int j = 0; j < N; ++j) kin.Lambda[j] = so3::jl_inv(kin.xi.segment<3>(6 * j + 3));
+  MatrixXd& PhifL = ws.PhifL;  // [Phi_fb Lambda, Phi_fn]
+  PhifL = e.Phi_f;
+  for (int j = 0; j < N; ++j) PhifL.middleCols<3>(6 * j + 3).noalias() = e.Phi_f.middleCols<3>(6 * j + 3) * kin.Lambda[j];
+  Eigen::Matrix<double, 6, 6> AL;
+  AL.noalias() = PhifL.leftCols(nb) * kin.Phi_rig;
+  const Eigen::PartialPivLU<Eigen::Matrix<double, 6, 6>> AL_lu(AL);
+  kin.ZxL.resize(6, e.n);
+  kin.ZxL.noalias() = AL_lu.solve(PhifL);
+  kin.TxL.setIdentity(e.n, e.n);
+  kin.TxL.topRows(nb).noalias() -= kin.Phi_rig * kin.ZxL;
+}
+
+void to_body(const AicElement& e, const Matrix3d& R_WB, const Eigen::Ref<const VectorXd>& x, VectorXd& y) {
+  y = x;
+  for (int i = 0; i < 2 * e.N; ++i) y.segment<3>(3 * i) = R_WB.transpose() * x.segment<3>(3 * i);
+}
+
+void to_world(const AicElement& e, const Matrix3d& R_WB, const Eigen::Ref<const VectorXd>& x, VectorXd& y) {
+  y = x;
+  for (int i = 0; i < 2 * e.N; ++i) y.segment<3>(3 * i) = R_WB * x.segment<3>(3 * i);
+}
+
+VectorXd to_body(const AicElement& e, const Matrix3d& R_WB, const Eigen::Ref<const VectorXd>& x) {
+  VectorXd y;
+  to_body(e, R_WB, x, y);
+  return y;
+}
+
+VectorXd to_world(const AicElement& e, const Matrix3d& R_WB, const Eigen::Ref<const VectorXd>& x) {
+  VectorXd y;
+  to_world(e, R_WB, x, y);
+  return y;
+}
+
+void rotate_to_world(const AicElement& e, const Matrix3d& R_WB, MatrixXd& B) {
+  const int nr = 2 * e.N;
+  for (int i = 0; i < nr; ++i)  // fixed-size 3-vector temporaries: no allocation
+    for (Eigen::Index c = 0; c < B.cols(); ++c) {
+      const Vector3d t = R_WB * B.block<3, 1>(3 * i, c);
+      B.block<3, 1>(3 * i, c) = t;
+    }
+  for (int i = 0; i < nr; ++i)
+    for (Eigen::Index r = 0; r < B.rows(); ++r) {
+      const Eigen::RowVector3d t = B.block<1, 3>(r, 3 * i) * R_WB.transpose();
+      B.block<1, 3>(r, 3 * i) = t;
+    }
+}
+
+MatrixXd to_world_matrix(const AicElement& e, const Matrix3d& R_WB, const MatrixXd& A) {
+  MatrixXd B = A;
+  rotate_to_world(e, R_WB, B);
+  return B;
+}
+
+void elastic_force(const AicElement& e, const AicKinematics& kin, TangentModel tangent, VectorXd& f, MatrixXd* Kt) {
+  AicWorkspace ws;
+  elastic_force(e, kin, tangent, f, Kt, ws);
+}
+
+void elastic_force(const AicElement& e, const AicKinematics& kin, TangentModel tangent, VectorXd& f, MatrixXd* Kt,
+                   AicWorkspace& ws) {
+  // Tx = I - R6 Zx with R6 = [Phi_rig; 0] (rank-6 defect): every product with Tx is O(n^2).
+  const int N = e.N, nb = 6 * N;
+  const MatrixXd& Phi = kin.Phi_rig;
+  VectorXd& g = ws.g;
+  VectorXd& fw = ws.fw;
+  g.noalias() = e.K * kin.xi;
+  fw = g;  // Tx^T g
+  Eigen::Matrix<double, 6, 1> Pg;
+  Pg.noalias() = Phi.transpose() * g.head(nb);
+  fw.noalias() -= kin.Zx.transpose() * Pg;
+  to_world(e, kin.frame.R_WB, fw, f);
+  if (!Kt) return;
+  const bool exact = tangent == TangentModel::Exact;
+  const MatrixXd& ZxL = exact ? kin.ZxL : kin.Zx;
+  MatrixXd& KL = ws.KL;  // K Lambda_x
+  KL = e.K;
+  if (exact)
+    for (int j = 0; j < N; ++j) KL.middleCols<3>(6 * j + 3).noalias() = e.K.middleCols<3>(6 * j + 3) * kin.Lambda[j];
+  // Material part Tx^T KL TxL, TxL = I - R6 ZxL.
+  MatrixXd& Kw = *Kt;  // built in body axes, rotated to world in place at the end
+  Kw = KL;
+  ws.n6.noalias() = KL.leftCols(nb) * Phi;
+  Kw.noalias() -= ws.n6 * ZxL;
+  ws.PK.noalias() = Phi.transpose() * Kw.topRows(nb);
+  Kw.noalias() -= kin.Zx.transpose() * ws.PK;
+  // Geometric part from the variation of T: Zx^T E_r^T G TxL, G = [f_u1~, 0, f_u2~, 0, ...].
+  MatrixXd& GT = ws.GT;
+  GT.setZero(3, e.n);
+  Eigen::Matrix<double, 3, 6> GPhi = Eigen::Matrix<double, 3, 6>::Zero();
+  for (int j = 0; j < N; ++j) {
+    const Matrix3d F = skew(fw.segment<3>(6 * j));
+    GT.middleCols<3>(6 * j) += F;
+    GPhi.noalias() += F * Phi.middleRows<3>(6 * j);
+  }
+  GT.noalias() -= GPhi * ZxL;
+  Kw.noalias() += kin.Zx.middleRows<3>(3).transpose() * GT;
+  // Geometric part from the rotation of the forces with R_WB: -Ftilde E_r ZxL.
+  detail::stacked_skew(e, fw, ws.S3);
+  Kw.noalias() -= ws.S3 * ZxL.middleRows<3>(3);
+  rotate_to_world(e, kin.frame.R_WB, Kw);
+}
+
+Vector3d deformed_com(const AicElement& e, const Eigen::Ref<const VectorXd>& xi) {
+  Vector3d s = Vector3d::Zero();  // sum over interfaces of the translation rows of M xi
+  for (int j = 0; j < e.N; ++j) s.noalias() += e.M.middleRows<3>(6 * j) * xi;
+  return e.p_BoCm_B + s / e.mass;
+}
+
+}  // namespace seflex::mbd

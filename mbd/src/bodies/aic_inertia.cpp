@@ -1,0 +1,261 @@
+// Inertia of an AIC flexible body: the simplified mass Rhat M Rhat^T (formulation 2.3) and the full
+// inertia with quadratic-velocity terms (2.4, 2.5) evaluated from the inertia invariants
+// (docs/inertia-invariants.md), at a cost set by the reduced size n, never by the FE mesh.
+//
+// With N = P T + E(xi) Z (T = Tx, Z = Zx, E = E0 + E1(P xi) the FE rigid modes at the deformed
+// positions), every FE-level quantity enters through two projections of an FE "load" y:
+// pm = P^T y (n) and em = E^T y (6), and N^T y = T^T pm + Z^T em. The invariants give, for the mass
+// pairing, PmE = P^T M E (n x 6) and EmE = E^T M E (6 x 6) at the current xi; for the field of the
+// velocity-dependent accelerations c_FE (centrifugal L(W)(X + P xi), Coriolis G(Om)(P xi_dot)) and
+// the nodal gyroscopic moments, pm and em as linear maps of W = Om~ Om~ (6 symmetric components)
+// and Om. Then
+//   f_w = N^T M N (a_b - c) + N^T (M c_FE + gyro),   M_w = N^T M N,
+//   C_w = d/dw [N^T (M c_FE + gyro)] - M_w dc/dw,     K_w = rotation of the inertia force with B.
+#include <Eigen/Dense>
+
+#include "bodies/aic_inertia_detail.hpp"
+#include "seflex/common/error.hpp"
+#include "seflex/common/so3.hpp"
+#include "seflex/mbd/bodies/aic_element.hpp"
+
+namespace seflex::mbd {
+
+using Eigen::Matrix3d;
+using Eigen::MatrixXd;
+using Eigen::Vector3d;
+using Eigen::VectorXd;
+using so3::skew;
+using Matrix6d = Eigen::Matrix<double, 6, 6>;
+using Vector6d = Eigen::Matrix<double, 6, 1>;
+using Matrix36d = Eigen::Matrix<double, 3, 6>;
+using Vector9d = Eigen::Matrix<double, 9, 1>;
+
+namespace {
+
+/// Kw = (Mw Ab~ - Fw~) ZxL_r: the rotation of the inertia force with the frame (Ab~, Fw~: stacked
+/// skew matrices of the body-axis accelerations and forces).
+void configuration_tangent(const AicElement& e, const AicKinematics& kin, const MatrixXd& Mw, const VectorXd& ab,
+                           const VectorXd& fw, AicWorkspace& ws, MatrixXd& Kw) {
+  detail::stacked_skew(e, ab, ws.S3);
+  ws.n3.noalias() = Mw * ws.S3;
+  detail::stacked_skew(e, fw, ws.S3);
+  ws.n3 -= ws.S3;
+  Kw.noalias() = ws.n3 * kin.ZxL.middleRows<3>(3);
+}
+
+void simplified(const AicElement& e, const AicKinematics& kin, const VectorXd& w, const VectorXd& ab, bool want,
+                MatrixXd& Mw, MatrixXd& Cw, MatrixXd& Kw, VectorXd& fw, double& kinetic, AicWorkspace& ws) {
+  fw.noalias() = e.M * ab;
+  ws.v2.noalias() = e.M * w;
+  kinetic = 0.5 * w.dot(ws.v2);
+  if (!want) return;
+  Mw = e.M;
+  Cw.setZero(e.n, e.n);
+  configuration_tangent(e, kin, Mw, ab, fw, ws, Kw);
+}
+
+// Symmetric components (xx, yy, zz, xy, xz, yz) of a symmetric 3x3 W = sum_s w_s S_s.
+Vector6d sym_components(const Matrix3d& W) {
+  Vector6d v;
+  v << W(0, 0), W(1, 1), W(2, 2), W(0, 1), W(0, 2), W(1, 2);
+  return v;
+}
+
+// (3 x cols) view of the product of a stored tensor (3 cols) x n with xi; t holds the product.
+using Map3 = Eigen::Map<const Eigen::Matrix<double, 3, Eigen::Dynamic>>;
+Map3 contract(const MatrixXd& T, const VectorXd& xi, Eigen::Index cols, VectorXd& t) {
+  t.noalias() = T * xi;
+  return Map3(t.data(), 3, cols);
+}
+// The same for a tensor with 6 columns (18 rows): fixed size, on the stack.
+Matrix36d contract6(const MatrixXd& T, const VectorXd& xi) {
+  Eigen::Matrix<double, 18, 1> t;
+  t.noalias() = T * xi;
+  return Eigen::Map<const Matrix36d>(t.data());
+}
+
+void full(const AicElement& e, const AicKinematics& kin, const VectorXd& w, const VectorXd& ab, bool want,
+          MatrixXd& Mw, MatrixXd& Cw, MatrixXd& Kw, VectorXd& fw, double& kinetic, AicWorkspace& ws) {
+  const se::InertiaInvariants& I = e.inv;
+  const Eigen::Index n = e.n;
+  const MatrixXd& Z = kin.Zx;
+  const VectorXd& xi = kin.xi;
+  const auto nb = 6 * e.N;
+  const auto& Phi = kin.Phi_rig;  // the non-zero rows of R6 = [Phi_rig; 0]
+  Vector3d Om;
+  Om.noalias() = Z.middleRows<3>(3) * w;
+  VectorXd& xid = ws.xid;  // Tx w = w - R6 (Zx w)
+  xid = w;
+  Vector6d Zw;
+  Zw.noalias() = Z * w;
+  xid.head(nb).noalias() -= Phi * Zw;
+
+  // Mass pairing at xi.
+  MatrixXd& PmE = ws.PmE;
+  PmE = I.PmE0;
+  PmE.rightCols<3>() += contract(I.HP, xi, n, ws.t).transpose();
+  Matrix6d EmE = I.E0mE0;
+  {
+    const Matrix36d B = contract6(I.HE0, xi);
+    EmE.bottomRows<3>() += B;
+    EmE.rightCols<3>() += B.transpose();
+    ws.q.noalias() = I.HE1 * xi;
+    Matrix3d Q = Matrix3d::Zero();
+    for (Eigen::Index l = 0; l < n; ++l) Q += xi[l] * Eigen::Map<const Matrix3d>(ws.q.data() + 9 * l);
+    EmE.bottomRightCorner<3, 3>() += Q;
+  }
+  // Centrifugal field: pm = CLp s(W), em = CLe s(W) + [0; CLh s(W)].
+  MatrixXd& CLp = ws.CLp;
+  CLp = I.PmLX;
+  Matrix6d CLe = I.E0mLX;
+  Matrix36d CLh = contract6(I.HLX, xi);
+  for (int s = 0; s < 6; ++s) {
+    CLp.col(s).noalias() += I.PmLP[s] * xi;
+    CLe.col(s).noalias() += I.E0mLP[s] * xi;
+    CLh.col(s).noalias() += contract(I.HLP[s], xi, n, ws.t) * xi;
+  }
+  // Coriolis field and gyroscopic moments, linear in Om at fixed xi_dot: columns a.
+  MatrixXd& GPp = ws.GPp;
+  MatrixXd& GVp = ws.GVp;
+  GPp.resize(n, 3);
+  GVp.resize(n, 3);
+  Eigen::Matrix<double, 6, 3> GPe;
+  Matrix3d GPh, GVe;
+  for (int a = 0; a < 3; ++a) {
+    ws.HGPxi[a] = contract(I.HGP[a], xi, n, ws.t);
+    GPp.col(a).noalias() = I.PmGP[a] * xid;
+    GPe.col(a).noalias() = I.E0mGP[a] * xid;
+    GPh.col(a).noalias() = ws.HGPxi[a] * xid;
+    GVp.col(a).noalias() = I.PgOV[a] * xid;
+    GVe.col(a).noalias() = I.EgOV[a] * xid;
+  }
+  Vector9d OO;
+  for (int b = 0; b < 3; ++b)
+    for (int a = 0; a < 3; ++a) OO[a + 3 * b] = Om[a] * Om[b];
+  const Matrix3d Wc = skew(Om) * skew(Om);
+  const Vector6d sW = sym_components(Wc);
+  VectorXd& pm = ws.pm;
+  pm.noalias() = CLp * sW;
+  pm.noalias() += GPp * Om;
+  pm.noalias() += I.PgOO * OO;
+  pm.noalias() += GVp * Om;
+  Vector6d em;
+  em.noalias() = CLe * sW;
+  em.noalias() += GPe * Om;
+  em.tail<3>().noalias() += CLh * sW;
+  em.tail<3>().noalias() += GPh * Om;
+  em.tail<3>().noalias() += I.EgOO * OO;
+  em.tail<3>().noalias() += GVe * Om;
+
+  // N = P T + E Z = P + D Z with D = E - P R6, R6 = [Phi_rig; 0] (T = I - R6 Z has rank-6 defect):
+  // N^T M N = Mpp + Q Z + Z^T Q^T + Z^T S Z, Q = P^T M D, S = D^T M D; N^T y = pm + Z^T (em - R6^T pm).
+  MatrixXd& MR = ws.MR;  // Mpp R6
+  MR.noalias() = I.Mpp.leftCols(nb) * Phi;
+  MatrixXd& Q = ws.Q;
+  Q = PmE - MR;
+  Matrix6d PhiPmE, PhiMR;
+  PhiPmE.noalias() = Phi.transpose() * PmE.topRows(nb);
+  PhiMR.noalias() = Phi.transpose() * MR.topRows(nb);
+  const Matrix6d S = EmE - PhiPmE - PhiPmE.transpose() + PhiMR;
+  auto project = [&](const VectorXd& p, const Vector6d& q, VectorXd& out) {  // N^T y from P^T y, E^T y
+    Vector6d r = q;
+    r.noalias() -= Phi.transpose() * p.head(nb);
+    out = p;
+    out.noalias() += Z.transpose() * r;
+  };
+  auto mass_times = [&](const VectorXd& v, VectorXd& out) {  // N^T M N v
+    Vector6d z, y;
+    z.noalias() = Z * v;
+    y.noalias() = Q.transpose() * v;
+    y.noalias() += S * z;
+    out.noalias() = I.Mpp * v;
+    out.noalias() += Q * z;
+    out.noalias() += Z.transpose() * y;
+  };
+  VectorXd& c = ws.c;
+  detail::interface_velocity_accelerations(e, xi, Om, xid, c);
+  ws.v1 = ab - c;
+  mass_times(ws.v1, fw);
+  project(pm, em, ws.v2);
+  fw += ws.v2;
+  mass_times(w, ws.v2);
+  kinetic = 0.5 * w.dot(ws.v2);
+  if (!want) return;
+
+  MatrixXd& QZ = ws.nn;
+  QZ.noalias() = Q * Z;
+  Mw = I.Mpp + QZ + QZ.transpose();
+  ws.sixn.noalias() = S * Z;
+  Mw.noalias() += Z.transpose() * ws.sixn;
+  // d/dOm_a of the velocity-dependent loads (n x 3 and 6 x 3), then d/dxi_dot (n x n and 6 x n).
+  MatrixXd& DOp = ws.DOp;
+  DOp.resize(n, 3);
+  Eigen::Matrix<double, 6, 3> DOe;
+  for (int a = 0; a < 3; ++a) {
+    const Matrix3d Ea = skew(Vector3d::Unit(a));
+    const Vector6d sWa = sym_components(Ea * skew(Om) + skew(Om) * Ea);
+    Vector9d dOO = Vector9d::Zero();
+    for (int b = 0; b < 3; ++b) {
+      dOO[a + 3 * b] += Om[b];
+      dOO[b + 3 * a] += Om[b];
+    }
+    DOp.col(a).noalias() = CLp * sWa;
+    DOp.col(a) += GPp.col(a) + GVp.col(a);
+    DOp.col(a).noalias() += I.PgOO * dOO;
+    DOe.col(a).noalias() = CLe * sWa;
+    DOe.col(a) += GPe.col(a);
+    DOe.col(a).tail<3>().noalias() += CLh * sWa;
+    DOe.col(a).tail<3>().noalias() += I.EgOO * dOO;
+    DOe.col(a).tail<3>() += GPh.col(a) + GVe.col(a);
+  }
+  MatrixXd& Ap = ws.Ap;
+  Ap = Om[0] * (I.PmGP[0] + I.PgOV[0]);
+  for (int a = 1; a < 3; ++a) Ap += Om[a] * (I.PmGP[a] + I.PgOV[a]);
+  MatrixXd& Ae = ws.Ae;
+  Ae = Om[0] * I.E0mGP[0];
+  for (int a = 1; a < 3; ++a) Ae += Om[a] * I.E0mGP[a];
+  for (int a = 0; a < 3; ++a) Ae.bottomRows<3>() += Om[a] * (ws.HGPxi[a] + I.EgOV[a]);
+  // Xp = dpm/dw = DOp Zr + Ap T, Xe = dem/dw; C_w = Xp + Z^T (Xe - R6^T Xp) - M_w dc/dw.
+  const auto Zr = Z.middleRows<3>(3);
+  MatrixXd& Xp = ws.Xp;
+  Xp = Ap;
+  Xp.noalias() += DOp * Zr;
+  ws.n6.noalias() = Ap.leftCols(nb) * Phi;
+  Xp.noalias() -= ws.n6 * Z;
+  MatrixXd& Xe = ws.Xe;
+  Xe = Ae;
+  Xe.noalias() += DOe * Zr;
+  Matrix6d AePhi;
+  AePhi.noalias() = Ae.leftCols(nb) * Phi;
+  Xe.noalias() -= AePhi * Z;
+  Xe.noalias() -= Phi.transpose() * Xp.topRows(nb);
+  Cw = Xp;
+  Cw.noalias() += Z.transpose() * Xe;
+  detail::subtract_times_velocity_accelerations_tangent(e, kin, Om, xid, Mw, ws, Cw);
+  configuration_tangent(e, kin, Mw, ab, fw, ws, Kw);
+}
+
+}  // namespace
+
+void inertia_force(const AicElement& e, const AicKinematics& kin, InertiaModel model, const Eigen::Ref<const VectorXd>& v,
+                   const Eigen::Ref<const VectorXd>& a, bool want_matrices, InertiaResult& out) {
+  AicWorkspace ws;
+  inertia_force(e, kin, model, v, a, want_matrices, out, ws);
+}
+
+void inertia_force(const AicElement& e, const AicKinematics& kin, InertiaModel model, const Eigen::Ref<const VectorXd>& v,
+                   const Eigen::Ref<const VectorXd>& a, bool want_matrices, InertiaResult& out, AicWorkspace& ws) {
+  if (model == InertiaModel::Full) {
+    SEFLEX_DEMAND(e.inv.present(), "full inertia needs the inertia invariants of superelement " + e.name);
+  }
+  detail::inertia_in_world(e, kin, v, a, want_matrices, out, ws,
+                           [&](const VectorXd& w, const VectorXd& ab, bool want, MatrixXd& Mw, MatrixXd& Cw, MatrixXd& Kw,
+                               VectorXd& fw, double& kinetic) {
+                             if (model == InertiaModel::Full)
+                               full(e, kin, w, ab, want, Mw, Cw, Kw, fw, kinetic, ws);
+                             else
+                               simplified(e, kin, w, ab, want, Mw, Cw, Kw, fw, kinetic, ws);
+                           });
+}
+
+}  // namespace seflex::mbd

@@ -1,0 +1,90 @@
+#pragma once
+// Pieces of the AIC inertia shared by the invariant evaluation (aic_inertia.cpp) and the nodal
+// reference (aic_inertia_nodal.cpp): interface-level terms that never touch the FE mesh.
+#include <Eigen/Core>
+
+#include "seflex/common/so3.hpp"
+#include "seflex/mbd/bodies/aic_element.hpp"
+
+namespace seflex::mbd::detail {
+
+/// n x 3: the skew matrices of the 2N 3-vectors of y stacked (zero on the modal rows).
+inline void stacked_skew(const AicElement& e, const Eigen::VectorXd& y, Eigen::MatrixXd& S) {
+  S.setZero(e.n, 3);
+  for (int i = 0; i < 2 * e.N; ++i) S.middleRows<3>(3 * i) = so3::skew(y.segment<3>(3 * i));
+}
+inline Eigen::MatrixXd stacked_skew(const AicElement& e, const Eigen::VectorXd& y) {
+  Eigen::MatrixXd S;
+  stacked_skew(e, y, S);
+  return S;
+}
+
+/// Quadratic-velocity accelerations of the interface nodes (formulation 2.4 item 2), body axes:
+/// c_j = [Om x (Om x s_j) + 2 Om x u_dot_j;  Om x theta_dot_j], s_j = x_j + u_j; zero on eta.
+inline void interface_velocity_accelerations(const AicElement& e, const Eigen::VectorXd& xi, const Eigen::Vector3d& Om,
+                                             const Eigen::VectorXd& xid, Eigen::VectorXd& c) {
+  c.setZero(e.n);
+  for (int j = 0; j < e.N; ++j) {
+    const Eigen::Vector3d s = e.x[static_cast<std::size_t>(j)] + xi.segment<3>(6 * j);
+    c.segment<3>(6 * j) = Om.cross(Om.cross(s)) + 2.0 * Om.cross(xid.segment<3>(6 * j));
+    c.segment<3>(6 * j + 3) = Om.cross(xid.segment<3>(6 * j + 3));
+  }
+}
+
+/// out -= A * dc/dw for an n-column matrix A, with Om = Zr w and xid = Tx w (formulation 2.4 item 2):
+/// dc/dw = DcOm Zr + DcD Tx, DcD block-diagonal (2 Om~ on translations, Om~ on rotations), so the
+/// product costs O(rows n) plus the rank-6 form of Tx = I - [Phi_rig; 0] Zx. Scratch in ws.
+inline void subtract_times_velocity_accelerations_tangent(const AicElement& e, const AicKinematics& kin,
+                                                          const Eigen::Vector3d& Om, const Eigen::VectorXd& xid,
+                                                          const Eigen::MatrixXd& A, AicWorkspace& ws, Eigen::MatrixXd& out) {
+  using so3::skew;
+  const Eigen::Matrix3d W = skew(Om);
+  Eigen::MatrixXd& AOm = ws.AOm;  // A DcOm
+  Eigen::MatrixXd& AD = ws.AD;    // A DcD
+  AOm.setZero(A.rows(), 3);
+  AD.setZero(A.rows(), e.n);
+  for (int j = 0; j < e.N; ++j) {
+    const Eigen::Vector3d s = e.x[static_cast<std::size_t>(j)] + kin.xi.segment<3>(6 * j);
+    const Eigen::Vector3d ud = xid.segment<3>(6 * j), thd = xid.segment<3>(6 * j + 3);
+    const Eigen::Matrix3d Bt = -skew(Om.cross(s)) - W * skew(s) - 2.0 * skew(ud);
+    AOm.noalias() += A.middleCols<3>(6 * j) * Bt;
+    AOm.noalias() -= A.middleCols<3>(6 * j + 3) * skew(thd);
+    AD.middleCols<3>(6 * j).noalias() = 2.0 * A.middleCols<3>(6 * j) * W;
+    AD.middleCols<3>(6 * j + 3).noalias() = A.middleCols<3>(6 * j + 3) * W;
+  }
+  out.noalias() -= AOm * kin.Zx.middleRows<3>(3);
+  out -= AD;
+  ws.ADPhi.noalias() = AD.leftCols(6 * e.N) * kin.Phi_rig;
+  out.noalias() += ws.ADPhi * kin.Zx;
+}
+
+/// A * dc/dw as a new matrix (the nodal reference).
+inline Eigen::MatrixXd times_velocity_accelerations_tangent(const AicElement& e, const AicKinematics& kin,
+                                                            const Eigen::Vector3d& Om, const Eigen::VectorXd& xid,
+                                                            const Eigen::MatrixXd& A) {
+  AicWorkspace ws;
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(A.rows(), e.n);
+  subtract_times_velocity_accelerations_tangent(e, kin, Om, xid, A, ws, out);
+  return -out;
+}
+
+/// Evaluate an inertia model in body axes and rotate the result to world components:
+/// body(w, ab, want, Mw, Cw, Kw, fw, kinetic) with w, ab the body-axis velocities and accelerations.
+/// Mw, Cw, Kw are out.Mt, out.Ct, out.Kt, rotated in place afterwards; vectors live in ws.
+template <class BodyInertia>
+void inertia_in_world(const AicElement& e, const AicKinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& v,
+                      const Eigen::Ref<const Eigen::VectorXd>& a, bool want_matrices, InertiaResult& out,
+                      AicWorkspace& ws, BodyInertia&& body) {
+  const Eigen::Matrix3d& R = kin.frame.R_WB;
+  to_body(e, R, v, ws.w);
+  to_body(e, R, a, ws.ab);
+  ws.fi.resize(e.n);
+  body(ws.w, ws.ab, want_matrices, out.Mt, out.Ct, out.Kt, ws.fi, out.kinetic);
+  to_world(e, R, ws.fi, out.f);
+  if (!want_matrices) return;
+  rotate_to_world(e, R, out.Mt);
+  rotate_to_world(e, R, out.Ct);
+  rotate_to_world(e, R, out.Kt);
+}
+
+}  // namespace seflex::mbd::detail

@@ -1,0 +1,126 @@
+// Assembly contribution of one flexible (AIC) body: gather interface poses and motions from its
+// nodes, run the kernel (frame recovery, elastic force and tangent, inertia, damping) and map the
+// node-space results through the node Jacobians onto the body's dof clique. Every intermediate
+// lives in the body's scratch (FlexibleBodyData::scratch): no allocation after the first call.
+#include <limits>
+
+#include "assembly/assembly_detail.hpp"
+
+namespace seflex::mbd::detail {
+
+using Eigen::MatrixXd;
+using Eigen::Vector3d;
+using Eigen::VectorXd;
+
+void assemble_flexible(const Model& model, const State& s, Data& data, const AssemblyOptions& opt, int bi) {
+  const FlexibleBody& body = model.flexible_bodies[static_cast<std::size_t>(bi)];
+  const AicElement& e = model.superelement(body.se);
+  FlexibleBodyData& fd = data.flex[static_cast<std::size_t>(bi)];
+  FlexibleBodyScratch& sc = fd.scratch;
+  const int N = e.N, n = e.n, m = e.m;
+  auto node_of = [&](int j) -> std::size_t { return static_cast<std::size_t>(body.nodes[static_cast<std::size_t>(j)].value); };
+  sc.R_WI.resize(static_cast<std::size_t>(N));
+  sc.p_WI.resize(static_cast<std::size_t>(N));
+  sc.v.resize(n);
+  sc.a.resize(n);
+  const Vector3d g = opt.load_factor * model.gravity;
+  for (int j = 0; j < N; ++j) {
+    const NodeKinematics& nk = data.nodes[node_of(j)];
+    sc.R_WI[static_cast<std::size_t>(j)] = nk.R * body.R_NI[static_cast<std::size_t>(j)];
+    sc.p_WI[static_cast<std::size_t>(j)] = nk.p;
+    sc.v.segment<3>(6 * j) = nk.v;
+    sc.v.segment<3>(6 * j + 3) = nk.w;
+    sc.a.segment<3>(6 * j) = nk.a - g;
+    sc.a.segment<3>(6 * j + 3) = nk.alpha;
+  }
+  const auto eta = s.eta.segment(m > 0 ? body.eta_offset : 0, m);
+  if (m > 0) {
+    if (opt.dynamics) {
+      sc.v.tail(m) = s.v.segment(body.eta_dof, m);
+      sc.a.tail(m) = s.vdot.segment(body.eta_dof, m);
+    } else {
+      sc.v.tail(m).setZero();
+      sc.a.tail(m).setZero();
+    }
+  }
+  recover_frame(e, sc.R_WI, sc.p_WI, eta, body.options.recovery, s.frames[static_cast<std::size_t>(bi)], fd.kin, sc.aic);
+  elastic_force(e, fd.kin, body.options.tangent, fd.f_el, opt.matrices ? &sc.Kl : nullptr, sc.aic);
+  fd.elastic = 0.5 * fd.kin.xi.dot(sc.aic.g);  // g = K xi
+
+  InertiaResult& in = sc.inertia;
+  const bool need_inertia = opt.dynamics || g.squaredNorm() > 0.0;
+  if (need_inertia) {
+    inertia_force(e, fd.kin, body.options.inertia, sc.v, sc.a, opt.matrices, in, sc.aic);
+    fd.f_in = in.f;
+    fd.kinetic = opt.dynamics ? in.kinetic : 0.0;
+  } else {
+    fd.f_in.setZero(n);
+    fd.kinetic = 0.0;
+  }
+  const bool damped = opt.dynamics && (body.options.stiffness_damping > 0.0 || body.options.modal_damping > 0.0);
+  if (damped) {
+    if (sc.D.rows() != n) {  // body-axis damping matrix: constant, made at the first evaluation
+      sc.D = body.options.stiffness_damping * e.K;
+      for (int k = 0; k < m; ++k)
+        sc.D(6 * N + k, 6 * N + k) += 2.0 * body.options.modal_damping * e.omega_modes[k] * e.M(6 * N + k, 6 * N + k);
+    }
+    sc.DT.noalias() = sc.D * fd.kin.Tx;
+    sc.Dw.noalias() = fd.kin.Tx.transpose() * sc.DT;
+    to_body(e, fd.kin.frame.R_WB, sc.v, sc.w);
+    sc.fw.noalias() = sc.Dw * sc.w;
+    to_world(e, fd.kin.frame.R_WB, sc.fw, fd.f_damp);
+    if (opt.matrices) {
+      sc.Cd = sc.Dw;
+      rotate_to_world(e, fd.kin.frame.R_WB, sc.Cd);
+    }
+  } else {
+    fd.f_damp.setZero(n);
+  }
+  sc.f = fd.f_el + fd.f_in + fd.f_damp;
+  for (int j = 0; j < N; ++j) data.nodes[node_of(j)].wrench += sc.f.segment<6>(6 * j);
+  for (int k = 0; k < m; ++k) data.residual[body.eta_dof + k] += sc.f[6 * N + k];
+
+  // Node-space -> clique map (storage kept between calls).
+  const int ci = data.clique_of_flex[static_cast<std::size_t>(bi)];
+  const auto& cdofs = data.pattern.dofs[static_cast<std::size_t>(ci)];
+  const int nc = static_cast<int>(cdofs.size());
+  ElementMap& map = sc.map;
+  map.J.clear();
+  map.pos.clear();
+  map.identity.clear();
+  const auto& pos = data.flex_node_pos[static_cast<std::size_t>(bi)];
+  for (int j = 0; j < N; ++j) {
+    const auto k = node_of(j);
+    map.J.push_back(&data.nodes[k].J);
+    map.pos.push_back(&pos[static_cast<std::size_t>(j)]);
+    map.identity.push_back(model.nodes[k].kind == NodeKind::Free);
+  }
+  map.extra = &data.flex_eta_pos[static_cast<std::size_t>(bi)];
+  sc.sc.setZero(nc);
+  add_mapped_abs(sc.sc, map, fd.f_el);
+  add_mapped_abs(sc.sc, map, fd.f_in);
+  if (damped) add_mapped_abs(sc.sc, map, fd.f_damp);
+  // Round-off level of the elastic force: stiffness x (eps x absolute position).
+  double pmax = e.length;
+  for (const auto& pj : sc.p_WI) pmax = std::max(pmax, pj.norm());
+  const double fl = 16.0 * std::numeric_limits<double>::epsilon() * e.K_abs_max * pmax;
+  for (int c = 0; c < nc; ++c) {
+    data.scale[cdofs[static_cast<std::size_t>(c)]] += sc.sc[c];
+    data.floor[cdofs[static_cast<std::size_t>(c)]] += fl;
+  }
+  if (!opt.matrices) return;
+  const auto& off = data.pattern.offsets[static_cast<std::size_t>(ci)];
+  if (need_inertia) sc.Kl += in.Kt;
+  scatter_mapped(data.K, off, nc, map, sc.Kl, sc.Y);
+  if (opt.dynamics) {
+    scatter_mapped(data.M, off, nc, map, in.Mt, sc.Y);
+    if (damped) in.Ct += sc.Cd;
+    scatter_mapped(data.C, off, nc, map, in.Ct, sc.Y);
+    // Convective terms of the node tree: C += J^T M0 G.
+    sc.G.clear();
+    for (int j = 0; j < N; ++j) sc.G.push_back(&data.nodes[node_of(j)].G);
+    if (convective_map(map, sc.G, sc.gmap)) scatter_mapped(data.C, off, nc, map, in.Mt, sc.Y, &sc.gmap);
+  }
+}
+
+}  // namespace seflex::mbd::detail

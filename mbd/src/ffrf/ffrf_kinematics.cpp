@@ -1,0 +1,154 @@
+// FFRF-LM kinematics: interface and node poses with Jacobians, constraint residuals, coordinate
+// perturbations for the finite-difference derivatives.
+#include <Eigen/Dense>
+#include <algorithm>
+
+#include "ffrf/ffrf_detail.hpp"
+#include "seflex/common/error.hpp"
+#include "seflex/common/so3.hpp"
+
+namespace seflex::mbd::detail {
+
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+using so3::skew;
+
+PoseJ interface_pose(const FfrfSystem& sys, const FfrfState& s, int bi, int j) {
+  const FfrfBody& b = sys.bodies[static_cast<std::size_t>(bi)];
+  const Matrix3d& R = s.R_WB[static_cast<std::size_t>(bi)];
+  const Pose& X_BN = b.X_BN[static_cast<std::size_t>(j)];
+  PoseJ out;
+  const int nb = 6 + b.k;
+  out.cols.resize(static_cast<std::size_t>(nb));
+  for (int c = 0; c < nb; ++c) out.cols[static_cast<std::size_t>(c)] = b.coord + c;
+  out.J = Matrix6Xd::Zero(6, nb);
+  Vector3d s_j = X_BN.p;
+  Matrix3d R_BN = X_BN.R;
+  if (b.flexible && b.k > 0) {
+    const auto Vj = b.V.middleRows<6>(6 * j);
+    const Eigen::Matrix<double, 6, 1> xi = Vj * s.z.segment(b.z_offset, b.k);
+    s_j += xi.head<3>();
+    R_BN = so3::exp(xi.tail<3>()) * X_BN.R;
+    out.J.block(0, 6, 3, b.k) = R * Vj.topRows<3>();
+    out.J.block(3, 6, 3, b.k) = R * so3::jl(xi.tail<3>()) * Vj.bottomRows<3>();
+  }
+  out.p = s.p_WB[static_cast<std::size_t>(bi)] + R * s_j;
+  out.R = R * R_BN;
+  out.J.block<3, 3>(0, 0).setIdentity();
+  out.J.block<3, 3>(0, 3) = -skew(R * s_j);
+  out.J.block<3, 3>(3, 3).setIdentity();
+  return out;
+}
+
+PoseJ node_pose(const FfrfSystem& sys, const FfrfState& s, int k, bool chain) {
+  const Model& model = *sys.model;
+  const Node& n = model.nodes[static_cast<std::size_t>(k)];
+  const FfrfNodeSource& src = sys.node_source[static_cast<std::size_t>(k)];
+  if (n.kind == NodeKind::Fixed) {
+    PoseJ out;
+    out.R = n.X_WN0.R;
+    out.p = n.X_WN0.p;
+    out.J = Matrix6Xd::Zero(6, 0);
+    return out;
+  }
+  if (!chain && src.kind == FfrfNodeSource::Kind::Body) return interface_pose(sys, s, src.body, src.interface);
+  SEFLEX_DEMAND(n.kind == NodeKind::Attached, "node pose through a parent of a node that has none");
+  PoseJ out = node_pose(sys, s, n.parent.value, false);
+  const Matrix3d R_P = out.R;
+  const Vector3d d = R_P * n.p_PN_P;
+  out.p += d;
+  for (Eigen::Index c = 0; c < out.J.cols(); ++c) out.J.col(c).head<3>() += out.J.col(c).tail<3>().cross(d);
+  if (n.hinge.valid()) {
+    const int h = n.hinge.value;
+    const Vector3d& a = model.hinges[static_cast<std::size_t>(h)].axis_P;
+    out.R = R_P * so3::exp(s.phi[h] * a) * n.R_PN;
+    const int col = sys.hinge_coord[static_cast<std::size_t>(h)];
+    out.cols.push_back(col >= 0 ? col : -(h + 1));
+    out.J.conservativeResize(Eigen::NoChange, out.J.cols() + 1);
+    out.J.col(out.J.cols() - 1) << Vector3d::Zero(), R_P * a;
+  } else {
+    out.R = R_P * n.R_PN;
+  }
+  return out;
+}
+
+void eval_constraint(const FfrfSystem& sys, const FfrfState& s, int c, ConstraintEval& out) {
+  const FfrfConstraint& con = sys.constraints[static_cast<std::size_t>(c)];
+  const PoseJ A = interface_pose(sys, s, con.body, con.interface);
+  const PoseJ B = node_pose(sys, s, con.node.value, con.chain);
+  out.g.head<3>() = A.p - B.p;
+  out.g.tail<3>() = so3::log(B.R.transpose() * A.R);
+  const Matrix3d L = so3::jl_inv(out.g.tail<3>()) * B.R.transpose();
+  out.cols = A.cols;
+  for (int col : B.cols)
+    if (std::find(A.cols.begin(), A.cols.end(), col) == A.cols.end()) out.cols.push_back(col);
+  out.G = Matrix6Xd::Zero(6, static_cast<Eigen::Index>(out.cols.size()));
+  for (std::size_t i = 0; i < A.cols.size(); ++i) {
+    const auto ci = static_cast<Eigen::Index>(i);
+    out.G.col(ci).head<3>() += A.J.col(ci).head<3>();
+    out.G.col(ci).tail<3>() += L * A.J.col(ci).tail<3>();
+  }
+  for (std::size_t i = 0; i < B.cols.size(); ++i) {
+    const auto at = std::find(out.cols.begin(), out.cols.end(), B.cols[i]) - out.cols.begin();
+    const auto ci = static_cast<Eigen::Index>(i);
+    out.G.col(at).head<3>() -= B.J.col(ci).head<3>();
+    out.G.col(at).tail<3>() -= L * B.J.col(ci).tail<3>();
+  }
+}
+
+Saved perturb(const FfrfSystem& sys, FfrfState& s, int i, double eps) {
+  Saved sv;
+  const auto iu = static_cast<std::size_t>(i);
+  const int owner = sys.owner[iu];
+  const auto o = static_cast<std::size_t>(owner);
+  switch (sys.kind[iu]) {
+    case 't': {
+      const int c = i - sys.bodies[o].coord;
+      sv.x = s.p_WB[o][c];
+      s.p_WB[o][c] += eps;
+      break;
+    }
+    case 'r': {
+      const int c = i - sys.bodies[o].coord - 3;
+      sv.R = s.R_WB[o];
+      s.R_WB[o] = so3::exp(eps * Vector3d::Unit(c)) * s.R_WB[o];
+      break;
+    }
+    case 'e': {
+      const int c = sys.bodies[o].z_offset + i - sys.bodies[o].coord - 6;
+      sv.x = s.z[c];
+      s.z[c] += eps;
+      break;
+    }
+    default:
+      sv.x = s.phi[owner];
+      s.phi[owner] += eps;
+  }
+  return sv;
+}
+
+void restore(const FfrfSystem& sys, FfrfState& s, int i, const Saved& sv) {
+  const auto iu = static_cast<std::size_t>(i);
+  const int owner = sys.owner[iu];
+  const auto o = static_cast<std::size_t>(owner);
+  switch (sys.kind[iu]) {
+    case 't': s.p_WB[o][i - sys.bodies[o].coord] = sv.x; break;
+    case 'r': s.R_WB[o] = sv.R; break;
+    case 'e': s.z[sys.bodies[o].z_offset + i - sys.bodies[o].coord - 6] = sv.x; break;
+    default: s.phi[owner] = sv.x;
+  }
+}
+
+double fd_step(const FfrfSystem& sys, int i) { return 1e-6 / sys.weight[i]; }
+
+void hinge_values(const FfrfSystem& sys, const FfrfState& s, Eigen::VectorXd& phi, Eigen::VectorXd& phidot) {
+  const Model& model = *sys.model;
+  phi = s.phi;
+  phidot.resize(phi.size());
+  for (std::size_t h = 0; h < model.hinges.size(); ++h) {
+    const int c = sys.hinge_coord[h];
+    phidot[static_cast<Eigen::Index>(h)] = c >= 0 ? s.v[c] : model.hinges[h].drive(s.t).phidot;
+  }
+}
+
+}  // namespace seflex::mbd::detail

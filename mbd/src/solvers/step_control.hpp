@@ -1,0 +1,103 @@
+#pragma once
+// Step-size control, output scheduling and lock-event location shared by the time integrators
+// (internal). A formulation supplies its Newton step and state through the Stepper interface; the
+// driver (drive_steps) owns the loop: error test, step growth and shrinkage, landing on output
+// times, locating lock crossings by Hermite interpolation of the hinge angle, latching, samples.
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "seflex/mbd/solvers/integrator.hpp"
+
+namespace seflex::mbd::detail {
+
+/// Generalized-alpha coefficients for a spectral radius at infinity rho (Chung-Hulbert values).
+struct AlphaCoefficients {
+  double am, af, gamma, beta;
+  explicit AlphaCoefficients(double rho) {
+    am = (2.0 * rho - 1.0) / (rho + 1.0);
+    af = rho / (rho + 1.0);
+    gamma = 0.5 + af - am;
+    beta = 0.25 * (gamma + 0.5) * (gamma + 0.5);
+  }
+};
+
+/// Outcome of one Newton solve of a step.
+struct StepResult {
+  bool converged = false;
+  int iterations = 0;
+  int factorizations = 0;
+  double residual = 0.0, scale = 0.0;
+  std::string why;
+};
+
+/// What the driver needs from a formulation. `current` is the last accepted state, `trial` the
+/// result of the last attempt.
+class Stepper {
+ public:
+  virtual ~Stepper() = default;
+  virtual double time() const = 0;
+  /// Newton solve of the step current -> trial of size h.
+  virtual StepResult attempt(double h) = 0;
+  /// Local error of the trial relative to the tolerances (WRMS; <= 1 accepts).
+  virtual double error_estimate(double h) const = 0;
+  virtual double hinge_angle(int hinge, bool trial) const = 0;
+  virtual double hinge_rate(int hinge, bool trial) const = 0;
+  /// Latch states of the current state (per force element).
+  virtual std::vector<LockState>& locks() = 0;
+  /// The trial becomes the current state.
+  virtual void accept() = 0;
+  /// The sample of the current state into `out`, its storage reused from the previous sample (the
+  /// driver sets step, event, Newton count and step size).
+  virtual void sample(Sample& out) = 0;
+  /// Re-evaluate the current state after a failed attempt, before its sample (may throw Error).
+  virtual void prepare_failure_sample() {}
+  /// "largest residuals: ..." of the last failed attempt.
+  virtual std::string describe_residual() const = 0;
+};
+
+/// Newton convergence from the contraction of the corrections (Hairer and Wanner, Solving ODEs II,
+/// sec. IV.8; SUNDIALS IDA): after the k-th correction dx_k the iterate is about
+/// eta |dx_k| from the solution, eta = theta / (1 - theta), theta = |dx_k| / |dx_{k-1}|. For k = 1
+/// theta is the last rate measured (in an earlier step; at least `theta_floor`, and 1/2 before any
+/// rate is known). The norm is the caller's (weighted: relative to the length scale, rad).
+class NewtonRate {
+ public:
+  explicit NewtonRate(double theta_floor = 1e-3) : floor_(theta_floor) {}
+  /// A new step: forget the corrections of the last one (its rate is kept).
+  void start_step() {
+    k_ = 0;
+    prev_inc_ = 0.0;
+  }
+  /// Record the norm of the correction just applied; true when the estimated distance to the
+  /// solution is at most `bound`. Corrections that do not shrink (theta >= 1) never converge.
+  bool converged(double inc, double bound) {
+    ++k_;
+    if (k_ >= 2) theta_ = prev_inc_ > 0.0 ? inc / prev_inc_ : 0.0;
+    prev_inc_ = inc;
+    if (!(theta_ < 1.0)) return false;
+    const double theta = std::max(theta_, floor_);
+    return theta / (1.0 - theta) * inc <= bound;
+  }
+  /// Last measured contraction rate.
+  double theta() const { return theta_; }
+
+ private:
+  double floor_;
+  double theta_ = 0.5;
+  double prev_inc_ = 0.0;
+  int k_ = 0;
+};
+
+/// Check the settings (InputError naming the setting).
+void validate_settings(const IntegratorSettings& settings, double t0);
+
+/// Local displacement error of a step, WRMS over the coordinates: h^2 |beta - 1/6| |dvdot_i| w_i.
+/// `weight_over_tol`: weight of each coordinate divided by its tolerance.
+double wrms_error(const Eigen::VectorXd& dvdot, const Eigen::VectorXd& weight_over_tol, double h, const AlphaCoefficients& c);
+
+/// Integrate from stepper.time() to settings.t_end (the caller has set consistent accelerations);
+/// ends early, after a final sample, when the observer asks to stop.
+RunStats drive_steps(const Model& model, const IntegratorSettings& settings, Stepper& stepper, Observer* observer);
+
+}  // namespace seflex::mbd::detail
