@@ -16,7 +16,7 @@
 #include "seflex/io/scene.hpp"
 #include "seflex/io/solve_scene.hpp"
 #include "seflex/io/superelement_file.hpp"
-#include "seflex/mbd/integrator.hpp"
+#include "seflex/mbd/solvers/integrator.hpp"
 #include "seflex/mbd/state.hpp"
 
 namespace {

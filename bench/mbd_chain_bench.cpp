@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "../tests/mbd/beam_superelement.hpp"  // test-only beam Craig-Bampton builder (until reduction/ has one)
-#include "seflex/mbd/ffrf.hpp"
-#include "seflex/mbd/integrator.hpp"
+#include "seflex/mbd/ffrf/ffrf.hpp"
+#include "seflex/mbd/solvers/integrator.hpp"
 
 using namespace seflex;
 using namespace seflex::mbd;

@@ -9,7 +9,7 @@
 
 #include "seflex/io/scene.hpp"
 #include "seflex/io/superelement_file.hpp"
-#include "seflex/mbd/drive_profile.hpp"
+#include "seflex/mbd/forces/drive_profile.hpp"
 #include "seflex/reduction/inertia_invariants.hpp"
 #include "invariant_datasets.hpp"
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "seflex/common/error.hpp"
-#include "seflex/mbd/explicit_integrator.hpp"
+#include "seflex/mbd/solvers/explicit_integrator.hpp"
 #include "seflex/mbd/state.hpp"
 
 namespace seflex::io {

@@ -135,7 +135,7 @@ TEST(InfoSuperelementCli, RefusesDamagedFilesAndDeckOptions) {
 TEST(InfoSuperelementCli, RunWithoutAnimationReadsTheDynamicsOnly) {
   test::TempDir dir;
   // No fixed-interface modes: the integrator's error weights of modal coordinates use the mode
-  // shapes' peak FE translation when the mesh is loaded (mbd/src/aic_element.cpp), so with modes
+  // shapes' peak FE translation when the mesh is loaded (mbd/src/bodies/aic_element.cpp), so with modes
   // the two runs would differ by their step sequence, not by their dynamics.
   test::write_link(dir, "link.se");
   const auto scene = dir.write("scene.yaml", R"(title: link

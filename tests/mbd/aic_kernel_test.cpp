@@ -9,7 +9,7 @@
 #include "beam_superelement.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/common/so3.hpp"
-#include "seflex/mbd/aic_element.hpp"
+#include "seflex/mbd/bodies/aic_element.hpp"
 
 using namespace seflex;
 using namespace seflex::mbd;

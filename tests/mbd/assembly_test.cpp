@@ -10,7 +10,7 @@
 
 #include "mbd_models.hpp"
 #include "seflex/common/so3.hpp"
-#include "seflex/mbd/assembly.hpp"
+#include "seflex/mbd/assembly/assembly.hpp"
 
 using namespace seflex;
 using namespace seflex::mbd;

@@ -12,8 +12,8 @@
 
 #include "mbd_models.hpp"
 #include "seflex/common/error.hpp"
-#include "seflex/mbd/assembly.hpp"
-#include "seflex/mbd/explicit_integrator.hpp"
+#include "seflex/mbd/assembly/assembly.hpp"
+#include "seflex/mbd/solvers/explicit_integrator.hpp"
 
 namespace seflex::test {
 namespace {

@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "mbd_models.hpp"
-#include "seflex/mbd/drive_profile.hpp"
-#include "seflex/mbd/ffrf.hpp"
+#include "seflex/mbd/forces/drive_profile.hpp"
+#include "seflex/mbd/ffrf/ffrf.hpp"
 
 using namespace seflex;
 using namespace seflex::mbd;

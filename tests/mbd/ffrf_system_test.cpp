@@ -7,7 +7,7 @@
 
 #include "mbd_models.hpp"
 #include "pendulum_reference.hpp"
-#include "seflex/mbd/ffrf.hpp"
+#include "seflex/mbd/ffrf/ffrf.hpp"
 
 using namespace seflex;
 using namespace seflex::mbd;

@@ -6,7 +6,7 @@
 
 #include "mbd_models.hpp"
 #include "seflex/common/so3.hpp"
-#include "seflex/mbd/integrator.hpp"
+#include "seflex/mbd/solvers/integrator.hpp"
 
 using namespace seflex;
 using namespace seflex::mbd;

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "beam_superelement.hpp"
-#include "seflex/mbd/integrator.hpp"
+#include "seflex/mbd/solvers/integrator.hpp"
 #include "seflex/mbd/model.hpp"
 
 namespace seflex::test {

@@ -10,7 +10,7 @@
 #include "mbd_models.hpp"
 #include "pendulum_reference.hpp"
 #include "seflex/common/error.hpp"
-#include "seflex/mbd/integrator.hpp"
+#include "seflex/mbd/solvers/integrator.hpp"
 
 using namespace seflex;
 using namespace seflex::mbd;

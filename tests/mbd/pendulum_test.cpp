@@ -8,8 +8,8 @@
 
 #include "mbd_models.hpp"
 #include "pendulum_reference.hpp"
-#include "seflex/mbd/explicit_integrator.hpp"
-#include "seflex/mbd/integrator.hpp"
+#include "seflex/mbd/solvers/explicit_integrator.hpp"
+#include "seflex/mbd/solvers/integrator.hpp"
 #include "test_support.hpp"
 
 using namespace seflex;

@@ -10,7 +10,7 @@
 
 #include "beam_superelement.hpp"
 #include "seflex/common/so3.hpp"
-#include "seflex/mbd/statics.hpp"
+#include "seflex/mbd/solvers/statics.hpp"
 
 using namespace seflex;
 using namespace seflex::mbd;

@@ -7,8 +7,8 @@
 #include "mbd_models.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/common/so3.hpp"
-#include "seflex/mbd/drive_profile.hpp"
-#include "seflex/mbd/integrator.hpp"
+#include "seflex/mbd/forces/drive_profile.hpp"
+#include "seflex/mbd/solvers/integrator.hpp"
 
 using namespace seflex;
 using namespace seflex::mbd;

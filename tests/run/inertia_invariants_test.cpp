@@ -15,7 +15,7 @@
 #include "../mbd/beam_superelement.hpp"
 #include "seflex/common/so3.hpp"
 #include "seflex/io/model_reader.hpp"
-#include "seflex/mbd/aic_element.hpp"
+#include "seflex/mbd/bodies/aic_element.hpp"
 #include "seflex/mbd/model.hpp"
 #include "seflex/reduction/craig_bampton_superelement.hpp"
 #include "test_support.hpp"

@@ -8,8 +8,8 @@
 
 #include "scene_fixture.hpp"
 #include "seflex/io/scene.hpp"
-#include "seflex/mbd/drive_profile.hpp"
-#include "seflex/mbd/integrator.hpp"
+#include "seflex/mbd/forces/drive_profile.hpp"
+#include "seflex/mbd/solvers/integrator.hpp"
 #include "seflex/mbd/model.hpp"
 #include "seflex/mbd/state.hpp"
 

@@ -20,7 +20,7 @@
 
 #include "seflex/io/scene.hpp"
 #include "seflex/io/vtk_animation.hpp"
-#include "seflex/mbd/integrator.hpp"
+#include "seflex/mbd/solvers/integrator.hpp"
 #include "seflex/mbd/output.hpp"
 
 namespace seflex::io {

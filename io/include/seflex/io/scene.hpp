@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "seflex/common/error.hpp"
-#include "seflex/mbd/integrator.hpp"
+#include "seflex/mbd/solvers/integrator.hpp"
 #include "seflex/mbd/model.hpp"
 #include "seflex/superelement/superelement.hpp"
 

@@ -7,8 +7,8 @@
 #include <optional>
 
 #include "seflex/io/scene.hpp"
-#include "seflex/mbd/ffrf.hpp"
-#include "seflex/mbd/integrator.hpp"
+#include "seflex/mbd/ffrf/ffrf.hpp"
+#include "seflex/mbd/solvers/integrator.hpp"
 #include "seflex/mbd/output.hpp"
 
 namespace seflex::io {
