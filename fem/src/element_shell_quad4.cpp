@@ -121,10 +121,10 @@ NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot) {
   const Eigen::Matrix3d& Db = sec.D;
   const Eigen::Matrix3d& Bc = sec.B;  // membrane-bending coupling
   const bool coupled = !Bc.isZero(0.0);
-  // Shear stabilisation of thin elements only (ShellSection::stabilised_shear_mitc4), h the longest edge.
+  // Shear stabilisation (Lyly, Stenberg & Vihinen 1993), h the longest edge (ShellSection).
   double h2 = 0.0;
   for (int k = 0; k < 4; ++k) h2 = std::max(h2, (g.p[(k + 1) % 4] - g.p[k]).squaredNorm());
-  const Eigen::Matrix2d Ss = sec.stabilised_shear_mitc4(h2);
+  const Eigen::Matrix2d Ss = sec.stabilised_shear(h2);
   const double kd = sec.has_membrane ? k6rot * 1e-6 * sec.drill_Gt : 0.0;
 
   // MITC4 tying points: gamma_xi at A (0,-1), C (0,1); gamma_eta at D (-1,0), B (1,0).

@@ -87,11 +87,11 @@ NodeMatrix<3> tria3_stiffness(const Tria3Element& e, double k6rot) {
     }
   }
   const Eigen::Matrix<double, 3, 18> C = G.inverse() * R;  // (a_x, a_y, b) from the dofs
-  // Shear stabilisation of Lyly, Stenberg & Vihinen (ShellSection::stabilised_shear_mitc3),
+  // Shear stabilisation of Lyly, Stenberg & Vihinen (ShellSection::stabilised_shear_stiffness),
   // h the longest edge; it removes the residual shear locking of the linear triangle in thin plates.
   double h2 = 0.0;
   for (int k = 0; k < 3; ++k) h2 = std::max(h2, (g.p[(k + 1) % 3] - g.p[k]).squaredNorm());
-  const Eigen::Matrix2d Ss = sec.stabilised_shear_mitc3(h2);
+  const Eigen::Matrix2d Ss = sec.stabilised_shear(h2);
   const double kd = sec.has_membrane ? k6rot * 1e-6 * sec.drill_Gt : 0.0;
   const double omega_row_scale = 0.5;
   for (int q = 0; q < 3; ++q) {  // edge-midpoint rule, exact for quadratics

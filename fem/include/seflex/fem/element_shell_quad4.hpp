@@ -11,15 +11,12 @@
 //   four-node plate bending element based on Mindlin/Reissner plate theory and a mixed
 //   interpolation", IJNME 21 (1985) 367-383): bilinear rotations, covariant transverse shear
 //   strains tied at the edge midpoints, so the element does not lock in thin plates and passes the
-//   constant-curvature patch test on distorted meshes. The transverse shear stiffness of a thin
-//   element is scaled by t^2 / (0.1 h^2) (t < 0.32 h, h the longest edge; to first order the
-//   stabilised MITC4 of Lyly, Stenberg & Vihinen, "A stable bilinear element for the Reissner-Mindlin
-//   plate model", CMAME 110 (1993) 343-357, t^2 / (t^2 + 0.1 h^2)); a thick element's is not
-//   (ShellSection::stabilised_shear_mitc4). The scaling tends to 1 under refinement and, like the
-//   residual bending flexibility of Nastran's QUAD4, keeps coarse thin elements from
-//   over-constraining the rotations of the beams they are attached to (with it the ALL-ELEM-TEST
-//   validation deck agrees with MYSTRAN to 1e-4, without it by 6 %); in thick elements it only
-//   softened the plate (MYSTRAN's AQ3U2S004, t/h = 0.8: 13.5 % of the shear stiffness).
+//   constant-curvature patch test on distorted meshes. The transverse shear stiffness is scaled by
+//   t^2 / (t^2 + 0.1 h^2), h the longest edge (the stabilised MITC4 of Lyly, Stenberg & Vihinen, "A
+//   stable bilinear element for the Reissner-Mindlin plate model", CMAME 110 (1993) 343-357): it
+//   tends to 1 under refinement and, like the residual bending flexibility of Nastran's QUAD4, keeps
+//   coarse thin elements from over-constraining the rotations of the beams they are attached to
+//   (with it the ALL-ELEM-TEST validation deck agrees with MYSTRAN to 1e-4, without it by 6 %).
 // - Drilling: the rotation about the normal theta_z is tied to the membrane rotation
 //   omega = (dv/dx - du/dy)/2 (incompatible modes included) by
 //     G t A (theta_z - omega)^2 at the centre  +  (K6ROT * 1e-6) G t int (theta_z - omega)^2 dA,

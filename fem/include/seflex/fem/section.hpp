@@ -2,7 +2,6 @@
 // Cross-section data of line and shell elements, resolved from the property cards (PBAR/PBEAM,
 // PSHELL, PCOMP/PCOMPG) and their materials.
 #include <Eigen/Core>
-#include <algorithm>
 #include <optional>
 #include <vector>
 
@@ -28,8 +27,6 @@ struct BarSection {
 /// the material axes (x along the element's THETA/MCID direction) as resolved, the element axes
 /// after in_element_axes().
 struct ShellSection {
-  /// alpha of the MITC shear stabilisation (stabilised_shear_mitc3/4): Lyly, Stenberg & Vihinen's 0.1.
-  static constexpr double kShearStabilisationAlpha = 0.1;
   Eigen::Matrix3d A = Eigen::Matrix3d::Zero();  ///< membrane (force per length)
   Eigen::Matrix3d B = Eigen::Matrix3d::Zero();  ///< membrane-bending coupling (force)
   Eigen::Matrix3d D = Eigen::Matrix3d::Zero();  ///< bending (moment per length per curvature)
@@ -54,24 +51,12 @@ struct ShellSection {
   double ts2 = 0;
   double mass_per_area_value = 0;  ///< structural + non-structural, before WTMASS
 
-  /// Transverse shear stiffness of a CTRIA3 (MITC3) whose longest edge squared is h2, stabilised as
-  /// Lyly, Stenberg & Vihinen do (ibid.): S t_s^2 / (t_s^2 + alpha h^2), alpha = 0.1. It removes the
-  /// residual shear locking of the linear triangle in thin plates, tends to 1 under refinement, and
-  /// also helps thick triangles (a/t = 10, t/h = 0.8: first four eigenvalues within 1.9 % of Mindlin's
-  /// with it, up to +12.7 % without).
-  Eigen::Matrix2d stabilised_shear_mitc3(double h2) const {
-    return S * (ts2 / (ts2 + kShearStabilisationAlpha * h2));
-  }
-  /// Transverse shear stiffness of a CQUAD4 (MITC4) whose longest edge squared is h2:
-  /// S t_s^2 / max(t_s^2, alpha h^2), alpha = 0.1. A thin element (t_s < sqrt(alpha) h = 0.32 h) gets
-  /// Lyly, Stenberg & Vihinen's stabilisation to first order in t_s^2 / (alpha h^2); a thick one none:
-  /// MITC4 does not lock, and the reduction t_s^2 / (t_s^2 + alpha h^2) only softened it (13.5 % of the
-  /// shear stiffness at t/h = 0.8; the first eigenvalue of MYSTRAN's thick-plate deck AQ3U2S004,
-  /// 4 x 4, -2.6 % against Mindlin's plate, now -1.8 %, the rest is the lumped mass). Their analysis
-  /// needs the coefficient only within fixed bounds of 1 / max(t^2, alpha h^2), since
-  /// max <= t^2 + alpha h^2 <= 2 max: this is the bound itself.
-  Eigen::Matrix2d stabilised_shear_mitc4(double h2) const {
-    return S * (ts2 / std::max(ts2, kShearStabilisationAlpha * h2));
+  /// Transverse shear stiffness of an element whose longest edge squared is h2, stabilised (ibid.):
+  /// S t_s^2 / (t_s^2 + alpha h^2), alpha = 0.1; it removes the residual shear locking of thin plates
+  /// and vanishes under refinement (h -> 0).
+  Eigen::Matrix2d stabilised_shear(double h2) const {
+    constexpr double alpha = 0.1;
+    return S * (ts2 / (ts2 + alpha * h2));
   }
   /// Mass per area (structural + non-structural), before WTMASS.
   double mass_per_area() const { return mass_per_area_value; }
