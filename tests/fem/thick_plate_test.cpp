@@ -25,7 +25,11 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/SparseCholesky>
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
 
 #include "shell_mesh.hpp"
 #include "seflex/fem/assembly.hpp"
@@ -120,9 +124,15 @@ StaticResult pressure_response(const Quarter& p, double q, bool triangles) {
     for (int i = 0; i < p.n; ++i) {
       if (triangles) {  // (a, b, c) and (a, c, d), as add_shell_mesh splits the cell
         const double f = q * 0.5 * h * h / 3;
-        add(i, j, 2 * f), add(i + 1, j, f), add(i + 1, j + 1, 2 * f), add(i, j + 1, f);
+        add(i, j, 2 * f);
+        add(i + 1, j, f);
+        add(i + 1, j + 1, 2 * f);
+        add(i, j + 1, f);
       } else {
-        for (const auto& [di, dj] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) add(i + di, j + dj, q * h * h / 4);
+        add(i, j, q * h * h / 4);
+        add(i + 1, j, q * h * h / 4);
+        add(i + 1, j + 1, q * h * h / 4);
+        add(i, j + 1, q * h * h / 4);
       }
     }
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(c.K_ff);
