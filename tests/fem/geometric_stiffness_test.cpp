@@ -59,13 +59,13 @@ void expect_rotates_forces(const NodeMatrix<N>& Kg, const Eigen::Matrix<double, 
 
 // Central-difference Hessian of a scalar function of the translations of N nodes.
 template <int N, class F>
-NodeMatrix<N> fd_hessian(const F& W) {
+NodeMatrix<N> fd_hessian(const F& W, bool rotations = false) {
   NodeMatrix<N> H = NodeMatrix<N>::Zero();
   const double h = 1e-3;
   Eigen::Matrix<double, 6 * N, 1> u = Eigen::Matrix<double, 6 * N, 1>::Zero();
   for (int i = 0; i < 6 * N; ++i)
     for (int j = 0; j < 6 * N; ++j) {
-      if (i % 6 >= 3 || j % 6 >= 3) continue;  // the stress term does not involve the rotations
+      if (!rotations && (i % 6 >= 3 || j % 6 >= 3)) continue;  // the shells' and rods' stress term has no rotations
       auto at = [&](double a, double b) {
         Eigen::Matrix<double, 6 * N, 1> v = u;
         v(i) += a;
@@ -122,6 +122,40 @@ TEST(GeometricStiffness, BarRotatesItsAxialForceInAnyOrientation) {
   // a pin releasing the axial force of end B: no axial force, no geometric stiffness
   e.pin_B = test::mask("1");
   EXPECT_NEAR(bar_axial_force(e, u0), 0.0, 1e-9 * std::abs(N));
+}
+
+// The bar's K_sigma against the Hessian of N int (1/2)(u'^2 + v'^2 + w'^2 + (I1 + I2)/A theta_x'^2) ds,
+// evaluated by 4-point Gauss quadrature of the interpolated fields (linear u and theta_x, cubic
+// Hermite v with v' = theta_z and w with w' = -theta_y), on a bar along basic x (element axes = basic).
+TEST(GeometricStiffness, BarIsTheHessianOfTheAxialForceWork) {
+  BarElement e;
+  const double L = 1.7;
+  e.x_B = {L, 0, 0};
+  e.v = {0, 1, 0};
+  e.section = {2e-3, 3e-6, 1.5e-6, 0.0, 2.5e-6, 0.0, 0.0, 0.0};
+  e.material = {1, 7e10, 7e10 / 2.6, 0.3, 2700};
+  const double N = -1234.5;
+  const NodeMatrix<2> Kg = bar_geometric_stiffness(e, N);
+  const double gp[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526};
+  const double gw[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538};
+  const double ip = (e.section.I1 + e.section.I2) / e.section.A;
+  const NodeMatrix<2> H = fd_hessian<2>(
+      [&](const Eigen::Matrix<double, 12, 1>& q) {
+        double W = 0;
+        for (int k = 0; k < 4; ++k) {
+          const double x = 0.5 * (1 + gp[k]);  // s / L
+          // derivatives d/ds of the Hermite functions H1 (v_A), H2 (theta_A), H3 (v_B), H4 (theta_B)
+          const double d1 = (-6 * x + 6 * x * x) / L, d2 = 1 - 4 * x + 3 * x * x, d3 = (6 * x - 6 * x * x) / L,
+                       d4 = -2 * x + 3 * x * x;
+          const double du = (q(6) - q(0)) / L, dtx = (q(9) - q(3)) / L;
+          const double dv = d1 * q(1) + d2 * q(5) + d3 * q(7) + d4 * q(11);
+          const double dw = d1 * q(2) - d2 * q(4) + d3 * q(8) - d4 * q(10);
+          W += 0.5 * L * gw[k] * 0.5 * N * (du * du + dv * dv + dw * dw + ip * dtx * dtx);
+        }
+        return W;
+      },
+      true);
+  EXPECT_LE((H - Kg).norm(), 1e-6 * Kg.norm());
 }
 
 // Membrane state of uniform strain eps (element plane spanned by R's first two columns, basic).
