@@ -28,7 +28,8 @@ std::optional<int> statsub(const fem::Model& model, const CaseSelection& c) {
       if (pos == cmd.value.size() || cmd.value.find_first_not_of(' ', pos) == std::string::npos) return id;
     } catch (const std::exception&) {
     }
-    throw InputError(fem::where(model, cmd.ref), "case control " + cmd.name + " = '" + cmd.value + "': expected a subcase id");
+    throw InputError(fem::where(model, cmd.ref),
+                     "case control " + cmd.name + " = '" + cmd.value + "': expected a subcase id");
   }
   return std::nullopt;
 }
@@ -49,12 +50,13 @@ std::pair<CaseSelection, CaseSelection> buckling_cases(const fem::Model& model) 
     for (const CaseSelection& c : cases)
       if (c.subcase_id == *id && c.subcase_id != buckle.subcase_id) {
         if (!c.load)
-          throw InputError(fem::where(model, c.ref), reduction::case_name(c) +
-                                                         " is the preload of the buckling subcase (STATSUB) but selects no LOAD");
+          throw InputError(
+              fem::where(model, c.ref),
+              reduction::case_name(c) + " is the preload of the buckling subcase (STATSUB) but selects no LOAD");
         return {c, buckle};
       }
-    throw InputError(fem::where(model, buckle.ref), reduction::case_name(buckle) + ": STATSUB = " + std::to_string(*id) +
-                                                        " names no other subcase of the deck");
+    throw InputError(fem::where(model, buckle.ref), reduction::case_name(buckle) + ": STATSUB = " +
+                                                        std::to_string(*id) + " names no other subcase of the deck");
   }
   for (std::size_t k = 0; k < b; ++k)
     if (cases[k].load) return {cases[k], buckle};
@@ -75,8 +77,8 @@ BucklingSolution solve_buckling(const fem::Model& model, const BucklingOptions& 
   for (const fem::EigenMethod& e : model.eigen_methods)
     if (e.sid == *bc.method) method = &e;
   if (!method)
-    throw InputError(fem::where(model, bc.ref), reduction::case_name(bc) + ": METHOD = " + std::to_string(*bc.method) +
-                                                     " selects no EIGRL card");
+    throw InputError(fem::where(model, bc.ref),
+                     reduction::case_name(bc) + ": METHOD = " + std::to_string(*bc.method) + " selects no EIGRL card");
   if (method->is_eigr)
     throw InputError(fem::where(model, method->ref),
                      "EIGR " + std::to_string(method->sid) +
@@ -86,8 +88,8 @@ BucklingSolution solve_buckling(const fem::Model& model, const BucklingOptions& 
   eo.backend = options.backend;
   eo.count = options.count ? options.count : method->nd;
   if (!eo.count && !method->f2)
-    throw InputError(fem::where(model, method->ref), "EIGRL " + std::to_string(method->sid) +
-                                                         ": give ND (number of load factors) or V2 (the largest)");
+    throw InputError(fem::where(model, method->ref),
+                     "EIGRL " + std::to_string(method->sid) + ": give ND (number of load factors) or V2 (the largest)");
 
   // Preload statics.
   reduction::StaticOptions so;

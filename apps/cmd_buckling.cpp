@@ -10,11 +10,11 @@
 #include "buckling_solution.hpp"
 #include "command.hpp"
 #include "model_args.hpp"
-#include "usage_warnings.hpp"
 #include "seflex/io/model_reader.hpp"
 #include "seflex/io/results_csv.hpp"
 #include "seflex/io/vtk_modes.hpp"
 #include "seflex/reduction/card_usage.hpp"
+#include "usage_warnings.hpp"
 
 namespace {
 
@@ -40,7 +40,9 @@ int run_buckling(seflex::app::Args& args) {
   }
   const std::string solver = args.value_or("eigensolver", std::string(red::to_string(o.backend)));
   const auto backend = red::parse_eigen_backend(solver);
-  if (!backend) throw UsageError("option --eigensolver expects " + std::string(red::eigen_backend_names()) + ", got '" + solver + "'");
+  if (!backend)
+    throw UsageError("option --eigensolver expects " + std::string(red::eigen_backend_names()) + ", got '" + solver +
+                     "'");
   o.backend = *backend;
   const auto csv = args.value("csv");
   const auto vtk = args.value("vtk");
@@ -48,7 +50,8 @@ int run_buckling(seflex::app::Args& args) {
   const seflex::io::ModelReadOptions model_options = seflex::app::model_read_options(args);
   const std::string deck = args.positional("DECK");
   args.finish();
-  if (vtk && std::filesystem::path(*vtk).extension() != ".vtu") throw UsageError("--vtk expects a file name ending in .vtu");
+  if (vtk && std::filesystem::path(*vtk).extension() != ".vtu")
+    throw UsageError("--vtk expects a file name ending in .vtu");
   if (csv) seflex::io::check_writable(*csv, force);
   if (vtk) seflex::io::check_writable(*vtk, force);
 
@@ -65,8 +68,8 @@ int run_buckling(seflex::app::Args& args) {
   if (s.preload.load) std::printf(" (LOAD %d)", *s.preload.load);
   std::printf(", load factors of %s (METHOD %d", red::case_name(s.buckling).c_str(), *s.buckling.method);
   if (s.buckling.spc) std::printf(", SPC %d", *s.buckling.spc);
-  std::printf(")\n  %zu grids, %ld free dofs, %ld load factors; eigensolver %s, alpha %.3E, %.2f s\n", model.grids.size(),
-              static_cast<long>(s.n_free), static_cast<long>(s.load_factors.size()),
+  std::printf(")\n  %zu grids, %ld free dofs, %ld load factors; eigensolver %s, alpha %.3E, %.2f s\n",
+              model.grids.size(), static_cast<long>(s.n_free), static_cast<long>(s.load_factors.size()),
               std::string(red::to_string(s.stats.backend_used)).c_str(), s.alpha, seconds);
   if (s.load_factors.size() == 0)
     std::printf("  no positive load factor in the range asked for (the preload may only stiffen the structure)\n");
@@ -97,7 +100,8 @@ int run_buckling(seflex::app::Args& args) {
 
 }  // namespace
 
-SEFLEX_COMMAND(buckling, "DECK [--count N] [--csv FILE] [--vtk FILE.vtu] [--eigensolver block|spectra|arpack|dense] [--force]",
+SEFLEX_COMMAND(buckling,
+               "DECK [--count N] [--csv FILE] [--vtk FILE.vtu] [--eigensolver block|spectra|arpack|dense] [--force]",
                "linear buckling (SOL 105): static preload subcase (LOAD), load factors of the METHOD (EIGRL) subcase, "
                "Nastran-style table, CSV of load factors, buckling modes for ParaView",
                run_buckling);

@@ -14,8 +14,8 @@ constexpr double kEta[4] = {-1, -1, 1, 1};
 const double kGauss = 1.0 / std::sqrt(3.0);
 
 struct Plane {
-  Eigen::Matrix3d R_BL;               // columns e1 e2 e3 in basic
-  std::array<Eigen::Vector2d, 4> p;   // projected corners, relative to the centroid
+  Eigen::Matrix3d R_BL;              // columns e1 e2 e3 in basic
+  std::array<Eigen::Vector2d, 4> p;  // projected corners, relative to the centroid
 };
 
 Plane mean_plane(const Quad4Element& e) {
@@ -111,8 +111,7 @@ std::array<Eigen::Vector3d, 4> quad4_membrane_resultants(const Quad4Element& e,
   Eigen::Vector4d alpha = Eigen::Vector4d::Zero();
   if (Kaa.trace() > 0.0) alpha = -Kaa.inverse() * r_a;
   std::array<Eigen::Vector3d, 4> N;
-  for (int k = 0; k < 4; ++k)
-    N[k] = sec.A * (Bm[k] * um + Gm[k] * alpha) + sec.B * (Bb[k] * rot);
+  for (int k = 0; k < 4; ++k) N[k] = sec.A * (Bm[k] * um + Gm[k] * alpha) + sec.B * (Bb[k] * rot);
   return N;
 }
 

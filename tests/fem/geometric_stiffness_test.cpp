@@ -6,6 +6,8 @@
 // supported square plate in uniaxial compression (ibid. sec. 9.2: N_cr = k pi^2 D / b^2, k = 4).
 // The eigenproblems are solved densely here (-K_sigma x = (1/lambda) K x); `seflex buckling` with the
 // production eigensolver is checked in tests/solutions/cli_buckling_test.cpp.
+#include "seflex/fem/geometric_stiffness.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,7 +19,6 @@
 #include "seflex/fem/element_rod.hpp"
 #include "seflex/fem/element_shell_quad4.hpp"
 #include "seflex/fem/element_shell_tria3.hpp"
-#include "seflex/fem/geometric_stiffness.hpp"
 #include "seflex/fem/loads.hpp"
 #include "shell_mesh.hpp"
 
@@ -245,9 +246,8 @@ TEST(GeometricStiffness, Quad4MembraneStressRotatesAndIsTheHessianOfTheGreenStra
   Eigen::Matrix3d Re = R;
   Re.col(0) = R * Eigen::Vector3d(e1.x(), e1.y(), 0);
   Re.col(1) = R.col(2).cross(Re.col(0));
-  const NodeMatrix<4> H = fd_hessian<4>([&](const Eigen::Matrix<double, 24, 1>& u) {
-    return green_stress_term<4>(e.x, Re, Ng, u);
-  });
+  const NodeMatrix<4> H =
+      fd_hessian<4>([&](const Eigen::Matrix<double, 24, 1>& u) { return green_stress_term<4>(e.x, Re, Ng, u); });
   EXPECT_LE((H - Kg).norm(), 1e-6 * Kg.norm());
 }
 
@@ -266,9 +266,8 @@ TEST(GeometricStiffness, Tria3MembraneStressRotatesAndIsTheHessianOfTheGreenStra
   const NodeMatrix<3> Kg = tria3_geometric_stiffness(e, N);
   EXPECT_LE((Kg - Kg.transpose()).norm(), 1e-14 * Kg.norm());
   expect_rotates_forces<3>(Kg, tria3_stiffness(e, 100.0) * u0, e.x, "CTRIA3");
-  const NodeMatrix<3> H = fd_hessian<3>([&](const Eigen::Matrix<double, 18, 1>& u) {
-    return green_stress_term<3>(e.x, R, {N}, u);
-  });
+  const NodeMatrix<3> H =
+      fd_hessian<3>([&](const Eigen::Matrix<double, 18, 1>& u) { return green_stress_term<3>(e.x, R, {N}, u); });
   EXPECT_LE((H - Kg).norm(), 1e-6 * Kg.norm());
 }
 
@@ -304,7 +303,9 @@ std::vector<double> column(Ends ends, int n) {
       test::add_spc(m, 1, 1, "1234");
       test::add_spc(m, 1, tip, "23");
       break;
-    case Ends::Cantilever: test::add_spc(m, 1, 1, "123456"); break;
+    case Ends::Cantilever:
+      test::add_spc(m, 1, 1, "123456");
+      break;
     case Ends::ClampedClamped:
       test::add_spc(m, 1, 1, "123456");
       test::add_spc(m, 1, tip, "23456");
@@ -421,8 +422,8 @@ TEST(Buckling, SimplySupportedSquarePlateInUniaxialCompression) {
   const double Ncr = 4 * kPi * kPi * D;
   const double q8 = plate_first_factor(8, false), q12 = plate_first_factor(12, false);
   const double t12 = plate_first_factor(12, true);
-  std::printf("plate buckling N_cr / exact: CQUAD4 8x8 %.5f, 12x12 %.5f; CTRIA3 12x12 (x2) %.5f\n", q8 / Ncr,
-              q12 / Ncr, t12 / Ncr);
+  std::printf("plate buckling N_cr / exact: CQUAD4 8x8 %.5f, 12x12 %.5f; CTRIA3 12x12 (x2) %.5f\n", q8 / Ncr, q12 / Ncr,
+              t12 / Ncr);
   EXPECT_NEAR(q12 / Ncr, 1.0, 0.01);
   EXPECT_NEAR(q8 / Ncr, 1.0, 0.02);
   EXPECT_LT(std::abs(q12 / Ncr - 1.0), 0.6 * std::abs(q8 / Ncr - 1.0));  // converging (about O(h^2): (8/12)^2 = 0.44)

@@ -1,6 +1,7 @@
 // seflex buckling (SOL 105): Euler column deck (tests/data/buckling/euler_column_cbar.bdf) against
-// Euler's load, the CSV, the VTK; a plate deck against Timoshenko & Gere with every Lanczos backend; `seflex info` classifying SOL 105, and the
-// errors of decks without METHOD, without a preload subcase, or with an EIGR method.
+// Euler's load, the CSV, the VTK; a plate deck against Timoshenko & Gere with every Lanczos backend;
+// `seflex info` classifying SOL 105, and the errors of decks without METHOD, without a preload
+// subcase, or with an EIGR method.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -37,8 +38,8 @@ TEST(BucklingCli, EulerColumnTableCsvAndVtk) {
   const double P_euler = pi * pi * 207000.0 * 7853.98 / (420.0 * 420.0);
   EXPECT_NEAR(P_euler, 90962.0, 0.5);
   test::TempDir dir;
-  const auto r = test::run_seflex("buckling '" + deck("euler_column_cbar.bdf").string() + "' --csv f.csv --vtk m.vtu",
-                                  dir.path());
+  const auto r =
+      test::run_seflex("buckling '" + deck("euler_column_cbar.bdf").string() + "' --csv f.csv --vtk m.vtu", dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
   EXPECT_NE(r.out.find("R E A L   E I G E N V A L U E S"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("preload SUBCASE 1 (LOAD 2), load factors of SUBCASE 2 (METHOD 10, SPC 1)"), std::string::npos)
@@ -67,9 +68,9 @@ TEST(BucklingCli, PlateWithEveryLanczosBackend) {
   std::vector<std::vector<double>> first;
   for (const char* solver : {"block", "spectra", "arpack"}) {
     const std::string csv = std::string(solver) + ".csv";
-    const auto r = test::run_seflex(
-        "buckling '" + deck("plate_ss_cquad4_10x10.bdf").string() + "' --count 2 --eigensolver " + solver + " --csv " + csv,
-        dir.path());
+    const auto r = test::run_seflex("buckling '" + deck("plate_ss_cquad4_10x10.bdf").string() +
+                                        "' --count 2 --eigensolver " + solver + " --csv " + csv,
+                                    dir.path());
     ASSERT_EQ(r.exit_code, 0) << solver << ": " << r.err;
     EXPECT_NE(r.out.find("eigensolver " + std::string(solver)), std::string::npos) << r.out;
     const auto rows = csv_rows(dir / csv);
