@@ -82,6 +82,21 @@ TEST(BucklingCli, PlateWithEveryLanczosBackend) {
   }
 }
 
+// The column located and displaced in a rotated rectangular system (CP = CD = 1, FORCE in CID 1):
+// K_sigma's element displacements and blocks pass through the grids' CD axes; same load factors.
+TEST(BucklingCli, ColumnInARotatedDisplacementSystem) {
+  test::TempDir dir;
+  for (const char* name : {"euler_column_cbar.bdf", "euler_column_cbar_rotated_cd.bdf"}) {
+    const auto r = test::run_seflex("buckling '" + deck(name).string() + "' --csv " + name + ".csv", dir.path());
+    ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
+  }
+  const auto a = csv_rows(dir / "euler_column_cbar.bdf.csv"),
+             b = csv_rows(dir / "euler_column_cbar_rotated_cd.bdf.csv");
+  ASSERT_EQ(a.size(), 4u);
+  ASSERT_EQ(b.size(), 4u);
+  for (int j = 0; j < 4; ++j) EXPECT_NEAR(b[j][1] / a[j][1], 1.0, 1e-9) << "mode " << j + 1;
+}
+
 TEST(BucklingCli, InfoClassifiesSol105) {
   const auto r = test::run_seflex("info '" + deck("euler_column_cbar.bdf").string() + "'");
   ASSERT_EQ(r.exit_code, 0) << r.err;
