@@ -4,7 +4,9 @@
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
+#include <tuple>
 
 #include "seflex/common/error.hpp"
 #include "seflex/fem/assembly.hpp"
