@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "buckling_solution.hpp"
 #include "command.hpp"
 #include "info_superelement.hpp"
 #include "seflex/fem/finalize.hpp"
@@ -73,12 +74,23 @@ void print_card_usage(const seflex::fem::Model& m) {
   const red::Solution sol = red::solution_of_deck(m);
   std::vector<red::CaseSelection> cases;
   if (sol == red::Solution::Statics) cases = red::select_cases(m);
-  else if (sol == red::Solution::NormalModes || sol == red::Solution::Buckling) cases = {red::select_case(m)};
+  else if (sol == red::Solution::NormalModes) cases = {red::select_case(m)};
+  else if (sol == red::Solution::Buckling) {
+    try {  // the preload and METHOD subcases `seflex buckling` runs
+      const auto [preload, buckle] = seflex::app::buckling_cases(m);
+      cases = {preload};
+      if (buckle.subcase_id != preload.subcase_id) cases.push_back(buckle);
+    } catch (const seflex::InputError& e) {
+      std::printf("\nbuckling (SOL 105) cannot run: %s\n", e.what());
+      cases = red::select_cases(m);
+    }
+  }
   const red::CardUsage usage = red::check_card_usage(m, sol, cases);
   if (sol == red::Solution::Info)
     std::printf("\ncard use (no SOL seflex runs in the executive control: cards seflex does not model are listed)\n");
   else
-    std::printf("\ncard use by %s, the deck's SOL\n", red::solution_name(sol));
+    std::printf("\ncard use by %s, the deck's SOL%s\n", red::solution_name(sol),
+                sol == red::Solution::Buckling ? " (run it with: seflex buckling DECK)" : "");
   if (usage.uses.empty()) {
     std::printf("  every card is used\n");
     return;

@@ -77,4 +77,19 @@ Eigen::Matrix<double, 12, 1> bar_thermal_load(const BarElement& e, double alpha,
 /// or a section with I1 I2 <= I12^2.
 BarElement make_bar_element(const Model& model, const Bar& bar);
 
+/// Axial force N (tension positive) of the bar for grid displacements u (12, basic): the element-axis
+/// end force of the (pinned, offset) stiffness, N = f_x at end B. Implemented in element_bar_kg.cpp.
+double bar_axial_force(const BarElement& e, const Eigen::Matrix<double, 12, 1>& u_basic);
+
+/// Differential (geometric) stiffness (12 x 12, basic, grid dofs) of the bar under axial force N
+/// (tension positive), element axes (Przemieniecki 1968, sec. 15.4, cubic Hermite bending):
+///   axial N/L [1 -1; -1 1]; each bending plane N/(30 L) [36 3L -36 3L; 3L 4L^2 -3L -L^2; ...]
+///   (the sign of the rotation terms follows theta_y = -w'); torsion N (I1 + I2)/(A L) [1 -1; -1 1].
+/// Euler-Bernoulli form also for shear-flexible (K1/K2) sections; end moments and shears of the
+/// preload are not included (axial force only). Pin flags: the released dofs follow the elastic
+/// static condensation, K_sigma_c = T^T K_sigma T with u_p = -K_pp^-1 K_pr u_r. Offsets: rigid links
+/// as for K (their own geometric term, the rotation of the offset arm under the end force, is not
+/// included).
+NodeMatrix<2> bar_geometric_stiffness(const BarElement& e, double N);
+
 }  // namespace seflex::fem

@@ -30,4 +30,14 @@ Eigen::Matrix<double, 12, 1> rod_thermal_load(const RodElement& e, double alpha,
 /// references or a zero length.
 RodElement make_rod_element(const Model& model, const Rod& rod);
 
+/// Axial force N (tension positive) of the rod for grid displacements u (12, basic):
+///   N = EA/L n . (u_B - u_A).
+double rod_axial_force(const RodElement& e, const Eigen::Matrix<double, 12, 1>& u_basic);
+
+/// Differential (geometric, stress) stiffness (12 x 12, basic) of the rod under axial force N
+/// (tension positive): the Hessian of N int (1/2) u'.u' ds (the nonlinear part of the Green-Lagrange
+/// axial strain), K_sigma = (N / L) [I -I; -I I] on the translations, nothing on the rotations.
+/// Implemented in element_rod_kg.cpp.
+NodeMatrix<2> rod_geometric_stiffness(const RodElement& e, double N);
+
 }  // namespace seflex::fem

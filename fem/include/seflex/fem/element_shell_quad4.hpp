@@ -67,4 +67,18 @@ std::array<double, 4> quad4_lumped_masses(const Quad4Element& e);
 /// caches it); Quad4Element::section is in element axes.
 Quad4Element make_quad4_element(const Model& model, const Shell& shell, const ShellSection* section = nullptr);
 
+/// Membrane stress resultants (Nxx, Nyy, Nxy; force per length, element axes e1 e2 of the mean plane)
+/// at the 2 x 2 Gauss points for grid displacements u (24, basic): N = A eps + B kappa with the QM6
+/// membrane strain (compatible + incompatible modes condensed with the membrane and coupling
+/// stiffness; the small K6ROT drilling penalty is left out of that condensation).
+/// Implemented in element_shell_quad4_kg.cpp.
+std::array<Eigen::Vector3d, 4> quad4_membrane_resultants(const Quad4Element& e, const Eigen::Matrix<double, 24, 1>& u_basic);
+
+/// Differential (geometric) stiffness (24 x 24, basic) under membrane resultants N_g at the 2 x 2
+/// Gauss points (element axes): the Hessian of int (1/2) [N_ab u_k,a u_k,b] dA over the three
+/// translations k of the bilinear field (in-plane AND out-of-plane displacements, the consistent form),
+///   K_sigma(i, j) = int grad N_i^T [Nxx Nxy; Nxy Nyy] grad N_j dA  (x) I_3,
+/// nothing on the rotations. I_3 is the same in every frame, so the blocks need no rotation.
+NodeMatrix<4> quad4_geometric_stiffness(const Quad4Element& e, const std::array<Eigen::Vector3d, 4>& N_gauss);
+
 }  // namespace seflex::fem

@@ -40,4 +40,13 @@ NodeMatrix<3> tria3_mass(const Tria3Element& e, MassKind kind);      ///< before
 /// caches it); Tria3Element::section is in element axes.
 Tria3Element make_tria3_element(const Model& model, const Shell& shell, const ShellSection* section = nullptr);
 
+/// Membrane stress resultants (Nxx, Nyy, Nxy; element axes, constant) for grid displacements u
+/// (18, basic): N = A eps + B kappa. Implemented in element_shell_tria3_kg.cpp.
+Eigen::Vector3d tria3_membrane_resultants(const Tria3Element& e, const Eigen::Matrix<double, 18, 1>& u_basic);
+
+/// Differential (geometric) stiffness (18 x 18, basic) under constant membrane resultants N (element
+/// axes): K_sigma(i, j) = A grad N_i^T [Nxx Nxy; Nxy Nyy] grad N_j (x) I_3 on the translations
+/// (in-plane and out-of-plane displacements), nothing on the rotations.
+NodeMatrix<3> tria3_geometric_stiffness(const Tria3Element& e, const Eigen::Vector3d& N);
+
 }  // namespace seflex::fem
