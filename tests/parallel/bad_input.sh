@@ -32,6 +32,6 @@ check() {  # name, expected exit code, expected message (grep -E), command...
   if [ "$n" -ne 1 ]; then echo "FAIL $name: message /$pattern/ printed $n times, expected once:"; cat "$out/$name.err"; fail=1; return; fi
   echo "ok   $name: exit $rc, $(grep -E "$pattern" "$out/$name.err")"
 }
-check undefined_pshell 3 "^error: .*bad_pshell.bdf:10: .*PSHELL 7" "$mpirun" -n 2 "$seflex" modes "$deck" --backend slepc
+check undefined_pshell 3 "^error: .*bad_pshell.bdf:10: CQUAD4 1, field 3 \(PID\): references property 7, which is not defined" "$mpirun" -n 2 "$seflex" modes "$deck" --backend slepc
 check missing_deck 3 "^error: .*nowhere.bdf" "$mpirun" -n 2 "$seflex" modes "$out/nowhere.bdf" --backend slepc
 exit $fail

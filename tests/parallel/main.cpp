@@ -5,8 +5,16 @@
 
 #include "seflex/parallel/session.hpp"
 
+namespace seflex::parallel {
+namespace {
+Session* the_session = nullptr;
+}
+Session& test_session() { return *the_session; }
+}  // namespace seflex::parallel
+
 int main(int argc, char** argv) {
   seflex::parallel::Session session;
+  seflex::parallel::the_session = &session;
   ::testing::InitGoogleTest(&argc, argv);
   if (session.rank() != 0) {
     auto& listeners = ::testing::UnitTest::GetInstance()->listeners();

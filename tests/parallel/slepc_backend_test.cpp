@@ -12,11 +12,13 @@
 #include "seflex/fem/constraints.hpp"
 #include "seflex/io/model_reader.hpp"
 #include "seflex/parallel/mumps_factorization.hpp"
+#include "seflex/parallel/session.hpp"
 #include "seflex/parallel/slepc_eigensolver.hpp"
 #include "seflex/reduction/craig_bampton.hpp"
 #include "seflex/reduction/normal_modes.hpp"
 
 namespace seflex::parallel {
+Session& test_session();  // main.cpp's
 namespace {
 
 using reduction::EigenBackend;
@@ -178,6 +180,25 @@ TEST(SlepcBackend, MechanismIsAFactorizationError) {
     for (reduction::SparseMatrixd::InnerIterator it(M, j); it; ++it) it.valueRef() = 0;
   M.coeffRef(0, 0) = 1;
   EXPECT_THROW((void)slepc_eigenproblem(K, M, eo), reduction::FactorizationError);
+}
+
+}  // namespace
+}  // namespace seflex::parallel
+
+namespace seflex::parallel {
+namespace {
+
+// An error on one rank only (the last): every rank learns its code and message, so all stop alike.
+TEST(Session, OneRanksFailureReachesEveryRank) {
+  Session& s = test_session();
+  std::optional<Failure> mine;
+  if (s.rank() == s.size() - 1) mine = Failure{3, "deck.bdf:7: GRID 3: bad coordinate", s.rank()};
+  const std::optional<Failure> all = s.agree(mine);
+  ASSERT_TRUE(all.has_value());
+  EXPECT_EQ(all->exit_code, 3);
+  EXPECT_EQ(all->message, "deck.bdf:7: GRID 3: bad coordinate");
+  EXPECT_EQ(all->rank, s.size() - 1);
+  EXPECT_FALSE(s.agree(std::nullopt).has_value());  // and nothing when no rank failed
 }
 
 }  // namespace
