@@ -246,9 +246,12 @@ reduction::EigenSolution slepc_eigenproblem(const SparseMatrixd& K, const Sparse
     empty.backward_errors.resize(0);
     return empty;
   }
-  SparseMatrixd Kc = K, Mc = M;  // compressed copies (the inputs may be in uncompressed mode)
-  Kc.makeCompressed();
-  Mc.makeCompressed();
+  // compressed inputs as they are (no replicated copy); others compressed into copies
+  SparseMatrixd Kcopy, Mcopy;
+  if (!K.isCompressed()) (Kcopy = K).makeCompressed();
+  if (!M.isCompressed()) (Mcopy = M).makeCompressed();
+  const SparseMatrixd& Kc = K.isCompressed() ? K : Kcopy;
+  const SparseMatrixd& Mc = M.isCompressed() ? M : Mcopy;
   const double sigma = options.shift ? *options.shift : default_shift(Kc, Mc);
   reduction::EigenSolution s = solve_shifted(Kc, Mc, sigma, options);
   if (options.shift) return s;
