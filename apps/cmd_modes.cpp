@@ -7,6 +7,7 @@
 #include <string>
 
 #include "command.hpp"
+#include "distributed_run.hpp"
 #include "model_args.hpp"
 #include "usage_warnings.hpp"
 #include "seflex/reduction/card_usage.hpp"
@@ -14,6 +15,9 @@
 #include "seflex/io/results_csv.hpp"
 #include "seflex/io/vtk_modes.hpp"
 #include "seflex/reduction/normal_modes.hpp"
+#ifdef SEFLEX_HAVE_MPI
+#include "seflex/parallel/slepc_eigensolver.hpp"
+#endif
 
 namespace {
 
@@ -27,6 +31,13 @@ const char* normalization_name(seflex::reduction::ModeNormalization n) {
     case seflex::reduction::ModeNormalization::Point: return "POINT";
   }
   return "?";
+}
+
+int session_size([[maybe_unused]] const seflex::parallel::Session* session) {
+#ifdef SEFLEX_HAVE_MPI
+  if (session != nullptr) return session->size();
+#endif
+  return 1;
 }
 
 void print_table(const seflex::reduction::NormalModes& r) {
@@ -44,10 +55,21 @@ void print_table(const seflex::reduction::NormalModes& r) {
                 r.eigenvalues(k), rad(k), hz(k), r.generalized_mass(k), r.generalized_stiffness(k));
 }
 
-int run_modes(seflex::app::Args& args) {
+/// The command on one rank: `session` is null for a serial run, else the distributed session
+/// (--backend slepc: SLEPc eigensolver, stdout and files from rank 0 only).
+int modes(seflex::app::Args& args, seflex::parallel::Session* session) {
   using seflex::app::UsageError;
   seflex::reduction::ModesOptions o;
   constexpr int kAbsent = std::numeric_limits<int>::min();
+  if (session != nullptr) {
+    for (const char* serial_only : {"eigensolver", "block-size", "factorization"})
+      if (args.value(serial_only))
+        throw UsageError(std::string("option --") + serial_only + " selects a serial solver; --backend slepc uses "
+                         "SLEPc's Krylov-Schur on a MUMPS factorisation");
+#ifdef SEFLEX_HAVE_MPI
+    o.external = seflex::parallel::slepc_eigenproblem;
+#endif
+  }
   if (const int count = args.integer("count", kAbsent); count != kAbsent) {
     if (count < 1) throw UsageError("option --count must be at least 1");
     o.count = count;
@@ -72,14 +94,16 @@ int run_modes(seflex::app::Args& args) {
   const std::string deck = args.positional("DECK");
   args.finish();
   if (vtk && std::filesystem::path(*vtk).extension() != ".vtu") throw UsageError("--vtk expects a file name ending in .vtu");
-  if (csv) seflex::io::check_writable(*csv, force);  // before the work, not after it
-  if (vtk) seflex::io::check_writable(*vtk, force);
+  const bool writer = seflex::app::writes_files(session);
+  if (csv && writer) seflex::io::check_writable(*csv, force);  // before the work, not after it
+  if (vtk && writer) seflex::io::check_writable(*vtk, force);
 
   const auto t0 = std::chrono::steady_clock::now();
   const seflex::fem::Model model = seflex::io::read_model(deck, model_options);
   seflex::app::check_and_print_card_usage(
       model, seflex::reduction::check_card_usage(model, seflex::reduction::Solution::NormalModes,
                                                  {seflex::reduction::select_case(model, o.subcase)}));
+  if (session != nullptr) seflex::app::checkpoint(*session);  // every rank read the deck (or stop them all)
   const auto t1 = std::chrono::steady_clock::now();
   const seflex::reduction::NormalModes r = seflex::reduction::solve_normal_modes(model, o);
   const auto t2 = std::chrono::steady_clock::now();
@@ -96,37 +120,50 @@ int run_modes(seflex::app::Args& args) {
     std::printf("  Guyan reduction to the a-set: %ld a-set dofs (%s), %ld omitted dofs condensed statically\n",
                 static_cast<long>(r.guyan->a_dofs), r.guyan->from_aset ? "ASET/ASET1" : "all but OMIT/OMIT1",
                 static_cast<long>(r.guyan->o_dofs));
-  std::printf("  eigensolver %s on %s, shift %.6E, %ld solved columns, %d Lanczos runs%s\n",
-              std::string(to_string(r.stats.backend_used)).c_str(), std::string(to_string(o.factorization)).c_str(),
-              r.stats.shift, r.stats.operator_applications, r.stats.lanczos_runs,
+  const bool slepc = r.stats.backend_used == seflex::reduction::EigenBackend::Slepc;
+  const std::string on = slepc ? "mumps (" + std::to_string(session_size(session)) + " MPI ranks)"
+                               : std::string(to_string(o.factorization));
+  std::printf("  eigensolver %s on %s, shift %.6E, %ld solved columns, %d %s runs%s\n",
+              std::string(to_string(r.stats.backend_used)).c_str(), on.c_str(),
+              r.stats.shift, r.stats.operator_applications, r.stats.lanczos_runs, slepc ? "Krylov-Schur" : "Lanczos",
               r.stats.missed_modes_recovered ? (", " + std::to_string(r.stats.missed_modes_recovered) + " recovered by the completeness check").c_str() : "");
   const auto& st = r.stats;
   std::printf("  time: read %.2f s, solve %.2f s (factorisation %.2f, shift calibration %.2f, Lanczos %.2f, "
               "completeness check %.2f, Rayleigh-Ritz %.2f; nnz(L) %.3g)\n",
               seconds(t0, t1), seconds(t1, t2), st.seconds_factorization, st.seconds_calibration, st.seconds_lanczos,
               st.seconds_check, st.seconds_postprocess, st.factorization.factor_nonzeros);
-  std::printf("  factorisation: ordering %.2f s, symbolic %.2f s, numeric %.2f s; %d solves of %ld columns in %.2f s\n",
-              st.factorization.seconds_ordering, st.factorization.seconds_symbolic, st.factorization.seconds_numeric,
-              st.factorization.solve_calls, st.factorization.solve_columns, st.factorization.seconds_solve);
+  if (!slepc)  // MUMPS inside SLEPc's solver does not split its time
+    std::printf("  factorisation: ordering %.2f s, symbolic %.2f s, numeric %.2f s; %d solves of %ld columns in %.2f s\n",
+                st.factorization.seconds_ordering, st.factorization.seconds_symbolic, st.factorization.seconds_numeric,
+                st.factorization.solve_calls, st.factorization.solve_columns, st.factorization.seconds_solve);
   print_table(r);
   std::fflush(stdout);
 
-  if (csv) {
+  if (csv && writer) {
     Eigen::MatrixXd rows(r.eigenvalues.size(), 3);
     for (Eigen::Index k = 0; k < rows.rows(); ++k) rows.row(k) << static_cast<double>(k + 1), r.eigenvalues(k), r.cycles()(k);
     seflex::io::write_csv(*csv, {"mode", "eigenvalue", "frequency_hz"}, rows, force);
     std::printf("\nwrote %s\n", csv->c_str());
   }
-  if (vtk) {
+  if (vtk && writer) {
     seflex::io::write_mode_shapes_vtu(*vtk, model, r, force);
     std::printf("wrote %s\n", vtk->c_str());
   }
   return seflex::app::kOk;
 }
 
+int run_modes(seflex::app::Args& args) {
+  if (seflex::app::distributed_backend_requested(args.value_or("backend", "serial"))) {
+#ifdef SEFLEX_HAVE_MPI
+    return seflex::app::run_distributed("modes", [&](seflex::parallel::Session& s) { return modes(args, &s); });
+#endif
+  }
+  return modes(args, nullptr);
+}
+
 }  // namespace
 
 SEFLEX_COMMAND(modes, "DECK [--count N] [--csv FILE] [--vtk FILE.vtu] [--eigensolver block|spectra|arpack|dense] "
-                      "[--block-size B] [--factorization cholmod|ldlt] [--subcase ID] [--force]",
+                      "[--block-size B] [--factorization cholmod|ldlt] [--subcase ID] [--force] [--backend serial|slepc]",
                "normal modes (SOL 103): Nastran-style eigenvalue table, CSV of frequencies, mode shapes for ParaView",
                run_modes);

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "distributed_run.hpp"
 #include "command.hpp"
 #include "info_superelement.hpp"
 #include "model_args.hpp"
@@ -24,6 +25,11 @@
 #include "seflex/io/sha256.hpp"
 #include "seflex/io/superelement_file.hpp"
 #include "seflex/reduction/craig_bampton_superelement.hpp"
+
+#ifdef SEFLEX_HAVE_MPI
+#include "seflex/parallel/mumps_factorization.hpp"
+#include "seflex/parallel/slepc_eigensolver.hpp"
+#endif
 
 namespace {
 
@@ -150,8 +156,12 @@ void print_free_free(const seflex::se::Superelement& s, int elastic, const Eigen
   }
 }
 
-int run_reduce(seflex::app::Args& args) {
+/// The command on one rank: `session` is null for a serial run, else the distributed session
+/// (--backend slepc: MUMPS factor of K_ii, SLEPc eigensolver, stdout and the file from rank 0 only).
+int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
   constexpr int kAbsent = std::numeric_limits<int>::min();
+  if (session != nullptr && args.value("eigensolver"))
+    throw UsageError("option --eigensolver selects a serial solver; --backend slepc uses MUMPS and SLEPc");
   std::optional<std::string> out = args.value("-o");
   if (!out) out = args.value("output");
   const auto spec = args.value("interface");
@@ -176,7 +186,8 @@ int run_reduce(seflex::app::Args& args) {
   if (compare != kAbsent && compare < 1) throw UsageError("option --compare expects a number of elastic modes >= 1");
   const auto backend = red::parse_eigen_backend(solver);
   if (!backend) throw UsageError("option --eigensolver expects " + std::string(red::eigen_backend_names()) + ", got '" + solver + "'");
-  if (!force && std::filesystem::exists(*out))  // before the work, not after it
+  const bool writer = seflex::app::writes_files(session);
+  if (writer && !force && std::filesystem::exists(*out))  // before the work, not after it
     throw seflex::InputError(seflex::SourceRef{*out, 0},
                              "exists already; refusing to overwrite it (use --force to replace it)");
 
@@ -198,6 +209,13 @@ int run_reduce(seflex::app::Args& args) {
   else
     o.modes.modes = modes == kAbsent ? 0 : modes;
   o.modes.backend = *backend;
+#ifdef SEFLEX_HAVE_MPI
+  if (session != nullptr) {
+    o.modes.factorization_maker = seflex::parallel::make_mumps_factorization;
+    o.modes.external = seflex::parallel::slepc_eigenproblem;
+  }
+#endif
+  if (session != nullptr) seflex::app::checkpoint(*session);  // every rank read the model (or stop them all)
   o.name = name ? *name : std::filesystem::path(model_path).stem().string();
   o.full_mesh = true;  // the inertia invariants are computed from the mesh part before --no-mesh drops it
   const auto t1 = std::chrono::steady_clock::now();
@@ -223,11 +241,12 @@ int run_reduce(seflex::app::Args& args) {
   if (compare != kAbsent) full = red::full_model_eigenvalues(model, 6 + compare, *backend);
   print_free_free(s, compare != kAbsent ? compare : 10, compare != kAbsent ? &full : nullptr);
   std::fflush(stdout);
-  seflex::io::save_superelement(s, *out, seflex::io::SaveOptions{force});
+  if (writer) seflex::io::save_superelement(s, *out, seflex::io::SaveOptions{force});
   const auto t3 = std::chrono::steady_clock::now();
   const auto sec = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };
-  std::printf("\nwrote %s (%.1f MB)\n", out->c_str(),
-              static_cast<double>(std::filesystem::file_size(*out)) / (1024.0 * 1024.0));
+  if (writer)
+    std::printf("\nwrote %s (%.1f MB)\n", out->c_str(),
+                static_cast<double>(std::filesystem::file_size(*out)) / (1024.0 * 1024.0));
   if (s.invariants.present())
     std::printf("  inertia invariants: stored (full inertia without the mesh)\n");
   else
@@ -250,11 +269,20 @@ int run_reduce(seflex::app::Args& args) {
   return seflex::app::kOk;
 }
 
+int run_reduce(seflex::app::Args& args) {
+  if (seflex::app::distributed_backend_requested(args.value_or("backend", "serial"))) {
+#ifdef SEFLEX_HAVE_MPI
+    return seflex::app::run_distributed("reduce", [&](seflex::parallel::Session& s) { return reduce(args, &s); });
+#endif
+  }
+  return reduce(args, nullptr);
+}
+
 }  // namespace
 
 SEFLEX_COMMAND(reduce,
                "MODEL --interface IDS|SETS|aset|bset|suport [--modes N | --fmax HZ] [--frame NODE|SET] [--name NAME] "
-               "[--compare K] [--eigensolver block|spectra|arpack|dense] [--no-mesh] -o FILE.se [--force] "
+               "[--compare K] [--eigensolver block|spectra|arpack|dense] [--backend serial|slepc] [--no-mesh] -o FILE.se [--force] "
                "[--properties FILE] [--set NAME=VALUE]...",
                "Craig-Bampton reduction to an absolute-interface-coordinate superelement: constraint modes of all six "
                "dofs of the interface grids plus fixed-interface modes; prints mass properties, the truncation report "

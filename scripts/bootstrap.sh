@@ -44,7 +44,8 @@ cmake --build build -j "$jobs"
 
 # The bad-input tests again under ASan + UBSan (gcc). The libFuzzer harnesses (fuzz/, clang) run with
 # bench/fuzz.sh SECONDS; they are not part of this command yet (docs/reliability.md: CI time).
-configure build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSEFLEX_SANITIZE=ON -DSEFLEX_BUILD_BENCH=OFF -DSEFLEX_BUILD_EXAMPLES=OFF
+# (No distributed backend there: the input tests run the serial commands only.)
+configure build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSEFLEX_SANITIZE=ON -DSEFLEX_BUILD_BENCH=OFF -DSEFLEX_BUILD_EXAMPLES=OFF -DSEFLEX_MPI=OFF
 cmake --build build-asan -j "$jobs" --target seflex test_input
 (cd build-asan && ctest --output-on-failure -j "$jobs" -L input --timeout 900)
 echo "bootstrap: all tests passed"

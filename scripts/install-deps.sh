@@ -6,6 +6,10 @@
 # is not installed through dpkg: its Debian package is fetched with `apt-get download` and unpacked
 # into a private prefix (SEFLEX_PARAVIEW_PY, default /opt/seflex/paraview-python) used only by
 # scripts/pvrender.sh. The `paraview` package itself (pvbatch) installs normally.
+#
+# petsc-dev and slepc-dev (PETSc 3.18 with MUMPS, SLEPc 3.18) and MPI (OpenMPI through
+# mpi-default-dev/-bin) build the distributed backend (SEFLEX_MPI, docs/distributed.md); without
+# them the build is serial and everything else works.
 set -euo pipefail
 
 packages=(
@@ -15,6 +19,7 @@ packages=(
   libgmsh-dev gmsh libvtk9-dev libyaml-cpp-dev libgtest-dev
   python3 python3-numpy python3-scipy python3-matplotlib
   paraview xvfb xauth
+  petsc-dev slepc-dev mpi-default-dev mpi-default-bin
 )
 pv_prefix="${SEFLEX_PARAVIEW_PY:-/opt/seflex/paraview-python}"
 

@@ -82,7 +82,7 @@ CraigBamptonBasis craig_bampton(const SparseMatrixd& K_ff, const SparseMatrixd& 
   // K_ii stays for the fixed-interface modes (block Lanczos at shift 0).
   Eigen::MatrixXd Psi_i = -Eigen::MatrixXd(K_ib);
   SparseMatrixd K_ii, M_ii;
-  auto factor = make_factorization(options.factorization);
+  auto factor = options.factorization_maker ? options.factorization_maker() : make_factorization(options.factorization);
   if (ni > 0) {
     K_ii = extract_block(K_ff, cb.interior, ipos, cb.interior, true);
     M_ii = extract_block(M_ff, cb.interior, ipos, cb.interior, true);
@@ -124,6 +124,7 @@ CraigBamptonBasis craig_bampton(const SparseMatrixd& K_ff, const SparseMatrixd& 
     EigenOptions eo;
     eo.backend = options.backend;
     eo.factorization = options.factorization;
+    eo.external = options.external;
     auto solve = [&](std::optional<int> count, std::optional<double> limit) {
       eo.count = count;
       eo.lambda_max = limit;

@@ -24,6 +24,7 @@ std::string_view to_string(EigenBackend backend) {
     case EigenBackend::Arpack: return "arpack";
     case EigenBackend::Dense: return "dense";
     case EigenBackend::Block: return "block";
+    case EigenBackend::Slepc: return "slepc";
   }
   return "?";
 }
@@ -241,6 +242,9 @@ EigenSolution solve_eigenproblem(const SparseMatrixd& K, const SparseMatrixd& M,
   SEFLEX_DEMAND(options.count.has_value() || options.lambda_max.has_value(),
                 "eigenproblem: give a mode count or an upper frequency bound");
   SEFLEX_DEMAND(!options.count || *options.count >= 0, "eigenproblem: negative mode count");
+  if (options.external) return options.external(K, M, options);
+  SEFLEX_DEMAND(options.backend != EigenBackend::Slepc,
+                "eigenproblem: the slepc backend is parallel/'s; pass it as EigenOptions::external");
   const Eigen::Index n = K.rows();
   EigenSolution solution;
   solution.eigenvalues.resize(0);

@@ -80,6 +80,7 @@ NormalModes solve_normal_modes(const fem::Model& model, const ModesOptions& opti
   eo.block_size = options.block_size;
   eo.factorization = options.factorization;
   eo.check_completeness = options.check_completeness;
+  eo.external = options.external;
   eo.count = options.count;
   if (method != nullptr) {
     if (!eo.count) eo.count = method->nd;

@@ -9,6 +9,7 @@ std::string_view to_string(FactorizationBackend backend) {
   switch (backend) {
     case FactorizationBackend::Cholmod: return "cholmod";
     case FactorizationBackend::EigenLdlt: return "ldlt";
+    case FactorizationBackend::Mumps: return "mumps";
   }
   return "?";
 }
@@ -23,8 +24,9 @@ std::unique_ptr<SparseFactorization> make_factorization(FactorizationBackend bac
   switch (backend) {
     case FactorizationBackend::Cholmod: return make_cholmod_factorization();
     case FactorizationBackend::EigenLdlt: return make_ldlt_factorization();
+    case FactorizationBackend::Mumps: break;  // parallel/'s, through a FactorizationMaker
   }
-  SEFLEX_DEMAND(false, "unknown factorization backend");
+  SEFLEX_DEMAND(false, "make_factorization: backend " + std::string(to_string(backend)) + " is not built into reduction/");
   return nullptr;
 }
 

@@ -39,6 +39,11 @@ struct CraigBamptonOptions {
   Eigen::Index block_lanczos_min_size = 2000;
   EigenBackend backend = EigenBackend::Spectra;
   FactorizationBackend factorization = kDefaultFactorization;
+  /// Distributed backends (parallel/, SEFLEX_MPI): when set, K_ii is factorised by an object it makes
+  /// (instead of make_factorization(factorization)) and the fixed-interface eigenproblems that do not
+  /// use that factor go to `external` (EigenOptions::external).
+  FactorizationMaker factorization_maker;
+  ExternalEigensolver external;
 };
 
 /// Figures of the work done.

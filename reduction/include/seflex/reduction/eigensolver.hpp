@@ -25,6 +25,7 @@
 //   purified vectors OP X c / theta are M-orthonormalised.
 #include <Eigen/Core>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string_view>
 
@@ -32,13 +33,21 @@
 
 namespace seflex::reduction {
 
-enum class EigenBackend : std::uint8_t { Spectra, Arpack, Dense, Block };
+/// Slepc is the distributed backend of parallel/ (SEFLEX_MPI builds): reduction/ never runs it itself,
+/// it arrives through EigenOptions::external and is never parsed from an --eigensolver name.
+enum class EigenBackend : std::uint8_t { Spectra, Arpack, Dense, Block, Slepc };
 
 /// "spectra", "arpack", "dense" or "block".
 std::string_view to_string(EigenBackend backend);
 std::optional<EigenBackend> parse_eigen_backend(std::string_view name);
 /// The names parse_eigen_backend accepts, for messages: "block, spectra, arpack or dense".
 std::string_view eigen_backend_names();
+
+struct EigenSolution;
+struct EigenOptions;
+/// An eigensolver outside reduction/ (parallel/'s SLEPc backend): same contract as solve_eigenproblem.
+using ExternalEigensolver = std::function<EigenSolution(const SparseMatrixd& K, const SparseMatrixd& M,
+                                                        const EigenOptions& options)>;
 
 /// Which eigenpairs to compute and how. Every range bound is in eigenvalue units (rad/s)^2.
 struct EigenOptions {
@@ -59,6 +68,9 @@ struct EigenOptions {
   bool check_completeness = true;      ///< run the deflated missing-mode check
   int subspace = 0;                    ///< Krylov subspace size of the main run; 0 = automatic
   int max_restarts = 1000;
+  /// When set, solve_eigenproblem hands the whole problem to it (every other backend option is then
+  /// only passed along): the seam through which parallel/ plugs in the distributed SLEPc solver.
+  ExternalEigensolver external;
 };
 
 /// Counters of the work done (for summaries and benchmarks).

@@ -36,6 +36,8 @@ struct ModesOptions {
   std::vector<Eigen::Index> fixed_dofs;       ///< extra g-set dofs held at zero (fixed-interface modes)
   bool check_completeness = true;
   bool guyan = true;                          ///< honour ASET/OMIT (false: eigenproblem on the full f-set)
+  /// The distributed eigensolver (parallel/, --backend slepc): EigenOptions::external.
+  ExternalEigensolver external;
 };
 
 enum class ModeNormalization : unsigned char { Mass, Max, Point };

@@ -20,6 +20,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -31,9 +32,12 @@ namespace seflex::reduction {
 
 using SparseMatrixd = Eigen::SparseMatrix<double>;  ///< column-major, int indices
 
-enum class FactorizationBackend : std::uint8_t { Cholmod, EigenLdlt };
+/// Mumps is the distributed factorisation of parallel/ (SEFLEX_MPI builds): make_factorization
+/// does not make it and parse_factorization_backend does not accept it; it arrives through a
+/// FactorizationMaker (craig_bampton.hpp).
+enum class FactorizationBackend : std::uint8_t { Cholmod, EigenLdlt, Mumps };
 
-/// "cholmod" or "ldlt".
+/// "cholmod", "ldlt" or "mumps".
 std::string_view to_string(FactorizationBackend backend);
 /// Parse "cholmod" / "ldlt"; nullopt for anything else.
 std::optional<FactorizationBackend> parse_factorization_backend(std::string_view name);
@@ -110,7 +114,10 @@ class SparseFactorization {
   }
 };
 
-/// A new, empty factorisation of the given backend.
+/// Makes a new, empty factorisation (a backend outside reduction/, e.g. parallel/'s MUMPS).
+using FactorizationMaker = std::function<std::unique_ptr<SparseFactorization>()>;
+
+/// A new, empty factorisation of the given backend (Cholmod or EigenLdlt; InvariantError for Mumps).
 std::unique_ptr<SparseFactorization> make_factorization(FactorizationBackend backend = kDefaultFactorization);
 
 }  // namespace seflex::reduction

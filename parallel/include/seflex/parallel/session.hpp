@@ -1,0 +1,41 @@
+#pragma once
+// The MPI + PETSc + SLEPc session of a distributed run (RAII: SlepcInitialize / SlepcFinalize), and
+// the collective agreement on failures that lets one rank's error stop every rank with one message.
+//
+// Contract
+// - At most one Session per process, made before and destroyed after every other parallel/ call.
+//   PETSc's own error printing and signal handlers are switched off: a PETSc failure comes back as a
+//   seflex::InvariantError (or FactorizationError / ConvergenceError) from the call that failed.
+// - agree() is collective: every rank must call it the same number of times, in the same order.
+#include <optional>
+#include <string>
+
+namespace seflex::parallel {
+
+/// A failure as the front end reports it: its exit code and message, and the rank it came from.
+struct Failure {
+  int exit_code = 1;
+  std::string message;
+  int rank = 0;
+};
+
+class Session {
+ public:
+  /// Initialises MPI (if not yet), PETSc and SLEPc. Throws InvariantError if that fails.
+  Session();
+  ~Session();
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+
+  /// Collective. `local`: this rank's failure, if any. Returns the failure of the lowest-numbered
+  /// failing rank (its code and message, sent to every rank), or nullopt when no rank failed.
+  std::optional<Failure> agree(const std::optional<Failure>& local) const;
+
+ private:
+  int rank_ = 0, size_ = 1;
+};
+
+}  // namespace seflex::parallel
