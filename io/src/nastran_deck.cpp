@@ -53,6 +53,9 @@ constexpr CardType kCardTypes[] = {
     {"RBAR", parse_rbar},       {"RBE3", parse_rbe3},       {"MAT2", parse_mat2},      {"MAT8", parse_mat8},
     {"PCOMP", parse_pcomp},     {"PCOMPG", parse_pcompg},   {"PLOAD2", parse_pload2},  {"GRAV", parse_grav},
     {"RFORCE", parse_rforce},   {"TEMP", parse_temp},       {"TEMPD", parse_tempd},    {"TEMPRB", parse_temprb},
+    {"CBUSH", parse_cbush},     {"PBUSH", parse_pbush},     {"CELAS3", parse_celas3},  {"CELAS4", parse_celas4},
+    {"CMASS1", parse_cmass1},   {"CMASS2", parse_cmass2},   {"CMASS3", parse_cmass1},  {"CMASS4", parse_cmass2},
+    {"PMASS", parse_pmass},     {"CONM1", parse_conm1},     {"PLOAD1", parse_pload1},  {"SPCD", parse_spcd},
 };
 constexpr std::size_t kNumCardTypes = sizeof(kCardTypes) / sizeof(kCardTypes[0]);
 
