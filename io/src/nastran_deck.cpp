@@ -301,7 +301,27 @@ class DeckReader {
     }
   }
 
+  /// DEQATN: its equations are not fields (commas, '=' and blanks anywhere): the card and its
+  /// continuation lines (field 1 blank, '+' or '*') are skipped and listed as unsupported.
+  void skip_equation_card(const Source& src, LineCursor& cursor, const Line& line) {
+    state_.note_unsupported("DEQATN", {src.index, line.number});
+    Line next;
+    while (cursor.next(next)) {
+      if (next.blank()) continue;
+      const char c = next.text[0];
+      if (c != ' ' && c != '\t' && c != '+' && c != '*' && c != ',') {
+        cursor.push_back(next);
+        break;
+      }
+    }
+  }
+
   void bulk_card(const Source& src, LineCursor& cursor, const Line& line) {
+    if (starts_with_word(line.text, "DEQATN") || (line.text.size() > 6 && starts_with_word(line.text.substr(0, 6), "DEQATN") &&
+                                                  (line.text[6] == '*' || line.text[6] == '\t'))) {
+      skip_equation_card(src, cursor, line);
+      return;
+    }
     if (is_continuation(line))
       throw InputError(location(src.name, line.number) + ": continuation line " +
                        quote_field(trim(line.text).substr(0, 16)) +
