@@ -14,6 +14,8 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "nastran_test_util.hpp"
 #include "seflex/fem/loads.hpp"
@@ -83,8 +85,8 @@ TEST(Pload1, CantileverTipDeflections) {
 // the x-z plane loaded along z carries P times its x extent; LE carries P times its length.
 TEST(Pload1, ProjectedLoadTotals) {
   const double P = 10.0;
-  for (const auto& [scale, total] : {std::pair<std::string, double>{"LEPR", P * 1.0}, {"LE", P * std::sqrt(2.0)},
-                                     {"FRPR", P * 1.0}}) {
+  const std::vector<std::pair<std::string, double>> cases = {{"LEPR", P * 1.0}, {"LE", P * std::sqrt(2.0)}, {"FRPR", P * 1.0}};
+  for (const auto& [scale, total] : cases) {
     const std::string x2 = scale == "FRPR" ? "1." : "1.4142135";  // just inside the length sqrt(2)
     const fem::Model m = test::read_deck(
         bar_deck("LOAD = 2\n", "SPC1,1,123456,1\nPLOAD1,2,1,FZ," + scale + ",0.,10.," + x2 + ",10.\n", "1.,0.,1."));
