@@ -1,5 +1,7 @@
 // Reader tolerance for public decks: DEQATN equations (commas, '=' and blanks are not fields) are
-// skipped with their continuation lines and listed as unsupported, not a parse error.
+// skipped with their continuation lines and listed as unsupported, not a parse error; a free-field
+// line with more fields than one card line continues the card (pyNastran's models/ have such lines,
+// e.g. "CORD2C,1,0, 0.,0.,0., 0.,0.,1., 0.,1.,0." in sol_101_elements).
 #include <gtest/gtest.h>
 
 #include "nastran_test_util.hpp"
@@ -20,6 +22,20 @@ TEST(ReaderTolerance, DeqatnIsListedNotAParseError) {
   for (const auto& u : m.unsupported)
     if (u.name == "DEQATN") listed = true, EXPECT_EQ(u.count, 2u), EXPECT_EQ(u.first.line, 2u);
   EXPECT_TRUE(listed);
+}
+
+TEST(ReaderTolerance, LongFreeFieldLineContinuesTheCard) {
+  const fem::Model one = test::read_deck("CORD2C,1,0, 0.,0.,0., 0.,0.,1., 0.,1.,0.\nGRID,1,1,1.,90.,2.\n");
+  const fem::Model two = test::read_deck("CORD2C,1,0,0.,0.,0.,0.,0.,1.,\n,0.,1.,0.\nGRID,1,1,1.,90.,2.\n");
+  ASSERT_EQ(one.coords.size(), 1u);
+  for (int k = 0; k < 9; ++k) EXPECT_EQ(one.coords[0].abc[k], two.coords[0].abc[k]) << k;
+  EXPECT_LT((one.grids[0].x_basic - two.grids[0].x_basic).norm(), 1e-15);
+  EXPECT_NEAR(one.grids[0].x_basic.y(), 1.0, 1e-12);  // (r, theta, z) = (1, 90 deg, 2) about basic z
+  // 17 data fields: three card lines
+  const fem::Model pl = test::read_deck("GRID,1,,0.,0.,0.\nGRID,2,,1.,0.,0.\nGRID,3,,1.,1.,0.\nGRID,4,,0.,1.,0.\nGRID,5,,2.,0.,0.\n"
+                                        "RBE2,9,1,123456,2,3,4,5,,,,,,,,,,\n");
+  ASSERT_EQ(pl.rbe2.size(), 1u);
+  EXPECT_EQ(pl.rbe2[0].gm.size(), 4u);
 }
 
 }  // namespace

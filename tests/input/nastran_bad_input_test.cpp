@@ -135,7 +135,8 @@ TEST(NastranBadInput, BinaryGarbageNulBytesHugeLinesEmptyFiles) {
 
 TEST(NastranBadInput, MalformedLines) {
   EXPECT_TRUE(mentions(read_error("GRID,1,,0.,0.,0.\n=,*1,,*1.\n"), {"deck.bdf:2: got '='", "card name"}));
-  EXPECT_TRUE(mentions(read_error("GRID,1,,0.,0.,0.,,,,,,,,,1\n"), {"deck.bdf:1: free-field line has 15 fields; expected at most 10"}));
+  // a free-field line may hold several card lines (reader tolerance, issue 14), up to 32 of them
+  EXPECT_TRUE(mentions(read_error("GRID,1" + std::string(300, ',') + "\n"), {"deck.bdf:1: free-field line has 302 fields; expected at most 257"}));
   EXPECT_TRUE(mentions(read_error("SOL 1\nCEND\nBEGIN BULK\nGRID,1,,0.,0.,0.\nBEGIN SUPER=1\n"), {"deck.bdf:5", "BEGIN SUPER=1", "inside the bulk data"}));
   EXPECT_TRUE(mentions(read_error(base_deck() + "SPC1,1,123,4,THRU,2\n"), {"SPC1 1, field 6 (G): got integer '2' after THRU; expected an id greater than 4"}));
   EXPECT_TRUE(mentions(read_error(base_deck() + "SPC1,1,123,1,THRU,2000000000\n"), {"SPC1 1", "more than 10000000 ids"}));
