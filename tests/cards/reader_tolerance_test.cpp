@@ -30,7 +30,9 @@ TEST(ReaderTolerance, LongFreeFieldLineContinuesTheCard) {
   ASSERT_EQ(one.coords.size(), 1u);
   for (int k = 0; k < 9; ++k) EXPECT_EQ(one.coords[0].abc[k], two.coords[0].abc[k]) << k;
   EXPECT_LT((one.grids[0].x_basic - two.grids[0].x_basic).norm(), 1e-15);
-  EXPECT_NEAR(one.grids[0].x_basic.y(), 1.0, 1e-12);  // (r, theta, z) = (1, 90 deg, 2) about basic z
+  // x' = basic y (point C), z' = basic z: (r, theta, z) = (1, 90 deg, 2) is at y' = -basic x
+  EXPECT_NEAR(one.grids[0].x_basic.x(), -1.0, 1e-12);
+  EXPECT_NEAR(one.grids[0].x_basic.z(), 2.0, 1e-12);
   // 17 data fields: three card lines
   const fem::Model pl = test::read_deck("GRID,1,,0.,0.,0.\nGRID,2,,1.,0.,0.\nGRID,3,,1.,1.,0.\nGRID,4,,0.,1.,0.\nGRID,5,,2.,0.,0.\n"
                                         "RBE2,9,1,123456,2,3,4,5,,,,,,,,,,\n");
