@@ -49,7 +49,7 @@ fem::Model round_trip(const fem::Model& m) {
 
 TEST(Pload1, FixedEndForcesOfAHalfSpanUniformLoad) {
   const double q = -1500.0;
-  for (const std::string card : {std::string("PLOAD1,2,1,FZ,FR,0.,-1500.,0.5,-1500.\n"),
+  for (const std::string& card : {std::string("PLOAD1,2,1,FZ,FR,0.,-1500.,0.5,-1500.\n"),
                                  std::string("PLOAD1,2,1,FZE,LE,0.,-1500.,1.,-1500.\n")}) {
     const fem::Model m = test::read_deck(bar_deck("LOAD = 2\n", "SPC1,1,123456,1,2\n" + card));
     EXPECT_NEAR(load_at(m, 2, 1, 3), 13 * q * L / 32, 1e-12 * std::abs(q * L)) << card;

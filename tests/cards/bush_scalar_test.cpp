@@ -86,7 +86,7 @@ TEST(Cbush, OrientationAndOffsetAgainstHandCalculation) {
 TEST(Cbush, OffsetSystemGoAndCidGiveTheSameStiffness) {
   const double L = 2.0, F = 100.0, K2 = 2e4, K6 = 6e3;
   const double w = F / K2 + F * 0.25 * L * L / K6;
-  for (const std::string card : {std::string("CBUSH,7,70,1,2,0.,0.,1.,\n,,0,1.,0.,0.\n"),
+  for (const std::string& card : {std::string("CBUSH,7,70,1,2,0.,0.,1.,\n,,0,1.,0.,0.\n"),
                                  std::string("CBUSH,7,70,1,2,3\nGRID,3,,0.,0.,5.\n"),
                                  std::string("CBUSH,7,70,1,2,,,,9\nCORD2R,9,,0.,0.,0.,0.,-1.,0.,\n,1.,0.,0.\n")}) {
     const fem::Model m = test::read_deck(bush_cantilever(card));

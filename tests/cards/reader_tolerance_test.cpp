@@ -20,7 +20,11 @@ TEST(ReaderTolerance, DeqatnIsListedNotAParseError) {
   EXPECT_EQ(m.grids[1].id, 2);
   bool listed = false;
   for (const auto& u : m.unsupported)
-    if (u.name == "DEQATN") listed = true, EXPECT_EQ(u.count, 2u), EXPECT_EQ(u.first.line, 2u);
+    if (u.name == "DEQATN") {
+      listed = true;
+      EXPECT_EQ(u.count, 2u);
+      EXPECT_EQ(u.first.line, 2u);
+    }
   EXPECT_TRUE(listed);
 }
 
