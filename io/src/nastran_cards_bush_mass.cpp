@@ -105,8 +105,11 @@ void parse_conm1(const Card& card, ReaderState& st) {
       c.M(r, col) = c.M(col, r) = card.real_or(i, name.c_str(), 0.0);
     }
   for (int r = 0; r < 6; ++r)
-    if (c.M(r, r) < 0.0)
-      card.fail(3 + static_cast<std::size_t>(r * (r + 3) / 2), "Mii", card.got(3 + static_cast<std::size_t>(r * (r + 3) / 2)) + "; expected a diagonal term >= 0");
+    if (c.M(r, r) < 0.0) {
+      const std::size_t i_rr = 3 + static_cast<std::size_t>(r * (r + 3) / 2);  // Mrr follows the r terms of row r
+      const std::string name = "M" + std::to_string(r + 1) + std::to_string(r + 1);
+      card.fail(i_rr, name.c_str(), card.got(i_rr) + "; expected a diagonal term >= 0");
+    }
   c.ref = card.ref();
   st.model.conm1.push_back(c);
 }
@@ -155,7 +158,8 @@ void parse_pbush(const Card& card, ReaderState& st) {
   p.id = card.id(0, "PID");
   for (std::size_t line = 0; 8 * line < card.size(); ++line) {
     const std::size_t k = 8 * line + 1;
-    if (line > 0 && !card.blank(k - 1)) card.fail(k - 1, "", card.got(k - 1) + "; expected a blank field 2 on a continuation line");
+    if (line > 0 && !card.blank(k - 1))
+      card.fail(k - 1, "blank", card.got(k - 1) + "; expected a blank field 2 on a continuation line (the keyword K, B, GE, RCV or M goes in field 3)");
     const std::string key = card.text_or(k, "keyword", "");
     if (key.empty()) {
       for (std::size_t i = k; i < k + 7; ++i)

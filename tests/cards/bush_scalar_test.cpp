@@ -124,7 +124,7 @@ TEST(Cbush, MissingOrientationIsAnError) {
 
 // PBUSH B and GE are read (written back) and listed as approximated: statics and real modes ignore them.
 TEST(Cbush, DampingIsNoted) {
-  const fem::Model m = test::read_deck("PBUSH,70,K,1.,2.,3.,4.,5.,6.\n,B,0.1\n,GE,0.02\n");
+  const fem::Model m = test::read_deck("PBUSH,70,K,1.,2.,3.,4.,5.,6.\n,,B,0.1\n,,GE,0.02\n");
   ASSERT_EQ(m.bush_props.size(), 1u);
   EXPECT_EQ(m.bush_props[0].b[0], 0.1);
   EXPECT_EQ(m.bush_props[0].ge[0], 0.02);
@@ -134,6 +134,8 @@ TEST(Cbush, DampingIsNoted) {
   EXPECT_TRUE(noted);
   const fem::Model back = round_trip(m);
   EXPECT_EQ(back.bush_props[0].b[0], 0.1);
+  // the keyword of a continuation line is in field 3 (field 2 blank), as in the QRG
+  EXPECT_TRUE(test::mentions(test::read_error("PBUSH,70,K,1.\n,B,0.1\n"), {"deck.bdf:2", "PBUSH 70", "expected a blank field 2 on a continuation line"}));
   EXPECT_EQ(back.bush_props[0].ge[0], 0.02);
 }
 
@@ -183,7 +185,7 @@ TEST(ScalarElements, CmassOnGridComponents) {
 TEST(Conm1, RotatedMatrixAndFrequency) {
   const fem::Model m = test::read_deck(
       "GRID,1,,0.,0.,0.\nCORD2R,9,,0.,0.,0.,0.,0.,1.,\n,0.,1.,0.\n"
-      "CONM1,5,1,9,2.,0.5,3.,,,\n,4.,,,,5.,,,\n,,6.,,,,,7.\n");
+      "CONM1,5,1,9,2.,0.5,3.,,,\n,4.,,,,5.,,,\n,,6.,,,,,,7.\n");
   Eigen::Matrix<double, 6, 6> Mc = Eigen::Matrix<double, 6, 6>::Zero();
   Mc.diagonal() << 2, 3, 4, 5, 6, 7;
   Mc(0, 1) = Mc(1, 0) = 0.5;
