@@ -52,7 +52,9 @@ Eigen::Matrix<double, 12, 1> bar_line_load(const BarElement& e, const BarLineLoa
   const Eigen::Matrix3d R_BE = bar_axes(e);
   const double L = bar_length(e);
   const bool fraction = l.scale == BarLineLoad::Scale::FR || l.scale == BarLineLoad::Scale::FRPR;
-  const bool projected = l.scale == BarLineLoad::Scale::LEPR || l.scale == BarLineLoad::Scale::FRPR;
+  // a projection is defined for the basic directions only: LEPR/FRPR with an element-axis TYPE are LE/FR
+  // (MSC Nastran runs such decks, e.g. pyNastran's models/elements/static_elements.bdf)
+  const bool projected = (l.scale == BarLineLoad::Scale::LEPR || l.scale == BarLineLoad::Scale::FRPR) && l.type.size() == 2;
   const double x1 = fraction ? l.x1 * L : l.x1, x2 = fraction ? l.x2 * L : l.x2;
   // direction (element axes) and kind
   const bool element_axes = l.type.size() == 3;

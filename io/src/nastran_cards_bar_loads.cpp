@@ -22,9 +22,6 @@ void parse_pload1(const Card& card, ReaderState& st) {
   else if (scale == "LEPR") l.scale = fem::BarLineLoad::Scale::LEPR;
   else if (scale == "FRPR") l.scale = fem::BarLineLoad::Scale::FRPR;
   else card.fail(3, "SCALE", card.got(3) + "; expected LE, FR, LEPR or FRPR");
-  const bool projected = l.scale == fem::BarLineLoad::Scale::LEPR || l.scale == fem::BarLineLoad::Scale::FRPR;
-  if (projected && l.type.size() == 3)
-    card.fail(3, "SCALE", scale + " with TYPE " + l.type + "; expected LE or FR for a load in element axes (QRG PLOAD1)");
   l.x1 = card.real(4, "X1");
   l.p1 = card.real_or(5, "P1", 0.0);
   l.x2 = card.real_or(6, "X2", l.x1);

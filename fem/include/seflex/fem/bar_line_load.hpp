@@ -4,7 +4,8 @@
 // The load p(x) = P1 + (P2 - P1)(x - X1)/(X2 - X1) acts on x in [X1, X2] along the bar (x from
 // offset end A, x = X L for SCALE = FR/FRPR); X1 = X2 is a concentrated force or moment P1 at X1.
 // Direction: basic x, y, z (FX ... MZ) or element axes (FXE ... MZE). LEPR/FRPR: P per unit length
-// of the bar projected on the plane normal to the load direction, p_bar = P |e_load x e_x|.
+// of the bar projected on the plane normal to the load direction, p_bar = P |e_load x e_x| (basic
+// directions; with an element-axis TYPE, LEPR/FRPR are LE/FR).
 // Equivalent end loads (element axes) are the integrals of p against the bar's shape functions:
 // linear for axial force and torque; cubic Hermite for transverse forces,
 //   N1 = 1 - 3s^2 + 2s^3, N2 = L (s - 2s^2 + s^3), N3 = 3s^2 - 2s^3, N4 = L (s^3 - s^2), s = x / L,
