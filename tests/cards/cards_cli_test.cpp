@@ -65,8 +65,15 @@ TEST(CardsCli, InfoStaticModesReduceConvert) {
 
   const auto modes = test::run_seflex("modes cards.bdf --count 3", dir.path());
   EXPECT_EQ(modes.exit_code, 0) << modes.err;
-  const auto red = test::run_seflex("reduce cards.bdf --interface 1 --modes 2 -o b.se", dir.path());
-  EXPECT_EQ(red.exit_code, 0) << red.err;
+  // a free component for the Craig-Bampton reduction: CBUSH hinge at interface grid 1, CONM1, HAT bar, CMASS2
+  const auto free_deck = dir.write("free.bdf",
+                                   "SOL 103\nCEND\nBEGIN BULK\nGRID,1,,0.,0.,0.\nGRID,2,,2.,0.,0.\nGRID,3,,4.,0.,0.\n"
+                                   "PBUSH,70,K,1.e5,2.e4,3.e5,4.e5,5.e5,6.e3\nCBUSH,7,70,1,2,0.,0.,1.\n"
+                                   "CONM1,8,2,,2.,,2.,,,\n,2.,0.1,,,0.1,,,\n,,0.1,,,,,,0.1\nCMASS2,9,0.5,3,1\n"
+                                   "MAT1,1,7.e10,,0.3,2700.\nPBARL,20,1,,HAT\n,0.05,0.003,0.04,0.015\nCBAR,21,20,2,3,0.,0.,1.\n"
+                                   "CONM2,22,3,,1.,,,,,\n,0.01,,0.01,,,0.01\nENDDATA\n");
+  const auto red = test::run_seflex("reduce free.bdf --interface 1 --modes 2 -o b.se", dir.path());
+  EXPECT_EQ(red.exit_code, 0) << red.err << red.out;
 }
 
 }  // namespace
