@@ -7,7 +7,10 @@
 #include "seflex/common/error.hpp"
 #include "seflex/fem/dmig.hpp"
 #include "seflex/fem/element_bar.hpp"
+#include "seflex/fem/element_bush.hpp"
+#include "seflex/fem/element_conm1.hpp"
 #include "seflex/fem/element_conm2.hpp"
+#include "seflex/fem/element_scalar_mass.hpp"
 #include "seflex/fem/element_rod.hpp"
 #include "seflex/fem/element_shell_quad4.hpp"
 #include "seflex/fem/element_shell_tria3.hpp"
@@ -132,6 +135,19 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
     masses.push_back(make_conm2_element(model, c));
     mass_nodes.push_back(node_of_grid(model, c.grid, c.ref, "CONM2", c.id, "3 (G)"));
   }
+  std::vector<BushElement> bushes;
+  std::vector<std::int32_t> bush_nodes;  // two per CBUSH (the second = the first when grounded)
+  for (const Bush& b : model.bushes) {
+    bushes.push_back(make_bush_element(model, b));
+    const std::int32_t a = node_of_grid(model, b.ga, b.ref, "CBUSH", b.id, "4 (GA)");
+    const std::int32_t n[2] = {a, b.gb ? node_of_grid(model, b.gb, b.ref, "CBUSH", b.id, "5 (GB)") : a};
+    conn.add(n, n + (b.gb ? 2 : 1));
+    bush_nodes.insert(bush_nodes.end(), n, n + 2);
+  }
+  std::vector<std::int32_t> conm1_nodes;
+  for (const Conm1& c : model.conm1) conm1_nodes.push_back(node_of_grid(model, c.grid, c.ref, "CONM1", c.id, "3 (G)"));
+  std::vector<ScalarMassElement> scalar_masses;
+  for (const ScalarMass& s : model.scalar_masses) scalar_masses.push_back(make_scalar_mass_element(model, g.dofs, s));
   for (const Spring& s : model.springs) {
     springs.push_back(make_spring_element(model, g.dofs, s));
     const SpringElement& e = springs.back();
@@ -165,6 +181,17 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
       NodeMatrix<3> K = tria3_stiffness(trias[i], options.k6rot);
       to_cd<3>(&tria_nodes[3 * i], axes, K);
       pattern.scatter<3>(&tria_nodes[3 * i], K, g.K);
+    }
+    for (std::size_t i = 0; i < bushes.size(); ++i) {
+      NodeMatrix<2> K = bush_stiffness(bushes[i]);
+      if (bushes[i].grounded) {
+        NodeMatrix<1> K1 = K.topLeftCorner<6, 6>();
+        to_cd<1>(&bush_nodes[2 * i], axes, K1);
+        pattern.scatter<1>(&bush_nodes[2 * i], K1, g.K);
+      } else {
+        to_cd<2>(&bush_nodes[2 * i], axes, K);
+        pattern.scatter<2>(&bush_nodes[2 * i], K, g.K);
+      }
     }
     for (const SpringElement& s : springs) {
       detail::add_entry(g.K, s.dof1, s.dof1, s.k);
@@ -206,6 +233,28 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
       to_cd<1>(&mass_nodes[i], axes, M);
       pattern.scatter<1>(&mass_nodes[i], M, g.M);
     }
+  }
+  for (std::size_t i = 0; i < model.conm1.size(); ++i) {
+    NodeMatrix<1> M = options.wtmass * conm1_mass(model, model.conm1[i]);
+    to_cd<1>(&conm1_nodes[i], axes, M);
+    for (int c = 0; c < 6; ++c)
+      for (int r = 0; r < 6; ++r) detail::add_entry(g.M, 6 * conm1_nodes[i] + r, 6 * conm1_nodes[i] + c, M(r, c));
+  }
+  if (!scalar_masses.empty()) {  // CMASS may couple two nodes: outside the lumped (block-diagonal) pattern
+    std::vector<Eigen::Triplet<double>> t;
+    for (const ScalarMassElement& s : scalar_masses) {
+      const double m = options.wtmass * s.m;
+      t.emplace_back(s.dof1, s.dof1, m);
+      if (s.dof2 >= 0) {
+        t.emplace_back(s.dof2, s.dof2, m);
+        t.emplace_back(s.dof1, s.dof2, -m);
+        t.emplace_back(s.dof2, s.dof1, -m);
+      }
+    }
+    Eigen::SparseMatrix<double> Ms(g.M.rows(), g.M.cols());
+    Ms.setFromTriplets(t.begin(), t.end());
+    g.M = (g.M + Ms).eval();
+    g.M.makeCompressed();
   }
   add_direct_matrices(model, g.dofs, g.K, g.M);  // K2GG / M2GG (dmig.hpp)
   if (options.prune_zeros) {

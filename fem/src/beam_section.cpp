@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "beam_section_shapes.hpp"
 #include "seflex/common/error.hpp"
 
 namespace seflex::fem {
@@ -99,7 +100,14 @@ struct SectionType {
   int ndim;
   BeamSection (*compute)(const std::vector<double>&);
 };
-constexpr SectionType kTypes[] = {{"ROD", 1, rod}, {"TUBE", 2, tube}, {"BAR", 2, bar}, {"BOX", 4, box}, {"I", 6, i_section}};
+constexpr SectionType kTypes[] = {
+    {"ROD", 1, rod},  {"TUBE", 2, tube}, {"BAR", 2, bar}, {"BOX", 4, box}, {"I", 6, i_section},
+    {"TUBE2", 2, detail::tube2_section}, {"T", 4, detail::t_section}, {"T1", 4, detail::t1_section},
+    {"T2", 4, detail::t2_section}, {"L", 4, detail::l_section}, {"CHAN", 4, detail::chan_section},
+    {"CHAN1", 4, detail::chan1_section}, {"CHAN2", 4, detail::chan2_section}, {"Z", 4, detail::z_section},
+    {"I1", 4, detail::i1_section}, {"H", 4, detail::h_section}, {"CROSS", 4, detail::cross_section},
+    {"HAT", 4, detail::hat_section}, {"HAT1", 5, detail::hat1_section}, {"BOX1", 6, detail::box1_section},
+    {"DBOX", 10, detail::dbox_section}, {"HEXA", 3, detail::hexa_section}};
 
 }  // namespace
 

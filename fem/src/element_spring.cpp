@@ -6,7 +6,7 @@
 namespace seflex::fem {
 
 SpringElement make_spring_element(const Model& model, const DofMap& dofs, const Spring& s) {
-  const std::string card = s.inline_property ? "CELAS2" : "CELAS1";
+  const std::string card = s.scalar_points ? (s.inline_property ? "CELAS4" : "CELAS3") : (s.inline_property ? "CELAS2" : "CELAS1");
   SpringElement e;
   if (s.inline_property) {
     e.k = s.k;
@@ -29,8 +29,8 @@ SpringElement make_spring_element(const Model& model, const DofMap& dofs, const 
     }
     return *d;
   };
-  const char* f1 = "4-5 (G1, C1)";
-  const char* f2 = "6-7 (G2, C2)";
+  const char* f1 = s.scalar_points ? "4 (S1)" : "4-5 (G1, C1)";
+  const char* f2 = s.scalar_points ? "5 (S2)" : "6-7 (G2, C2)";
   e.dof1 = end(s.g1, s.c1, f1);
   e.dof2 = end(s.g2, s.c2, f2);
   if (e.dof1 < 0) std::swap(e.dof1, e.dof2);

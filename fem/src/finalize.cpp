@@ -35,6 +35,13 @@ struct IdSpace {
   void add(int id, const CardRef& ref, const char* card, const char* field, const char* what, const char* expected);
 };
 
+const char* spring_card(const Spring& s) {
+  return s.scalar_points ? (s.inline_property ? "CELAS4" : "CELAS3") : (s.inline_property ? "CELAS2" : "CELAS1");
+}
+const char* scalar_mass_card(const ScalarMass& s) {
+  return s.scalar_points ? (s.inline_property ? "CMASS4" : "CMASS3") : (s.inline_property ? "CMASS2" : "CMASS1");
+}
+
 class Finalizer {
  public:
   explicit Finalizer(Model& m) : m_(m) {}
@@ -128,18 +135,22 @@ class Finalizer {
     index(m_.rod_props, m_.rod_prop_index, "PROD", "property");
     index(m_.shell_props, m_.shell_prop_index, "PSHELL", "property");
     index(m_.spring_props, m_.spring_prop_index, "PELAS", "property");
+    index_unchecked(m_.bush_props, m_.bush_prop_index);
+    index_unchecked(m_.mass_props, m_.mass_prop_index);
     // one id space for all properties
     IdSpace seen;
     seen.model = &m_;
     auto add = [&](int id, const CardRef& ref, const char* card) {
       seen.add(id, ref, card, "field 2 (PID)", "property",
-               "expected unique property ids across PBAR, PBARL, PBEAM, PBEAML, PROD, PSHELL, PCOMP, PCOMPG, PELAS");
+               "expected unique property ids across PBAR, PBARL, PBEAM, PBEAML, PROD, PSHELL, PCOMP, PCOMPG, PELAS, PBUSH, PMASS");
     };
     for (const auto& p : m_.bar_props) add(p.id, p.ref, bar_prop_name(p));
     for (const auto& p : m_.rod_props) add(p.id, p.ref, "PROD");
     for (const auto& p : m_.shell_props) add(p.id, p.ref, "PSHELL");
     for (const auto& p : m_.composite_props) add(p.id, p.ref, p.global ? "PCOMPG" : "PCOMP");
     for (const auto& p : m_.spring_props) add(p.id, p.ref, "PELAS");
+    for (const auto& p : m_.bush_props) add(p.id, p.ref, "PBUSH");
+    for (const auto& p : m_.mass_props) add(p.id, p.ref, "PMASS");
     index_unchecked(m_.composite_props, m_.composite_prop_index);
     for (const auto& p : m_.bar_props) need_material(p.mid, p.ref, bar_prop_name(p), p.id, "field 3 (MID)");
     for (const auto& p : m_.rod_props) need_material(p.mid, p.ref, "PROD", p.id, "field 3 (MID)");
@@ -175,7 +186,8 @@ class Finalizer {
   /// RBE2, RBAR, RBE3.
   void index_elements() {
     const std::size_t total = m_.bars.size() + m_.rods.size() + m_.shells.size() + m_.conm2.size() +
-                              m_.springs.size() + m_.rbe2.size() + m_.rbars.size() + m_.rbe3.size();
+                              m_.springs.size() + m_.rbe2.size() + m_.rbars.size() + m_.rbe3.size() +
+                              m_.bushes.size() + m_.scalar_masses.size() + m_.conm1.size();
     IdSpace seen;
     seen.model = &m_;
     seen.map.reserve(total);
@@ -186,7 +198,10 @@ class Finalizer {
     for (const auto& e : m_.rods) add(e.id, e.ref, e.inline_property ? "CONROD" : "CROD");
     for (const auto& e : m_.shells) add(e.id, e.ref, e.nnode == 4 ? "CQUAD4" : "CTRIA3");
     for (const auto& e : m_.conm2) add(e.id, e.ref, "CONM2");
-    for (const auto& e : m_.springs) add(e.id, e.ref, e.inline_property ? "CELAS2" : "CELAS1");
+    for (const auto& e : m_.springs) add(e.id, e.ref, spring_card(e));
+    for (const auto& e : m_.bushes) add(e.id, e.ref, "CBUSH");
+    for (const auto& e : m_.scalar_masses) add(e.id, e.ref, scalar_mass_card(e));
+    for (const auto& e : m_.conm1) add(e.id, e.ref, "CONM1");
     for (const auto& e : m_.rbe2) add(e.id, e.ref, "RBE2");
     for (const auto& e : m_.rbars) add(e.id, e.ref, "RBAR");
     for (const auto& e : m_.rbe3) add(e.id, e.ref, "RBE3");
@@ -251,6 +266,22 @@ class Finalizer {
                                      "; expected 0 or blank for a scalar point");
   }
 
+  /// Ends of CELAS1-4 / CMASS1-4: grid components or scalar points (CELAS3/4, CMASS3/4: scalar points only).
+  template <class E>
+  void check_scalar_ends(const E& s, const char* card) {
+    const int g[2] = {s.g1, s.g2}, c[2] = {s.c1, s.c2};
+    const char* fields[2][2] = {{"field 4 (G1)", "field 6 (G2)"}, {"field 4 (S1)", "field 5 (S2)"}};
+    for (int k = 0; k < 2; ++k) {
+      if (g[k] == 0) continue;
+      const char* field = fields[s.scalar_points ? 1 : 0][k];
+      if (s.scalar_points && !m_.spoint_index.count(g[k]))
+        fail(s.ref, card, s.id, field, "references point " + std::to_string(g[k]) + ", which is not an SPOINT; expected a scalar point" +
+                                           (is_grid(g[k]) ? " (it is a GRID: use " + std::string(card, 5) + "1 or " + std::string(card, 5) + "2)"
+                                                          : std::string()));
+      need_dof(g[k], c[k], false, s.ref, card, s.id, field);
+    }
+  }
+
   void check_elements() {
     for (const auto& b : m_.bars) {
       const char* card = b.is_beam ? "CBEAM" : "CBAR";
@@ -298,11 +329,29 @@ class Finalizer {
       if (c.cid > 0) need_coord(c.cid, c.ref, "CONM2", c.id, "field 4 (CID)");
     }
     for (const auto& s : m_.springs) {
-      const char* card = s.inline_property ? "CELAS2" : "CELAS1";
-      if (s.g1 != 0) need_dof(s.g1, s.c1, false, s.ref, card, s.id, "field 4 (G1)");
-      if (s.g2 != 0) need_dof(s.g2, s.c2, false, s.ref, card, s.id, "field 6 (G2)");
+      const char* card = spring_card(s);
+      check_scalar_ends(s, card);
       if (!s.inline_property && !m_.spring_prop_index.count(s.pid))
         fail(s.ref, card, s.id, "field 3 (PID)", "references property " + std::to_string(s.pid) + undefined(s.pid) + "; expected the id of a PELAS card");
+    }
+    for (const auto& s : m_.scalar_masses) {
+      const char* card = scalar_mass_card(s);
+      check_scalar_ends(s, card);
+      if (!s.inline_property && !m_.mass_prop_index.count(s.pid))
+        fail(s.ref, card, s.id, "field 3 (PID)", "references property " + std::to_string(s.pid) + undefined(s.pid) + "; expected the id of a PMASS card");
+    }
+    for (const auto& b : m_.bushes) {
+      need_grid(b.ga, b.ref, "CBUSH", b.id, "field 4 (GA)");
+      if (b.gb != 0) need_grid(b.gb, b.ref, "CBUSH", b.id, "field 5 (GB)");
+      if (b.has_g0) need_grid(b.g0, b.ref, "CBUSH", b.id, "field 6 (GO)");
+      if (b.cid > 0) need_coord(b.cid, b.ref, "CBUSH", b.id, "field 9 (CID)");
+      if (b.ocid > 0) need_coord(b.ocid, b.ref, "CBUSH", b.id, "field 3 of continuation 1 (OCID)");
+      if (!m_.bush_prop_index.count(b.pid))
+        fail(b.ref, "CBUSH", b.id, "field 3 (PID)", "references property " + std::to_string(b.pid) + undefined(b.pid) + "; expected the id of a PBUSH card");
+    }
+    for (const auto& c : m_.conm1) {
+      need_grid(c.grid, c.ref, "CONM1", c.id, "field 3 (G)");
+      if (c.cid > 0) need_coord(c.cid, c.ref, "CONM1", c.id, "field 4 (CID)");
     }
     for (const auto& r : m_.rbe2) {
       need_grid(r.gn, r.ref, "RBE2", r.id, "field 3 (GN)");

@@ -8,6 +8,8 @@
 #include "model_lookup.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/fem/assembly.hpp"
+#include "seflex/fem/bar_line_load.hpp"
+#include "seflex/fem/enforced_motion.hpp"
 #include "seflex/fem/finalize.hpp"
 
 namespace seflex::fem {
@@ -32,7 +34,10 @@ class LoadBuilder {
       if (g.sid == sid) found = true, gravity(g, scale);
     for (const RotationalLoad& r : m_.rotational_loads)
       if (r.sid == sid) found = true, rotation(r, scale);
-    return found;
+    for (const BarLineLoad& l : m_.bar_line_loads)
+      if (l.sid == sid) found = true, bar_load(l, scale);
+    // SPCD cards make a load set of enforced displacements (enforced_motion.hpp): no load here
+    return found || has_enforced_motion_set(m_, sid);
   }
 
   /// p += M a for the accumulated grid accelerations of GRAV and RFORCE (one product for all).
@@ -58,6 +63,14 @@ class LoadBuilder {
     const std::uint32_t gi = detail::grid_index(m_, l.grid, l.ref, card, l.sid, "3 (G)");
     const Eigen::Matrix3d A_cid = detail::axes_at(m_, l.cid, m_.grids[gi].x_basic, l.ref, card, l.sid, "4 (CID)");
     add_grid(gi, l.kind == PointLoad::Kind::Force ? 1 : 4, A_cid * (l.scale * l.n), scale, p_);
+  }
+
+  void bar_load(const BarLineLoad& l, double scale) {
+    const BarLineLoadAtGrids b = bar_line_load(m_, l);
+    add_grid(b.grid_A, 1, b.f.segment<3>(0), scale, p_);
+    add_grid(b.grid_A, 4, b.f.segment<3>(3), scale, p_);
+    add_grid(b.grid_B, 1, b.f.segment<3>(6), scale, p_);
+    add_grid(b.grid_B, 4, b.f.segment<3>(9), scale, p_);
   }
 
   // -------------------------------------------------------------------------------------------

@@ -8,6 +8,7 @@
 #include "seflex/fem/finalize.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/element_bar.hpp"
+#include "seflex/fem/element_conm1.hpp"
 #include "seflex/fem/element_conm2.hpp"
 #include "seflex/fem/element_rod.hpp"
 #include "seflex/fem/element_shell_quad4.hpp"
@@ -87,6 +88,10 @@ MassProperties mass_properties(const Model& model, std::optional<int> reference_
   for (const Conm2& c : model.conm2) {
     const Conm2Element e = make_conm2_element(model, c);
     add_element<1>({e.x_grid}, ref, conm2_mass(e), M0);
+  }
+  for (const Conm1& c : model.conm1) {
+    const Grid& g = model.grids[detail::grid_index(model, c.grid, c.ref, "CONM1", c.id, "3 (G)")];
+    add_element<1>({g.x_basic}, ref, conm1_mass(model, c), M0);
   }
   M0 = 0.5 * (M0 + M0.transpose()).eval();
   mp.M0 = M0;

@@ -53,6 +53,9 @@ constexpr CardType kCardTypes[] = {
     {"RBAR", parse_rbar},       {"RBE3", parse_rbe3},       {"MAT2", parse_mat2},      {"MAT8", parse_mat8},
     {"PCOMP", parse_pcomp},     {"PCOMPG", parse_pcompg},   {"PLOAD2", parse_pload2},  {"GRAV", parse_grav},
     {"RFORCE", parse_rforce},   {"TEMP", parse_temp},       {"TEMPD", parse_tempd},    {"TEMPRB", parse_temprb},
+    {"CBUSH", parse_cbush},     {"PBUSH", parse_pbush},     {"CELAS3", parse_celas3},  {"CELAS4", parse_celas4},
+    {"CMASS1", parse_cmass1},   {"CMASS2", parse_cmass2},   {"CMASS3", parse_cmass1},  {"CMASS4", parse_cmass2},
+    {"PMASS", parse_pmass},     {"CONM1", parse_conm1},     {"PLOAD1", parse_pload1},  {"SPCD", parse_spcd},
 };
 constexpr std::size_t kNumCardTypes = sizeof(kCardTypes) / sizeof(kCardTypes[0]);
 
@@ -278,18 +281,31 @@ class DeckReader {
   void split_line(const Source& src, const Line& line, bool first, std::string_view& field1, std::string_view& marker,
                   std::size_t& n) {
     if (line.free) {
-      std::array<std::string_view, 12> f;
-      const std::size_t count = split_free(line.text, f.data(), f.size());
+      std::array<std::string_view, 12> short_line;
+      const std::size_t count = split_free(line.text, short_line.data(), short_line.size());
+      const std::string_view* f = short_line.data();
+      if (count > short_line.size() && count <= kMaxFreeFields) {  // rare: split again into the long buffer
+        long_line_.resize(count);
+        split_free(line.text, long_line_.data(), count);
+        f = long_line_.data();
+      }
       field1 = f[0];
       // large field: "GRID*," on the first line, "*...," on a continuation
       const bool large = first ? (!field1.empty() && field1.back() == '*') : (!field1.empty() && field1[0] == '*');
       n = large ? 4 : 8;
-      if (count > n + 2)
+      overflow_.clear();
+      if (count > n + 2 && (large || count > kMaxFreeFields))
         throw InputError(location(src.name, line.number) + ": free-field line has " + std::to_string(count) +
-                         " fields; expected at most " + std::to_string(n + 2) + " (field 1, " + std::to_string(n) +
-                         " data fields, a continuation marker); continue on a new line starting with '+' or ','");
+                         " fields; expected at most " + std::to_string(large ? n + 2 : kMaxFreeFields) +
+                         " (field 1, the data fields, a continuation marker); continue on a new line starting with '+' or ','");
       for (std::size_t k = 0; k < n; ++k) fields_[k] = k + 1 < count ? f[k + 1] : std::string_view();
       marker = count == n + 2 ? f[n + 1] : std::string_view();
+      // A small-field free line with more fields than one card line (pyNastran and Nastran read it):
+      // every field after field 1 is data, continued 8 per card line, no continuation markers.
+      if (count > n + 2) {
+        overflow_.assign(f + 1 + n, f + count);
+        marker = std::string_view();
+      }
     } else {
       const std::string_view f1 = trim(line.text.substr(0, std::min<std::size_t>(8, line.text.size())));
       const bool large = first ? (!f1.empty() && f1.back() == '*') : line.text[0] == '*';
@@ -298,7 +314,37 @@ class DeckReader {
     }
   }
 
+  /// DEQATN: its equations are not fields (commas, '=' and blanks anywhere): the card and its
+  /// continuation lines (field 1 blank, '+' or '*') are skipped and listed as unsupported.
+  void skip_equation_card(const Source& src, LineCursor& cursor, const Line& line) {
+    state_.note_unsupported("DEQATN", {src.index, line.number});
+    Line next;
+    while (cursor.next(next)) {
+      if (next.blank()) continue;
+      const char c = next.text[0];
+      if (c != ' ' && c != '\t' && c != '+' && c != '*' && c != ',') {
+        cursor.push_back(next);
+        break;
+      }
+    }
+  }
+
+  /// The data fields of the line split last (fields_, then any overflow_ 8 per card line).
+  void append_line(std::size_t n, std::uint32_t number) {
+    card_.append(fields_.data(), n, number);
+    for (std::size_t k = 0; k < overflow_.size(); k += 8) {
+      std::array<std::string_view, 8> chunk{};
+      for (std::size_t j = 0; j < 8 && k + j < overflow_.size(); ++j) chunk[j] = overflow_[k + j];
+      card_.append(chunk.data(), 8, number);
+    }
+  }
+
   void bulk_card(const Source& src, LineCursor& cursor, const Line& line) {
+    if (starts_with_word(line.text, "DEQATN") || (line.text.size() > 6 && starts_with_word(line.text.substr(0, 6), "DEQATN") &&
+                                                  (line.text[6] == '*' || line.text[6] == '\t'))) {
+      skip_equation_card(src, cursor, line);
+      return;
+    }
     if (is_continuation(line))
       throw InputError(location(src.name, line.number) + ": continuation line " +
                        quote_field(trim(line.text).substr(0, 16)) +
@@ -330,7 +376,7 @@ class DeckReader {
                        " (or before the first comma)");
     }
     card_.reset(uname, &src.name, src.index, line.number);
-    card_.append(fields_.data(), n, line.number);
+    append_line(n, line.number);
     Line next;
     while (cursor.next(next)) {
       if (next.blank()) continue;
@@ -345,7 +391,7 @@ class DeckReader {
         throw InputError(location(src.name, next.number) + ": continuation " + quote_field(cont1) + " does not match " +
                          quote_field(marker) + " in field 10 of the line before (" + card_.label() +
                          "); expected matching continuation markers, or blank ones");
-      card_.append(fields_.data(), n, next.number);
+      append_line(n, next.number);
       marker = cont_marker;
     }
     dispatch();
@@ -403,6 +449,9 @@ class DeckReader {
   bool executive_statements_ = false;
   Card card_;
   std::array<std::string_view, 8> fields_{};
+  static constexpr std::size_t kMaxFreeFields = 1 + 8 * 32;  ///< field 1 and 32 card lines of data
+  std::vector<std::string_view> overflow_;                  ///< data beyond one card line of a long free-field line
+  std::vector<std::string_view> long_line_;                 ///< fields of a free-field line longer than 12
   std::array<std::size_t, kNumCardTypes> counts_{};
   std::string last_name_;
   int last_type_ = -1;

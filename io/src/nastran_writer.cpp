@@ -222,7 +222,10 @@ void write_elements(const fem::Model& m, CardWriter& w) {
   }
   for (const auto& s : m.shells) write_shell(w, s);
   for (const auto& s : m.springs) {
-    if (s.inline_property)
+    if (s.scalar_points)
+      s.inline_property ? w.start("CELAS4").i(s.id).r(s.k).id0(s.g1).id0(s.g2).end()
+                        : w.start("CELAS3").i(s.id).i(s.pid).id0(s.g1).id0(s.g2).end();
+    else if (s.inline_property)
       w.start("CELAS2").i(s.id).r(s.k).id0(s.g1).i(s.c1).id0(s.g2).i(s.c2).r(s.ge).r(s.s).end();
     else
       w.start("CELAS1").i(s.id).i(s.pid).id0(s.g1).i(s.c1).id0(s.g2).i(s.c2).end();
@@ -311,6 +314,61 @@ void write_constraints_and_loads(const fem::Model& m, CardWriter& w) {
     for (const auto& [s, id] : l.terms) w.r(s).i(id);
     w.end();
   }
+}
+
+/// PBUSH, PMASS, CBUSH, CMASS1-4, CONM1, PLOAD1, SPCD.
+void write_bush_mass_cards(const fem::Model& m, CardWriter& w) {
+  for (const auto& p : m.bush_props) {
+    w.start("PBUSH").i(p.id).t("K");
+    for (const double k : p.k) w.r(k);
+    if (p.has_b) {
+      w.blank().t("B");
+      for (const double b : p.b) w.r(b);
+    }
+    if (p.has_ge) {
+      w.blank().t("GE");
+      for (const double g : p.ge) w.r(g);
+    }
+    w.end();
+  }
+  for (std::size_t k = 0; k < m.mass_props.size(); k += 4) {
+    w.start("PMASS");
+    for (std::size_t j = k; j < m.mass_props.size() && j < k + 4; ++j) w.i(m.mass_props[j].id).r(m.mass_props[j].m);
+    w.end();
+  }
+  for (const auto& b : m.bushes) {
+    w.start("CBUSH").i(b.id).i(b.pid).i(b.ga).id0(b.gb);
+    if (b.has_g0)
+      w.i(b.g0).blank(2);
+    else if (b.has_v)
+      w.r(b.v.x()).r(b.v.y()).r(b.v.z());
+    else
+      w.blank(3);
+    b.cid >= 0 ? w.i(b.cid) : w.blank();
+    w.r(b.s).i(b.ocid);
+    if (b.ocid >= 0) w.r(b.s_ocid.x()).r(b.s_ocid.y()).r(b.s_ocid.z());
+    w.end();
+  }
+  for (const auto& s : m.scalar_masses) {
+    const char* name = s.scalar_points ? (s.inline_property ? "CMASS4" : "CMASS3") : (s.inline_property ? "CMASS2" : "CMASS1");
+    w.start(name).i(s.id);
+    s.inline_property ? w.r(s.m) : w.i(s.pid);
+    if (s.scalar_points)
+      w.id0(s.g1).id0(s.g2);
+    else
+      w.id0(s.g1).i(s.c1).id0(s.g2).i(s.c2);
+    w.end();
+  }
+  for (const auto& c : m.conm1) {
+    w.start("CONM1").i(c.id).i(c.grid).i(c.cid);
+    for (int r = 0; r < 6; ++r)
+      for (int col = 0; col <= r; ++col) w.r(c.M(r, col));
+    w.end();
+  }
+  static const char* scales[] = {"LE", "FR", "LEPR", "FRPR"};
+  for (const auto& l : m.bar_line_loads)
+    w.start("PLOAD1").i(l.sid).i(l.element).t(l.type).t(scales[static_cast<int>(l.scale)]).r(l.x1).r(l.p1).r(l.x2).r(l.p2).end();
+  for (const auto& e : m.enforced_motions) w.start("SPCD").i(e.sid).i(e.grid).components(e.c, false).r(e.d).end();
 }
 
 void write_solution_cards(const fem::Model& m, CardWriter& w) {
@@ -414,6 +472,7 @@ void write_nastran(const fem::Model& m, std::ostream& stream, const NastranWrite
   out.clear();
   write_elements(m, w);
   write_constraints_and_loads(m, w);
+  write_bush_mass_cards(m, w);
   write_solution_cards(m, w);
   out += "ENDDATA\n";
   stream << out;

@@ -84,7 +84,9 @@ void write_mode_shapes_vtu(const std::filesystem::path& path, const fem::Model& 
   for (const auto& b : model.bars) cells.add(VTK_LINE, {b.ga, b.gb}, b.id, kBar);
   for (const auto& r : model.rods) cells.add(VTK_LINE, {r.ga, r.gb}, r.id, kRod);
   for (const auto& s : model.springs)
-    if (s.g2 != 0) cells.add(VTK_LINE, {s.g1, s.g2}, s.id, kSpring);
+    if (s.g2 != 0 && !s.scalar_points) cells.add(VTK_LINE, {s.g1, s.g2}, s.id, kSpring);
+  for (const auto& b : model.bushes)
+    if (b.gb != 0) cells.add(VTK_LINE, {b.ga, b.gb}, b.id, kSpring);
   for (const auto& r : model.rbe2)
     for (int gm : r.gm) cells.add(VTK_LINE, {r.gn, gm}, r.id, kRbe2);
   for (const auto& r : model.rbars) cells.add(VTK_LINE, {r.ga, r.gb}, r.id, kRbar);

@@ -15,6 +15,7 @@ DrillingInertia drilling_inertia(const fem::Model& m) {
   for (const auto& b : m.bars) other.insert({b.ga, b.gb});
   for (const auto& r : m.rods) other.insert({r.ga, r.gb});
   for (const auto& s : m.springs) other.insert({s.g1, s.g2});
+  for (const auto& b : m.bushes) other.insert({b.ga, b.gb});
   for (const auto& r : m.rbe2) {
     other.insert(r.gn);
     other.insert(r.gm.begin(), r.gm.end());

@@ -4,6 +4,8 @@
 #include "seflex/common/error.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/constraints.hpp"
+#include "seflex/fem/enforced_motion.hpp"
+#include "seflex/fem/finalize.hpp"
 #include "seflex/fem/loads.hpp"
 #include "seflex/reduction/card_usage.hpp"
 #include "matrix_norms.hpp"
@@ -24,6 +26,13 @@ std::vector<Eigen::Index> suport_dofs(const fem::Model& model, const fem::DofMap
       if ((e.c >> (c - 1)) & 1u) out.push_back(dofs.grid_dof(model.grid_index.at(e.grid), c));
   }
   return out;
+}
+
+/// The first SPCD card naming point `id` (for messages).
+fem::CardRef spcd_ref(const fem::Model& model, int id) {
+  for (const fem::EnforcedMotion& e : model.enforced_motions)
+    if (e.grid == id) return e.ref;
+  return {};
 }
 
 std::vector<StaticSolution> solve(const fem::Model& model, const std::vector<CaseSelection>& cases,
@@ -64,14 +73,28 @@ std::vector<StaticSolution> solve(const fem::Model& model, const std::vector<Cas
       s.p_g = s.selection.load ? fem::load_vector(model, g.dofs, *s.selection.load, &g.M)
                                : Eigen::VectorXd::Zero(g.dofs.size());
       if (s.selection.temperature) s.p_g += fem::thermal_load_vector(model, g.dofs, *s.selection.temperature);
-      Eigen::VectorXd u_f = fem::reduce_load(c, g, s.p_g);
+      // SPCD of the LOAD set: enforced values on dofs of the SPC set (enforced_motion.hpp)
+      Eigen::VectorXd u_g0 = c.u_g0;
+      if (s.selection.load)
+        for (const auto& [d, value] : fem::enforced_motion_dofs(model, g.dofs, *s.selection.load)) {
+          if (c.status[static_cast<std::size_t>(d)] != fem::DofStatus::Spc) {
+            const fem::DofLabel lb = fem::dof_label(model, g.dofs, d);
+            throw InputError(fem::where(model, spcd_ref(model, lb.point_id)),
+                             "SPCD: grid " + std::to_string(lb.point_id) + " component " + std::to_string(lb.component) +
+                                 " is not in the subcase's SPC set" +
+                                 (s.selection.spc ? " " + std::to_string(*s.selection.spc) : std::string(" (none selected)")) +
+                                 "; expected every SPCD component to be constrained by an SPC/SPC1 of the selected set (QRG SPCD)");
+          }
+          u_g0[d] = value;
+        }
+      Eigen::VectorXd u_f = c.T.transpose() * (u_g0.isZero(0.0) ? s.p_g : Eigen::VectorXd(s.p_g - g.K * u_g0));
       if (factor) {
         const Eigen::VectorXd p_f = u_f;
         factor->solve_in_place(u_f);
         const double scale = norm_K * u_f.norm() + p_f.norm();
         s.backward_error = scale > 0 ? (c.K_ff * u_f - p_f).norm() / scale : 0.0;
       }
-      s.u_g = fem::expand(c, u_f);
+      s.u_g = c.T * u_f + u_g0;
       // Forces of single-point constraint: K u - p on the constrained dofs.
       const Eigen::VectorXd r = g.K * s.u_g - s.p_g;
       s.q_g = Eigen::VectorXd::Zero(r.size());

@@ -135,7 +135,8 @@ TEST(NastranBadInput, BinaryGarbageNulBytesHugeLinesEmptyFiles) {
 
 TEST(NastranBadInput, MalformedLines) {
   EXPECT_TRUE(mentions(read_error("GRID,1,,0.,0.,0.\n=,*1,,*1.\n"), {"deck.bdf:2: got '='", "card name"}));
-  EXPECT_TRUE(mentions(read_error("GRID,1,,0.,0.,0.,,,,,,,,,1\n"), {"deck.bdf:1: free-field line has 15 fields; expected at most 10"}));
+  // a free-field line may hold several card lines (reader tolerance, issue 14), up to 32 of them
+  EXPECT_TRUE(mentions(read_error("GRID,1" + std::string(300, ',') + "\n"), {"deck.bdf:1: free-field line has 302 fields; expected at most 257"}));
   EXPECT_TRUE(mentions(read_error("SOL 1\nCEND\nBEGIN BULK\nGRID,1,,0.,0.,0.\nBEGIN SUPER=1\n"), {"deck.bdf:5", "BEGIN SUPER=1", "inside the bulk data"}));
   EXPECT_TRUE(mentions(read_error(base_deck() + "SPC1,1,123,4,THRU,2\n"), {"SPC1 1, field 6 (G): got integer '2' after THRU; expected an id greater than 4"}));
   EXPECT_TRUE(mentions(read_error(base_deck() + "SPC1,1,123,1,THRU,2000000000\n"), {"SPC1 1", "more than 10000000 ids"}));
@@ -146,7 +147,7 @@ TEST(NastranBadInput, InconsistentCards) {
   const std::string d = base_deck();
   EXPECT_TRUE(mentions(read_error("MAT1,7,,,0.3\n"), {"MAT1 7, field 3 (E): blank, and G is blank too; expected E or G"}));
   EXPECT_TRUE(mentions(read_error("MAT1,7,2.1+11,,0.7\n"), {"MAT1 7, field 5 (NU): got real '0.7'; expected -1 < NU <= 0.5"}));
-  EXPECT_TRUE(mentions(read_error(d + "PBARL,5,1,,CHAN\n,1.,1.,.1,.1\n"), {"PBARL 5, field 5 (TYPE): got text 'CHAN'", "ROD, TUBE, BAR, BOX, I"}));
+  EXPECT_TRUE(mentions(read_error(d + "PBARL,5,1,,NACA\n,1.,1.,.1,.1\n"), {"PBARL 5, field 5 (TYPE): got text 'NACA'", "ROD, TUBE, BAR, BOX, I, TUBE2, T, T1"}));
   EXPECT_TRUE(mentions(read_error(d + "PBARL,5,1,,BOX\n,1.,1.,.6,.1\n"), {"deck.bdf:8: PBARL 5, field 2 (DIM1): BOX section", "DIM3 = 0.6"}));
   EXPECT_TRUE(mentions(read_error(d + "PBARL,5,1,,TUBE\n,1.,1.\n"), {"TUBE section: DIM2 (inner radius 1)"}));
   EXPECT_TRUE(mentions(read_error(d + "CBAR,9,9,1,2,0.,0.,0.\nPBAR,9,1,1.\n"), {"CBAR 9, field 6 (X1): the orientation vector (X1, X2, X3) is zero"}));

@@ -85,7 +85,8 @@ TEST(BeamSection, IFromItsThreePlates) {
 }
 
 TEST(BeamSection, RejectsWhatIsNoSection) {
-  EXPECT_THROW(beam_section("CHAN", {1, 1, .1, .1}), seflex::InputError);
+  EXPECT_THROW(beam_section("NACA", {1, 1, .1, .1}), seflex::InputError);  // not in the QRG standard library
+  EXPECT_THROW(beam_section("CHAN", {1, 1, 1.2, .1}), seflex::InputError);  // web thicker than the channel is wide
   EXPECT_THROW(beam_section("BAR", {1}), seflex::InputError);
   EXPECT_THROW(beam_section("BAR", {1, 0}), seflex::InputError);
   EXPECT_THROW(beam_section("BAR", {1, std::nan("")}), seflex::InputError);
@@ -93,5 +94,7 @@ TEST(BeamSection, RejectsWhatIsNoSection) {
   EXPECT_THROW(beam_section("BOX", {1, 1, .5, .1}), seflex::InputError);
   EXPECT_THROW(beam_section("I", {1, 1, 1, .1, .6, .5}), seflex::InputError);
   EXPECT_EQ(seflex::fem::section_dimension_count("I"), 6);
-  EXPECT_EQ(seflex::fem::section_dimension_count("Z"), 0);
+  EXPECT_EQ(seflex::fem::section_dimension_count("Z"), 4);
+  EXPECT_EQ(seflex::fem::section_dimension_count("DBOX"), 10);
+  EXPECT_EQ(seflex::fem::section_dimension_count("NACA"), 0);
 }

@@ -1,5 +1,5 @@
 #pragma once
-// CELAS1 / CELAS2: scalar spring k between two g-set dofs (grid components in the grids'
+// CELAS1 / CELAS2 (grids or scalar points), CELAS3 / CELAS4 (scalar points): scalar spring k between two g-set dofs (grid components in the grids'
 // displacement systems, or scalar points); grounded when the second point is blank:
 //   K = k [1 -1; -1 1] on (dof1, dof2), or k on dof1 alone.
 #include <Eigen/Core>
@@ -14,7 +14,7 @@ struct SpringElement {
   Eigen::Index dof1 = -1, dof2 = -1;  ///< g-set dofs; -1 = grounded end
 };
 
-/// Resolve a CELAS1 (PELAS) or CELAS2; throws InputError for undefined points, bad components,
+/// Resolve a CELAS1/CELAS3 (PELAS) or CELAS2/CELAS4; throws InputError for undefined points, bad components,
 /// a spring with both ends grounded, or both ends on the same dof.
 SpringElement make_spring_element(const Model& model, const DofMap& dofs, const Spring& s);
 

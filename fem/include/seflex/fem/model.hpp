@@ -227,6 +227,57 @@ struct Spring {
   bool inline_property = false;
   double k = 0, ge = 0, s = 0;                  ///< CELAS2 only
   int g1 = 0, c1 = 0, g2 = 0, c2 = 0;           ///< components 0..6 (0 for scalar points)
+  bool scalar_points = false;                   ///< CELAS3 (pid) / CELAS4 (inline k): S1 S2 scalar points only
+  CardRef ref;
+};
+
+/// PBUSH: stiffness K1-K6 in the CBUSH element axes (T1 T2 T3 R1 R2 R3; blank = 0). B (damping),
+/// GE, RCV and M are read and kept for `seflex convert`; statics and modes do not use them.
+struct BushProperty {
+  int id = 0;
+  std::array<double, 6> k{}, b{}, ge{};
+  bool has_b = false, has_ge = false;
+  CardRef ref;
+};
+
+/// CBUSH: generalized spring between GA and GB (gb = 0: grounded) at the point S of the line GA-GB
+/// (OCID = -1) or at GA + (S1, S2, S3) in system OCID. Element axes: system CID (cid >= 0) or x along
+/// GA -> GB, y in the plane of x and the orientation vector (GO or X1-X3 in GA's CD system).
+struct Bush {
+  int id = 0, pid = 0, ga = 0, gb = 0;
+  bool has_g0 = false, has_v = false;
+  int g0 = 0;
+  Eigen::Vector3d v = Eigen::Vector3d::Zero();
+  int cid = -1;                                 ///< -1 = blank
+  double s = 0.5;
+  int ocid = -1;
+  Eigen::Vector3d s_ocid = Eigen::Vector3d::Zero();  ///< S1 S2 S3 (OCID >= 0)
+  CardRef ref;
+};
+
+/// PMASS: scalar mass value of CMASS1/CMASS3.
+struct MassProperty {
+  int id = 0;
+  double m = 0;
+  CardRef ref;
+};
+
+/// CMASS1 (pid -> PMASS), CMASS2 (inline m): grid components or scalar points; CMASS3 (pid), CMASS4
+/// (inline m): scalar points only. g2 = 0 means grounded:
+///   M = m [1 -1; -1 1] on (dof1, dof2), or m on dof1 alone.
+struct ScalarMass {
+  int id = 0, pid = 0;
+  bool inline_property = false;
+  bool scalar_points = false;                   ///< CMASS3 / CMASS4
+  double m = 0;                                 ///< CMASS2/CMASS4 only
+  int g1 = 0, c1 = 0, g2 = 0, c2 = 0;
+  CardRef ref;
+};
+
+/// CONM1: a 6 x 6 symmetric mass matrix on grid G, in the axes of system CID (0 = basic).
+struct Conm1 {
+  int id = 0, grid = 0, cid = 0;
+  Eigen::Matrix<double, 6, 6> M = Eigen::Matrix<double, 6, 6>::Zero();
   CardRef ref;
 };
 
@@ -323,6 +374,29 @@ struct PressureLoad {
   double p = 0;
   std::vector<int> elements;
   bool thru = false;
+  CardRef ref;
+};
+
+/// PLOAD1: a load on CBAR/CBEAM EID distributed from X1 (P1) to X2 (P2), linearly (X1 = X2: a
+/// concentrated load P1 at X1). TYPE: FX FY FZ (force per length along basic x, y, z), FXE FYE FZE
+/// (along the element axes), MX MY MZ, MXE MYE MZE (moments). SCALE: LE (X1, X2 lengths along the
+/// bar, P per length), FR (X fractions of the length), LEPR, FRPR (P per projected length: basic
+/// types only).
+struct BarLineLoad {
+  enum class Scale : std::uint8_t { LE, FR, LEPR, FRPR };
+  int sid = 0, element = 0;
+  std::string type;                 ///< FX, FY, FZ, FXE, FYE, FZE, MX, MY, MZ, MXE, MYE, MZE
+  Scale scale = Scale::LE;
+  double x1 = 0, p1 = 0, x2 = 0, p2 = 0;
+  CardRef ref;
+};
+
+/// SPCD: enforced value D of components C of grid G (a load set: selected by the subcase LOAD,
+/// its dofs must be in the subcase's SPC set).
+struct EnforcedMotion {
+  int sid = 0, grid = 0;
+  ComponentMask c = 0;
+  double d = 0;
   CardRef ref;
 };
 
@@ -466,6 +540,8 @@ struct Model {
   std::vector<ShellProperty> shell_props;
   std::vector<CompositeProperty> composite_props;  ///< PCOMP, PCOMPG
   std::vector<SpringProperty> spring_props;
+  std::vector<BushProperty> bush_props;        ///< PBUSH
+  std::vector<MassProperty> mass_props;        ///< PMASS
 
   BarDefaults baror, beamor;
   std::vector<Bar> bars;
@@ -473,6 +549,9 @@ struct Model {
   std::vector<Shell> shells;
   std::vector<Conm2> conm2;
   std::vector<Spring> springs;
+  std::vector<Bush> bushes;                    ///< CBUSH
+  std::vector<ScalarMass> scalar_masses;       ///< CMASS1-4
+  std::vector<Conm1> conm1;
   std::vector<Rbe2> rbe2;
   std::vector<Rbar> rbars;
   std::vector<Rbe3> rbe3;
@@ -484,6 +563,8 @@ struct Model {
   std::vector<DofSetEntry> aset, omit, bset, suport;
   std::vector<PointLoad> point_loads;
   std::vector<PressureLoad> pressure_loads;
+  std::vector<BarLineLoad> bar_line_loads;         ///< PLOAD1
+  std::vector<EnforcedMotion> enforced_motions;    ///< SPCD
   std::vector<GravityLoad> gravity_loads;
   std::vector<RotationalLoad> rotational_loads;
   std::vector<LoadCombination> load_combinations;
@@ -503,7 +584,8 @@ struct Model {
 
   // Lookups, built by fem::finalize (id -> position in the vector above).
   std::unordered_map<int, std::uint32_t> grid_index, coord_index, mat1_index, mat2_index, mat8_index,
-      bar_prop_index, rod_prop_index, shell_prop_index, composite_prop_index, spring_prop_index, spoint_index;
+      bar_prop_index, rod_prop_index, shell_prop_index, composite_prop_index, spring_prop_index, spoint_index,
+      bush_prop_index, mass_prop_index;
   bool finalized = false;
 };
 

@@ -94,6 +94,18 @@ void parse_rforce(const Card&, ReaderState&);
 void parse_temp(const Card&, ReaderState&);
 void parse_tempd(const Card&, ReaderState&);
 void parse_temprb(const Card&, ReaderState&);
+// Bushings, scalar springs and masses, CONM1 (nastran_cards_bush_mass.cpp)
+void parse_cbush(const Card&, ReaderState&);
+void parse_pbush(const Card&, ReaderState&);
+void parse_celas3(const Card&, ReaderState&);
+void parse_celas4(const Card&, ReaderState&);
+void parse_cmass1(const Card&, ReaderState&);  ///< CMASS1 and CMASS3
+void parse_cmass2(const Card&, ReaderState&);  ///< CMASS2 and CMASS4
+void parse_pmass(const Card&, ReaderState&);
+void parse_conm1(const Card&, ReaderState&);
+// Bar line loads and enforced motion (nastran_cards_bar_loads.cpp)
+void parse_pload1(const Card&, ReaderState&);
+void parse_spcd(const Card&, ReaderState&);
 // Solution control and matrices (nastran_cards_solution.cpp)
 void parse_eigrl(const Card&, ReaderState&);
 void parse_eigr(const Card&, ReaderState&);
