@@ -37,7 +37,7 @@ int run_convert(seflex::app::Args& args) {
   seflex::io::write_nastran_file(model, *output, force, w);
 
   std::size_t elements = model.bars.size() + model.rods.size() + model.shells.size() + model.springs.size() + model.rbe2.size() +
-                         model.rbars.size() + model.rbe3.size();
+                         model.rbars.size() + model.rbe3.size() + model.solids.size();
   std::printf("wrote %s: %zu grids, %zu elements, %zu CONM2, %zu node sets\n", output->c_str(), model.grids.size(), elements,
               model.conm2.size(), model.node_sets.size());
   std::fflush(stdout);

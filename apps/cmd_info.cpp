@@ -28,8 +28,11 @@ void print_model(const seflex::fem::Model& m) {
   for (const auto& r : m.rods) (r.inline_property ? conrod : crod)++;
   for (const auto& s : m.shells) (s.nnode == 4 ? quad : tria)++;
   for (const auto& s : m.springs) (s.inline_property ? celas2 : celas1)++;
+  std::size_t chexa = 0, cpenta = 0, ctetra = 0;
+  for (const auto& s : m.solids)
+    (s.shape == seflex::fem::Solid::Shape::Hexa ? chexa : s.shape == seflex::fem::Solid::Shape::Penta ? cpenta : ctetra)++;
   const std::size_t elements = m.bars.size() + m.rods.size() + m.shells.size() + m.conm2.size() + m.springs.size() +
-                               m.rbe2.size() + m.rbars.size() + m.rbe3.size();
+                               m.rbe2.size() + m.rbars.size() + m.rbe3.size() + m.solids.size();
   std::printf("\nmodel\n");
   row("grids", m.grids.size());
   row("scalar points", m.spoints.size());
@@ -39,16 +42,18 @@ void print_model(const seflex::fem::Model& m) {
                                                        {"CONROD", conrod}, {"CQUAD4", quad},   {"CTRIA3", tria},
                                                        {"CONM2", m.conm2.size()}, {"CELAS1", celas1}, {"CELAS2", celas2},
                                                        {"RBE2", m.rbe2.size()}, {"RBAR", m.rbars.size()},
-                                                       {"RBE3", m.rbe3.size()}};
+                                                       {"RBE3", m.rbe3.size()}, {"CHEXA", chexa},
+                                                       {"CPENTA", cpenta}, {"CTETRA", ctetra}};
   for (const auto& [name, n] : kinds)
     if (n) row(name, n, 4);
   row("properties", m.bar_props.size() + m.rod_props.size() + m.shell_props.size() + m.composite_props.size() +
-                         m.spring_props.size());
+                         m.spring_props.size() + m.solid_props.size());
   row("materials", m.mat1.size() + m.mat2.size() + m.mat8.size());
   row("SPC entries", m.spcs.size());
   row("MPC equations", m.mpcs.size());
   row("loads (FORCE, MOMENT)", m.point_loads.size());
-  if (const std::size_t n = m.pressure_loads.size() + m.gravity_loads.size() + m.rotational_loads.size())
+  if (const std::size_t n = m.pressure_loads.size() + m.face_loads.size() + m.gravity_loads.size() +
+                            m.rotational_loads.size())
     row("pressure, inertia loads", n);
   if (const std::size_t n = m.grid_temperatures.size() + m.default_temperatures.size() + m.bar_temperatures.size())
     row("temperature cards", n);

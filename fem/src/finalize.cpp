@@ -128,21 +128,24 @@ class Finalizer {
     index(m_.rod_props, m_.rod_prop_index, "PROD", "property");
     index(m_.shell_props, m_.shell_prop_index, "PSHELL", "property");
     index(m_.spring_props, m_.spring_prop_index, "PELAS", "property");
+    index(m_.solid_props, m_.solid_prop_index, "PSOLID", "property");
     // one id space for all properties
     IdSpace seen;
     seen.model = &m_;
     auto add = [&](int id, const CardRef& ref, const char* card) {
       seen.add(id, ref, card, "field 2 (PID)", "property",
-               "expected unique property ids across PBAR, PBARL, PBEAM, PBEAML, PROD, PSHELL, PCOMP, PCOMPG, PELAS");
+               "expected unique property ids across PBAR, PBARL, PBEAM, PBEAML, PROD, PSHELL, PCOMP, PCOMPG, PELAS, PSOLID");
     };
     for (const auto& p : m_.bar_props) add(p.id, p.ref, bar_prop_name(p));
     for (const auto& p : m_.rod_props) add(p.id, p.ref, "PROD");
     for (const auto& p : m_.shell_props) add(p.id, p.ref, "PSHELL");
     for (const auto& p : m_.composite_props) add(p.id, p.ref, p.global ? "PCOMPG" : "PCOMP");
     for (const auto& p : m_.spring_props) add(p.id, p.ref, "PELAS");
+    for (const auto& p : m_.solid_props) add(p.id, p.ref, "PSOLID");
     index_unchecked(m_.composite_props, m_.composite_prop_index);
     for (const auto& p : m_.bar_props) need_material(p.mid, p.ref, bar_prop_name(p), p.id, "field 3 (MID)");
     for (const auto& p : m_.rod_props) need_material(p.mid, p.ref, "PROD", p.id, "field 3 (MID)");
+    for (const auto& p : m_.solid_props) need_material(p.mid, p.ref, "PSOLID", p.id, "field 3 (MID)");
     for (const auto& p : m_.shell_props) {
       if (p.mid1) need_shell_material(p.mid1, p.ref, "PSHELL", p.id, "field 3 (MID1)");
       if (p.mid2) need_shell_material(p.mid2, p.ref, "PSHELL", p.id, "field 5 (MID2)");
@@ -175,7 +178,8 @@ class Finalizer {
   /// RBE2, RBAR, RBE3.
   void index_elements() {
     const std::size_t total = m_.bars.size() + m_.rods.size() + m_.shells.size() + m_.conm2.size() +
-                              m_.springs.size() + m_.rbe2.size() + m_.rbars.size() + m_.rbe3.size();
+                              m_.springs.size() + m_.rbe2.size() + m_.rbars.size() + m_.rbe3.size() +
+                              m_.solids.size();
     IdSpace seen;
     seen.model = &m_;
     seen.map.reserve(total);
@@ -190,6 +194,7 @@ class Finalizer {
     for (const auto& e : m_.rbe2) add(e.id, e.ref, "RBE2");
     for (const auto& e : m_.rbars) add(e.id, e.ref, "RBAR");
     for (const auto& e : m_.rbe3) add(e.id, e.ref, "RBE3");
+    for (const auto& e : m_.solids) add(e.id, e.ref, e.card());
   }
 
   void need_material(int mid, const CardRef& ref, const char* card, int id, const char* field) {
@@ -303,6 +308,12 @@ class Finalizer {
       if (s.g2 != 0) need_dof(s.g2, s.c2, false, s.ref, card, s.id, "field 6 (G2)");
       if (!s.inline_property && !m_.spring_prop_index.count(s.pid))
         fail(s.ref, card, s.id, "field 3 (PID)", "references property " + std::to_string(s.pid) + undefined(s.pid) + "; expected the id of a PELAS card");
+    }
+    for (const auto& e : m_.solids) {
+      for (int k = 0; k < e.nnode; ++k)
+        need_grid(e.g[static_cast<std::size_t>(k)], e.ref, e.card(), e.id, "G" + std::to_string(k + 1));
+      if (!m_.solid_prop_index.count(e.pid))
+        fail(e.ref, e.card(), e.id, "field 3 (PID)", "references property " + std::to_string(e.pid) + undefined(e.pid) + "; expected the id of a PSOLID card");
     }
     for (const auto& r : m_.rbe2) {
       need_grid(r.gn, r.ref, "RBE2", r.id, "field 3 (GN)");

@@ -53,6 +53,8 @@ constexpr CardType kCardTypes[] = {
     {"RBAR", parse_rbar},       {"RBE3", parse_rbe3},       {"MAT2", parse_mat2},      {"MAT8", parse_mat8},
     {"PCOMP", parse_pcomp},     {"PCOMPG", parse_pcompg},   {"PLOAD2", parse_pload2},  {"GRAV", parse_grav},
     {"RFORCE", parse_rforce},   {"TEMP", parse_temp},       {"TEMPD", parse_tempd},    {"TEMPRB", parse_temprb},
+    {"CHEXA", parse_chexa},     {"CPENTA", parse_cpenta},   {"CTETRA", parse_ctetra},  {"PSOLID", parse_psolid},
+    {"PLOAD4", parse_pload4},
 };
 constexpr std::size_t kNumCardTypes = sizeof(kCardTypes) / sizeof(kCardTypes[0]);
 
