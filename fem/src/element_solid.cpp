@@ -144,6 +144,12 @@ Eigen::MatrixXd solid_mass(const SolidElement& e, MassKind kind) {
   return M;
 }
 
+std::vector<std::vector<int>> solid_face_corners(Solid::Shape shape) {
+  std::vector<std::vector<int>> out;
+  for (const auto& f : detail::solid_faces(shape)) out.emplace_back(f.corners.begin(), f.corners.begin() + f.ncorner);
+  return out;
+}
+
 SolidElement make_solid_element(const Model& model, const Solid& s) {
   const char* card = s.card();
   SolidElement e;

@@ -1,6 +1,7 @@
 // PLOAD4 grid forces on shells and solid faces (face_pressure.hpp).
 #include "face_pressure.hpp"
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <string>
 

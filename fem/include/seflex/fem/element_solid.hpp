@@ -25,6 +25,7 @@
 // processes in the finite element method", Earthquake Eng. Struct. Dyn. 4 (1976) 245-249).
 #include <Eigen/Core>
 #include <array>
+#include <vector>
 
 #include "seflex/fem/element_common.hpp"
 #include "seflex/fem/model.hpp"
@@ -51,6 +52,11 @@ Eigen::MatrixXd solid_stiffness(const SolidElement& e);
 Eigen::MatrixXd solid_mass(const SolidElement& e, MassKind kind);
 /// Volume int dV.
 double solid_volume(const SolidElement& e);
+
+/// Corner grids (0-based positions in the element's grid list) of each face of a shape, ordered so
+/// that the right-hand rule gives the outward normal of an element numbered as the QRG figures show:
+/// CHEXA 6 quadrilaterals; CPENTA 2 triangles then 3 quadrilaterals; CTETRA 4 triangles.
+std::vector<std::vector<int>> solid_face_corners(Solid::Shape shape);
 
 /// Resolve a CHEXA/CPENTA/CTETRA of a finalized model: grids, PSOLID, MAT1, integration scheme.
 /// Throws InputError for undefined references, a material that is not a MAT1, nu >= 0.5 or E <= 0,
