@@ -19,6 +19,7 @@
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/element_solid.hpp"
 #include "seflex/fem/loads.hpp"
+#include "seflex/fem/mass_properties.hpp"
 #include "solid_mesh.hpp"
 
 namespace seflex::fem::test {
@@ -183,6 +184,25 @@ TEST(SolidElement, TotalMassIsRhoTimesVolumeLumpedAndCoupled) {
         }
       }
     }
+  }
+}
+
+// Grid point weight generator (mass_properties.hpp) with the coupled mass: a rotation is a linear
+// field, which every solid reproduces, so D^T M D is exact: the box's m (b^2 + c^2) / 12 about its CG.
+TEST(SolidElement, CoupledMassGivesTheBoxInertia) {
+  for (const SolidType type : kAll) {
+    Model m;
+    BoxMesh box;
+    box.nx = 3, box.ny = 2, box.nz = 2, box.Lx = 0.3, box.Ly = 0.2, box.Lz = 0.1;
+    add_box_solids(m, box, type, 7.0e10, 0.33, 2700);
+    add_param(m, "COUPMASS", "1");
+    finalize_for_test(m);
+    const MassProperties mp = mass_properties(m);
+    const double mass = 2700 * 0.3 * 0.2 * 0.1;
+    EXPECT_NEAR(mp.mass, mass, 1e-12 * mass) << name(type);
+    EXPECT_LT((mp.cg - Eigen::Vector3d(0.15, 0.1, 0.05)).norm(), 1e-12) << name(type);
+    const Eigen::Vector3d I(mass * (0.04 + 0.01) / 12, mass * (0.09 + 0.01) / 12, mass * (0.09 + 0.04) / 12);
+    EXPECT_LT((mp.I_cg.diagonal() - I).norm(), 1e-10 * I.norm()) << name(type);
   }
 }
 
