@@ -150,7 +150,7 @@ std::vector<std::vector<int>> solid_face_corners(Solid::Shape shape) {
   return out;
 }
 
-SolidElement make_solid_element(const Model& model, const Solid& s) {
+SolidElement make_solid_element(const Model& model, const Solid& s, bool mass_only) {
   const char* card = s.card();
   SolidElement e;
   e.shape = s.shape;
@@ -183,14 +183,14 @@ SolidElement make_solid_element(const Model& model, const Solid& s) {
   using In = SolidProperty::Integration;
   using Isop = SolidProperty::Isop;
   if (!linear) {
-    if (prop.in == In::Two || prop.in == In::Bubble || prop.isop == Isop::Reduced)
+    if (!mass_only && (prop.in == In::Two || prop.in == In::Bubble || prop.isop == Isop::Reduced))
       detail::fail(model, prop.ref, "PSOLID", prop.id, "5 (IN) / 7 (ISOP)",
                    std::string("is used by the ") + std::to_string(s.nnode) + "-grid " + card + " " + std::to_string(s.id) +
                        " with reduced integration (IN = TWO or BUBBLE, or ISOP = REDUCED), which seflex does not model; "
                        "expected IN blank or THREE and ISOP blank or FULL (full Gauss integration)");
     e.points = 3;
   } else if (s.shape == Solid::Shape::Hexa) {
-    if (prop.in == In::Two && prop.isop != Isop::Full)
+    if (!mass_only && prop.in == In::Two && prop.isop != Isop::Full)
       detail::fail(model, prop.ref, "PSOLID", prop.id, "5 (IN) / 7 (ISOP)",
                    "IN = TWO with ISOP blank or REDUCED (reduced shear integration) is not modelled; expected IN blank or "
                    "BUBBLE (bubble functions, the default) or ISOP = FULL (2 x 2 x 2 Gauss)");

@@ -86,7 +86,7 @@ MassProperties mass_properties(const Model& model, std::optional<int> reference_
     }
   }
   for (const Solid& so : model.solids) {  // translations only: D_e = [I, -skew(x_a - ref)] per grid
-    const SolidElement e = make_solid_element(model, so);
+    const SolidElement e = make_solid_element(model, so, true);
     const Eigen::MatrixXd M = solid_mass(e, kind);
     Eigen::MatrixXd D = Eigen::MatrixXd::Zero(3 * e.nnode, 6);
     for (int a = 0; a < e.nnode; ++a) D.block<3, 6>(3 * a, 0) = rigid_link(e.x[static_cast<std::size_t>(a)] - ref).topRows<3>();

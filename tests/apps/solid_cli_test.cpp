@@ -13,6 +13,8 @@ namespace {
 /// A 0.2 x 0.02 x 0.02 m aluminium bar (nu = 0) of 10 x 2 x 2 CHEXA (grids i + 11 j + 33 k + 1), an RBE2
 /// from grid 1000 to the end x = 0 and from grid 2000 to the end x = 0.2; PLOAD4 set 10: 1 MPa on
 /// the end faces x = 0.2 pushing along -x (a compressive end load of 400 N); LOAD 20 = 2 x set 10.
+/// Grid 3000, tied by an RBE2 to the mid cross-section, is a grid with six dofs for the floating
+/// frame of the reduction (solid grids have translations only, and the frame node must have six).
 std::string bracket_deck(const std::string& case_control) {
   std::ostringstream d;
   d << "SOL 101\nCEND\n" << case_control << "BEGIN BULK\nMAT1,1,7.e10,,0.,2700.\nPSOLID,1,1\n";
@@ -30,13 +32,15 @@ std::string bracket_deck(const std::string& case_control) {
         if (i == 9) d << "PLOAD4,10," << eid << ",1.e6,,,," << id(10, j, k) << "," << id(10, j + 1, k + 1) << "\n";
         ++eid;
       }
-  d << "GRID,1000,,-0.01,0.01,0.01\nGRID,2000,,0.21,0.01,0.01\nRBE2,500,1000,123456";
-  for (int k = 0; k <= 2; ++k)
-    for (int j = 0; j <= 2; ++j) d << "," << id(0, j, k);
-  d << "\nRBE2,501,2000,123456";
-  for (int k = 0; k <= 2; ++k)
-    for (int j = 0; j <= 2; ++j) d << "," << id(10, j, k);
-  d << "\nSPC1,1,123456,1000\nLOAD,20,1.,2.,10\nENDDATA\n";
+  d << "GRID,1000,,-0.01,0.01,0.01\nGRID,2000,,0.21,0.01,0.01\nGRID,3000,,0.1,0.01,0.01\n";
+  for (const int i : {0, 10, 5}) {  // RBE2 EID GN CM G1-G5 / G6-G9 on a continuation line
+    d << "RBE2," << (i == 0 ? "500,1000" : i == 10 ? "501,2000" : "502,3000") << ",123456";
+    int n = 0;
+    for (int k = 0; k <= 2; ++k)
+      for (int j = 0; j <= 2; ++j) d << (n++ == 5 ? "\n," : ",") << id(i, j, k);
+    d << "\n";
+  }
+  d << "SPC1,1,123456,1000\nLOAD,20,1.,2.,10\nENDDATA\n";
   return d.str();
 }
 

@@ -60,7 +60,8 @@ std::vector<std::vector<int>> solid_face_corners(Solid::Shape shape);
 
 /// Resolve a CHEXA/CPENTA/CTETRA of a finalized model: grids, PSOLID, MAT1, integration scheme.
 /// Throws InputError for undefined references, a material that is not a MAT1, nu >= 0.5 or E <= 0,
-/// or a distorted element (Jacobian determinant zero or changing sign inside the element).
-SolidElement make_solid_element(const Model& model, const Solid& solid);
+/// a distorted element (Jacobian determinant zero or changing sign inside the element), or (unless
+/// mass_only: the mass does not depend on it) an integration scheme not modelled (PSOLID IN / ISOP).
+SolidElement make_solid_element(const Model& model, const Solid& solid, bool mass_only = false);
 
 }  // namespace seflex::fem
