@@ -4,6 +4,7 @@
 
 #include <map>
 #include <sstream>
+#include <string>
 
 #include "test_support.hpp"
 
@@ -21,7 +22,9 @@ std::string bracket_deck(const std::string& case_control) {
   auto id = [](int i, int j, int k) { return 1 + i + 11 * j + 33 * k; };
   for (int k = 0; k <= 2; ++k)
     for (int j = 0; j <= 2; ++j)
-      for (int i = 0; i <= 10; ++i) d << "GRID," << id(i, j, k) << ",," << 0.02 * i << "," << 0.01 * j << "," << 0.01 * k << "\n";
+      for (int i = 0; i <= 10; ++i)  // std::to_string: always a decimal point, as a real field needs
+        d << "GRID," << id(i, j, k) << ",," << std::to_string(0.02 * i) << "," << std::to_string(0.01 * j) << ","
+          << std::to_string(0.01 * k) << "\n";
   int eid = 1;
   for (int k = 0; k < 2; ++k)
     for (int j = 0; j < 2; ++j)
