@@ -38,7 +38,7 @@ int run_convert(seflex::app::Args& args) {
 
   std::size_t elements = model.bars.size() + model.rods.size() + model.shells.size() + model.springs.size() + model.rbe2.size() +
                          model.rbars.size() + model.rbe3.size() + model.bushes.size() + model.scalar_masses.size() +
-                         model.conm1.size();
+                         model.conm1.size() + model.solids.size();
   std::printf("wrote %s: %zu grids, %zu elements, %zu CONM2, %zu node sets\n", output->c_str(), model.grids.size(), elements,
               model.conm2.size(), model.node_sets.size());
   std::fflush(stdout);

@@ -13,6 +13,7 @@
 #include "seflex/fem/element_scalar_mass.hpp"
 #include "seflex/fem/element_rod.hpp"
 #include "seflex/fem/element_shell_quad4.hpp"
+#include "seflex/fem/element_solid.hpp"
 #include "seflex/fem/element_shell_tria3.hpp"
 #include "seflex/fem/element_spring.hpp"
 
@@ -63,6 +64,16 @@ void to_cd(const std::int32_t* nodes, const Axes& axes, NodeMatrix<N>& K) {
   }
 }
 
+/// The translation blocks of a 3N x 3N solid matrix from basic to each grid's CD system.
+void to_cd_translations(const std::int32_t* nodes, int N, const Axes& axes, Eigen::MatrixXd& K) {
+  for (int n = 0; n < N; ++n) {
+    const auto& A = axes[nodes[n]];
+    if (!A) continue;
+    K.middleRows(3 * n, 3) = A->transpose() * K.middleRows(3 * n, 3);
+    K.middleCols(3 * n, 3) = K.middleCols(3 * n, 3) * (*A);
+  }
+}
+
 std::int32_t node_of_grid(const Model& model, int grid_id, const CardRef& ref, const std::string& card, int id,
                           const std::string& field) {
   return static_cast<std::int32_t>(detail::grid_index(model, grid_id, ref, card, id, field));
@@ -84,6 +95,8 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
   std::vector<Tria3Element> trias;
   std::vector<Conm2Element> masses;
   std::vector<SpringElement> springs;
+  std::vector<SolidElement> solids;
+  std::vector<std::int32_t> solid_nodes, solid_ptr{0};
   detail::Connectivity conn;
   std::vector<std::int32_t> bar_nodes, rod_nodes, quad_nodes, tria_nodes, mass_nodes;
 
@@ -128,6 +141,16 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
       trias.push_back(make_tria3_element(model, s, &sections.get(model, s)));
       tria_nodes.insert(tria_nodes.end(), n, n + 3);
     }
+  }
+  solids.reserve(model.solids.size());
+  for (const Solid& s : model.solids) {
+    std::int32_t n[20];
+    for (int k = 0; k < s.nnode; ++k)
+      n[k] = node_of_grid(model, s.g[static_cast<std::size_t>(k)], s.ref, s.card(), s.id, "G" + std::to_string(k + 1));
+    conn.add(n, n + s.nnode);
+    solids.push_back(make_solid_element(model, s));
+    solid_nodes.insert(solid_nodes.end(), n, n + s.nnode);
+    solid_ptr.push_back(static_cast<std::int32_t>(solid_nodes.size()));
   }
   masses.reserve(model.conm2.size());
   springs.reserve(model.springs.size());
@@ -193,6 +216,11 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
         pattern.scatter<2>(&bush_nodes[2 * i], K, g.K);
       }
     }
+    for (std::size_t i = 0; i < solids.size(); ++i) {
+      Eigen::MatrixXd K = solid_stiffness(solids[i]);
+      to_cd_translations(&solid_nodes[solid_ptr[i]], solids[i].nnode, axes, K);
+      pattern.scatter_translations(&solid_nodes[solid_ptr[i]], solids[i].nnode, K, g.K);
+    }
     for (const SpringElement& s : springs) {
       detail::add_entry(g.K, s.dof1, s.dof1, s.k);
       if (s.dof2 >= 0) {
@@ -227,6 +255,11 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
       NodeMatrix<3> M = w * tria3_mass(trias[i], options.mass);
       to_cd<3>(&tria_nodes[3 * i], axes, M);
       pattern.scatter<3>(&tria_nodes[3 * i], M, g.M);
+    }
+    for (std::size_t i = 0; i < solids.size(); ++i) {
+      Eigen::MatrixXd M = w * solid_mass(solids[i], options.mass);
+      to_cd_translations(&solid_nodes[solid_ptr[i]], solids[i].nnode, axes, M);
+      pattern.scatter_translations(&solid_nodes[solid_ptr[i]], solids[i].nnode, M, g.M);
     }
     for (std::size_t i = 0; i < masses.size(); ++i) {
       NodeMatrix<1> M = w * conm2_mass(masses[i]);

@@ -57,6 +57,28 @@ class BlockPattern {
     }
   }
 
+  /// A(translations of node a, translations of node b) += 3 x 3 block, for grid nodes in element
+  /// order: K3 is 3N x 3N on the translations of `nodes` (N grids; solid elements).
+  void scatter_translations(const std::int32_t* nodes, int N, const Eigen::MatrixXd& K3,
+                            Eigen::SparseMatrix<double>& A) const {
+    const int* outer = A.outerIndexPtr();
+    double* val = A.valuePtr();
+    for (int b = 0; b < N; ++b) {
+      const std::int32_t J = nodes[b];
+      for (int a = 0; a < N; ++a) {
+        if (self_only_ && a != b) {
+          SEFLEX_DEBUG_ASSERT((K3.block<3, 3>(3 * a, 3 * b).isZero(0.0)), "coupling outside the pattern");
+          continue;
+        }
+        const std::int64_t off = row_offset(J, nodes[a]);
+        for (int c = 0; c < 3; ++c) {
+          double* col = val + outer[6 * J + c] + off;
+          for (int r = 0; r < 3; ++r) col[r] += K3(3 * a + r, 3 * b + c);
+        }
+      }
+    }
+  }
+
  private:
   // Offset of node I's rows within any column of node J.
   std::int64_t row_offset(std::int32_t J, std::int32_t I) const;

@@ -137,12 +137,13 @@ class Finalizer {
     index(m_.spring_props, m_.spring_prop_index, "PELAS", "property");
     index_unchecked(m_.bush_props, m_.bush_prop_index);
     index_unchecked(m_.mass_props, m_.mass_prop_index);
+    index(m_.solid_props, m_.solid_prop_index, "PSOLID", "property");
     // one id space for all properties
     IdSpace seen;
     seen.model = &m_;
     auto add = [&](int id, const CardRef& ref, const char* card) {
       seen.add(id, ref, card, "field 2 (PID)", "property",
-               "expected unique property ids across PBAR, PBARL, PBEAM, PBEAML, PROD, PSHELL, PCOMP, PCOMPG, PELAS, PBUSH, PMASS");
+               "expected unique property ids across PBAR, PBARL, PBEAM, PBEAML, PROD, PSHELL, PCOMP, PCOMPG, PELAS, PBUSH, PMASS, PSOLID");
     };
     for (const auto& p : m_.bar_props) add(p.id, p.ref, bar_prop_name(p));
     for (const auto& p : m_.rod_props) add(p.id, p.ref, "PROD");
@@ -151,9 +152,11 @@ class Finalizer {
     for (const auto& p : m_.spring_props) add(p.id, p.ref, "PELAS");
     for (const auto& p : m_.bush_props) add(p.id, p.ref, "PBUSH");
     for (const auto& p : m_.mass_props) add(p.id, p.ref, "PMASS");
+    for (const auto& p : m_.solid_props) add(p.id, p.ref, "PSOLID");
     index_unchecked(m_.composite_props, m_.composite_prop_index);
     for (const auto& p : m_.bar_props) need_material(p.mid, p.ref, bar_prop_name(p), p.id, "field 3 (MID)");
     for (const auto& p : m_.rod_props) need_material(p.mid, p.ref, "PROD", p.id, "field 3 (MID)");
+    for (const auto& p : m_.solid_props) need_material(p.mid, p.ref, "PSOLID", p.id, "field 3 (MID)");
     for (const auto& p : m_.shell_props) {
       if (p.mid1) need_shell_material(p.mid1, p.ref, "PSHELL", p.id, "field 3 (MID1)");
       if (p.mid2) need_shell_material(p.mid2, p.ref, "PSHELL", p.id, "field 5 (MID2)");
@@ -187,7 +190,8 @@ class Finalizer {
   void index_elements() {
     const std::size_t total = m_.bars.size() + m_.rods.size() + m_.shells.size() + m_.conm2.size() +
                               m_.springs.size() + m_.rbe2.size() + m_.rbars.size() + m_.rbe3.size() +
-                              m_.bushes.size() + m_.scalar_masses.size() + m_.conm1.size();
+                              m_.bushes.size() + m_.scalar_masses.size() + m_.conm1.size() +
+                              m_.solids.size();
     IdSpace seen;
     seen.model = &m_;
     seen.map.reserve(total);
@@ -205,6 +209,7 @@ class Finalizer {
     for (const auto& e : m_.rbe2) add(e.id, e.ref, "RBE2");
     for (const auto& e : m_.rbars) add(e.id, e.ref, "RBAR");
     for (const auto& e : m_.rbe3) add(e.id, e.ref, "RBE3");
+    for (const auto& e : m_.solids) add(e.id, e.ref, e.card());
   }
 
   void need_material(int mid, const CardRef& ref, const char* card, int id, const char* field) {
@@ -352,6 +357,12 @@ class Finalizer {
     for (const auto& c : m_.conm1) {
       need_grid(c.grid, c.ref, "CONM1", c.id, "field 3 (G)");
       if (c.cid > 0) need_coord(c.cid, c.ref, "CONM1", c.id, "field 4 (CID)");
+    }
+    for (const auto& e : m_.solids) {
+      for (int k = 0; k < e.nnode; ++k)
+        need_grid(e.g[static_cast<std::size_t>(k)], e.ref, e.card(), e.id, "G" + std::to_string(k + 1));
+      if (!m_.solid_prop_index.count(e.pid))
+        fail(e.ref, e.card(), e.id, "field 3 (PID)", "references property " + std::to_string(e.pid) + undefined(e.pid) + "; expected the id of a PSOLID card");
     }
     for (const auto& r : m_.rbe2) {
       need_grid(r.gn, r.ref, "RBE2", r.id, "field 3 (GN)");

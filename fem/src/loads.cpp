@@ -5,6 +5,7 @@
 #include <optional>
 #include <unordered_map>
 
+#include "face_pressure.hpp"
 #include "model_lookup.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/fem/assembly.hpp"
@@ -30,6 +31,8 @@ class LoadBuilder {
       if (l.sid == sid) found = true, point_load(l, scale);
     for (const PressureLoad& l : m_.pressure_loads)
       if (l.sid == sid) found = true, pressure_load(l, scale);
+    for (const FaceLoad& l : m_.face_loads)
+      if (l.sid == sid) found = true, face_load(l, scale);
     for (const GravityLoad& g : m_.gravity_loads)
       if (g.sid == sid) found = true, gravity(g, scale);
     for (const RotationalLoad& r : m_.rotational_loads)
@@ -158,6 +161,36 @@ class LoadBuilder {
   }
 
   // -------------------------------------------------------------------------------------------
+  // PLOAD4
+  const std::unordered_map<int, std::size_t>& solids() {
+    if (!solid_index_) {
+      solid_index_.emplace();
+      for (std::size_t k = 0; k < m_.solids.size(); ++k) solid_index_->emplace(m_.solids[k].id, k);
+    }
+    return *solid_index_;
+  }
+
+  void face_load(const FaceLoad& l, double scale) {
+    std::vector<detail::GridForce> forces;
+    if (l.eid_last > 0) {  // THRU: the shells of the range (other ids are skipped, as for PLOAD2)
+      const auto& index = shells();
+      for (int eid = l.eid; eid <= l.eid_last; ++eid)
+        if (const auto it = index.find(eid); it != index.end())
+          detail::shell_face_forces(m_, m_.shells[it->second], l, forces);
+    } else if (const auto it = shells().find(l.eid); it != shells().end()) {
+      detail::shell_face_forces(m_, m_.shells[it->second], l, forces);
+    } else if (const auto js = solids().find(l.eid); js != solids().end()) {
+      detail::solid_face_forces(m_, m_.solids[js->second], l, forces);
+    } else {
+      const std::string kind = other_element(l.eid);
+      detail::fail(m_, l.ref, "PLOAD4", l.sid, "EID",
+                   "element " + std::to_string(l.eid) + (kind.empty() ? " is not defined" : " is a " + kind) +
+                       "; expected a CQUAD4, CTRIA3, CHEXA, CPENTA or CTETRA");
+    }
+    for (const auto& gf : forces) add_grid(gf.grid, 1, gf.f_basic, scale, p_);
+  }
+
+  // -------------------------------------------------------------------------------------------
   // GRAV, RFORCE: grid accelerations, multiplied by M in finish()
   Eigen::VectorXd& acc() {
     if (!acc_) acc_ = Eigen::VectorXd::Zero(dofs_.size());
@@ -203,7 +236,7 @@ class LoadBuilder {
   const DofMap& dofs_;
   Eigen::VectorXd& p_;
   std::vector<std::optional<Eigen::Matrix3d>> cd_;
-  std::optional<std::unordered_map<int, std::size_t>> shell_index_;
+  std::optional<std::unordered_map<int, std::size_t>> shell_index_, solid_index_;
   std::optional<Eigen::VectorXd> acc_;
 };
 
@@ -218,14 +251,14 @@ Eigen::VectorXd load_vector(const Model& model, const DofMap& dofs, int sid, con
       if (!b.add_set(li, lc.s * si))
         throw InputError(where(model, lc.ref), "LOAD " + std::to_string(lc.sid) + ": references load set " +
                                                    std::to_string(li) +
-                                                   ", but no FORCE, MOMENT, PLOAD2, GRAV or RFORCE card has that SID");
+                                                   ", but no FORCE, MOMENT, PLOAD2, PLOAD4, GRAV or RFORCE card has that SID");
     b.finish(M_gg);
     return p;
   }
   if (!b.add_set(sid, 1.0))
     throw InputError(SourceRef{model.files.empty() ? std::string() : model.files.front(), 0},
                      "case control LOAD = " + std::to_string(sid) +
-                         ": no LOAD, FORCE, MOMENT, PLOAD2, GRAV or RFORCE bulk data card has SID " +
+                         ": no LOAD, FORCE, MOMENT, PLOAD2, PLOAD4, GRAV or RFORCE bulk data card has SID " +
                          std::to_string(sid));
   b.finish(M_gg);
   return p;

@@ -12,6 +12,7 @@
 #include "seflex/fem/element_conm2.hpp"
 #include "seflex/fem/element_rod.hpp"
 #include "seflex/fem/element_shell_quad4.hpp"
+#include "seflex/fem/element_solid.hpp"
 #include "seflex/fem/element_shell_tria3.hpp"
 
 namespace seflex::fem {
@@ -84,6 +85,13 @@ MassProperties mass_properties(const Model& model, std::optional<int> reference_
       const Tria3Element e = make_tria3_element(model, s, &sec);
       add_element<3>(e.x, ref, tria3_mass(e, kind), M0);
     }
+  }
+  for (const Solid& so : model.solids) {  // translations only: D_e = [I, -skew(x_a - ref)] per grid
+    const SolidElement e = make_solid_element(model, so, true);
+    const Eigen::MatrixXd M = solid_mass(e, kind);
+    Eigen::MatrixXd D = Eigen::MatrixXd::Zero(3 * e.nnode, 6);
+    for (int a = 0; a < e.nnode; ++a) D.block<3, 6>(3 * a, 0) = rigid_link(e.x[static_cast<std::size_t>(a)] - ref).topRows<3>();
+    M0 += D.transpose() * M * D;
   }
   for (const Conm2& c : model.conm2) {
     const Conm2Element e = make_conm2_element(model, c);

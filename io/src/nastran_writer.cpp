@@ -221,6 +221,11 @@ void write_elements(const fem::Model& m, CardWriter& w) {
       w.start("CROD").i(r.id).i(r.pid).i(r.ga).i(r.gb).end();
   }
   for (const auto& s : m.shells) write_shell(w, s);
+  for (const auto& s : m.solids) {
+    w.start(s.card()).i(s.id).i(s.pid);
+    for (int k = 0; k < s.nnode; ++k) w.i(s.g[static_cast<std::size_t>(k)]);
+    w.end();
+  }
   for (const auto& s : m.springs) {
     if (s.scalar_points)
       s.inline_property ? w.start("CELAS4").i(s.id).r(s.k).id0(s.g1).id0(s.g2).end()
@@ -296,6 +301,16 @@ void write_constraints_and_loads(const fem::Model& m, CardWriter& w) {
       w.i(l.elements[0]).t("THRU").i(l.elements[1]);
     else
       for (const int e : l.elements) w.i(e);  // continued after six ids (the reader accepts it)
+    w.end();
+  }
+  for (const auto& l : m.face_loads) {
+    w.start("PLOAD4").i(l.sid).i(l.eid);
+    for (const double p : l.p) w.r(p);
+    if (l.eid_last > 0)
+      w.t("THRU").i(l.eid_last);
+    else
+      w.id0(l.g1).id0(l.g34);
+    if (l.n.squaredNorm() > 0) w.next_line().i(l.cid).r(l.n.x()).r(l.n.y()).r(l.n.z());
     w.end();
   }
   for (const auto& g : m.gravity_loads)
@@ -468,6 +483,12 @@ void write_nastran(const fem::Model& m, std::ostream& stream, const NastranWrite
         .r(p.z1).r(p.z2).id0(p.mid4).end();
   for (const auto& p : m.composite_props) write_composite(w, p);
   for (const auto& p : m.spring_props) w.start("PELAS").i(p.id).r(p.k).r(p.ge).r(p.s).end();
+  for (const auto& p : m.solid_props) {
+    static const char* in[] = {"", "BUBBLE", "TWO", "THREE"};
+    static const char* isop[] = {"", "REDUCED", "FULL"};
+    w.start("PSOLID").i(p.id).i(p.mid).i(p.cordm).t(in[static_cast<int>(p.in)]).t(p.stress)
+        .t(isop[static_cast<int>(p.isop)]).t(p.fctn).end();
+  }
   stream << out;
   out.clear();
   write_elements(m, w);

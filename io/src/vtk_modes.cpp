@@ -22,7 +22,8 @@
 namespace seflex::io {
 namespace {
 
-enum ElementType : int { kBar = 1, kRod = 2, kSpring = 3, kRbe2 = 4, kTria = 5, kQuad = 6, kMass = 7, kRbar = 8, kRbe3 = 9 };
+enum ElementType : int { kBar = 1, kRod = 2, kSpring = 3, kRbe2 = 4, kTria = 5, kQuad = 6, kMass = 7, kRbar = 8, kRbe3 = 9,
+                   kSolid = 10 };
 
 /// Cells of the mesh (grid ids resolved through the finalized model's index).
 class MeshCells {
@@ -32,9 +33,13 @@ class MeshCells {
     types_->SetName("element_type");
   }
   void add(int vtk_type, std::initializer_list<int> grid_ids, int element_id, ElementType type) {
-    vtkIdType pts[4];
+    add(vtk_type, grid_ids.begin(), static_cast<int>(grid_ids.size()), element_id, type);
+  }
+  void add(int vtk_type, const int* grid_ids, int count, int element_id, ElementType type) {
+    vtkIdType pts[20];
     int n = 0;
-    for (int g : grid_ids) {
+    for (int k = 0; k < count && k < 20; ++k) {
+      const int g = grid_ids[k];
       const auto it = model_.grid_index.find(g);
       if (it == model_.grid_index.end()) return;  // scalar point or grounded end: nothing to draw
       pts[n++] = static_cast<vtkIdType>(it->second);
@@ -96,6 +101,17 @@ void write_mode_shapes_vtu(const std::filesystem::path& path, const fem::Model& 
   for (const auto& s : model.shells) {
     if (s.nnode == 3) cells.add(VTK_TRIANGLE, {s.g[0], s.g[1], s.g[2]}, s.id, kTria);
     else cells.add(VTK_QUAD, {s.g[0], s.g[1], s.g[2], s.g[3]}, s.id, kQuad);
+  }
+  for (const auto& s : model.solids) {
+    // VTK's quadratic cells list the top-face edges before the vertical ones; Nastran the reverse.
+    static const int hexa20[20] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 16, 17, 18, 19, 12, 13, 14, 15};
+    static const int penta15[15] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 12, 13, 14, 9, 10, 11};
+    int g[20];
+    const int* order = s.nnode == 20 ? hexa20 : s.nnode == 15 ? penta15 : nullptr;
+    for (int k = 0; k < s.nnode; ++k) g[k] = s.g[static_cast<std::size_t>(order ? order[k] : k)];
+    const int type = s.nnode == 8 ? VTK_HEXAHEDRON : s.nnode == 20 ? VTK_QUADRATIC_HEXAHEDRON : s.nnode == 6 ? VTK_WEDGE
+                   : s.nnode == 15 ? VTK_QUADRATIC_WEDGE : s.nnode == 4 ? VTK_TETRA : VTK_QUADRATIC_TETRA;
+    cells.add(type, g, s.nnode, s.id, kSolid);
   }
   for (const auto& c : model.conm2) cells.add(VTK_VERTEX, {c.grid}, c.id, kMass);
   cells.attach();

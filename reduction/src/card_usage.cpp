@@ -296,6 +296,24 @@ class Classifier {
         if (heated) break;
       }
     }
+    for (const auto& so : m_.solids) {  // solids: thermal loads not computed either
+      const auto pit = m_.solid_prop_index.find(so.pid);
+      if (pit == m_.solid_prop_index.end()) continue;
+      const auto mit = m_.mat1_index.find(m_.solid_props[pit->second].mid);
+      if (mit == m_.mat1_index.end() || m_.mat1[mit->second].alpha == 0.0) continue;
+      bool heated = false;
+      for (int k = 0; k < so.nnode; ++k) {
+        const auto it = grid_t.find(so.g[static_cast<std::size_t>(k)]);
+        const std::optional<double> T = it != grid_t.end() ? std::optional<double>(it->second) : tempd;
+        heated = heated || (T && *T != m_.mat1[mit->second].tref);
+      }
+      if (heated) {
+        report_.add_set(Kind::Refused, so.card(), so.ref, "thermal load set", sid,
+                        " gives solids with thermal expansion (MAT1 ALPHA) a temperature other than TREF, and seflex "
+                        "computes thermal loads of CBAR, CBEAM, CROD and CONROD only");
+        break;
+      }
+    }
   }
 
   bool enforced_displacement(const CaseSelection& c) const {

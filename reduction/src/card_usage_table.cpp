@@ -29,6 +29,9 @@ void pload1_members(const fem::Model& m, MemberList& out) {
 void spcd_members(const fem::Model& m, MemberList& out) {
   for (const auto& e : m.enforced_motions) out.push_back({e.sid, e.ref});
 }
+void pload4_members(const fem::Model& m, MemberList& out) {
+  for (const auto& l : m.face_loads) out.push_back({l.sid, l.ref});
+}
 void grav_members(const fem::Model& m, MemberList& out) {
   for (const auto& l : m.gravity_loads) out.push_back({l.sid, l.ref});
 }
@@ -63,8 +66,8 @@ const CardRole kRows[] = {
     {"CELAS3", R::Structure, Y, nullptr}, {"CELAS4", R::Structure, Y, nullptr}, {"CMASS1", R::Structure, Y, nullptr},
     {"CMASS2", R::Structure, Y, nullptr}, {"CMASS3", R::Structure, Y, nullptr}, {"CMASS4", R::Structure, Y, nullptr},
     {"CONM1", R::Structure, Y, nullptr}, {"CBUSH", R::Structure, Y, nullptr}, {"CBUSH1D", R::Structure, N, nullptr},
-    {"CBUSH2D", R::Structure, N, nullptr}, {"CHEXA", R::Structure, N, nullptr}, {"CPENTA", R::Structure, N, nullptr},
-    {"CTETRA", R::Structure, N, nullptr}, {"CPYRAM", R::Structure, N, nullptr}, {"CQUAD8", R::Structure, N, nullptr},
+    {"CBUSH2D", R::Structure, N, nullptr}, {"CHEXA", R::Structure, Y, nullptr}, {"CPENTA", R::Structure, Y, nullptr},
+    {"CTETRA", R::Structure, Y, nullptr}, {"CPYRAM", R::Structure, N, nullptr}, {"CQUAD8", R::Structure, N, nullptr},
     {"CTRIA6", R::Structure, N, nullptr}, {"CQUADR", R::Structure, N, nullptr}, {"CTRIAR", R::Structure, N, nullptr},
     {"CQUAD", R::Structure, N, nullptr}, {"CSHEAR", R::Structure, N, nullptr}, {"CTUBE", R::Structure, N, nullptr},
     {"CBEND", R::Structure, N, nullptr}, {"CBEAM3", R::Structure, N, nullptr}, {"CGAP", R::Structure, N, nullptr},
@@ -83,7 +86,7 @@ const CardRole kRows[] = {
     {"PBAR", R::Structure, Y, nullptr}, {"PBARL", R::Structure, Y, nullptr}, {"PBEAM", R::Structure, Y, nullptr},
     {"PBEAML", R::Structure, Y, nullptr}, {"PROD", R::Structure, Y, nullptr}, {"PSHELL", R::Structure, Y, nullptr},
     {"PELAS", R::Structure, Y, nullptr}, {"PCOMP", R::Structure, Y, nullptr}, {"PCOMPG", R::Structure, Y, nullptr},
-    {"PSOLID", R::Structure, N, nullptr}, {"PLSOLID", R::Structure, N, nullptr}, {"PBUSH", R::Structure, Y, nullptr},
+    {"PSOLID", R::Structure, Y, nullptr}, {"PLSOLID", R::Structure, N, nullptr}, {"PBUSH", R::Structure, Y, nullptr},
     {"PBUSH1D", R::Structure, N, nullptr}, {"PBUSH2D", R::Structure, N, nullptr}, {"PBUSHT", R::Nonlinear, N, nullptr},
     {"PMASS", R::Structure, Y, nullptr}, {"PSHEAR", R::Structure, N, nullptr}, {"PTUBE", R::Structure, N, nullptr},
     {"PBEND", R::Structure, N, nullptr}, {"PBCOMP", R::Structure, N, nullptr}, {"PBRSECT", R::Structure, N, nullptr},
@@ -104,7 +107,7 @@ const CardRole kRows[] = {
     {"FORCE", R::Load, Y, force_members}, {"MOMENT", R::Load, Y, moment_members}, {"LOAD", R::LoadCombination, Y, nullptr},
     {"FORCE1", R::Load, N, nullptr}, {"FORCE2", R::Load, N, nullptr}, {"MOMENT1", R::Load, N, nullptr},
     {"MOMENT2", R::Load, N, nullptr}, {"PLOAD", R::Load, N, nullptr}, {"PLOAD1", R::Load, Y, pload1_members},
-    {"PLOAD2", R::Load, Y, pload2_members}, {"PLOAD4", R::Load, N, nullptr}, {"PLOADX1", R::Load, N, nullptr},
+    {"PLOAD2", R::Load, Y, pload2_members}, {"PLOAD4", R::Load, Y, pload4_members}, {"PLOADX1", R::Load, N, nullptr},
     {"GRAV", R::Load, Y, grav_members}, {"RFORCE", R::Load, Y, rforce_members}, {"RFORCE1", R::Load, N, nullptr},
     {"ACCEL", R::Load, N, nullptr}, {"ACCEL1", R::Load, N, nullptr}, {"SPCD", R::Load, Y, spcd_members},
     {"SLOAD", R::Load, N, nullptr}, {"PLOADB3", R::Load, N, nullptr}, {"PRESAX", R::Load, N, nullptr},

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <string>
 #include <unordered_set>
 
@@ -13,6 +14,7 @@
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/components.hpp"
 #include "seflex/fem/constraints.hpp"
+#include "seflex/fem/element_solid.hpp"
 #include "seflex/fem/finalize.hpp"
 #include "seflex/reduction/card_usage.hpp"
 #include "seflex/reduction/case_selection.hpp"
@@ -164,6 +166,25 @@ std::vector<se::MeshCell> mesh_cells(const fem::Model& model) {
     for (int k = 0; k < s.nnode; ++k) c.nodes[static_cast<std::size_t>(k)] = node(s.g[static_cast<std::size_t>(k)]);
     c.element_id = s.id;
     cells.push_back(c);
+  }
+  // Solids: their boundary faces (a face that two solids share is inside the body and not drawn).
+  if (!model.solids.empty()) {
+    std::map<std::array<std::int32_t, 4>, std::pair<se::MeshCell, int>> faces;
+    std::array<std::vector<std::vector<int>>, 3> corners;
+    for (const auto shape : {fem::Solid::Shape::Tetra, fem::Solid::Shape::Penta, fem::Solid::Shape::Hexa})
+      corners[static_cast<std::size_t>(shape)] = fem::solid_face_corners(shape);
+    for (const fem::Solid& s : model.solids)
+      for (const auto& f : corners[static_cast<std::size_t>(s.shape)]) {
+        se::MeshCell c;
+        c.type = f.size() == 4 ? se::MeshCell::Type::Quad : se::MeshCell::Type::Triangle;
+        for (std::size_t k = 0; k < f.size(); ++k) c.nodes[k] = node(s.g[static_cast<std::size_t>(f[k])]);
+        c.element_id = s.id;
+        std::array<std::int32_t, 4> key = c.nodes;
+        std::sort(key.begin(), key.end());
+        ++faces.emplace(key, std::make_pair(c, 0)).first->second.second;
+      }
+    for (const auto& [key, cell] : faces)
+      if (cell.second == 1) cells.push_back(cell.first);
   }
   return cells;
 }

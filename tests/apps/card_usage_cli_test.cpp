@@ -15,7 +15,7 @@ std::string q(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
 
 /// A frame: two cantilevers along x (grids 1-4 and 11-14, clamped at 1 and 11 by SPC set 1) joined
 /// by a cross bar 4-14, carrying a mass (CONM2 on grid 100) through an RBE3 on grids 3, 5, 13, 14
-/// (5 hangs on 4 by an RBAR), with an MPC (set 3) tying the T3 of grids 12 and 2; a PLOAD4 in an unselected load set, a DESVAR, an
+/// (5 hangs on 4 by an RBAR), with an MPC (set 3) tying the T3 of grids 12 and 2; a PLOADX1 in an unselected load set, a DESVAR, an
 /// EIGRL that METHOD does not select.
 std::string frame_deck(const std::string& case_control) {
   return "SOL 101\nCEND\n" + case_control +
@@ -33,7 +33,7 @@ std::string frame_deck(const std::string& case_control) {
          "MPC,3,12,3,1.,2,3,-1.\n"
          "SPC1,1,123456,1,11\n"
          "FORCE,7,100,,10.,0.,0.,1.\nFORCE,8,100,,10.,0.,1.,0.\n"
-         "PLOAD4,9,1,5.\n"
+         "PLOADX1,9,1,5.\n"
          "DESVAR,1,T,1.,0.,2.\n"
          "EIGRL,2,,,4\n"
          "ENDDATA\n";
@@ -44,7 +44,7 @@ TEST(CardUsageCli, StaticPrintsWarningsAndSolvesEverySubcase) {
   dir.write("frame.bdf", frame_deck("SPC = 1\nMPC = 3\nSUBCASE 1\nLOAD = 7\nSUBCASE 2\nLOAD = 8\n"));
   const auto r = test::run_seflex("static frame.bdf -o u.csv --system global", dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const char* w : {"warning: PLOAD4: 1 card, first at frame.bdf:",
+  for (const char* w : {"warning: PLOADX1: 1 card, first at frame.bdf:",
                         "load set 9 not selected by any subcase linear statics (SOL 101) runs",
                         "warning: DESVAR: 1 card, first at frame.bdf:", "design optimisation data are not used",
                         "warning: EIGRL: 1 card", "eigenvalue methods are not used by linear statics"})
@@ -68,12 +68,12 @@ TEST(CardUsageCli, StaticPrintsWarningsAndSolvesEverySubcase) {
   EXPECT_NEAR(rows.at({1, 12})[4], rows.at({1, 2})[4], 1e-15);
   EXPECT_GT(std::abs(rows.at({1, 2})[4]), 0.0);
 
-  // the unselected PLOAD4 selected: refused, naming the card and line
+  // the unselected PLOADX1 selected: refused, naming the card and line
   dir.write("bad.bdf", frame_deck("SPC = 1\nLOAD = 9\n"));
   const auto bad = test::run_seflex("static bad.bdf", dir.path());
   EXPECT_EQ(bad.exit_code, 3);
-  EXPECT_NE(bad.err.find("error: bad.bdf:34: PLOAD4: load set 9 selected by the case control holds them, and seflex does "
-                         "not apply PLOAD4 loads; linear statics (SOL 101) cannot run without it"),
+  EXPECT_NE(bad.err.find("error: bad.bdf:34: PLOADX1: load set 9 selected by the case control holds them, and seflex does "
+                         "not apply PLOADX1 loads; linear statics (SOL 101) cannot run without it"),
             std::string::npos)
       << bad.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "bad_displacements.csv"));
@@ -85,7 +85,7 @@ TEST(CardUsageCli, InfoClassifiesForTheDecksSolConvertAndModesWarn) {
   const auto info = test::run_seflex("info frame.bdf", dir.path());
   ASSERT_EQ(info.exit_code, 0) << info.err;
   EXPECT_NE(info.out.find("card use by linear statics (SOL 101), the deck's SOL"), std::string::npos) << info.out;
-  EXPECT_NE(info.out.find("refused (the solution stops with an error)\n    PLOAD4: 1 card, first at frame.bdf:35"),
+  EXPECT_NE(info.out.find("refused (the solution stops with an error)\n    PLOADX1: 1 card, first at frame.bdf:35"),
             std::string::npos)
       << info.out;
   EXPECT_NE(info.out.find("RBE3"), std::string::npos);
@@ -93,13 +93,13 @@ TEST(CardUsageCli, InfoClassifiesForTheDecksSolConvertAndModesWarn) {
 
   const auto modes = test::run_seflex("modes frame.bdf", dir.path());
   ASSERT_EQ(modes.exit_code, 0) << modes.err;
-  EXPECT_NE(modes.err.find("warning: PLOAD4: 1 card, first at frame.bdf:35: loads are not used by normal modes (SOL 103)"),
+  EXPECT_NE(modes.err.find("warning: PLOADX1: 1 card, first at frame.bdf:35: loads are not used by normal modes (SOL 103)"),
             std::string::npos)
       << modes.err;
 
   const auto convert = test::run_seflex("convert frame.bdf -o out.bdf", dir.path());
   ASSERT_EQ(convert.exit_code, 0) << convert.err;
-  EXPECT_NE(convert.err.find("warning: PLOAD4: 1 card, first at frame.bdf:35: not written"), std::string::npos)
+  EXPECT_NE(convert.err.find("warning: PLOADX1: 1 card, first at frame.bdf:35: not written"), std::string::npos)
       << convert.err;
   const std::string written = test::read_file(dir / "out.bdf");
   for (const char* card : {"RBE3,50", "RBAR,51", "MPC,3,12,3,1.,2,3,-1."})
@@ -141,7 +141,7 @@ TEST(CardUsageCli, ReduceAcceptsRbe3RbarMpcAndExportRepeatsTheWarnings) {
   ASSERT_FALSE(s.source_warnings.empty());
   const auto e = test::run_seflex("export f.se --op4 f.op4", dir.path());
   ASSERT_EQ(e.exit_code, 0) << e.err;
-  EXPECT_NE(e.err.find("warning (reduction of frame.bdf): PLOAD4: 1 card"), std::string::npos) << e.err;
+  EXPECT_NE(e.err.find("warning (reduction of frame.bdf): PLOADX1: 1 card"), std::string::npos) << e.err;
 
   const auto ref = test::run_seflex("reduce frame.bdf --interface 100,1 -o g.se", dir.path());
   EXPECT_EQ(ref.exit_code, 3);

@@ -53,21 +53,21 @@ std::string refusal(const fem::Model& m, Solution s) {
 // A selected load set holding a card seflex does not apply refuses the deck, naming the card and its
 // line; the same card in an unselected set is a warning, and the subcase runs.
 TEST(CardUsage, SelectedLoadWithAnUnsupportedCardIsRefusedUnselectedIsAWarning) {
-  const std::string pload = "PLOAD4,9,1,5.\nLOAD,20,1.,1.,7,1.,9\n";  // line 14 (PLOAD4), 15 (LOAD)
+  const std::string pload = "PLOADX1,9,1,5.\nLOAD,20,1.,1.,7,1.,9\n";  // line 14 (PLOADX1), 15 (LOAD)
   const fem::Model used = test::read_deck(deck("SPC = 1\nLOAD = 20\n", pload));
   EXPECT_TRUE(mentions(refusal(used, Solution::Statics),
-                       {"deck.bdf:16: PLOAD4: load set 9 selected by the case control holds them, and seflex does not "
-                        "apply PLOAD4 loads; linear statics (SOL 101) cannot run without it"}));
+                       {"deck.bdf:16: PLOADX1: load set 9 selected by the case control holds them, and seflex does not "
+                        "apply PLOADX1 loads; linear statics (SOL 101) cannot run without it"}));
   EXPECT_THROW(reduction::solve_static(used), InputError);  // the library refuses too
 
   const fem::Model unused = test::read_deck(deck("SPC = 1\nLOAD = 7\n", pload));
   const auto u = usage(unused, Solution::Statics);
   EXPECT_FALSE(u.refused());
-  const CardUse* p = find(u, "PLOAD4");
+  const CardUse* p = find(u, "PLOADX1");
   ASSERT_NE(p, nullptr);
   EXPECT_EQ(p->kind, CardUse::Kind::Unused);
   EXPECT_EQ(reduction::describe(unused, *p),
-            "PLOAD4: 1 card, first at deck.bdf:16: load set 9 not selected by any subcase linear statics (SOL 101) runs");
+            "PLOADX1: 1 card, first at deck.bdf:16: load set 9 not selected by any subcase linear statics (SOL 101) runs");
   EXPECT_NO_THROW(reduction::solve_static(unused));
   // in normal modes every load card is unused
   const auto modes = usage(unused, Solution::NormalModes);
@@ -148,13 +148,13 @@ TEST(CardUsage, Spc1ThruSkipsMissingGrids) {
 // Elements, properties, materials seflex does not model refuse every solution; seflex convert and
 // seflex info only list them.
 TEST(CardUsage, UnsupportedStructureRefusesEverySolution) {
-  const fem::Model m = test::read_deck(deck("SPC = 1\nLOAD = 7\n", "CHEXA,9,3,1,2,3,1,2,3\n,1,2\nPSOLID,3,1\n"));
+  const fem::Model m = test::read_deck(deck("SPC = 1\nLOAD = 7\n", "CPYRAM,9,3,1,2,3,1,2,3\n,1,2\nPLSOLID,3,1\n"));
   for (const Solution s : {Solution::Statics, Solution::NormalModes, Solution::CraigBampton})
-    EXPECT_TRUE(mentions(refusal(m, s), {"deck.bdf:16: CHEXA: seflex does not model CHEXA", "cannot run without it",
+    EXPECT_TRUE(mentions(refusal(m, s), {"deck.bdf:16: CPYRAM: seflex does not model CPYRAM", "cannot run without it",
                                          "1 more problem"}));
   const auto c = reduction::check_card_usage(m, Solution::Convert, {});
   EXPECT_FALSE(c.refused());
-  EXPECT_EQ(find(c, "CHEXA")->reason, "not written: seflex does not model it");
+  EXPECT_EQ(find(c, "CPYRAM")->reason, "not written: seflex does not model it");
 }
 
 // Composite and anisotropic shell cards are used by every solution (issue 13): no refusal; what they

@@ -135,7 +135,7 @@ TEST(FemBadInput, UndefinedSets) {
     fem::load_vector(m, dofs, 12);
     ADD_FAILURE() << "no error for an undefined load set";
   } catch (const InputError& e) {
-    EXPECT_TRUE(mentions(e.what(), {"case control LOAD = 12", "no LOAD, FORCE, MOMENT, PLOAD2, GRAV or RFORCE"}));
+    EXPECT_TRUE(mentions(e.what(), {"case control LOAD = 12", "no LOAD, FORCE, MOMENT, PLOAD2, PLOAD4, GRAV or RFORCE"}));
   }
   EXPECT_EQ(fem::load_vector(m, dofs, 4)[6 + 2], 1.0);
 }

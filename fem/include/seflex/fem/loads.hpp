@@ -4,6 +4,10 @@
 //
 // FORCE  SID G CID F N1 N2 N3:  force  F (N1, N2, N3) in system CID (axes at the grid) on G's T1-T3;
 // MOMENT SID G CID M N1 N2 N3:  moment M (N1, N2, N3) on G's R1-R3.
+// PLOAD4 (face_pressure.hpp):   corner pressures P1..P4 on a CQUAD4/CTRIA3 or on the face of a CHEXA/
+//                               CPENTA/CTETRA (G1, G3/G4), work-equivalent grid forces f_a = int N_a p d dA
+//                               with d the shell normal, the inward normal of a solid face, or N/|N| in CID;
+//                               the THRU form loads the shells of the range and skips other ids.
 // PLOAD2 SID P EID...:          uniform pressure P on CQUAD4/CTRIA3, along the element normal
 //                               (right-hand rule on G1 G2 G3 [G4], MSC QRG PLOAD2 remark); work-
 //                               equivalent corner forces f_i = P int N_i n dA (bilinear N_i of the

@@ -20,13 +20,11 @@
 #include <unordered_map>
 #include <vector>
 
+#include "seflex/fem/card_ref.hpp"
+#include "seflex/fem/model_solids.hpp"
+
 namespace seflex::fem {
 
-/// Source of a card: index into Model::files, 1-based line of the card's first line.
-struct CardRef {
-  std::uint32_t file = 0;
-  std::uint32_t line = 0;
-};
 
 using ComponentMask = std::uint8_t;  ///< bit (c-1) for component c = 1..6
 
@@ -552,6 +550,8 @@ struct Model {
   std::vector<Bush> bushes;                    ///< CBUSH
   std::vector<ScalarMass> scalar_masses;       ///< CMASS1-4
   std::vector<Conm1> conm1;
+  std::vector<SolidProperty> solid_props;   ///< PSOLID
+  std::vector<Solid> solids;                ///< CHEXA, CPENTA, CTETRA
   std::vector<Rbe2> rbe2;
   std::vector<Rbar> rbars;
   std::vector<Rbe3> rbe3;
@@ -565,6 +565,7 @@ struct Model {
   std::vector<PressureLoad> pressure_loads;
   std::vector<BarLineLoad> bar_line_loads;         ///< PLOAD1
   std::vector<EnforcedMotion> enforced_motions;    ///< SPCD
+  std::vector<FaceLoad> face_loads;         ///< PLOAD4
   std::vector<GravityLoad> gravity_loads;
   std::vector<RotationalLoad> rotational_loads;
   std::vector<LoadCombination> load_combinations;
@@ -585,7 +586,7 @@ struct Model {
   // Lookups, built by fem::finalize (id -> position in the vector above).
   std::unordered_map<int, std::uint32_t> grid_index, coord_index, mat1_index, mat2_index, mat8_index,
       bar_prop_index, rod_prop_index, shell_prop_index, composite_prop_index, spring_prop_index, spoint_index,
-      bush_prop_index, mass_prop_index;
+      bush_prop_index, mass_prop_index, solid_prop_index;
   bool finalized = false;
 };
 

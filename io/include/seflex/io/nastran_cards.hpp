@@ -56,6 +56,12 @@ void parse_conm2(const Card&, ReaderState&);
 void parse_celas1(const Card&, ReaderState&);
 void parse_celas2(const Card&, ReaderState&);
 void parse_rbe2(const Card&, ReaderState&);
+// Solids and face pressures (nastran_cards_solids.cpp)
+void parse_chexa(const Card&, ReaderState&);
+void parse_cpenta(const Card&, ReaderState&);
+void parse_ctetra(const Card&, ReaderState&);
+void parse_psolid(const Card&, ReaderState&);
+void parse_pload4(const Card&, ReaderState&);
 // Materials and properties (nastran_cards_properties.cpp)
 void parse_mat1(const Card&, ReaderState&);
 void parse_mat2(const Card&, ReaderState&);

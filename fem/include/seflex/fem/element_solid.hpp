@@ -1,0 +1,67 @@
+#pragma once
+// CHEXA (8/20 grids), CPENTA (6/15), CTETRA (4/10): isoparametric linear-elastic solids with PSOLID
+// and an isotropic MAT1. Matrices are 3N x 3N on the translations T1 T2 T3 of the N grids (grid after
+// grid, BASIC components); solids give no rotational stiffness or mass (assembly puts these blocks
+// into the 6-dof grid blocks; AUTOSPC removes rotations nothing else stiffens).
+//
+// Stiffness K = int B^T D B dV, D the isotropic elasticity matrix (Voigt xx yy zz xy yz zx,
+// engineering shear strains; lambda = E nu / ((1 + nu)(1 - 2 nu)), mu = E / (2 (1 + nu)) from MAT1
+// E and nu, nu < 0.5). Integration (PSOLID IN / ISOP, docs/nastran-support.md):
+// - CHEXA 8, IN blank or BUBBLE (MSC's default "reduced shear with bubble functions"): 2 x 2 x 2
+//   Gauss with the three incompatible bubble modes 1 - xi_k^2 per displacement component, condensed
+//   statically; their strains use the centre Jacobian scaled by det J0 / det J so that the element
+//   passes the constant-strain patch test on any shape (Wilson, Taylor, Doherty & Ghaboussi,
+//   "Incompatible displacement models", 1973; Taylor, Beresford & Wilson, IJNME 10 (1976)
+//   1211-1219). Exact in pure bending on a rectangular brick: no shear locking.
+//   IN = TWO with ISOP = FULL: plain 2 x 2 x 2 Gauss. IN = THREE: 3 x 3 x 3 Gauss.
+// - CPENTA 6, CTETRA 4: full integration (exact for the straight-sided element), no bubbles.
+// - CHEXA 20 (3 x 3 x 3 Gauss), CPENTA 15 and CTETRA 10 (collapsed Gauss rules, 3 points per
+//   direction, exact for straight sides): full integration; reduced integration of the quadratic
+//   solids (IN = TWO) is refused by the reader.
+// Mass (before WTMASS): coupled (COUPMASS > 0) rho int N_a N_b dV on each translation; lumped
+// (Nastran's default): rho int N_a dV for the linear solids (V/8 per grid of a parallelepiped), and
+// for the quadratic ones, whose int N_a dV are negative at the corners, the diagonal of the coupled
+// mass scaled to the element mass (Hinton, Rock & Zienkiewicz, "A note on mass lumping and related
+// processes in the finite element method", Earthquake Eng. Struct. Dyn. 4 (1976) 245-249).
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+#include "seflex/fem/element_common.hpp"
+#include "seflex/fem/model.hpp"
+
+namespace seflex::fem {
+
+struct SolidElement {
+  enum class Scheme : unsigned char { Gauss, IncompatibleModes };
+  Solid::Shape shape = Solid::Shape::Hexa;
+  int nnode = 8;
+  std::array<Eigen::Vector3d, 20> x{};                         ///< grid positions, basic, QRG order
+  Eigen::Matrix<double, 6, 6> D = Eigen::Matrix<double, 6, 6>::Zero();  ///< elasticity (isotropic: any axes)
+  double rho = 0;
+  Scheme scheme = Scheme::Gauss;
+  int points = 2;                                              ///< quadrature points per direction
+};
+
+/// Isotropic elasticity matrix (6 x 6, Voigt xx yy zz xy yz zx with engineering shear strains).
+Eigen::Matrix<double, 6, 6> isotropic_elasticity(double E, double nu);
+
+/// Stiffness (3N x 3N, basic translations).
+Eigen::MatrixXd solid_stiffness(const SolidElement& e);
+/// Mass (3N x 3N, basic translations), before WTMASS.
+Eigen::MatrixXd solid_mass(const SolidElement& e, MassKind kind);
+/// Volume int dV.
+double solid_volume(const SolidElement& e);
+
+/// Corner grids (0-based positions in the element's grid list) of each face of a shape, ordered so
+/// that the right-hand rule gives the outward normal of an element numbered as the QRG figures show:
+/// CHEXA 6 quadrilaterals; CPENTA 2 triangles then 3 quadrilaterals; CTETRA 4 triangles.
+std::vector<std::vector<int>> solid_face_corners(Solid::Shape shape);
+
+/// Resolve a CHEXA/CPENTA/CTETRA of a finalized model: grids, PSOLID, MAT1, integration scheme.
+/// Throws InputError for undefined references, a material that is not a MAT1, nu >= 0.5 or E <= 0,
+/// a distorted element (Jacobian determinant zero or changing sign inside the element), or (unless
+/// mass_only: the mass does not depend on it) an integration scheme not modelled (PSOLID IN / ISOP).
+SolidElement make_solid_element(const Model& model, const Solid& solid, bool mass_only = false);
+
+}  // namespace seflex::fem

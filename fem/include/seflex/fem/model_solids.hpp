@@ -1,0 +1,55 @@
+#pragma once
+// Model cards of solid elements and face pressure loads (part of model.hpp, kept apart to keep that
+// header short): PSOLID, CHEXA/CPENTA/CTETRA, PLOAD4. Field layouts: MSC Nastran Quick Reference
+// Guide (docs/nastran-support.md). No parsing and no numerics here.
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <string>
+
+#include "seflex/fem/card_ref.hpp"
+
+namespace seflex::fem {
+
+/// PSOLID PID MID CORDM IN STRESS ISOP FCTN. Only isotropic MAT1 materials are modelled, so CORDM
+/// (the material axes) does not change results; IN/ISOP select the integration (element_solid.hpp);
+/// STRESS (stress output system) is read and ignored; FCTN other than SMECH is refused by the reader.
+struct SolidProperty {
+  enum class Integration : std::uint8_t { Default, Bubble, Two, Three };
+  enum class Isop : std::uint8_t { Default, Reduced, Full };
+  int id = 0, mid = 0;
+  int cordm = 0;                     ///< -1 element system, 0 basic, > 0 a coordinate system
+  Integration in = Integration::Default;
+  Isop isop = Isop::Default;
+  std::string stress;                ///< raw field text (GRID, blank or a system id)
+  std::string fctn;                  ///< raw field text (blank = SMECH)
+  CardRef ref;
+};
+
+/// CHEXA (8 or 20 grids), CPENTA (6 or 15), CTETRA (4 or 10), grids in Nastran's order: corners,
+/// then the mid-edge grids (QRG CHEXA/CPENTA/CTETRA figures). nnode tells which.
+struct Solid {
+  enum class Shape : std::uint8_t { Tetra, Penta, Hexa };
+  int id = 0, pid = 0;
+  Shape shape = Shape::Hexa;
+  std::uint8_t nnode = 8;
+  std::array<int, 20> g{};
+  CardRef ref;
+  const char* card() const { return shape == Shape::Hexa ? "CHEXA" : shape == Shape::Penta ? "CPENTA" : "CTETRA"; }
+};
+
+/// PLOAD4 SID EID P1 P2 P3 P4 G1 G3/G4 / CID N1 N2 N3 SORL LDIR, or SID EID1 P1..P4 THRU EID2 (shells).
+/// P2..P4 blank = P1 (p_blank). Without a direction (N = 0) the pressure acts along the face normal:
+/// a shell's normal (right-hand rule on G1 G2 G3), or a solid face's inward normal (QRG PLOAD4).
+/// With N, the load per unit area p acts along N / |N| (N in system CID at the face).
+struct FaceLoad {
+  int sid = 0;
+  int eid = 0, eid_last = 0;         ///< eid_last > 0: the THRU form, elements eid..eid_last
+  std::array<double, 4> p{};
+  int g1 = 0, g34 = 0;               ///< solids: face corner G1 and G3 (HEXA/PENTA) or G4 (TETRA)
+  int cid = 0;
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  CardRef ref;
+};
+
+}  // namespace seflex::fem

@@ -1,0 +1,104 @@
+#pragma once
+// Test helper: structured solid meshes of a box [0, Lx] x [0, Ly] x [0, Lz] (n cells per direction)
+// in a fem::Model, for every solid type: CHEXA 8/20 (one per cell), CPENTA 6/15 (two per cell, the
+// cell's xy square cut along its diagonal), CTETRA 4/10 (six per cell, Kuhn's split along the cell
+// diagonal: conforming). Quadratic elements take their mid-edge grids from a lattice twice as fine.
+// Only grids that an element uses are created. Grid id = 1 + lattice index.
+#include <array>
+#include <functional>
+#include <map>
+#include <vector>
+
+#include "fem_test_util.hpp"
+
+namespace seflex::fem::test {
+
+enum class SolidType { Hexa8, Hexa20, Penta6, Penta15, Tetra4, Tetra10 };
+inline const char* name(SolidType t) {
+  static const char* n[] = {"CHEXA8", "CHEXA20", "CPENTA6", "CPENTA15", "CTETRA4", "CTETRA10"};
+  return n[static_cast<int>(t)];
+}
+inline bool quadratic(SolidType t) { return t == SolidType::Hexa20 || t == SolidType::Penta15 || t == SolidType::Tetra10; }
+
+struct BoxMesh {
+  int nx = 1, ny = 1, nz = 1;
+  double Lx = 1, Ly = 1, Lz = 1;
+  /// Lattice point (i, j, k) on the doubled lattice (0..2n) -> grid id.
+  int id(int i, int j, int k) const { return 1 + i + (2 * nx + 1) * (j + (2 * ny + 1) * k); }
+  Eigen::Vector3d point(int i, int j, int k) const {
+    return {Lx * i / (2.0 * nx), Ly * j / (2.0 * ny), Lz * k / (2.0 * nz)};
+  }
+};
+
+/// Add PSOLID 1 / MAT1 1 and the elements and grids of `box` to m. `map` (optional) moves the
+/// lattice points (e.g. to a cylinder). Returns the lattice coordinates of every grid by id.
+inline std::map<int, std::array<int, 3>> add_box_solids(Model& m, const BoxMesh& box, SolidType type, double E,
+                                                        double nu, double rho,
+                                                        const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& map = {}) {
+  add_mat1(m, 1, E, nu, rho);
+  SolidProperty p;
+  p.id = 1;
+  p.mid = 1;
+  m.solid_props.push_back(p);
+  std::map<int, std::array<int, 3>> used;
+  using P = std::array<int, 3>;
+  int eid = 1;
+  auto mid = [](const P& a, const P& b) { return P{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2}; };
+  auto add = [&](Solid::Shape shape, const std::vector<P>& corners, const std::vector<std::array<int, 2>>& edges) {
+    Solid s;
+    s.id = eid++;
+    s.pid = 1;
+    s.shape = shape;
+    std::vector<P> pts = corners;
+    if (quadratic(type))
+      for (const auto& e : edges) pts.push_back(mid(corners[static_cast<std::size_t>(e[0])], corners[static_cast<std::size_t>(e[1])]));
+    s.nnode = static_cast<std::uint8_t>(pts.size());
+    for (std::size_t k = 0; k < pts.size(); ++k) {
+      s.g[k] = box.id(pts[k][0], pts[k][1], pts[k][2]);
+      used[s.g[k]] = pts[k];
+    }
+    m.solids.push_back(s);
+  };
+  static const std::vector<std::array<int, 2>> hexa_edges = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {1, 5},
+                                                            {2, 6}, {3, 7}, {4, 5}, {5, 6}, {6, 7}, {7, 4}};
+  static const std::vector<std::array<int, 2>> penta_edges = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 4},
+                                                             {2, 5}, {3, 4}, {4, 5}, {5, 3}};
+  static const std::vector<std::array<int, 2>> tetra_edges = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+  for (int k = 0; k < box.nz; ++k)
+    for (int j = 0; j < box.ny; ++j)
+      for (int i = 0; i < box.nx; ++i) {
+        auto c = [&](int a, int b, int d) { return P{2 * (i + a), 2 * (j + b), 2 * (k + d)}; };
+        switch (type) {
+          case SolidType::Hexa8:
+          case SolidType::Hexa20:
+            add(Solid::Shape::Hexa, {c(0, 0, 0), c(1, 0, 0), c(1, 1, 0), c(0, 1, 0), c(0, 0, 1), c(1, 0, 1), c(1, 1, 1), c(0, 1, 1)},
+                hexa_edges);
+            break;
+          case SolidType::Penta6:
+          case SolidType::Penta15:
+            add(Solid::Shape::Penta, {c(0, 0, 0), c(1, 0, 0), c(1, 1, 0), c(0, 0, 1), c(1, 0, 1), c(1, 1, 1)}, penta_edges);
+            add(Solid::Shape::Penta, {c(0, 0, 0), c(1, 1, 0), c(0, 1, 0), c(0, 0, 1), c(1, 1, 1), c(0, 1, 1)}, penta_edges);
+            break;
+          case SolidType::Tetra4:
+          case SolidType::Tetra10: {
+            static const int perm[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+            for (const auto& pr : perm) {
+              P v1{0, 0, 0}, v2;
+              v1[static_cast<std::size_t>(pr[0])] = 1;
+              v2 = v1;
+              v2[static_cast<std::size_t>(pr[1])] = 1;
+              add(Solid::Shape::Tetra, {c(0, 0, 0), c(v1[0], v1[1], v1[2]), c(v2[0], v2[1], v2[2]), c(1, 1, 1)}, tetra_edges);
+            }
+            break;
+          }
+        }
+      }
+  for (const auto& [gid, lp] : used) {
+    Eigen::Vector3d x = box.point(lp[0], lp[1], lp[2]);
+    if (map) x = map(x);
+    add_grid(m, gid, x.x(), x.y(), x.z());
+  }
+  return used;
+}
+
+}  // namespace seflex::fem::test

@@ -1,0 +1,85 @@
+// CHEXA/CPENTA/CTETRA, PSOLID and PLOAD4: what the reader accepts, and the errors (file:line, card,
+// field, what was expected) for what it refuses or cannot use.
+#include <gtest/gtest.h>
+
+#include "nastran_test_util.hpp"
+#include "seflex/fem/assembly.hpp"
+#include "seflex/fem/loads.hpp"
+
+using namespace seflex;
+using seflex::test::mentions;
+using seflex::test::read_deck;
+using seflex::test::read_error;
+
+namespace {
+
+/// A unit cube CHEXA 10 (PSOLID 2, MAT1 1) on grids 1-8; `more` appended.
+std::string cube(const std::string& more, const std::string& psolid = "PSOLID,2,1\n") {
+  return "MAT1,1,2.1+11,,0.3,7800.\n" + psolid +
+         "GRID,1,,0.,0.,0.\nGRID,2,,1.,0.,0.\nGRID,3,,1.,1.,0.\nGRID,4,,0.,1.,0.\n"
+         "GRID,5,,0.,0.,1.\nGRID,6,,1.,0.,1.\nGRID,7,,1.,1.,1.\nGRID,8,,0.,1.,1.\n"
+         "CHEXA,10,2,1,2,3,4,5,6\n,7,8\n" + more;
+}
+
+std::string load_error(const std::string& deck, int sid) {
+  const fem::Model m = read_deck(deck);
+  try {
+    fem::load_vector(m, fem::make_dof_map(m), sid);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "load vector built without error";
+  return "";
+}
+
+TEST(SolidInput, CardsAreReadWithTheirDefaults) {
+  const fem::Model m = read_deck(cube("PLOAD4,3,10,2.,,,,1,7\n,,0.,0.,1.\nPLOAD4,4,10,1.,2.,3.,4.,THRU,12\n"));
+  ASSERT_EQ(m.solids.size(), 1u);
+  EXPECT_EQ(m.solids[0].nnode, 8);
+  EXPECT_EQ(m.solids[0].g[7], 8);
+  ASSERT_EQ(m.solid_props.size(), 1u);
+  EXPECT_EQ(m.solid_props[0].in, fem::SolidProperty::Integration::Default);
+  ASSERT_EQ(m.face_loads.size(), 2u);
+  EXPECT_EQ(m.face_loads[0].p[3], 2.0);  // blank P2-P4 = P1
+  EXPECT_EQ(m.face_loads[0].g34, 7);
+  EXPECT_EQ(m.face_loads[0].n.z(), 1.0);
+  EXPECT_EQ(m.face_loads[1].eid_last, 12);
+  EXPECT_EQ(m.face_loads[1].p[3], 4.0);
+  // A uniform pressure on the face x = 1 (G1 = 2, G3 = 7) pushes along -x with p A.
+  const fem::Model m2 = read_deck(cube("PLOAD4,5,10,3.,,,,2,7\n"));
+  const fem::DofMap dofs = fem::make_dof_map(m2);
+  const Eigen::VectorXd f = fem::load_vector(m2, dofs, 5);
+  double Fx = 0;
+  for (Eigen::Index gi = 0; gi < 8; ++gi) Fx += f[dofs.grid_dof(gi, 1)];
+  EXPECT_NEAR(Fx, -3.0, 1e-12);
+}
+
+TEST(SolidInput, ReaderErrorsNameTheField) {
+  EXPECT_TRUE(mentions(read_error(cube("CHEXA,11,2,1,2,3,4,5,6\n,7,8,9\n")), {"deck.bdf:", "CHEXA 11", "G10", "mid-edge grids"}));
+  EXPECT_TRUE(mentions(read_error(cube("CTETRA,11,2,1,2,3,3\n")), {"CTETRA 11", "G4", "repeats G3"}));
+  EXPECT_TRUE(mentions(read_error(cube("", "PSOLID,2,1,,,,,PFLUID\n")), {"PSOLID 2", "FCTN", "fluid elements are not supported"}));
+  EXPECT_TRUE(mentions(read_error(cube("", "PSOLID,2,1,,FOUR\n")), {"PSOLID 2", "IN", "0/BUBBLE, 2/TWO, 3/THREE"}));
+  EXPECT_TRUE(mentions(read_error(cube("PLOAD4,3,10,1.,,,,1,7\n,,0.,0.,1.,LINE\n")), {"PLOAD4 3", "SORL", "edge line loads"}));
+}
+
+TEST(SolidInput, ModelErrorsNameTheCard) {
+  // PSOLID referencing a material that is not a MAT1, reduced shear integration of a CHEXA 8.
+  EXPECT_TRUE(mentions(test::read_error(cube("", "PSOLID,2,9\n")), {"PSOLID 2", "MID", "9"}));
+  {
+    const fem::Model m = read_deck(cube("", "PSOLID,2,1,,TWO\n"));
+    try {
+      fem::assemble(m, fem::assembly_options(m));
+      ADD_FAILURE() << "assembled";
+    } catch (const InputError& e) {
+      EXPECT_TRUE(mentions(e.what(), {"deck.bdf:2", "PSOLID 2", "IN = TWO with ISOP blank or REDUCED", "not modelled"}));
+    }
+  }
+  // PLOAD4 face selection.
+  EXPECT_TRUE(mentions(load_error(cube("PLOAD4,3,10,1.\n"), 3), {"PLOAD4 3", "element 10 (CHEXA)", "G1 is blank"}));
+  EXPECT_TRUE(mentions(load_error(cube("PLOAD4,3,10,1.,,,,1,7\n"), 3), {"PLOAD4 3", "G3", "not diagonally opposite"}));
+  EXPECT_TRUE(mentions(load_error(cube("PLOAD4,3,10,1.,,,,1,2\n"), 3), {"not diagonally opposite"}));
+  EXPECT_TRUE(mentions(load_error(cube("PLOAD4,3,10,1.,,,,99,7\n"), 3), {"G1", "grid 99 is not a corner grid"}));
+  EXPECT_TRUE(mentions(load_error(cube("PLOAD4,3,77,1.\n"), 3), {"PLOAD4 3", "element 77 is not defined", "CHEXA, CPENTA or CTETRA"}));
+}
+
+}  // namespace
