@@ -7,7 +7,7 @@
 #include <limits>
 #include <string>
 
-#include "buckling_solution.hpp"
+#include "seflex/reduction/buckling.hpp"
 #include "command.hpp"
 #include "model_args.hpp"
 #include "seflex/io/model_reader.hpp"
@@ -20,7 +20,7 @@ namespace {
 
 namespace red = seflex::reduction;
 
-void print_table(const seflex::app::BucklingSolution& s) {
+void print_table(const seflex::reduction::BucklingSolution& s) {
   std::printf("\n%58s\n", "R E A L   E I G E N V A L U E S");
   std::printf("   (eigenvalue = buckling load factor: the preload times it is the critical load)\n");
   std::printf("   MODE   EXTRACTION    EIGENVALUE     GENERALIZED\n");
@@ -32,7 +32,7 @@ void print_table(const seflex::app::BucklingSolution& s) {
 
 int run_buckling(seflex::app::Args& args) {
   using seflex::app::UsageError;
-  seflex::app::BucklingOptions o;
+  seflex::reduction::BucklingOptions o;
   constexpr int kAbsent = std::numeric_limits<int>::min();
   if (const int count = args.integer("count", kAbsent); count != kAbsent) {
     if (count < 1) throw UsageError("option --count must be at least 1");
@@ -57,11 +57,11 @@ int run_buckling(seflex::app::Args& args) {
 
   const auto t0 = std::chrono::steady_clock::now();
   const seflex::fem::Model model = seflex::io::read_model(deck, model_options);
-  const auto [preload, buckle] = seflex::app::buckling_cases(model);
+  const auto [preload, buckle] = seflex::reduction::buckling_cases(model);
   std::vector<red::CaseSelection> cases = {preload};
   if (buckle.subcase_id != preload.subcase_id) cases.push_back(buckle);
   seflex::app::check_and_print_card_usage(model, red::check_card_usage(model, red::Solution::Buckling, cases));
-  const seflex::app::BucklingSolution s = seflex::app::solve_buckling(model, o);
+  const seflex::reduction::BucklingSolution s = seflex::reduction::solve_buckling(model, o);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   std::printf("linear buckling of %s: preload %s", deck.c_str(), red::case_name(s.preload).c_str());

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "buckling_solution.hpp"
+#include "seflex/reduction/buckling.hpp"
 #include "command.hpp"
 #include "info_superelement.hpp"
 #include "seflex/fem/finalize.hpp"
@@ -89,7 +89,7 @@ void print_card_usage(const seflex::fem::Model& m) {
   else if (sol == red::Solution::NormalModes) cases = {red::select_case(m)};
   else if (sol == red::Solution::Buckling) {
     try {  // the preload and METHOD subcases `seflex buckling` runs
-      const auto [preload, buckle] = seflex::app::buckling_cases(m);
+      const auto [preload, buckle] = seflex::reduction::buckling_cases(m);
       cases = {preload};
       if (buckle.subcase_id != preload.subcase_id) cases.push_back(buckle);
     } catch (const seflex::InputError& e) {

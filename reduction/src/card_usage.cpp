@@ -347,6 +347,7 @@ class Classifier {
     if (n.rfind("TEMPERATURE", 0) == 0)
       return report_.add(Kind::Unused, card, cmd.ref,
                          what + ": not used by " + std::string(sol()) + " (no temperature-dependent materials)");
+    if (s_ == Solution::Buckling && (n == "STATSUB" || n.rfind("STATSUB(", 0) == 0)) return;  // the preload subcase: used
     report_.add(Kind::Unused, card, cmd.ref, what + ": not used by " + std::string(sol()));
   }
 

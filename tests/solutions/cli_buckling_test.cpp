@@ -56,6 +56,26 @@ TEST(BucklingCli, EulerColumnTableCsvAndVtk) {
   EXPECT_TRUE(std::filesystem::exists(dir / "m.vtu"));
 }
 
+// STATSUB names the preload subcase (QRG case control): the same load factors, and the command is
+// not reported as unused.
+TEST(BucklingCli, StatsubNamesThePreload) {
+  test::TempDir dir;
+  std::string text = test::read_file(deck("euler_column_cbar.bdf"));
+  const auto at = text.find("  METHOD = 10");
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at, "  STATSUB = 1\n");
+  dir.write("statsub.bdf", text);
+  const auto plain = test::run_seflex("buckling '" + deck("euler_column_cbar.bdf").string() + "' --csv a.csv", dir.path());
+  const auto r = test::run_seflex("buckling statsub.bdf --csv b.csv", dir.path());
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find("STATSUB"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("STATSUB"), std::string::npos) << r.out;
+  const auto a = csv_rows(dir / "a.csv"), b = csv_rows(dir / "b.csv");
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t j = 0; j < a.size(); ++j) EXPECT_EQ(a[j][1], b[j][1]);
+}
+
 // The plate deck (tests/data/buckling/plate_ss_cquad4_10x10.bdf, 630 free dofs: above the dense
 // solver's threshold, so the Lanczos backends really run): the three backends agree, and the first
 // load factor is the plate's N_cr = 4 pi^2 D / b^2 (Timoshenko & Gere 1961, sec. 9.2) within 1 %, from

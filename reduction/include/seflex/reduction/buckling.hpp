@@ -33,7 +33,7 @@
 #include "seflex/reduction/case_selection.hpp"
 #include "seflex/reduction/eigensolver.hpp"
 
-namespace seflex::app {
+namespace seflex::reduction {
 
 struct BucklingOptions {
   std::optional<int> count;  ///< overrides EIGRL ND
@@ -57,4 +57,4 @@ std::pair<reduction::CaseSelection, reduction::CaseSelection> buckling_cases(con
 
 BucklingSolution solve_buckling(const fem::Model& model, const BucklingOptions& options = {});
 
-}  // namespace seflex::app
+}  // namespace seflex::reduction

@@ -1,5 +1,5 @@
 // Linear buckling, SOL 105 (see buckling_solution.hpp).
-#include "buckling_solution.hpp"
+#include "seflex/reduction/buckling.hpp"
 
 #include <Eigen/SparseCholesky>
 #include <algorithm>
@@ -15,10 +15,10 @@
 #include "seflex/fem/geometric_stiffness.hpp"
 #include "seflex/reduction/statics.hpp"
 
-namespace seflex::app {
+namespace seflex::reduction {
 namespace {
 
-using reduction::CaseSelection;
+using seflex::reduction::CaseSelection;
 
 // STATSUB(BUCKLING) = n / STATSUB = n of a subcase, if any.
 std::optional<int> statsub(const fem::Model& model, const CaseSelection& c) {
@@ -180,4 +180,4 @@ BucklingSolution solve_buckling(const fem::Model& model, const BucklingOptions& 
   return s;
 }
 
-}  // namespace seflex::app
+}  // namespace seflex::reduction
