@@ -36,7 +36,9 @@ void assemble_rigid(const Model& model, Data& data, const AssemblyOptions& opt, 
   const auto& cdofs = data.pattern.dofs[static_cast<std::size_t>(ci)];
   const int nc = static_cast<int>(cdofs.size());
   if (nc == 0) return;
-  MatrixXd J(6, nc);
+  auto off_of = [&]() -> const std::vector<int>& { return data.pattern.offsets[static_cast<std::size_t>(ci)]; };
+  auto& J = rd.J;  // the anchor's Jacobian, body scratch (no allocation after the first call)
+  J.resize(6, nc);
   for (int k = 0; k < nc; ++k) J.col(k) = A.J[static_cast<std::size_t>(k)];
   // Residual scale: magnitudes of the inertia and gravity parts before they cancel (|J^T F| alone
   // vanishes with the residual itself for a body on a single hinge, leaving no relative scale).
@@ -44,26 +46,32 @@ void assemble_rigid(const Model& model, Data& data, const AssemblyOptions& opt, 
   const Vector3d Ft_mag = (m * (A.a + al.cross(c) + w.cross(w.cross(c)))).cwiseAbs() + (m * g).cwiseAbs();
   F_mag.head<3>() = Ft_mag;
   F_mag.tail<3>() = (I * al).cwiseAbs() + w.cross(I * w).cwiseAbs() + Vector3d::Constant(c.norm() * Ft_mag.norm());
-  const Eigen::VectorXd sc = J.cwiseAbs().transpose() * F_mag;
-  for (int k = 0; k < nc; ++k) data.scale[cdofs[static_cast<std::size_t>(k)]] += sc[k];
+  for (int k = 0; k < nc; ++k) data.scale[cdofs[static_cast<std::size_t>(k)]] += J.col(k).cwiseAbs().dot(F_mag);
+  // vals += J^T X6 Y (X6 6 x 6, Y 6 x nc) through the body's scratch.
+  auto scatter_JtXY = [&](std::vector<double>& vals, const Eigen::Matrix<double, 6, 6>& X6, const Eigen::Matrix<double, 6, Eigen::Dynamic>& Y) {
+    rd.XY.noalias() = X6 * Y;
+    rd.JtXY.noalias() = J.transpose() * rd.XY;
+    scatter(vals, off_of(), rd.JtXY);
+  };
   if (!opt.matrices) return;
   const Matrix3d cx = skew(c), wx = skew(w), ax = skew(al);
-  const auto& off = data.pattern.offsets[static_cast<std::size_t>(ci)];
   Eigen::Matrix<double, 6, 6> K6 = Eigen::Matrix<double, 6, 6>::Zero();
   const Matrix3d dFt = -m * (ax + wx * wx) * cx;
   K6.block<3, 3>(0, 3) = dFt;
   K6.block<3, 3>(3, 3) = -skew(I * al) + I * ax + wx * (-skew(I * w) + I * wx) + skew(F.head<3>()) * cx + cx * dFt;
-  scatter(data.K, off, J.transpose() * K6 * J);
+  scatter_JtXY(data.K, K6, J);
   if (!opt.dynamics) return;
   const Eigen::Matrix<double, 6, 6>& M6 = rw.M6;
-  scatter(data.M, off, J.transpose() * M6 * J);
+  scatter_JtXY(data.M, M6, J);
   Eigen::Matrix<double, 6, 6> C6 = Eigen::Matrix<double, 6, 6>::Zero();
   const Matrix3d dFt_dw = m * (-skew(w.cross(c)) - wx * cx);
   C6.block<3, 3>(0, 3) = dFt_dw;
   C6.block<3, 3>(3, 3) = wx * I - skew(I * w) + cx * dFt_dw;
-  MatrixXd G(6, nc);  // convective terms of the node tree
+  auto& G = rd.G;  // convective terms of the node tree
+  G.resize(6, nc);
   for (int k = 0; k < nc; ++k) G.col(k) = A.G[static_cast<std::size_t>(k)];
-  scatter(data.C, off, J.transpose() * (C6 * J + M6 * G));
+  scatter_JtXY(data.C, C6, J);
+  scatter_JtXY(data.C, M6, G);
 }
 
 }  // namespace seflex::mbd::detail

@@ -70,6 +70,8 @@ struct RigidBodyData {
   Vector6d f = Vector6d::Zero();  ///< inertia wrench at the anchor
   double kinetic = 0.0;
   Eigen::Vector3d p_WCm = Eigen::Vector3d::Zero();
+  Eigen::Matrix<double, 6, Eigen::Dynamic> J, G, XY;  ///< scratch: anchor Jacobian, convective terms, X6 Y
+  Eigen::MatrixXd JtXY;                               ///< scratch: J^T X6 Y on the clique
 };
 
 /// Sparse pattern made of dense cliques (body, node and force-element dof sets).
