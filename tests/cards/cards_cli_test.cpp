@@ -23,21 +23,6 @@ const char* kDeck =
     "MAT1,1,7.e10,,0.3,2700.\nPBARL,20,1,,HAT\n,0.05,0.003,0.04,0.015\nCBAR,21,20,3,4,0.,0.,1.\n"
     "PLOAD1,2,21,FZ,FR,0.,-50.,1.,-50.\nENDDATA\n";
 
-/// Rows of a CSV after its header.
-std::vector<std::vector<double>> read_csv(const std::filesystem::path& p) {
-  std::istringstream in(test::read_file(p));
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::vector<double>> rows;
-  while (std::getline(in, line)) {
-    std::vector<double> v;
-    std::istringstream fields(line);
-    for (std::string f; std::getline(fields, f, ',');) v.push_back(std::stod(f));
-    rows.push_back(v);
-  }
-  return rows;
-}
-
 TEST(CardsCli, InfoStaticModesReduceConvert) {
   test::TempDir dir;
   const auto deck = dir.write("cards.bdf", kDeck);
@@ -50,7 +35,7 @@ TEST(CardsCli, InfoStaticModesReduceConvert) {
   const double w = 100.0 / 2e4 + 100.0 * 0.25 * 4.0 / 6e3;
   // two subcases: subcase,grid,t1,t2,t3,r1,r2,r3
   bool found1 = false, found2 = false;
-  for (const auto& v : read_csv(dir / "out.csv")) {
+  for (const auto& v : test::csv_rows(dir / "out.csv")) {
     ASSERT_EQ(v.size(), 8u);
     if (v[0] == 1 && v[1] == 2 && std::abs(v[4] - w) < 1e-9 * w) found1 = true;
     if (v[0] == 2 && v[1] == 4 && std::abs(v[4] - 0.002) < 1e-12) found2 = true;

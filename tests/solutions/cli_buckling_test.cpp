@@ -14,20 +14,6 @@ namespace {
 
 std::filesystem::path deck(const std::string& name) { return test::data_dir() / "buckling" / name; }
 
-std::vector<std::vector<double>> csv_rows(const std::filesystem::path& p) {
-  std::istringstream in(test::read_file(p));
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::vector<double>> rows;
-  while (std::getline(in, line)) {
-    std::vector<double> v;
-    std::istringstream fields(line);
-    for (std::string f; std::getline(fields, f, ',');) v.push_back(std::stod(f));
-    rows.push_back(v);
-  }
-  return rows;
-}
-
 // Euler's load of the deck's column: pi^2 E I / l^2 with the PBAR's I = 7853.98 mm^4 (pi d^4 / 64,
 // d = 20 mm), E = 207000 MPa, l = 420 mm: 90962 N, the value of Mitrotta's SOL 105 notebook
 // (github.com/fmamitrotta/nonlinear-structural-stability-notebooks, 01_Buckling_Analysis_of_Euler_Column).
@@ -45,7 +31,7 @@ TEST(BucklingCli, EulerColumnTableCsvAndVtk) {
   EXPECT_NE(r.out.find("preload SUBCASE 1 (LOAD 2), load factors of SUBCASE 2 (METHOD 10, SPC 1)"), std::string::npos)
       << r.out;
   EXPECT_EQ(test::read_file(dir / "f.csv").rfind("mode,load_factor\n", 0), 0u);
-  const auto rows = csv_rows(dir / "f.csv");
+  const auto rows = test::csv_rows(dir / "f.csv");
   ASSERT_EQ(rows.size(), 4u);
   for (int j = 0; j < 4; ++j) {
     EXPECT_EQ(rows[j][0], j + 1);
@@ -71,7 +57,7 @@ TEST(BucklingCli, StatsubNamesThePreload) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err.find("STATSUB"), std::string::npos) << r.err;
   EXPECT_EQ(r.out.find("STATSUB"), std::string::npos) << r.out;
-  const auto a = csv_rows(dir / "a.csv"), b = csv_rows(dir / "b.csv");
+  const auto a = test::csv_rows(dir / "a.csv"), b = test::csv_rows(dir / "b.csv");
   ASSERT_EQ(a.size(), b.size());
   for (std::size_t j = 0; j < a.size(); ++j) EXPECT_EQ(a[j][1], b[j][1]);
 }
@@ -93,7 +79,7 @@ TEST(BucklingCli, PlateWithEveryLanczosBackend) {
                                     dir.path());
     ASSERT_EQ(r.exit_code, 0) << solver << ": " << r.err;
     EXPECT_NE(r.out.find("eigensolver " + std::string(solver)), std::string::npos) << r.out;
-    const auto rows = csv_rows(dir / csv);
+    const auto rows = test::csv_rows(dir / csv);
     ASSERT_EQ(rows.size(), 2u) << solver;
     if (first.empty()) first = rows;
     for (int j = 0; j < 2; ++j) EXPECT_NEAR(rows[j][1] / first[j][1], 1.0, 1e-8) << solver << " mode " << j + 1;
@@ -110,8 +96,8 @@ TEST(BucklingCli, ColumnInARotatedDisplacementSystem) {
     const auto r = test::run_seflex("buckling '" + deck(name).string() + "' --csv " + name + ".csv", dir.path());
     ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
   }
-  const auto a = csv_rows(dir / "euler_column_cbar.bdf.csv"),
-             b = csv_rows(dir / "euler_column_cbar_rotated_cd.bdf.csv");
+  const auto a = test::csv_rows(dir / "euler_column_cbar.bdf.csv"),
+             b = test::csv_rows(dir / "euler_column_cbar_rotated_cd.bdf.csv");
   ASSERT_EQ(a.size(), 4u);
   ASSERT_EQ(b.size(), 4u);
   for (int j = 0; j < 4; ++j) EXPECT_NEAR(b[j][1] / a[j][1], 1.0, 1e-9) << "mode " << j + 1;

@@ -23,21 +23,6 @@ std::filesystem::path bar_cc() {
   return test::validation_dir() / "mystran_cbar_cantilever_and_freefree_modes" / "BAR-CC-GIV.DAT";
 }
 
-/// Rows of a CSV file as numbers (header dropped).
-std::vector<std::vector<double>> csv_rows(const std::filesystem::path& p) {
-  std::istringstream in(test::read_file(p));
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::vector<double>> rows;
-  while (std::getline(in, line)) {
-    std::vector<double> v;
-    std::istringstream fields(line);
-    for (std::string f; std::getline(fields, f, ',');) v.push_back(std::stod(f));
-    rows.push_back(v);
-  }
-  return rows;
-}
-
 // The table reproduces MYSTRAN's REAL EIGENVALUES of BAR-CC-GIV (tests/data/validation), and the
 // CSV holds mode, eigenvalue and frequency.
 TEST(ModesCli, BarCantileverTableAndCsv) {
@@ -52,7 +37,7 @@ TEST(ModesCli, BarCantileverTableAndCsv) {
             std::string::npos)
       << r.out;
   EXPECT_EQ(test::read_file(dir / "f.csv").rfind("mode,eigenvalue,frequency_hz\n", 0), 0u);
-  const auto rows = csv_rows(dir / "f.csv");
+  const auto rows = test::csv_rows(dir / "f.csv");
   ASSERT_EQ(rows.size(), 4u);
   const double cycles[4] = {10.68719, 62.81653, 166.3460, 289.9396};
   for (int j = 0; j < 4; ++j) {
@@ -118,7 +103,7 @@ TEST(ModesCli, KrylovBackendsAgreeOnAFreePlate) {
                                     dir.path());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("eigensolver " + std::string(solver)), std::string::npos) << r.out;
-    results.push_back(csv_rows(dir / csv));
+    results.push_back(test::csv_rows(dir / csv));
     ASSERT_EQ(results.back().size(), 14u);
     int rigid = 0;
     for (const auto& row : results.back()) rigid += row[2] < 1e-4 * results.back()[6][2];
@@ -127,7 +112,7 @@ TEST(ModesCli, KrylovBackendsAgreeOnAFreePlate) {
   // a block of 3 holds only half of the six rigid-body modes: the completeness check brings the rest
   const auto small = test::run_seflex("modes plate.bdf --count 14 --block-size 3 --csv block3.csv", dir.path());
   ASSERT_EQ(small.exit_code, 0) << small.err;
-  results.push_back(csv_rows(dir / "block3.csv"));
+  results.push_back(test::csv_rows(dir / "block3.csv"));
   ASSERT_EQ(results.back().size(), 14u);
   int rigid = 0;
   for (const auto& row : results.back()) rigid += row[2] < 1e-4 * results.back()[6][2];
@@ -182,7 +167,7 @@ TEST(ModesCli, CrossPlyPcompPlateMatchesNavier) {
       ref.push_back(std::sqrt(std::pow(kPi, 4) * dmn / (rho * h)) / (2 * kPi));
     }
   std::sort(ref.begin(), ref.end());
-  const auto rows = csv_rows(dir / "f.csv");
+  const auto rows = test::csv_rows(dir / "f.csv");
   ASSERT_EQ(rows.size(), 4u);
   for (int j = 0; j < 4; ++j) EXPECT_NEAR(rows[j][2] / ref[j], 1.0, 0.01) << "mode " << j + 1;
 }

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <vector>
 
 namespace seflex::test {
 
@@ -50,6 +51,21 @@ inline std::string read_file(const std::filesystem::path& p) {
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+/// Rows of a numeric CSV file (the header line dropped), e.g. the --csv output of seflex.
+inline std::vector<std::vector<double>> csv_rows(const std::filesystem::path& p) {
+  std::istringstream in(read_file(p));
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::vector<double> v;
+    std::istringstream fields(line);
+    for (std::string f; std::getline(fields, f, ',');) v.push_back(std::stod(f));
+    rows.push_back(v);
+  }
+  return rows;
 }
 
 struct RunResult {
