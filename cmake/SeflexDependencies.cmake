@@ -30,12 +30,14 @@ add_library(seflex::cholmod INTERFACE IMPORTED)
 target_include_directories(seflex::cholmod INTERFACE ${CHOLMOD_INCLUDE_DIR})
 target_link_libraries(seflex::cholmod INTERFACE ${CHOLMOD_LIBRARY} ${SUITESPARSE_CONFIG_LIBRARY} ${LAPACK_LIBRARIES} ${BLAS_LIBRARIES})
 
-# gmsh C++ API (libgmsh-dev)
-find_path(GMSH_INCLUDE_DIR gmsh.h REQUIRED)
-find_library(GMSH_LIBRARY gmsh REQUIRED)
+# gmsh C API (libgmsh-dev): compiled against gmshc.h, but not linked: io/src/gmsh_api.cpp loads the
+# library with dlopen at the first gmsh read, so the ~90 libraries libgmsh brings are not linked
+# into every seflex command at start-up (docs/benchmarks.md, "Start-up").
+find_path(GMSH_INCLUDE_DIR gmshc.h REQUIRED)
+find_library(GMSH_LIBRARY gmsh REQUIRED)  # present at run time (dlopen of its soname)
 add_library(seflex::gmsh INTERFACE IMPORTED)
 target_include_directories(seflex::gmsh INTERFACE ${GMSH_INCLUDE_DIR})
-target_link_libraries(seflex::gmsh INTERFACE ${GMSH_LIBRARY})
+target_link_libraries(seflex::gmsh INTERFACE ${CMAKE_DL_LIBS})
 
 # VTK 9 (libvtk9-dev): only what the XML writers need
 find_package(VTK 9 REQUIRED COMPONENTS CommonCore CommonDataModel IOXML)

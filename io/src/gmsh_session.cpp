@@ -1,19 +1,18 @@
-// The gmsh library behind one function: the only file of seflex that includes gmsh.h.
-// gmsh is a process-wide singleton (one current model, global options): a Session initialises it
+// The gmsh library behind one function: the only file of seflex that calls gmsh (through its C API,
+// loaded at the first read: gmsh_api.hpp). gmsh is a process-wide singleton (one current model, global options): a Session initialises it
 // quietly (General.Terminal = 0, messages to the logger), is held by one read at a time, and always
 // finalises it, also when the read throws.
 // General.AbortOnError = 0: gmsh then reports errors only to its logger, where they are read after
 // every call. With gmsh's API default (throw from inside the call) a syntax error thrown out of the
 // .geo parser leaves the parser in a broken state, and the next read in the process fails with a
 // bogus "line 0: syntax error" (gmsh 4.8; tests/input/gmsh_bad_input_test.cpp).
-#include <gmsh.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <mutex>
 #include <string>
 #include <vector>
 
+#include "gmsh_api.hpp"
 #include "gmsh_msh_check.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/io/gmsh_mesh.hpp"
@@ -46,37 +45,23 @@ class ThreadFlag {
 class Session {
  public:
   Session() : lock_(session_mutex()) {
-    try {
-      ::gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
-    } catch (...) {
-      try {
-        ::gmsh::finalize();
-      } catch (...) {
-      }
-      throw;
+    if (api::initialize() != 0) {
+      api::finalize();
+      throw Error("gmsh: the library could not be initialised");
     }
-    ::gmsh::option::setNumber("General.Terminal", 0);
-    ::gmsh::option::setNumber("General.AbortOnError", 0);
-    ::gmsh::onelab::clear();  // parameter values of an earlier read
-    ::gmsh::logger::start();
+    api::option_set_number("General.Terminal", 0);
+    api::option_set_number("General.AbortOnError", 0);
+    api::onelab_clear();  // parameter values of an earlier read
+    api::logger_start();
     std::vector<std::string> log;
-    ::gmsh::logger::get(log);
+    api::logger_get(log);
     log_start_ = log.size();
   }
   ~Session() {
-    try {
-      ::gmsh::logger::stop();
-    } catch (...) {
-    }
-    try {
-      ::gmsh::onelab::clear();
-      ::gmsh::clear();
-    } catch (...) {
-    }
-    try {
-      ::gmsh::finalize();
-    } catch (...) {
-    }
+    api::logger_stop();
+    api::onelab_clear();
+    api::clear();
+    api::finalize();
   }
   Session(const Session&) = delete;
   Session& operator=(const Session&) = delete;
@@ -84,10 +69,7 @@ class Session {
   /// gmsh's error messages of this session so far, without repeats.
   std::string errors() const {
     std::vector<std::string> log, lines;
-    try {
-      ::gmsh::logger::get(log);
-    } catch (...) {
-    }
+    api::logger_get(log);
     for (std::size_t i = log_start_; i < log.size(); ++i)
       if (const std::string& l = log[i]; l.rfind("Error", 0) == 0) {
         const std::size_t colon = l.find(':');
@@ -107,21 +89,13 @@ class Session {
   std::size_t log_start_ = 0;
 };
 
-/// Run a gmsh call; turn its failure (an error in gmsh's log; or an exception, which gmsh 4.8 throws
-/// as a std::string) into an InputError "file: what: gmsh's messages".
+/// Run a gmsh call (returning gmsh's error flag); turn its failure (the flag, or an error in gmsh's
+/// log) into an InputError "file: what: gmsh's messages".
 template <class F>
 void checked(const Session& session, const std::string& file, const std::string& what, F&& call) {
-  std::string thrown;
-  try {
-    call();
-  } catch (const std::string& s) {
-    thrown = s;
-  } catch (const std::exception& e) {
-    thrown = e.what();
-  }
-  std::string errors = session.errors();
-  if (errors.empty()) errors = thrown;
-  if (!thrown.empty() || !errors.empty())
+  const int ierr = call();
+  const std::string errors = session.errors();
+  if (ierr != 0 || !errors.empty())
     throw InputError(file + ": " + what + ": " + (errors.empty() ? std::string("gmsh reported a failure") : errors));
 }
 
@@ -134,7 +108,7 @@ std::string lower_extension(const std::filesystem::path& p) {
 /// The ONELAB parameters a .geo file defined (DefineConstant[x = {value, Name "Path/x"}]).
 std::vector<std::string> geo_parameters() {
   std::vector<std::string> names, out;
-  ::gmsh::onelab::getNames(names);
+  api::onelab_get_names(names);
   for (auto& n : names)
     if (n.rfind("Gmsh/", 0) != 0 && n.rfind("ONELAB/", 0) != 0) out.push_back(std::move(n));
   return out;
@@ -164,26 +138,26 @@ void apply_parameters(const Session& session, const std::filesystem::path& path,
       throw InputError(file + ": no parameter '" + p.name + "'; expected one the .geo file defines with DefineConstant[" +
                        p.name + " = {value, Name \"Parameters/" + p.name + "\"}] (its parameters: " +
                        (list.empty() ? std::string("none") : list) + ")");
-    ::gmsh::onelab::setNumber(match, {p.value});
+    api::onelab_set_number(match, p.value);
     full.push_back(match);
   }
-  checked(session, file, "gmsh cannot read it", [&] { ::gmsh::open(path.string()); });
+  checked(session, file, "gmsh cannot read it", [&] { return api::open(path.string()); });
   for (std::size_t k = 0; k < parameters.size(); ++k) {
     std::vector<double> v;
-    ::gmsh::onelab::getNumber(full[k], v);
+    api::onelab_get_number(full[k], v);
     if (v.size() != 1 || v[0] != parameters[k].value)
       throw InputError(file + ": parameter '" + parameters[k].name + "' kept " + (v.empty() ? std::string("no value") : std::to_string(v[0])) +
                        " instead of the value given; expected a parameter that is not ReadOnly and accepts the value");
   }
 }
 
-ElementBlock element_block(int type, int entity, std::vector<std::size_t>&& nodes) {
+ElementBlock element_block(const Session& session, const std::string& file, int type, int entity,
+                           std::vector<std::size_t>&& nodes) {
   ElementBlock b;
   b.type = type;
   b.entity_tag = entity;
-  std::vector<double> local;
-  int primary = 0;
-  ::gmsh::model::mesh::getElementProperties(type, b.type_name, b.dim, b.order, b.nodes_per_element, local, primary);
+  checked(session, file, "gmsh cannot describe element type " + std::to_string(type),
+          [&] { return api::mesh_get_element_properties(type, b.type_name, b.dim, b.order, b.nodes_per_element); });
   b.nodes = std::move(nodes);
   return b;
 }
@@ -214,39 +188,44 @@ MeshData load_gmsh_mesh(const std::filesystem::path& path, const std::vector<Gms
   if (!geo) check_msh_counts(path, mesh.file);  // before gmsh trusts them (gmsh_msh_check.hpp)
 
   Session session;
-  checked(session, mesh.file, "gmsh cannot read it", [&] { ::gmsh::open(path.string()); });
-  if (!parameters.empty()) apply_parameters(session, path, mesh.file, parameters);
+  const std::string& file = mesh.file;
+  checked(session, file, "gmsh cannot read it", [&] { return api::open(path.string()); });
+  if (!parameters.empty()) apply_parameters(session, path, file, parameters);
   std::vector<int> types;
-  ::gmsh::model::mesh::getElementTypes(types);
+  checked(session, file, "gmsh cannot list its elements", [&] { return api::mesh_get_element_types(types); });
   if (types.empty() && geo) {
-    const int dim = ::gmsh::model::getDimension();
-    if (dim > 0) checked(session, mesh.file, "gmsh cannot mesh it", [&] { ::gmsh::model::mesh::generate(dim); });
+    int dim = 0;
+    checked(session, file, "gmsh cannot read its dimension", [&] { return api::model_get_dimension(dim); });
+    if (dim > 0) checked(session, file, "gmsh cannot mesh it", [&] { return api::mesh_generate(dim); });
   }
 
-  std::vector<double> parametric;
-  ::gmsh::model::mesh::getNodes(mesh.node_tags, mesh.coords, parametric, -1, -1, false, false);
+  checked(session, file, "gmsh cannot list its nodes", [&] { return api::mesh_get_nodes(mesh.node_tags, mesh.coords); });
   {
     std::vector<int> all_types;
     std::vector<std::vector<std::size_t>> tags, nodes;
-    ::gmsh::model::mesh::getElements(all_types, tags, nodes);
+    checked(session, file, "gmsh cannot list its elements", [&] { return api::mesh_get_elements(all_types, tags, nodes); });
     for (const auto& t : tags) mesh.total_elements += t.size();
   }
 
-  ::gmsh::vectorpair groups;
-  ::gmsh::model::getPhysicalGroups(groups);
+  std::vector<std::pair<int, int>> groups;
+  checked(session, file, "gmsh cannot list its physical groups", [&] { return api::model_get_physical_groups(groups); });
   std::sort(groups.begin(), groups.end());
   for (const auto& [dim, tag] : groups) {
     PhysicalGroup g;
     g.dim = dim;
     g.tag = tag;
-    ::gmsh::model::getPhysicalName(dim, tag, g.name);
-    ::gmsh::model::getEntitiesForPhysicalGroup(dim, tag, g.entities);
+    const std::string which = "physical group (" + std::to_string(dim) + ", " + std::to_string(tag) + ")";
+    checked(session, file, "gmsh cannot name " + which, [&] { return api::model_get_physical_name(dim, tag, g.name); });
+    checked(session, file, "gmsh cannot list the entities of " + which,
+            [&] { return api::model_get_entities_for_physical_group(dim, tag, g.entities); });
     for (const int entity : g.entities) {
       std::vector<int> block_types;
       std::vector<std::vector<std::size_t>> element_tags, node_tags;
-      ::gmsh::model::mesh::getElements(block_types, element_tags, node_tags, dim, entity);
+      checked(session, file, "gmsh cannot list the elements of " + which,
+              [&] { return api::mesh_get_elements(block_types, element_tags, node_tags, dim, entity); });
       for (std::size_t k = 0; k < block_types.size(); ++k)
-        if (!element_tags[k].empty()) g.blocks.push_back(element_block(block_types[k], entity, std::move(node_tags[k])));
+        if (!element_tags[k].empty())
+          g.blocks.push_back(element_block(session, file, block_types[k], entity, std::move(node_tags[k])));
     }
     mesh.groups.push_back(std::move(g));
   }

@@ -190,8 +190,29 @@ TEST(AicKernel, T4_SelfEquilibrium) {
   const Poses P = poses_from(e, so3::exp(Vector3d(0.4, 1.0, -0.6)), Vector3d(1, 2, 3), xi);
   AicKinematics kin;
   recover_frame(e, P.R, P.p, VectorXd(), FrameRecovery::Newton6, frame_guess(e, P.R[0], P.p[0]), kin);
-  const VectorXd fw = kin.Tx.transpose() * e.K * kin.xi;
+  const VectorXd fw = transfer_matrix(e, kin).transpose() * e.K * kin.xi;
   EXPECT_LT((kin.Phi_rig.transpose() * fw).norm(), 1e-10 * (e.K * kin.xi).norm());
+}
+
+// Tx applied in O(6n) (the time loop never forms it) equals the formed matrix, and its transpose.
+TEST(AicKernel, TransferAppliedEqualsFormed) {
+  Fixture F(0);
+  const AicElement& e = F.e;
+  std::mt19937 rng(5);
+  const VectorXd xi = random_xi(e, 1e-2, rng);
+  const Poses P = poses_from(e, so3::exp(Vector3d(-0.3, 0.7, 0.2)), Vector3d(0.5, -1, 2), xi);
+  AicKinematics kin;
+  recover_frame(e, P.R, P.p, VectorXd(), FrameRecovery::Newton6, frame_guess(e, P.R[0], P.p[0]), kin);
+  const Eigen::MatrixXd T = transfer_matrix(e, kin);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  VectorXd x(e.n), y;
+  for (int i = 0; i < e.n; ++i) x[i] = u(rng);
+  apply_transfer(e, kin, x, y);
+  EXPECT_LT((y - T * x).norm(), 1e-14 * (T * x).norm() + 1e-15);
+  apply_transfer_transpose(e, kin, x, y);
+  EXPECT_LT((y - T.transpose() * x).norm(), 1e-14 * (T.transpose() * x).norm() + 1e-15);
+  // Tx removes the rigid motion: Zx Tx = 0 (Zx R6 = I).
+  EXPECT_LT((kin.Zx * T).norm(), 1e-12 * kin.Zx.norm());
 }
 
 // T5: the exact tangent against central finite differences (<= 1e-7), and the simplified tangent's

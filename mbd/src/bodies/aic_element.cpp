@@ -40,6 +40,34 @@ MatrixXd rigid_modes_at(const std::vector<Vector3d>& x, const VectorXd* xi) {
 
 std::string who(const std::string& name) { return "superelement '" + name + "'"; }
 
+// The invariants in the stacked layout of StackedInvariantRows (one GEMV each per evaluation).
+void stack_invariants(AicElement& e) {
+  const se::InertiaInvariants& I = e.inv;
+  const Eigen::Index n = e.n;
+  const StackedInvariantRows r(n);
+  MatrixXd& A = e.inv_by_xi;
+  A.resize(r.by_xi, n);
+  A.middleRows(r.HP, 3 * n) = I.HP;
+  A.middleRows(r.HE0, 18) = I.HE0;
+  A.middleRows(r.HE1, 9 * n) = I.HE1;
+  for (int s = 0; s < 6; ++s) {
+    A.middleRows(r.LP + s * n, n) = I.PmLP[s];
+    A.middleRows(r.E0LP + 6 * s, 6) = I.E0mLP[s];
+    A.middleRows(r.HLP + 3 * n * s, 3 * n) = I.HLP[s];
+  }
+  A.middleRows(r.HLX, 18) = I.HLX;
+  MatrixXd& B = e.inv_by_xid;
+  B.resize(r.by_xid, n);
+  for (int a = 0; a < 3; ++a) {
+    A.middleRows(r.HGP + 3 * n * a, 3 * n) = I.HGP[a];
+    B.middleRows(r.PmGP + n * a, n) = I.PmGP[a];
+    B.middleRows(r.E0mGP + 6 * a, 6) = I.E0mGP[a];
+    B.middleRows(r.PgOV + n * a, n) = I.PgOV[a];
+    B.middleRows(r.EgOV + 3 * a, 3) = I.EgOV[a];
+    e.inv_GPV[a] = I.PmGP[a] + I.PgOV[a];
+  }
+}
+
 }  // namespace
 
 AicElement make_aic_element(const se::Superelement& s) {
@@ -113,6 +141,7 @@ AicElement make_aic_element(const se::Superelement& s) {
   } else if (e.has_fe_data) {
     e.inv = se::compute_inertia_invariants(s);
   }
+  if (e.inv.present()) stack_invariants(e);
   e.eta_amplitude = VectorXd::Ones(e.m);
   e.omega_modes = VectorXd::Zero(e.m);
   for (int k = 0; k < e.m; ++k) {
@@ -235,25 +264,53 @@ void recover_frame(const AicElement& e, const std::vector<Matrix3d>& R_WI, const
   kin.iterations = it;
   local_coordinates(e, R_WI, p_WI, R, p, kin.xi);
   rigid_modes_at(e.x, &kin.xi, kin.Phi_rig);
-  Eigen::Matrix<double, 6, 6> A0;
-  A0.noalias() = Phi_fb * kin.Phi_rig;
-  const Eigen::PartialPivLU<Eigen::Matrix<double, 6, 6>> A0_lu(A0);
-  kin.Zx.resize(6, e.n);
-  kin.Zx.noalias() = A0_lu.solve(e.Phi_f);
-  kin.Tx.setIdentity(e.n, e.n);
-  kin.Tx.topRows(nb).noalias() -= kin.Phi_rig * kin.Zx;
+  // 6-row products with fixed sizes (no general matrix-product kernel for these small shapes).
+  using Matrix6d = Eigen::Matrix<double, 6, 6>;
+  using Matrix6X = Eigen::Matrix<double, 6, Eigen::Dynamic>;
+  const Eigen::Map<const Matrix6X> Pf(e.Phi_f.data(), 6, e.n);
   kin.Lambda.resize(N);
-  for (int j = 0; j < N; ++j) kin.Lambda[j] = so3::jl_inv(kin.xi.segment<3>(6 * j + 3));
-  MatrixXd& PhifL = ws.PhifL;  // [Phi_fb Lambda, Phi_fn]
-  PhifL = e.Phi_f;
-  for (int j = 0; j < N; ++j) PhifL.middleCols<3>(6 * j + 3).noalias() = e.Phi_f.middleCols<3>(6 * j + 3) * kin.Lambda[j];
-  Eigen::Matrix<double, 6, 6> AL;
-  AL.noalias() = PhifL.leftCols(nb) * kin.Phi_rig;
-  const Eigen::PartialPivLU<Eigen::Matrix<double, 6, 6>> AL_lu(AL);
+  Matrix6d A0 = Matrix6d::Zero(), AL = Matrix6d::Zero();
+  for (int j = 0; j < N; ++j) {
+    kin.Lambda[j] = so3::jl_inv(kin.xi.segment<3>(6 * j + 3));
+    const Matrix6d Pj = kin.Phi_rig.middleRows<6>(6 * j);
+    A0.noalias() += Pf.middleCols<6>(6 * j).lazyProduct(Pj);
+    // [Phi_fb Lambda]: the rotation columns of interface j times Lambda_j.
+    AL.noalias() += Pf.middleCols<3>(6 * j).lazyProduct(Pj.topRows<3>());
+    AL.noalias() += (Pf.middleCols<3>(6 * j + 3) * kin.Lambda[j]).lazyProduct(Pj.bottomRows<3>());
+  }
+  const Matrix6d A0_inv = A0.inverse();
+  const Matrix6d AL_inv = AL.inverse();
+  kin.Zx.resize(6, e.n);
   kin.ZxL.resize(6, e.n);
-  kin.ZxL.noalias() = AL_lu.solve(PhifL);
-  kin.TxL.setIdentity(e.n, e.n);
-  kin.TxL.topRows(nb).noalias() -= kin.Phi_rig * kin.ZxL;
+  Eigen::Map<Matrix6X> Zx(kin.Zx.data(), 6, e.n), ZxL(kin.ZxL.data(), 6, e.n);
+  Zx.noalias() = A0_inv.lazyProduct(Pf);
+  // ZxL = AL^-1 [Phi_fb Lambda, Phi_fn]: the columns of Pf, rotation blocks times Lambda.
+  ZxL.noalias() = AL_inv.lazyProduct(Pf);
+  for (int j = 0; j < N; ++j) {
+    const Eigen::Matrix<double, 6, 3> B = AL_inv * Pf.middleCols<3>(6 * j + 3);
+    ZxL.middleCols<3>(6 * j + 3).noalias() = B * kin.Lambda[j];
+  }
+}
+
+void apply_transfer(const AicElement& e, const AicKinematics& kin, const Eigen::Ref<const VectorXd>& x, VectorXd& y) {
+  Eigen::Matrix<double, 6, 1> z;
+  z.noalias() = kin.Zx * x;
+  y = x;
+  y.head(6 * e.N).noalias() -= kin.Phi_rig * z;
+}
+
+void apply_transfer_transpose(const AicElement& e, const AicKinematics& kin, const Eigen::Ref<const VectorXd>& x,
+                              VectorXd& y) {
+  Eigen::Matrix<double, 6, 1> z;
+  z.noalias() = kin.Phi_rig.transpose() * x.head(6 * e.N);
+  y = x;
+  y.noalias() -= kin.Zx.transpose() * z;
+}
+
+MatrixXd transfer_matrix(const AicElement& e, const AicKinematics& kin) {
+  MatrixXd T = MatrixXd::Identity(e.n, e.n);
+  T.topRows(6 * e.N).noalias() -= kin.Phi_rig * kin.Zx;
+  return T;
 }
 
 void to_body(const AicElement& e, const Matrix3d& R_WB, const Eigen::Ref<const VectorXd>& x, VectorXd& y) {

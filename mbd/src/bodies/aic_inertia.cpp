@@ -61,19 +61,6 @@ Vector6d sym_components(const Matrix3d& W) {
   return v;
 }
 
-// (3 x cols) view of the product of a stored tensor (3 cols) x n with xi; t holds the product.
-using Map3 = Eigen::Map<const Eigen::Matrix<double, 3, Eigen::Dynamic>>;
-Map3 contract(const MatrixXd& T, const VectorXd& xi, Eigen::Index cols, VectorXd& t) {
-  t.noalias() = T * xi;
-  return Map3(t.data(), 3, cols);
-}
-// The same for a tensor with 6 columns (18 rows): fixed size, on the stack.
-Matrix36d contract6(const MatrixXd& T, const VectorXd& xi) {
-  Eigen::Matrix<double, 18, 1> t;
-  t.noalias() = T * xi;
-  return Eigen::Map<const Matrix36d>(t.data());
-}
-
 void full(const AicElement& e, const AicKinematics& kin, const VectorXd& w, const VectorXd& ab, bool want,
           MatrixXd& Mw, MatrixXd& Cw, MatrixXd& Kw, VectorXd& fw, double& kinetic, AicWorkspace& ws) {
   const se::InertiaInvariants& I = e.inv;
@@ -90,44 +77,48 @@ void full(const AicElement& e, const AicKinematics& kin, const VectorXd& w, cons
   Zw.noalias() = Z * w;
   xid.head(nb).noalias() -= Phi * Zw;
 
+  // Every contraction with xi and with xi_dot: two products with the stacked invariants
+  // (StackedInvariantRows), read in place below.
+  const StackedInvariantRows r(n);
+  ws.t.noalias() = e.inv_by_xi * xi;
+  ws.q.noalias() = e.inv_by_xid * xid;
+  const double* X = ws.t.data();
+  const double* Y = ws.q.data();
+  using Map3n = Eigen::Map<const Eigen::Matrix<double, 3, Eigen::Dynamic>>;
+  using MapN = Eigen::Map<const MatrixXd>;
+
   // Mass pairing at xi.
   MatrixXd& PmE = ws.PmE;
   PmE = I.PmE0;
-  PmE.rightCols<3>() += contract(I.HP, xi, n, ws.t).transpose();
+  PmE.rightCols<3>() += Map3n(X + r.HP, 3, n).transpose();
   Matrix6d EmE = I.E0mE0;
   {
-    const Matrix36d B = contract6(I.HE0, xi);
+    const Eigen::Map<const Matrix36d> B(X + r.HE0);
     EmE.bottomRows<3>() += B;
     EmE.rightCols<3>() += B.transpose();
-    ws.q.noalias() = I.HE1 * xi;
-    Matrix3d Q = Matrix3d::Zero();
-    for (Eigen::Index l = 0; l < n; ++l) Q += xi[l] * Eigen::Map<const Matrix3d>(ws.q.data() + 9 * l);
-    EmE.bottomRightCorner<3, 3>() += Q;
+    Vector9d q;
+    q.noalias() = Eigen::Map<const Eigen::Matrix<double, 9, Eigen::Dynamic>>(X + r.HE1, 9, n) * xi;
+    EmE.bottomRightCorner<3, 3>() += Eigen::Map<const Matrix3d>(q.data());
   }
   // Centrifugal field: pm = CLp s(W), em = CLe s(W) + [0; CLh s(W)].
   MatrixXd& CLp = ws.CLp;
   CLp = I.PmLX;
+  CLp += MapN(X + r.LP, n, 6);
   Matrix6d CLe = I.E0mLX;
-  Matrix36d CLh = contract6(I.HLX, xi);
-  for (int s = 0; s < 6; ++s) {
-    CLp.col(s).noalias() += I.PmLP[s] * xi;
-    CLe.col(s).noalias() += I.E0mLP[s] * xi;
-    CLh.col(s).noalias() += contract(I.HLP[s], xi, n, ws.t) * xi;
-  }
+  CLe += Eigen::Map<const Matrix6d>(X + r.E0LP);
+  Matrix36d CLh = Eigen::Map<const Matrix36d>(X + r.HLX);
+  for (int s = 0; s < 6; ++s) CLh.col(s).noalias() += Map3n(X + r.HLP + 3 * n * s, 3, n) * xi;
   // Coriolis field and gyroscopic moments, linear in Om at fixed xi_dot: columns a.
   MatrixXd& GPp = ws.GPp;
   MatrixXd& GVp = ws.GVp;
-  GPp.resize(n, 3);
-  GVp.resize(n, 3);
-  Eigen::Matrix<double, 6, 3> GPe;
-  Matrix3d GPh, GVe;
+  GPp = MapN(Y + r.PmGP, n, 3);
+  GVp = MapN(Y + r.PgOV, n, 3);
+  const Eigen::Matrix<double, 6, 3> GPe = Eigen::Map<const Eigen::Matrix<double, 6, 3>>(Y + r.E0mGP);
+  const Matrix3d GVe = Eigen::Map<const Matrix3d>(Y + r.EgOV);
+  Matrix3d GPh;
   for (int a = 0; a < 3; ++a) {
-    ws.HGPxi[a] = contract(I.HGP[a], xi, n, ws.t);
-    GPp.col(a).noalias() = I.PmGP[a] * xid;
-    GPe.col(a).noalias() = I.E0mGP[a] * xid;
+    ws.HGPxi[a] = Map3n(X + r.HGP + 3 * n * a, 3, n);
     GPh.col(a).noalias() = ws.HGPxi[a] * xid;
-    GVp.col(a).noalias() = I.PgOV[a] * xid;
-    GVe.col(a).noalias() = I.EgOV[a] * xid;
   }
   Vector9d OO;
   for (int b = 0; b < 3; ++b)
@@ -209,8 +200,8 @@ void full(const AicElement& e, const AicKinematics& kin, const VectorXd& w, cons
     DOe.col(a).tail<3>() += GPh.col(a) + GVe.col(a);
   }
   MatrixXd& Ap = ws.Ap;
-  Ap = Om[0] * (I.PmGP[0] + I.PgOV[0]);
-  for (int a = 1; a < 3; ++a) Ap += Om[a] * (I.PmGP[a] + I.PgOV[a]);
+  Ap = Om[0] * e.inv_GPV[0];
+  for (int a = 1; a < 3; ++a) Ap += Om[a] * e.inv_GPV[a];
   MatrixXd& Ae = ws.Ae;
   Ae = Om[0] * I.E0mGP[0];
   for (int a = 1; a < 3; ++a) Ae += Om[a] * I.E0mGP[a];

@@ -26,10 +26,11 @@ void full_nodal(const AicElement& e, const AicKinematics& kin, const VectorXd& w
   const auto nfe = static_cast<int>(e.X.cols());
   const MatrixXd Zr = kin.Zx.middleRows<3>(3);
   const Vector3d Om = Zr * w;
-  const VectorXd xid = kin.Tx * w;
+  const MatrixXd Tx = transfer_matrix(e, kin);
+  const VectorXd xid = Tx * w;
   const VectorXd U = e.Psi * kin.xi;
   const VectorXd Ud = e.Psi * xid;
-  const MatrixXd PT = e.Psi * kin.Tx;  // 6nfe x n
+  const MatrixXd PT = e.Psi * Tx;  // 6nfe x n
   MatrixXd Nm = PT;
   for (int i = 0; i < nfe; ++i) {
     const Vector3d pi = e.X.col(i) + U.segment<3>(6 * i);

@@ -64,13 +64,20 @@ void assemble_flexible(const Model& model, const State& s, Data& data, const Ass
       for (int k = 0; k < m; ++k)
         sc.D(6 * N + k, 6 * N + k) += 2.0 * body.options.modal_damping * e.omega_modes[k] * e.M(6 * N + k, 6 * N + k);
     }
-    sc.DT.noalias() = sc.D * fd.kin.Tx;
-    sc.Dw.noalias() = fd.kin.Tx.transpose() * sc.DT;
+    // f = Tx^T D Tx w and C = Tx^T D Tx, with Tx = I - R6 Zx applied in O(6 n^2) (never formed).
     to_body(e, fd.kin.frame.R_WB, sc.v, sc.w);
-    sc.fw.noalias() = sc.Dw * sc.w;
+    apply_transfer(e, fd.kin, sc.w, sc.xd);
+    sc.yd.noalias() = sc.D * sc.xd;
+    apply_transfer_transpose(e, fd.kin, sc.yd, sc.fw);
     to_world(e, fd.kin.frame.R_WB, sc.fw, fd.f_damp);
     if (opt.matrices) {
-      sc.Cd = sc.Dw;
+      const auto nb = 6 * N;
+      sc.DR.noalias() = sc.D.leftCols(nb) * fd.kin.Phi_rig;  // D R6
+      sc.DT = sc.D;
+      sc.DT.noalias() -= sc.DR * fd.kin.Zx;                  // D Tx
+      sc.RDT.noalias() = fd.kin.Phi_rig.transpose() * sc.DT.topRows(nb);
+      sc.Cd = sc.DT;
+      sc.Cd.noalias() -= fd.kin.Zx.transpose() * sc.RDT;     // Tx^T D Tx
       rotate_to_world(e, fd.kin.frame.R_WB, sc.Cd);
     }
   } else {

@@ -170,7 +170,7 @@ VectorXd body_velocity_guess(const FfrfSystem& sys, const Model& model, const Da
   const VectorXd tw = kin.Zx * w;
   v.head<3>() = kin.frame.R_WB * tw.head<3>();
   v.segment<3>(3) = kin.frame.R_WB * tw.tail<3>();
-  if (b.k > 0) v.tail(b.k) = b.V.transpose() * (e.M * (kin.Tx * w));
+  if (b.k > 0) v.tail(b.k) = b.V.transpose() * (e.M * (transfer_matrix(e, kin) * w));
   return v;
 }
 

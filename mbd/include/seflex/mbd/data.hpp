@@ -52,8 +52,9 @@ struct FlexibleBodyScratch {
   InertiaResult inertia;
   std::vector<Eigen::Matrix3d> R_WI;
   std::vector<Eigen::Vector3d> p_WI;
-  Eigen::VectorXd v, a, f, w, fw, sc;
-  Eigen::MatrixXd Kl, D, DT, Dw, Cd;  ///< D: the damping matrix in body axes (constant, made once)
+  Eigen::VectorXd v, a, f, w, fw, sc, xd, yd;
+  Eigen::MatrixXd Kl, D, DT, Cd;      ///< D: the damping matrix in body axes (constant, made once)
+  Eigen::MatrixXd DR, RDT;            ///< n x 6, 6 x n: damping products with the rigid modes
   ElementMap map, gmap;
   std::vector<const std::vector<Vector6d>*> G;
   std::vector<Eigen::MatrixXd> Y;     ///< scatter blocks

@@ -17,6 +17,7 @@
 // Elastic force in body axes f_w = Tx^T K xi (2.2); world: f = Rhat f_w, Rhat = blockdiag(R_WB x 2N, I_m).
 // The exact tangent (3) uses Lambda_j = J_l^-1(theta_j); the simplified tangent sets Lambda = I.
 #include <Eigen/Core>
+#include <array>
 #include <Eigen/SparseCore>
 #include <string>
 #include <vector>
@@ -51,6 +52,12 @@ struct AicElement {
   // Full inertia (section 2.4) from the inertia invariants (docs/inertia-invariants.md): taken from
   // the superelement, or computed here from its recovery and M_fe when the file predates them.
   se::InertiaInvariants inv;
+  // The same invariants stacked for the time loop (made by make_aic_element): one product with xi
+  // and one with xi_dot = Tx w give every contraction of an evaluation; row layout in
+  // StackedInvariantRows (aic_inertia.cpp reads them in place).
+  Eigen::MatrixXd inv_by_xi;                 ///< (45 n + 72) x n
+  Eigen::MatrixXd inv_by_xid;                ///< (6 n + 27) x n
+  std::array<Eigen::MatrixXd, 3> inv_GPV;    ///< n x n: PmGP[a] + PgOV[a]
 
   // FE-level data (FFRF baseline, the nodal reference of the tests); present when the superelement
   // carries recovery and M_fe.
@@ -61,6 +68,18 @@ struct AicElement {
   std::vector<Eigen::Matrix3d> J_node;    ///< rotary inertia block of each FE node (gyroscopic term)
   Eigen::VectorXd eta_amplitude;          ///< m: largest FE translation of mode k per unit eta [m]
   Eigen::VectorXd omega_modes;            ///< m: sqrt(K_kk / M_kk) of the internal modes (rad/s)
+};
+
+/// First rows of each invariant in AicElement::inv_by_xi (a) and inv_by_xid (b), for size n.
+struct StackedInvariantRows {
+  explicit StackedInvariantRows(Eigen::Index n)
+      : HP(0), HE0(3 * n), HE1(3 * n + 18), LP(12 * n + 18), E0LP(18 * n + 18), HLX(18 * n + 54), HLP(18 * n + 72),
+        HGP(36 * n + 72), by_xi(45 * n + 72), PmGP(0), E0mGP(3 * n), PgOV(3 * n + 18), EgOV(6 * n + 18),
+        by_xid(6 * n + 27) {}
+  // (a) times xi: HP 3n, HE0 18, HE1 9n, PmLP[s] n each, E0mLP[s] 6 each, HLX 18, HLP[s] 3n each, HGP[a] 3n each.
+  Eigen::Index HP, HE0, HE1, LP, E0LP, HLX, HLP, HGP, by_xi;
+  // (b) times xi_dot: PmGP[a] n each, E0mGP[a] 6 each, PgOV[a] n each, EgOV[a] 3 each.
+  Eigen::Index PmGP, E0mGP, PgOV, EgOV, by_xid;
 };
 
 /// Validate a superelement for the AIC formulation and precompute its data.
@@ -79,8 +98,10 @@ struct AicKinematics {
   FloatingFrame frame;
   Eigen::VectorXd xi;       ///< n local elastic coordinates [q; eta]
   Eigen::MatrixXd Phi_rig;  ///< 6N x 6 rigid modes at the deformed interface positions
-  Eigen::MatrixXd Zx, Tx;   ///< 6 x n and n x n (Lambda = I)
-  Eigen::MatrixXd ZxL, TxL; ///< the same with Lambda: exact frame/local increments (section 3)
+  Eigen::MatrixXd Zx;       ///< 6 x n: frame increment per local increment (Lambda = I)
+  Eigen::MatrixXd ZxL;      ///< the same with Lambda: exact frame/local increments (section 3)
+  // Tx = I - [Phi_rig; 0] Zx (n x n) has a rank-6 defect and is never formed in the time loop:
+  // apply_transfer / apply_transfer_transpose apply it in O(6n); transfer_matrix forms it.
   std::vector<Eigen::Matrix3d> Lambda;  ///< N blocks J_l^-1(theta_j)
   int iterations = 0;       ///< frame-recovery iterations used
 };
@@ -96,6 +117,14 @@ void recover_frame(const AicElement& e, const std::vector<Eigen::Matrix3d>& R_WI
 void recover_frame(const AicElement& e, const std::vector<Eigen::Matrix3d>& R_WI,
                    const std::vector<Eigen::Vector3d>& p_WI, const Eigen::Ref<const Eigen::VectorXd>& eta,
                    FrameRecovery method, const FloatingFrame& warm_start, AicKinematics& kin, AicWorkspace& ws);
+
+/// y = Tx x and y = Tx^T x in O(6n), Tx = I - [Phi_rig; 0] Zx (formulation 1.6).
+void apply_transfer(const AicElement& e, const AicKinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& x,
+                    Eigen::VectorXd& y);
+void apply_transfer_transpose(const AicElement& e, const AicKinematics& kin,
+                              const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::VectorXd& y);
+/// Tx formed (n x n): for reference evaluations and tests, not for the time loop.
+Eigen::MatrixXd transfer_matrix(const AicElement& e, const AicKinematics& kin);
 
 /// A first guess of the floating frame from interface 0 (used at t = 0).
 FloatingFrame frame_guess(const AicElement& e, const Eigen::Matrix3d& R_WI0, const Eigen::Vector3d& p_WI0);

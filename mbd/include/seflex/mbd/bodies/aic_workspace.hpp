@@ -10,8 +10,6 @@
 namespace seflex::mbd {
 
 struct AicWorkspace {
-  // Frame recovery.
-  Eigen::MatrixXd PhifL;             ///< 6 x n  [Phi_fb Lambda, Phi_fn]
   // Elastic force and tangent.
   Eigen::VectorXd g, fw;             ///< n      K xi, Tx^T K xi
   Eigen::MatrixXd KL, Kw;            ///< n x n
@@ -31,8 +29,6 @@ struct AicWorkspace {
   Eigen::MatrixXd Ap, Ae, Xp, Xe;    ///< n x n, 6 x n, n x n, 6 x n
   Eigen::MatrixXd nn;                ///< n x n scratch
   Eigen::MatrixXd AOm, AD, ADPhi;    ///< n x 3, n x n, n x 6 (velocity-acceleration tangent)
-  // Damping.
-  Eigen::MatrixXd Dw;                ///< n x n  Tx^T D Tx
 };
 
 }  // namespace seflex::mbd
