@@ -17,11 +17,16 @@
 // Collective on PETSC_COMM_WORLD; needs a parallel::Session.
 // Throws reduction::FactorizationError if MUMPS finds A not positive definite (column unknown: -1),
 // ConvergenceError if Krylov-Schur stops short of the wanted pairs, InvariantError on PETSc failures.
+#include "seflex/parallel/partitioned_system.hpp"
 #include "seflex/reduction/eigensolver.hpp"
 
 namespace seflex::parallel {
 
 reduction::EigenSolution slepc_eigenproblem(const reduction::SparseMatrixd& K, const reduction::SparseMatrixd& M,
                                             const reduction::EigenOptions& options);
+
+/// The same method on the matrices of a partitioned assembly (nothing replicated but the gathered
+/// vectors): vectors n_free x m in the serial f numbering (PartitionedSystem::f_to_g), on every rank.
+reduction::EigenSolution slepc_eigenproblem_partitioned(const PartitionedSystem& system, const reduction::EigenOptions& options);
 
 }  // namespace seflex::parallel
