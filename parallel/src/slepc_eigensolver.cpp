@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "petsc_support.hpp"
+#include "slepc_pencil.hpp"
 #include "seflex/common/error.hpp"
 
 namespace seflex::parallel {
@@ -266,7 +267,10 @@ reduction::EigenSolution solve_shifted(Mat K, Mat Mp, double sigma, double lambd
   return solution;
 }
 
-/// Shift-invert Krylov-Schur with the shift calibration (the header's method) on distributed K, M.
+}  // namespace
+
+namespace detail {
+
 reduction::EigenSolution solve_pencil(Mat K, Mat M, const reduction::EigenOptions& options) {
   const std::vector<double> ratios = diagonal_ratios(K, M);
   const double lambda_infinite = kInfiniteRatio * (ratios.empty() ? 0.0 : *std::max_element(ratios.begin(), ratios.end()));
@@ -301,7 +305,7 @@ reduction::EigenSolution solve_pencil(Mat K, Mat M, const reduction::EigenOption
   return s;
 }
 
-}  // namespace
+}  // namespace detail
 
 reduction::EigenSolution slepc_eigenproblem(const SparseMatrixd& K, const SparseMatrixd& M,
                                             const reduction::EigenOptions& options) {
@@ -327,7 +331,7 @@ reduction::EigenSolution slepc_eigenproblem(const SparseMatrixd& K, const Sparse
   detail::OwnedMat Kp, Mp;
   detail::make_upper_sbaij(Kc, &Mc, 0.0, Kp.out());  // K with M's pattern too (K - sigma M in place)
   detail::make_upper_sbaij(Mc, nullptr, 0.0, Mp.out());
-  return solve_pencil(Kp.get(), Mp.get(), options);
+  return detail::solve_pencil(Kp.get(), Mp.get(), options);
 }
 
 reduction::EigenSolution slepc_eigenproblem_partitioned(const PartitionedSystem& system, const reduction::EigenOptions& options) {
@@ -343,7 +347,7 @@ reduction::EigenSolution slepc_eigenproblem_partitioned(const PartitionedSystem&
     empty.backward_errors.resize(0);
     return empty;
   }
-  reduction::EigenSolution s = solve_pencil(system.pencil().K.get(), system.pencil().M.get(), options);
+  reduction::EigenSolution s = detail::solve_pencil(system.pencil().K.get(), system.pencil().M.get(), options);
   Eigen::MatrixXd f(n, s.vectors.cols());  // rows from the partition numbering back to the f-set's
   for (Eigen::Index p = 0; p < n; ++p) f.row(system.p_to_f[static_cast<std::size_t>(p)]) = s.vectors.row(p);
   s.vectors = std::move(f);
