@@ -274,17 +274,20 @@ SparseMatrixd PartitionedSystem::gather_K_ff() const { return gather_f(pencil_->
 SparseMatrixd PartitionedSystem::gather_M_ff() const { return gather_f(pencil_->M.get(), *this); }
 
 std::optional<std::string> partition_refusal(const fem::Model& model, std::optional<int> mpc_set) {
-  const char* card = !model.rbe2.empty()                     ? "RBE2"
-                     : !model.rbars.empty()                  ? "RBAR"
-                     : !model.rbe3.empty()                   ? "RBE3"
-                     : (mpc_set && !model.mpcs.empty())      ? "MPC"
-                     : (!model.aset.empty() || !model.omit.empty()) ? "ASET/OMIT"
-                     : !model.dmigs.empty()                  ? "DMIG"
-                                                             : nullptr;
-  if (card == nullptr) return std::nullopt;
-  return std::string("the model has ") + card +
-         " cards, whose elimination (dependent dofs, Guyan reduction, direct matrices) needs the whole model on "
-         "every rank";
+  const char* card = !model.rbe2.empty()                ? "RBE2"
+                     : !model.rbars.empty()             ? "RBAR"
+                     : !model.rbe3.empty()              ? "RBE3"
+                     : (mpc_set && !model.mpcs.empty()) ? "MPC"
+                                                        : nullptr;
+  if (card != nullptr)
+    return std::string("the model has ") + card +
+           " cards: their dependent dofs are eliminated from the whole model's K (K_ff = T^T K T), which needs it on "
+           "every rank";
+  if (!model.aset.empty() || !model.omit.empty())
+    return std::string("the model has ASET/OMIT cards: the Guyan reduction to the a-set needs the whole K_ff on every rank");
+  if (!model.dmigs.empty())
+    return std::string("the model has DMIG cards: their direct matrices are added to the whole K and M on every rank");
+  return std::nullopt;
 }
 
 PartitionedSystem assemble_partitioned(fem::Model& model, const fem::ConstraintOptions& options) {

@@ -102,7 +102,11 @@ TEST(PartitionedAssembly, RefusesDependentDofs) {
   const auto why = partition_refusal(m, std::nullopt);
   ASSERT_TRUE(why.has_value());
   EXPECT_NE(why->find("RBE2"), std::string::npos) << *why;
-  EXPECT_NE(why->find("whole model"), std::string::npos) << *why;
+  EXPECT_NE(why->find("whole model's K"), std::string::npos) << *why;
+  m.rbe2.clear();
+  m.omit.emplace_back();
+  ASSERT_TRUE(partition_refusal(m, std::nullopt).has_value());
+  EXPECT_NE(partition_refusal(m, std::nullopt)->find("ASET/OMIT"), std::string::npos);
 }
 
 TEST(PartitionedAssembly, OneRanksBadElementStopsEveryRank) {
