@@ -223,6 +223,42 @@ void build_matrix(const fem::GlobalMatrices& g, const std::vector<Eigen::Index>&
   SEFLEX_PETSC(MatSetOption(*out, MAT_SYMMETRIC, PETSC_TRUE));
 }
 
+/// Every rank's `mine`, concatenated in rank order, on every rank.
+std::vector<double> allgather(const std::vector<double>& mine) {
+  const int size = comm_size();
+  std::vector<int> counts(static_cast<std::size_t>(size)), displs(static_cast<std::size_t>(size), 0);
+  const int my_count = static_cast<int>(mine.size());
+  SEFLEX_DEMAND(mine.size() < (std::size_t{1} << 31), "allgather: more than 2^31 values on one rank");
+  SEFLEX_DEMAND(MPI_Allgather(&my_count, 1, MPI_INT, counts.data(), 1, MPI_INT, PETSC_COMM_WORLD) == MPI_SUCCESS, "MPI_Allgather failed");
+  std::partial_sum(counts.begin(), counts.end() - 1, displs.begin() + 1);
+  std::vector<double> all(static_cast<std::size_t>(displs.back()) + static_cast<std::size_t>(counts.back()));
+  SEFLEX_DEMAND(MPI_Allgatherv(mine.data(), my_count, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE,
+                               PETSC_COMM_WORLD) == MPI_SUCCESS,
+                "MPI_Allgatherv failed");
+  return all;
+}
+
+/// The sum over the ranks of each rank's matrix A (same size everywhere), on every rank.
+SparseMatrixd gather_sum(const SparseMatrixd& A) {
+  std::vector<double> mine;  // (row, col, value) triples
+  mine.reserve(3 * static_cast<std::size_t>(A.nonZeros()));
+  for (Eigen::Index j = 0; j < A.outerSize(); ++j)
+    for (SparseMatrixd::InnerIterator it(A, j); it; ++it) {
+      mine.push_back(static_cast<double>(it.row()));
+      mine.push_back(static_cast<double>(j));
+      mine.push_back(it.value());
+    }
+  const std::vector<double> all = allgather(mine);
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(all.size() / 3);
+  for (std::size_t q = 0; q + 2 < all.size(); q += 3)
+    t.emplace_back(static_cast<Eigen::Index>(all[q]), static_cast<Eigen::Index>(all[q + 1]), all[q + 2]);
+  SparseMatrixd out(A.rows(), A.cols());
+  out.setFromTriplets(t.begin(), t.end());  // duplicates (a node shared by ranks) are summed
+  out.makeCompressed();
+  return out;
+}
+
 /// The whole of A (rows in the partition numbering) in the f numbering, both triangles, on every rank.
 SparseMatrixd gather_f(Mat A, const PartitionedSystem& s) {
   PetscInt lo = 0, hi = 0;
@@ -242,15 +278,7 @@ SparseMatrixd gather_f(Mat A, const PartitionedSystem& s) {
     SEFLEX_PETSC(MatRestoreRow(A, p, &nc, &cols, &vals));
   }
   SEFLEX_PETSC(MatRestoreRowUpperTriangular(A));
-  const int size = comm_size();
-  std::vector<int> counts(static_cast<std::size_t>(size)), displs(static_cast<std::size_t>(size));
-  const int my_count = static_cast<int>(mine.size());
-  SEFLEX_DEMAND(MPI_Allgather(&my_count, 1, MPI_INT, counts.data(), 1, MPI_INT, PETSC_COMM_WORLD) == MPI_SUCCESS, "MPI_Allgather failed");
-  std::partial_sum(counts.begin(), counts.end() - 1, displs.begin() + 1);
-  std::vector<double> all(static_cast<std::size_t>(displs.back() + counts.back()));
-  SEFLEX_DEMAND(MPI_Allgatherv(mine.data(), my_count, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE,
-                               PETSC_COMM_WORLD) == MPI_SUCCESS,
-                "MPI_Allgatherv failed");
+  const std::vector<double> all = allgather(mine);
   std::vector<Eigen::Triplet<double>> t;
   for (std::size_t q = 0; q + 2 < all.size(); q += 3) {
     const auto i = static_cast<Eigen::Index>(all[q]), j = static_cast<Eigen::Index>(all[q + 1]);
@@ -290,7 +318,8 @@ std::optional<std::string> partition_refusal(const fem::Model& model, std::optio
   return std::nullopt;
 }
 
-PartitionedSystem assemble_partitioned(fem::Model& model, const fem::ConstraintOptions& options) {
+PartitionedSystem assemble_partitioned(fem::Model& model, const fem::ConstraintOptions& options,
+                                       fem::GlobalMatrices* whole) {
   if (auto why = partition_refusal(model, options.mpc_set)) SEFLEX_DEMAND(false, "assemble_partitioned: " + *why);
   const int rank = comm_rank(), size = comm_size();
   const ElementPartition part = partition_elements(model, size);
@@ -304,7 +333,7 @@ PartitionedSystem assemble_partitioned(fem::Model& model, const fem::ConstraintO
   s.dofs = local.dofs;
   {
     // The f-set from the summed diagonal blocks (AUTOSPC looks at nothing else without dependent dofs).
-    const fem::GlobalMatrices blocks = summed_diagonal_blocks(local);
+    fem::GlobalMatrices blocks = summed_diagonal_blocks(local);
     const fem::ConstrainedSystem c = fem::apply_constraints(model, blocks, options);
     for (fem::DofStatus st : c.status)
       SEFLEX_DEMAND(st != fem::DofStatus::Dependent, "assemble_partitioned: a dependent dof in a partitioned model");
@@ -331,6 +360,11 @@ PartitionedSystem assemble_partitioned(fem::Model& model, const fem::ConstraintO
                                                   s.row_begin[static_cast<std::size_t>(rank)]);
     build_matrix(local, c.g_to_f, s.f_to_p, local_rows, n, false, s.pencil().K.out());
     build_matrix(local, c.g_to_f, s.f_to_p, local_rows, n, true, s.pencil().M.out());
+    if (whole != nullptr) {
+      whole->dofs = s.dofs;
+      whole->K = std::move(blocks.K);
+      whole->M = gather_sum(local.M);
+    }
   }
   return s;
 }

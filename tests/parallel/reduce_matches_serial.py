@@ -2,8 +2,11 @@
 """`mpirun -n 2 seflex reduce ... --backend slepc` against the serial `seflex reduce` (issue 16): the
 superelement files' reduced K and M agree to 1e-9 relative to their largest entry, after the sign of
 each fixed-interface mode (arbitrary in any eigensolver) is matched through its mass coupling to the
-interface. Decks: the yoke (CBAR + CONM2, 3 interface grids, 5 modes) and a 16 x 12 CQUAD4 plate with
-one short edge as the interface (10 modes).
+interface; the FE mass M_fe (gathered from the ranks' element shares), the constraint-mode columns
+of the recovery matrix and the mass properties too; and the distributed run says how it assembled.
+Decks: the yoke (CBAR + CONM2, 3 interface grids, 5 modes) and a 16 x 12 CQUAD4 plate with one
+short edge as the interface (10 modes), both assembled by partition; the plate with an RBE2, which
+the distributed run must assemble replicated (and say so).
 
 usage: reduce_matches_serial.py MPIRUN SEFLEX OUTDIR   (exit 0 when all agree)
 """
@@ -19,7 +22,7 @@ sys.path.insert(0, os.path.join(ROOT, "scripts"))
 from read_superelement import read_superelement  # noqa: E402
 
 
-def plate_deck(path, nx=16, ny=12, a=0.6, b=0.4):
+def plate_deck(path, nx=16, ny=12, a=0.6, b=0.4, rbe2=False):
     lines = ["SOL 103", "CEND", "BEGIN BULK", "MAT1,1,7.0e10,,0.33,2700.", "PSHELL,1,1,0.003,1,,1"]
     gid = lambda i, j: 1 + i + (nx + 1) * j  # noqa: E731
     for j in range(ny + 1):
@@ -30,6 +33,8 @@ def plate_deck(path, nx=16, ny=12, a=0.6, b=0.4):
         for i in range(nx):
             lines.append("CQUAD4,%d,1,%d,%d,%d,%d" % (e, gid(i, j), gid(i + 1, j), gid(i + 1, j + 1), gid(i, j + 1)))
             e += 1
+    if rbe2:  # a rigid link between two interior grids: dependent dofs, the replicated path
+        lines.append("RBE2,90001,%d,123456,%d" % (gid(nx // 2, ny // 2), gid(nx // 2 + 1, ny // 2)))
     lines.append("ENDDATA")
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
@@ -40,10 +45,26 @@ def reduce(cmd, out):
     p = subprocess.run(cmd, capture_output=True, text=True)
     if p.returncode != 0:
         sys.exit("FAIL: %s exited %d\n%s\n%s" % (" ".join(cmd), p.returncode, p.stdout[-2000:], p.stderr[-2000:]))
-    return read_superelement(out)[1]
+    header, data = read_superelement(out)
+    return header, data, p.stdout
 
 
-def compare(name, serial, dist, nb):
+def close(a, b, tol=1e-9):
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    return a.shape == b.shape and np.abs(a - b).max() <= tol * max(np.abs(a).max(), 1e-300)
+
+
+def compare(name, serial_run, dist_run, nb, assembly):
+    (h1, serial, _), (h2, dist, out) = serial_run, dist_run
+    if "assembly: " + assembly not in out:
+        print("FAIL %s: the distributed run did not say 'assembly: %s':\n%s" % (name, assembly, out))
+        return False
+    for what, a, b in (("M_fe", serial["M_fe"].toarray(), dist["M_fe"].toarray()),
+                       ("recovery (constraint modes)", serial["recovery"][:, :nb], dist["recovery"][:, :nb]),
+                       ("mass", [h1["mass_properties"]["mass"]], [h2["mass_properties"]["mass"]])):
+        if not close(a, b):
+            print("FAIL %s: %s differs" % (name, what))
+            return False
     K1, M1, K2, M2 = serial["K"], serial["M"], dist["K"].copy(), dist["M"].copy()
     if K1.shape != K2.shape:
         print("FAIL %s: K is %s serial, %s distributed" % (name, K1.shape, K2.shape))
@@ -65,15 +86,20 @@ def main():
     os.makedirs(out, exist_ok=True)
     plate = os.path.join(out, "cb_plate.bdf")
     edge = plate_deck(plate)
-    cases = [("yoke", os.path.join(ROOT, "meshes", "yoke.bdf"), "1,3,4", 5, 18),
-             ("plate", plate, edge, 10, 6 * 13)]
+    linked = os.path.join(out, "cb_plate_rbe2.bdf")
+    plate_deck(linked, rbe2=True)
+    part, repl = "partitioned by METIS over 2 ranks", "replicated on every rank (the model has RBE2 cards"
+    cases = [("yoke", os.path.join(ROOT, "meshes", "yoke.bdf"), "1,3,4", 5, 18, part),
+             ("plate", plate, edge, 10, 6 * 13, part),
+             ("plate with RBE2", linked, edge, 10, 6 * 13, repl)]
     ok = True
-    for name, deck, iface, modes, nb in cases:
-        a, b = os.path.join(out, name + "_serial.se"), os.path.join(out, name + "_mpi.se")
+    for name, deck, iface, modes, nb, assembly in cases:
+        tag = name.replace(" ", "_")
+        a, b = os.path.join(out, tag + "_serial.se"), os.path.join(out, tag + "_mpi.se")
         args = ["reduce", deck, "--interface", iface, "--modes", str(modes), "--force"]
         serial = reduce([seflex] + args + ["-o", a], a)
         dist = reduce([mpirun, "-n", "2", seflex] + args + ["--backend", "slepc", "-o", b], b)
-        ok = compare(name, serial, dist, nb) and ok
+        ok = compare(name, serial, dist, nb, assembly) and ok
     sys.exit(0 if ok else 1)
 
 

@@ -72,6 +72,10 @@ std::optional<std::string> partition_refusal(const fem::Model& model, std::optio
 /// Collective: the partitioned f-set matrices of `model` (finalized) under the per-dof constraints
 /// of `options` (its mpc_set must select nothing). Throws InvariantError if partition_refusal
 /// refuses the model, InputError from assembly or constraints (see above for the other ranks).
-PartitionedSystem assemble_partitioned(fem::Model& model, const fem::ConstraintOptions& options);
+/// `whole` (optional, for reduce_to_superelement's mass properties and FE mass): the whole g-set M
+/// gathered on every rank (the ranks' shares summed) and, as K, only each grid's summed diagonal
+/// block (what apply_constraints needs without dependent dofs).
+PartitionedSystem assemble_partitioned(fem::Model& model, const fem::ConstraintOptions& options,
+                                       fem::GlobalMatrices* whole = nullptr);
 
 }  // namespace seflex::parallel
