@@ -230,8 +230,11 @@ std::vector<double> allgather(const std::vector<double>& mine) {
   const int my_count = static_cast<int>(mine.size());
   SEFLEX_DEMAND(mine.size() < (std::size_t{1} << 31), "allgather: more than 2^31 values on one rank");
   SEFLEX_DEMAND(MPI_Allgather(&my_count, 1, MPI_INT, counts.data(), 1, MPI_INT, PETSC_COMM_WORLD) == MPI_SUCCESS, "MPI_Allgather failed");
+  long long total = 0;
+  for (int c : counts) total += c;
+  SEFLEX_DEMAND(total < (1LL << 31), "allgather: more than 2^31 values in all");
   std::partial_sum(counts.begin(), counts.end() - 1, displs.begin() + 1);
-  std::vector<double> all(static_cast<std::size_t>(displs.back()) + static_cast<std::size_t>(counts.back()));
+  std::vector<double> all(static_cast<std::size_t>(total));
   SEFLEX_DEMAND(MPI_Allgatherv(mine.data(), my_count, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE,
                                PETSC_COMM_WORLD) == MPI_SUCCESS,
                 "MPI_Allgatherv failed");
