@@ -16,6 +16,8 @@
 #include "seflex/io/vtk_modes.hpp"
 #include "seflex/reduction/normal_modes.hpp"
 #ifdef SEFLEX_HAVE_MPI
+#include "seflex/parallel/partitioned_modes.hpp"
+#include "seflex/parallel/partitioned_system.hpp"
 #include "seflex/parallel/slepc_eigensolver.hpp"
 #endif
 
@@ -99,13 +101,31 @@ int modes(seflex::app::Args& args, seflex::parallel::Session* session) {
   if (vtk && writer) seflex::io::check_writable(*vtk, force);
 
   const auto t0 = std::chrono::steady_clock::now();
-  const seflex::fem::Model model = seflex::io::read_model(deck, model_options);
+  seflex::fem::Model model = seflex::io::read_model(deck, model_options);
   seflex::app::check_and_print_card_usage(
       model, seflex::reduction::check_card_usage(model, seflex::reduction::Solution::NormalModes,
                                                  {seflex::reduction::select_case(model, o.subcase)}));
   if (session != nullptr) seflex::app::checkpoint(*session);  // every rank read the deck (or stop them all)
   const auto t1 = std::chrono::steady_clock::now();
-  const seflex::reduction::NormalModes r = seflex::reduction::solve_normal_modes(model, o);
+  seflex::reduction::NormalModes r;
+  std::string assembly;  // how a distributed run assembled (the summary line)
+#ifdef SEFLEX_HAVE_MPI
+  if (session != nullptr) {
+    // Elements partitioned by METIS, each rank assembling its own, unless constraints need the whole model.
+    const auto refusal = seflex::parallel::partition_refusal(model, seflex::reduction::select_case(model, o.subcase).mpc);
+    if (!refusal) {
+      seflex::parallel::PartitionStats p;
+      r = seflex::parallel::solve_normal_modes_partitioned(model, o, &p);
+      assembly = "partitioned by METIS over " + std::to_string(session->size()) + " ranks (rank 0: " +
+                 std::to_string(p.local_elements) + " of " + std::to_string(p.total_elements) + " elements, " +
+                 std::to_string(p.local_rows) + " of " + std::to_string(p.total_rows) + " rows), " +
+                 std::to_string(p.seconds_assembly).substr(0, std::to_string(p.seconds_assembly).find('.') + 3) + " s";
+    } else {
+      assembly = "replicated on every rank (" + *refusal + ")";
+    }
+  }
+#endif
+  if (assembly.empty() || assembly.rfind("replicated", 0) == 0) r = seflex::reduction::solve_normal_modes(model, o);
   const auto t2 = std::chrono::steady_clock::now();
   const auto seconds = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };
 
@@ -127,6 +147,7 @@ int modes(seflex::app::Args& args, seflex::parallel::Session* session) {
               std::string(to_string(r.stats.backend_used)).c_str(), on.c_str(),
               r.stats.shift, r.stats.operator_applications, r.stats.lanczos_runs, slepc ? "Krylov-Schur" : "Lanczos",
               r.stats.missed_modes_recovered ? (", " + std::to_string(r.stats.missed_modes_recovered) + " recovered by the completeness check").c_str() : "");
+  if (!assembly.empty()) std::printf("  assembly: %s\n", assembly.c_str());
   const auto& st = r.stats;
   std::printf("  time: read %.2f s, solve %.2f s (factorisation %.2f, shift calibration %.2f, Lanczos %.2f, "
               "completeness check %.2f, Rayleigh-Ritz %.2f; nnz(L) %.3g)\n",

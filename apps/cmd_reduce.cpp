@@ -28,6 +28,8 @@
 
 #ifdef SEFLEX_HAVE_MPI
 #include "seflex/parallel/mumps_factorization.hpp"
+#include "seflex/parallel/partitioned_craig_bampton.hpp"
+#include "seflex/parallel/partitioned_system.hpp"
 #include "seflex/parallel/slepc_eigensolver.hpp"
 #endif
 
@@ -192,7 +194,7 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
                              "exists already; refusing to overwrite it (use --force to replace it)");
 
   const auto t0 = std::chrono::steady_clock::now();
-  const seflex::fem::Model model = seflex::io::read_model(model_path, model_options);
+  seflex::fem::Model model = seflex::io::read_model(model_path, model_options);
   red::SuperelementOptions o;
   o.interface_ids = interface_ids(model, *spec);
   const std::string spec_lower = lower(*spec);
@@ -209,10 +211,31 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
   else
     o.modes.modes = modes == kAbsent ? 0 : modes;
   o.modes.backend = *backend;
+  std::string assembly;  // how a distributed run assembled (the summary line)
 #ifdef SEFLEX_HAVE_MPI
+  std::optional<seflex::parallel::PartitionedSystem> partitioned;
   if (session != nullptr) {
     o.modes.factorization_maker = seflex::parallel::make_mumps_factorization;
     o.modes.external = seflex::parallel::slepc_eigenproblem;
+    // Elements partitioned by METIS, each rank assembling its own, unless constraints need the whole model.
+    if (const auto refusal = seflex::parallel::partition_refusal(model, red::select_case(model).mpc)) {
+      assembly = "replicated on every rank (" + *refusal + ")";
+    } else {
+      assembly = "partitioned by METIS over " + std::to_string(session->size()) + " ranks";
+      o.assemble = [&](const seflex::fem::ConstraintOptions& co) {
+        seflex::fem::GlobalMatrices whole;
+        partitioned.emplace(seflex::parallel::assemble_partitioned(model, co, &whole));
+        assembly += " (rank 0: " + std::to_string(partitioned->local_elements) + " of " +
+                    std::to_string(partitioned->total_elements) + " elements, " +
+                    std::to_string(partitioned->row_begin[1]) + " of " + std::to_string(partitioned->n_free()) + " rows)";
+        return whole;
+      };
+      o.basis = [&](const std::vector<Eigen::Index>& boundary, const red::CraigBamptonOptions& cbo) {
+        red::CraigBamptonBasis b = seflex::parallel::craig_bampton_partitioned(*partitioned, boundary, cbo);
+        partitioned.reset();  // the distributed K and M are not needed any more
+        return b;
+      };
+    }
   }
 #endif
   if (session != nullptr) seflex::app::checkpoint(*session);  // every rank read the model (or stop them all)
@@ -233,6 +256,7 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
 
   std::printf("seflex reduce %s -> %s (body '%s')\n", model_path.c_str(), out->c_str(), s.name.c_str());
   print_summary(s, info, model);
+  if (!assembly.empty()) std::printf("  assembly: %s\n", assembly.c_str());
   if (!o.modes.fmax_hz && o.modes.modes == 0 && modes == kAbsent)
     std::printf("\nno fixed-interface modes (constraint modes only; add some with --modes N or --fmax HZ)\n");
   print_modes(s, o.modes);

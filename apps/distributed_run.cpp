@@ -57,6 +57,8 @@ int run_distributed(const std::string& command, const std::function<int(parallel
     code = body(s);
   } catch (const RemoteFailure& r) {
     agreed = r.failure;
+  } catch (const parallel::PeerFailure&) {
+    // another rank failed inside a collective call: its message arrives through agree() below
   } catch (const UsageError& e) {
     fail(kUsage, std::string("seflex ") + command + ": " + e.what());
   } catch (const InputError& e) {

@@ -7,7 +7,9 @@ For each size it runs, one after the other:
   slepc P=1   mpirun -n 1 seflex modes plate.bdf --backend slepc   (Krylov-Schur on MUMPS)
   slepc P=2   mpirun -n 2 seflex modes plate.bdf --backend slepc
 every process under /usr/bin/time -v, and prints wall time, peak RSS of each rank, the largest
-relative eigenvalue difference to the serial run, and the solve phases seflex prints.
+relative eigenvalue difference to the serial run, the solve phases seflex prints and, for the
+distributed runs, how the matrices were assembled (partitioned by METIS: rank 0's share of the
+elements and rows; or replicated, and why).
 
 usage: bench/distributed_modes.py [--sizes 40,129,408] [--seflex build/apps/seflex] [--ranks 1,2]
                                   [--keep DIR] [--threads 1]
@@ -83,9 +85,11 @@ def main():
                 ref = lam
             diff = max(abs(x - y) / abs(y) for x, y in zip(lam, ref))
             solve = re.search(r"time: (.*)", out)
-            print("| %d | %s | %s | %.2f s | %s | %s MB | %.1e | %s |" % (
+            assembly = re.search(r"assembly: (.*)", out)  # distributed runs: partitioned or replicated
+            print("| %d | %s | %s | %.2f s | %s | %s MB | %.1e | %s%s |" % (
                 n, format(dofs, ","), name, wall, ", ".join("%s MB" % format(round(r), ",") for r in rss),
-                format(round(sum(rss)), ","), diff, solve.group(1) if solve else ""), flush=True)
+                format(round(sum(rss)), ","), diff, solve.group(1) if solve else "",
+                "; assembly " + assembly.group(1) if assembly else ""), flush=True)
     print("\ncommand: %s" % " ".join(sys.argv))
 
 

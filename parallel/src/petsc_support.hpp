@@ -34,6 +34,12 @@ class Owned {
 using OwnedMat = Owned<Mat, MatDestroy>;
 using OwnedVec = Owned<Vec, VecDestroy>;
 
+/// The distributed f-set K and M of a partitioned assembly (partitioned_system.hpp): MATSBAIJ,
+/// K's pattern holds M's.
+struct PetscPencil {
+  OwnedMat K, M;
+};
+
 /// A + beta B (both n x n symmetric, lower triangles read; B may be null) as a distributed MATSBAIJ
 /// (upper triangle, block size 1) on PETSC_COMM_WORLD: each rank inserts its own block of rows
 /// (PETSc's default contiguous split). Every rank passes the same A and B.

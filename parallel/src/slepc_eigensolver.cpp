@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "petsc_support.hpp"
+#include "slepc_pencil.hpp"
 #include "seflex/common/error.hpp"
 
 namespace seflex::parallel {
@@ -34,43 +35,59 @@ constexpr double kShiftRecalibration = 10;     // recalibrate only when that mov
 
 using OwnedEps = detail::Owned<EPS, EPSDestroy>;
 
-/// max over the dofs with mass of K_jj / M_jj: no finite eigenvalue lies far above it.
-double largest_diagonal_ratio(const SparseMatrixd& K, const SparseMatrixd& M) {
-  double r = 0;
-  for (Eigen::Index j = 0; j < K.cols(); ++j) {
-    const double m = M.coeff(j, j), k = K.coeff(j, j);
-    if (m > 0 && k > 0) r = std::max(r, k / m);
-  }
-  return r;
+/// K_jj / M_jj of every dof with mass and stiffness, gathered from all ranks (any order).
+std::vector<double> diagonal_ratios(Mat K, Mat M) {
+  detail::OwnedVec dk, dm;
+  SEFLEX_PETSC(MatCreateVecs(K, dk.out(), nullptr));
+  SEFLEX_PETSC(MatCreateVecs(K, dm.out(), nullptr));
+  SEFLEX_PETSC(MatGetDiagonal(K, dk.get()));
+  SEFLEX_PETSC(MatGetDiagonal(M, dm.get()));
+  PetscInt local = 0;
+  SEFLEX_PETSC(VecGetLocalSize(dk.get(), &local));
+  const PetscScalar *k = nullptr, *m = nullptr;
+  SEFLEX_PETSC(VecGetArrayRead(dk.get(), &k));
+  SEFLEX_PETSC(VecGetArrayRead(dm.get(), &m));
+  std::vector<double> mine;
+  for (PetscInt i = 0; i < local; ++i)
+    if (m[i] > 0 && k[i] > 0) mine.push_back(k[i] / m[i]);
+  SEFLEX_PETSC(VecRestoreArrayRead(dk.get(), &k));
+  SEFLEX_PETSC(VecRestoreArrayRead(dm.get(), &m));
+  int size = 1;
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  std::vector<int> counts(static_cast<std::size_t>(size)), displs(static_cast<std::size_t>(size), 0);
+  const int mine_count = static_cast<int>(mine.size());
+  SEFLEX_DEMAND(MPI_Allgather(&mine_count, 1, MPI_INT, counts.data(), 1, MPI_INT, PETSC_COMM_WORLD) == MPI_SUCCESS,
+                "MPI_Allgather failed");
+  std::partial_sum(counts.begin(), counts.end() - 1, displs.begin() + 1);
+  std::vector<double> all(static_cast<std::size_t>(displs.back() + counts.back()));
+  SEFLEX_DEMAND(MPI_Allgatherv(mine.data(), mine_count, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
+                               MPI_DOUBLE, PETSC_COMM_WORLD) == MPI_SUCCESS,
+                "MPI_Allgatherv failed");
+  return all;
 }
 
-double default_shift(const SparseMatrixd& K, const SparseMatrixd& M) {
-  std::vector<double> ratio;
-  for (Eigen::Index j = 0; j < K.cols(); ++j) {
-    const double m = M.coeff(j, j), k = K.coeff(j, j);
-    if (m > 0 && k > 0) ratio.push_back(k / m);
-  }
+double default_shift(std::vector<double> ratio) {
   if (ratio.empty()) return -1.0;
   std::nth_element(ratio.begin(), ratio.begin() + static_cast<std::ptrdiff_t>(ratio.size() / 2), ratio.end());
   return -kDefaultShiftFactor * ratio[ratio.size() / 2];
 }
 
-/// ||A||_1 of the symmetric matrix whose lower triangle A stores.
-double symmetric_one_norm(const SparseMatrixd& A) {
-  Eigen::VectorXd col = Eigen::VectorXd::Zero(A.cols());
-  for (Eigen::Index j = 0; j < A.outerSize(); ++j)
-    for (SparseMatrixd::InnerIterator it(A, j); it; ++it) {
-      if (it.row() < j) continue;
-      col(j) += std::abs(it.value());
-      if (it.row() != j) col(it.row()) += std::abs(it.value());
-    }
-  return A.cols() > 0 ? col.maxCoeff() : 0.0;
+double one_norm(Mat A) {
+  PetscReal v = 0;
+  SEFLEX_PETSC(MatNorm(A, NORM_1, &v));
+  return v;
 }
 
-/// One shift-invert Krylov-Schur solution at sigma (Kc, Mc compressed).
-reduction::EigenSolution solve_shifted(const SparseMatrixd& Kc, const SparseMatrixd& Mc, double sigma,
+void allreduce_sum(double* data, int count) {
+  SEFLEX_DEMAND(MPI_Allreduce(MPI_IN_PLACE, data, count, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD) == MPI_SUCCESS,
+                "MPI_Allreduce failed");
+}
+
+/// One shift-invert Krylov-Schur solution at sigma on the distributed K and M (K's pattern holds M's).
+reduction::EigenSolution solve_shifted(Mat K, Mat Mp, double sigma, double lambda_infinite,
                                        const reduction::EigenOptions& options) {
-  const auto n = static_cast<PetscInt>(Kc.rows());
+  PetscInt n = 0;
+  SEFLEX_PETSC(MatGetSize(K, &n, nullptr));
   reduction::EigenSolution solution;
   reduction::EigenStats& stats = solution.stats;
   stats.backend_used = reduction::EigenBackend::Slepc;
@@ -78,13 +95,13 @@ reduction::EigenSolution solve_shifted(const SparseMatrixd& Kc, const SparseMatr
 
   // A = K - sigma M (positive definite) and M, distributed by rows; M x = theta A x, theta = 1/(lambda - sigma).
   const auto t0 = Clock::now();
-  detail::OwnedMat A, Mp;
-  detail::make_upper_sbaij(Kc, &Mc, -sigma, A.out());
+  detail::OwnedMat A;
+  SEFLEX_PETSC(MatDuplicate(K, MAT_COPY_VALUES, A.out()));
+  SEFLEX_PETSC(MatAXPY(A.get(), -sigma, Mp, SUBSET_NONZERO_PATTERN));
   SEFLEX_PETSC(MatSetOption(A.get(), MAT_SPD, PETSC_TRUE));
-  detail::make_upper_sbaij(Mc, nullptr, 0.0, Mp.out());
   OwnedEps eps;
   SEFLEX_PETSC(EPSCreate(PETSC_COMM_WORLD, eps.out()));
-  SEFLEX_PETSC(EPSSetOperators(eps.get(), Mp.get(), A.get()));
+  SEFLEX_PETSC(EPSSetOperators(eps.get(), Mp, A.get()));
   SEFLEX_PETSC(EPSSetProblemType(eps.get(), EPS_GHEP));
   SEFLEX_PETSC(EPSSetType(eps.get(), EPSKRYLOVSCHUR));
   SEFLEX_PETSC(EPSSetWhichEigenpairs(eps.get(), EPS_LARGEST_REAL));
@@ -103,7 +120,6 @@ reduction::EigenSolution solve_shifted(const SparseMatrixd& Kc, const SparseMatr
 
   const PetscInt want = options.count ? static_cast<PetscInt>(*options.count) : 0;
   PetscInt nev = std::min<PetscInt>(n, options.count ? want : kRangeBatch);
-  const double lambda_infinite = kInfiniteRatio * largest_diagonal_ratio(Kc, Mc);
   std::vector<double> theta;
   std::vector<PetscInt> index;
   bool factorised = false;
@@ -204,32 +220,92 @@ reduction::EigenSolution solve_shifted(const SparseMatrixd& Kc, const SparseMatr
   // Rayleigh quotient only gives eps ||K||).
   Eigen::MatrixXd& X = solution.vectors;
   if (m > 0) {
-    const Eigen::MatrixXd MX = Mc.selfadjointView<Eigen::Lower>() * X;
-    const Eigen::MatrixXd KX = Kc.selfadjointView<Eigen::Lower>() * X;
-    const Eigen::MatrixXd G = X.transpose() * MX, H = X.transpose() * KX;
+    // X^T K X and X^T M X from the distributed products of this rank's rows, summed over the ranks.
+    detail::OwnedVec x, y;
+    SEFLEX_PETSC(MatCreateVecs(K, x.out(), y.out()));
+    PetscInt begin = 0, end = 0;
+    SEFLEX_PETSC(VecGetOwnershipRange(x.get(), &begin, &end));
+    const Eigen::Index local = end - begin;
+    Eigen::MatrixXd KX(local, m), MX(local, m);
+    for (Eigen::Index k = 0; k < m; ++k) {
+      PetscScalar* v = nullptr;
+      SEFLEX_PETSC(VecGetArrayWrite(x.get(), &v));
+      Eigen::Map<Eigen::VectorXd>(v, local) = X.col(k).segment(begin, local);
+      SEFLEX_PETSC(VecRestoreArrayWrite(x.get(), &v));
+      for (auto [A_, out] : {std::pair<Mat, Eigen::MatrixXd*>{K, &KX}, {Mp, &MX}}) {
+        SEFLEX_PETSC(MatMult(A_, x.get(), y.get()));
+        const PetscScalar* w = nullptr;
+        SEFLEX_PETSC(VecGetArrayRead(y.get(), &w));
+        out->col(k) = Eigen::Map<const Eigen::VectorXd>(w, local);
+        SEFLEX_PETSC(VecRestoreArrayRead(y.get(), &w));
+      }
+    }
+    Eigen::MatrixXd G = X.middleRows(begin, local).transpose() * MX, H = X.middleRows(begin, local).transpose() * KX;
+    allreduce_sum(G.data(), static_cast<int>(G.size()));
+    allreduce_sum(H.data(), static_cast<int>(H.size()));
     Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> rr(0.5 * (H + H.transpose()), 0.5 * (G + G.transpose()));
     if (rr.info() != Eigen::Success)
       throw ConvergenceError("normal modes (SLEPc, distributed): the converged eigenvectors are not independent in the "
                              "mass inner product");
-    X = X * rr.eigenvectors();
+    const Eigen::MatrixXd& C = rr.eigenvectors();
+    X = X * C;
     const Eigen::VectorXd theta_lambda = solution.eigenvalues;  // sigma + 1/theta, ascending
     const double top = theta_lambda.cwiseAbs().maxCoeff();
     for (Eigen::Index k = 0; k < m; ++k)
       solution.eigenvalues(k) = std::abs(theta_lambda(k)) < kZeroModeGap * top ? theta_lambda(k) : rr.eigenvalues()(k);
     // Backward errors as the serial backends report them.
-    const double nk = symmetric_one_norm(Kc), nm = symmetric_one_norm(Mc);
-    const Eigen::MatrixXd R = Kc.selfadjointView<Eigen::Lower>() * X -
-                              (Mc.selfadjointView<Eigen::Lower>() * X) * solution.eigenvalues.asDiagonal();
+    const double nk = one_norm(K), nm = one_norm(Mp);
+    const Eigen::MatrixXd R = KX * C - (MX * C) * solution.eigenvalues.asDiagonal();
+    Eigen::VectorXd r2 = R.colwise().squaredNorm().transpose();
+    allreduce_sum(r2.data(), static_cast<int>(r2.size()));
     solution.backward_errors.resize(m);
     for (Eigen::Index k = 0; k < m; ++k)
-      solution.backward_errors(k) =
-          R.col(k).norm() / ((nk + std::abs(solution.eigenvalues(k)) * nm) * std::max(X.col(k).norm(), 1e-300));
+      solution.backward_errors(k) = std::sqrt(r2(k)) / ((nk + std::abs(solution.eigenvalues(k)) * nm) *
+                                                         std::max(X.col(k).norm(), 1e-300));
   }
   stats.seconds_postprocess = seconds_since(tp);
   return solution;
 }
 
 }  // namespace
+
+namespace detail {
+
+reduction::EigenSolution solve_pencil(Mat K, Mat M, const reduction::EigenOptions& options) {
+  const std::vector<double> ratios = diagonal_ratios(K, M);
+  const double lambda_infinite = kInfiniteRatio * (ratios.empty() ? 0.0 : *std::max_element(ratios.begin(), ratios.end()));
+  const double sigma = options.shift ? *options.shift : default_shift(ratios);
+  reduction::EigenSolution s = solve_shifted(K, M, sigma, lambda_infinite, options);
+  if (options.shift) return s;
+  // Zero eigenvalues (free-free, mechanisms with mass) with a tiny sigma leave K - sigma M nearly
+  // singular: the zero modes come poorly M-orthogonal and the others inaccurate. Solve again at a
+  // shift scaled by the lowest nonzero eigenvalue found, as the serial backends calibrate theirs
+  // (eigensolver.hpp), until the shift settles.
+  reduction::EigenStats spent;
+  for (int pass = 1; pass < kCalibrationPasses; ++pass) {
+    const Eigen::VectorXd& lambda = s.eigenvalues;
+    if (lambda.size() == 0) break;
+    const double top = lambda.cwiseAbs().maxCoeff();
+    if (!(top > 0) || !(std::abs(lambda(0)) < kZeroModeGap * top)) break;
+    Eigen::Index nz = 0;
+    while (nz < lambda.size() && lambda(nz) < kZeroModeGap * top) ++nz;
+    if (nz == lambda.size()) break;
+    const double better = -kShiftFraction * lambda(nz);
+    if (!(better < kShiftRecalibration * s.stats.shift)) break;  // sigma is already of that order
+    spent.seconds_calibration += s.stats.seconds_factorization + s.stats.seconds_lanczos + s.stats.seconds_postprocess;
+    spent.factorizations += s.stats.factorizations;
+    spent.lanczos_runs += s.stats.lanczos_runs;
+    spent.operator_applications += s.stats.operator_applications;
+    s = solve_shifted(K, M, better, lambda_infinite, options);
+  }
+  s.stats.seconds_calibration += spent.seconds_calibration;
+  s.stats.factorizations += spent.factorizations;
+  s.stats.lanczos_runs += spent.lanczos_runs;
+  s.stats.operator_applications += spent.operator_applications;
+  return s;
+}
+
+}  // namespace detail
 
 reduction::EigenSolution slepc_eigenproblem(const SparseMatrixd& K, const SparseMatrixd& M,
                                             const reduction::EigenOptions& options) {
@@ -252,34 +328,29 @@ reduction::EigenSolution slepc_eigenproblem(const SparseMatrixd& K, const Sparse
   if (!M.isCompressed()) (Mcopy = M).makeCompressed();
   const SparseMatrixd& Kc = K.isCompressed() ? K : Kcopy;
   const SparseMatrixd& Mc = M.isCompressed() ? M : Mcopy;
-  const double sigma = options.shift ? *options.shift : default_shift(Kc, Mc);
-  reduction::EigenSolution s = solve_shifted(Kc, Mc, sigma, options);
-  if (options.shift) return s;
-  // Zero eigenvalues (free-free, mechanisms with mass) with a tiny sigma leave K - sigma M nearly
-  // singular: the zero modes come poorly M-orthogonal and the others inaccurate. Solve again at a
-  // shift scaled by the lowest nonzero eigenvalue found, as the serial backends calibrate theirs
-  // (eigensolver.hpp), until the shift settles.
-  reduction::EigenStats spent;
-  for (int pass = 1; pass < kCalibrationPasses; ++pass) {
-    const Eigen::VectorXd& lambda = s.eigenvalues;
-    if (lambda.size() == 0) break;
-    const double top = lambda.cwiseAbs().maxCoeff();
-    if (!(top > 0) || !(std::abs(lambda(0)) < kZeroModeGap * top)) break;
-    Eigen::Index nz = 0;
-    while (nz < lambda.size() && lambda(nz) < kZeroModeGap * top) ++nz;
-    if (nz == lambda.size()) break;
-    const double better = -kShiftFraction * lambda(nz);
-    if (!(better < kShiftRecalibration * s.stats.shift)) break;  // sigma is already of that order
-    spent.seconds_calibration += s.stats.seconds_factorization + s.stats.seconds_lanczos + s.stats.seconds_postprocess;
-    spent.factorizations += s.stats.factorizations;
-    spent.lanczos_runs += s.stats.lanczos_runs;
-    spent.operator_applications += s.stats.operator_applications;
-    s = solve_shifted(Kc, Mc, better, options);
+  detail::OwnedMat Kp, Mp;
+  detail::make_upper_sbaij(Kc, &Mc, 0.0, Kp.out());  // K with M's pattern too (K - sigma M in place)
+  detail::make_upper_sbaij(Mc, nullptr, 0.0, Mp.out());
+  return detail::solve_pencil(Kp.get(), Mp.get(), options);
+}
+
+reduction::EigenSolution slepc_eigenproblem_partitioned(const PartitionedSystem& system, const reduction::EigenOptions& options) {
+  SEFLEX_DEMAND(options.count.has_value() || options.lambda_max.has_value(),
+                "eigenproblem: give a mode count or an upper frequency bound");
+  SEFLEX_DEMAND(!options.count || *options.count >= 0, "eigenproblem: negative mode count");
+  const Eigen::Index n = system.n_free();
+  if (n == 0 || (options.count && *options.count == 0)) {
+    reduction::EigenSolution empty;
+    empty.stats.backend_used = reduction::EigenBackend::Slepc;
+    empty.eigenvalues.resize(0);
+    empty.vectors.resize(n, 0);
+    empty.backward_errors.resize(0);
+    return empty;
   }
-  s.stats.seconds_calibration += spent.seconds_calibration;
-  s.stats.factorizations += spent.factorizations;
-  s.stats.lanczos_runs += spent.lanczos_runs;
-  s.stats.operator_applications += spent.operator_applications;
+  reduction::EigenSolution s = detail::solve_pencil(system.pencil().K.get(), system.pencil().M.get(), options);
+  Eigen::MatrixXd f(n, s.vectors.cols());  // rows from the partition numbering back to the f-set's
+  for (Eigen::Index p = 0; p < n; ++p) f.row(system.p_to_f[static_cast<std::size_t>(p)]) = s.vectors.row(p);
+  s.vectors = std::move(f);
   return s;
 }
 

@@ -235,11 +235,13 @@ se::Superelement reduce_to_superelement(const fem::Model& model, const Superelem
 
   // 1. Matrices and constraints.
   require_usable(model, check_card_usage(model, Solution::CraigBampton, {select_case(model)}, options.interface_cards));
-  fem::GlobalMatrices g = fem::assemble(model, fem::assembly_options(model));
+  const fem::DofMap dofs = fem::make_dof_map(model);
   fem::ConstraintOptions co = case_constraints(model);
   for (const int id : options.interface_ids)  // boundary dofs: held in the interior problem, never AUTOSPC'd
     if (const auto it = model.grid_index.find(id); it != model.grid_index.end())
-      for (int k = 1; k <= 6; ++k) co.no_autospc.push_back(g.dofs.grid_dof(it->second, k));
+      for (int k = 1; k <= 6; ++k) co.no_autospc.push_back(dofs.grid_dof(it->second, k));
+  const bool partitioned = options.assemble && options.basis;
+  fem::GlobalMatrices g = partitioned ? options.assemble(co) : fem::assemble(model, fem::assembly_options(model));
   inf.spc_set = co.spc_set.value_or(0);
   inf.mpc_set = co.mpc_set.value_or(0);
   fem::ConstrainedSystem c = fem::apply_constraints(model, g, co);
@@ -313,7 +315,7 @@ se::Superelement reduce_to_superelement(const fem::Model& model, const Superelem
     for (int k = 0; k < 6; ++k) boundary.push_back(c.g_to_f[6 * gi + static_cast<std::size_t>(k)]);
   CraigBamptonBasis cb;
   try {
-    cb = craig_bampton(c.K_ff, c.M_ff, boundary, options.modes);
+    cb = partitioned ? options.basis(boundary, options.modes) : craig_bampton(c.K_ff, c.M_ff, boundary, options.modes);
   } catch (const FactorizationError& e) {
     std::vector<char> is_b(static_cast<std::size_t>(c.n_free()), 0);
     for (Eigen::Index f : boundary) is_b[static_cast<std::size_t>(f)] = 1;

@@ -8,6 +8,7 @@
 //   seflex::InvariantError (or FactorizationError / ConvergenceError) from the call that failed.
 // - agree() is collective: every rank must call it the same number of times, in the same order.
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 namespace seflex::parallel {
@@ -17,6 +18,12 @@ struct Failure {
   int exit_code = 1;
   std::string message;
   int rank = 0;
+};
+
+/// Thrown by a collective parallel/ call on the ranks that did not fail when another rank failed
+/// inside it: that rank throws its own error, and Session::agree brings its message to every rank.
+struct PeerFailure : std::runtime_error {
+  PeerFailure() : std::runtime_error("another rank failed") {}
 };
 
 class Session {

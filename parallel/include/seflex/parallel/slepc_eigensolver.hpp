@@ -12,16 +12,22 @@
 //   is singular: massless dofs have theta = 0 and are never wanted), lambda = sigma + 1/theta.
 // - A count runs once; a frequency bound (lambda_max alone) or lambda_min doubles the number of
 //   requested pairs until the range is covered.
-// - The converged vectors are gathered onto every rank (n x m each) and M-orthonormalised
-//   (X <- X L^-T, L L^T = X^T M X): the same EigenSolution as the serial backends, on every rank.
+// - The converged vectors are gathered onto every rank (n x m each) and refined by Rayleigh-Ritz on
+//   (K, M) in their span, X^T K X and X^T M X summed from each rank's rows of the distributed
+//   products (M-orthonormal vectors): the same EigenSolution as the serial backends, on every rank.
 // Collective on PETSC_COMM_WORLD; needs a parallel::Session.
 // Throws reduction::FactorizationError if MUMPS finds A not positive definite (column unknown: -1),
 // ConvergenceError if Krylov-Schur stops short of the wanted pairs, InvariantError on PETSc failures.
+#include "seflex/parallel/partitioned_system.hpp"
 #include "seflex/reduction/eigensolver.hpp"
 
 namespace seflex::parallel {
 
 reduction::EigenSolution slepc_eigenproblem(const reduction::SparseMatrixd& K, const reduction::SparseMatrixd& M,
                                             const reduction::EigenOptions& options);
+
+/// The same method on the matrices of a partitioned assembly (nothing replicated but the gathered
+/// vectors): vectors n_free x m in the serial f numbering (PartitionedSystem::f_to_g), on every rank.
+reduction::EigenSolution slepc_eigenproblem_partitioned(const PartitionedSystem& system, const reduction::EigenOptions& options);
 
 }  // namespace seflex::parallel

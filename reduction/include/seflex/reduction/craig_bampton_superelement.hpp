@@ -26,10 +26,13 @@
 //  7. Truncation report with the rigid motions about f (craig_bampton.hpp, truncation_report).
 // Frame node: options.frame_node, or by default the grid with six free dofs, not an interface
 // node, nearest the centre of mass (ties: the lower id). The yoke uses 2 and the panel 112.
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "seflex/fem/assembly.hpp"
+#include "seflex/fem/constraints.hpp"
 #include "seflex/fem/model.hpp"
 #include "seflex/reduction/craig_bampton.hpp"
 #include "seflex/superelement/superelement.hpp"
@@ -55,6 +58,13 @@ struct SuperelementOptions {
   CraigBamptonOptions modes;       ///< fixed-interface modes (count or frequency limit)
   std::string name;                ///< body name
   bool full_mesh = true;           ///< keep recovery, M_fe and cells (animation, recovery); the invariants are always computed
+  /// The distributed backend's partitioned assembly (parallel/, `reduce --backend slepc`): when both
+  /// are set, step 1 takes the g-set matrices from `assemble` (M whole; K only as far as
+  /// apply_constraints needs it: each grid's diagonal block, enough when no dof is dependent) and
+  /// step 3 the basis from `basis` (on the partitioned K and M `assemble` made), instead of
+  /// fem::assemble and craig_bampton. Both are collective: every rank runs reduce_to_superelement.
+  std::function<fem::GlobalMatrices(const fem::ConstraintOptions&)> assemble;
+  std::function<CraigBamptonBasis(const std::vector<Eigen::Index>& boundary, const CraigBamptonOptions&)> basis;
 };
 
 /// What was done, for the summary of `seflex reduce` and the benchmark.
