@@ -104,9 +104,12 @@ class ThermalLoads {
     const std::uint32_t gi = detail::grid_index(m_, g, ref, card, eid, "G");
     if (const auto it = grid_t_.find(gi); it != grid_t_.end()) return it->second;
     if (tempd_) return *tempd_;
+    const std::string c = card;
+    const bool line = c == "CBAR" || c == "CBEAM" || c == "CROD" || c == "CONROD";
     detail::fail(m_, ref, card, eid, "",
                  "GRID " + std::to_string(g) + " has no temperature in thermal load set " + std::to_string(sid_) +
-                     " (no TEMP card gives it, no TEMPD and no TEMPRB for the element); expected one of them");
+                     (line ? " (no TEMP card gives it, no TEMPD and no TEMPRB for the element); expected one of them"
+                           : " (no TEMP card gives it and no TEMPD); expected one of them"));
   }
 
   /// A CQUAD4/CTRIA3: the mean of its grids' temperatures (QRG TEMP: the element temperature of a

@@ -101,7 +101,7 @@ TEST(SolidThermalLoad, LinearTemperatureGivesSelfEquilibratedLoads) {
     box.nx = box.ny = box.nz = 2;
     const auto lattice = add_box_solids(m, box, type, E, nu, 7800.0);
     set_expansion(m);
-    for (const auto& [id, l] : lattice) m.grid_temperatures.push_back({5, id, tref + 50.0 + 40.0 * l[2] / 2.0, {}});
+    for (const auto& [id, l] : lattice) m.grid_temperatures.push_back({5, id, tref + 50.0 + 40.0 * l[2] / (2.0 * box.nz), {}});
     finalize_for_test(m);
     const GlobalMatrices g = assemble(m, assembly_options(m));
     const Eigen::VectorXd p = thermal_load_vector(m, g.dofs, 5);

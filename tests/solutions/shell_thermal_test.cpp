@@ -63,6 +63,14 @@ std::string plate(int n, double a, double b, bool tria, double skew, const std::
   return d + "ENDDATA\n";
 }
 
+/// `d` with `fields` appended to every CQUAD4 and CTRIA3 line (e.g. ",90." for THETA, ",0" for MCID 0:
+/// the material x axis is the projected basic x axis, not each element's G1-G2 edge).
+std::string with_element_fields(std::string d, const std::string& fields) {
+  for (const char* card : {"CQUAD4", "CTRIA3"})
+    for (std::size_t k = d.find(card); k != std::string::npos; k = d.find(card, k + 1)) d.insert(d.find('\n', k), fields);
+  return d;
+}
+
 constexpr double E = 7.0e10, nu = 0.3, alpha = 2.3e-5, tref = 20.0, t = 2.0e-3;
 const std::string kAluminium = "MAT1,1,7.e10,,0.3,2700.,2.3e-5,20.\nPSHELL,1,1,2.e-3,1,,1\n";
 
@@ -117,12 +125,11 @@ TEST(ShellThermalLoad, ClampedPlateCarriesThePlaneStressThermalForce) {
 // plate expands by A2 dT along x and A1 dT along y. TREF is the material's.
 TEST(ShellThermalLoad, OrthotropicPshellExpandsAlongItsMaterialAxes) {
   const double a1 = -0.5e-6, a2 = 30.0e-6, dT = 50.0;
-  std::string d = plate(2, 0.2, 0.2, false, 0.0, "SPC = 1\nTEMP = 5\n",
-                        "MAT8,8,140.e9,10.e9,.3,5.e9,,,1600.,+M\n+M,-0.5e-6,30.e-6,-10.\nPSHELL,1,8,1.e-3,8\n"
-                        "SPC1,1,123456,1\nTEMPD,5,40.\n");
-  for (std::size_t k = d.find("CQUAD4"); k != std::string::npos; k = d.find("CQUAD4", k + 1))
-    d.insert(d.find('\n', k), ",90.");
-  const fem::Model m = test::read_deck(d);
+  const fem::Model m = test::read_deck(with_element_fields(
+      plate(2, 0.2, 0.2, false, 0.0, "SPC = 1\nTEMP = 5\n",
+            "MAT8,8,140.e9,10.e9,.3,5.e9,,,1600.,+M\n+M,-0.5e-6,30.e-6,-10.\nPSHELL,1,8,1.e-3,8\n"
+            "SPC1,1,123456,1\nTEMPD,5,40.\n"),
+      ",90."));
   const auto s = reduction::solve_static(m);
   for (const auto& g : m.grids) {
     EXPECT_NEAR(u(m, s, g.id, 1), a2 * dT * g.x_basic.x(), 1e-13) << g.id;
@@ -144,10 +151,14 @@ TEST(ShellThermalLoad, UnsymmetricCrossPlyCurlsAsLaminationTheory) {
   const double E1 = 181e9, E2 = 10.3e9, nu12 = 0.28, G12 = 7.17e9, a1 = 0.02e-6, a2 = 22.5e-6, h = 0.125e-3;
   const double dT = -150.0;
   for (const bool tria : {false, true}) {
-    const fem::Model m = test::read_deck(plate(4, 0.1, 0.1, tria, 0.15, "SPC = 1\nTEMP = 5\n",
-                                               "MAT8,8,181.e9,10.3e9,.28,7.17e9,,,1600.,+M\n+M,0.02e-6,22.5e-6,999.\n"
-                                               "PCOMP,1,,,,,170.,,,+P\n+P,8,0.125e-3,0.,,8,0.125e-3,90.\n"
-                                               "SPC1,1,123456,1\nTEMPD,5,20.\n"));
+    // MCID 0: every element's laminate x axis is the basic x axis (a distorted mesh or a triangle's
+    // G1-G2 edge would turn it element by element)
+    const fem::Model m = test::read_deck(with_element_fields(
+        plate(4, 0.1, 0.1, tria, 0.15, "SPC = 1\nTEMP = 5\n",
+              "MAT8,8,181.e9,10.3e9,.28,7.17e9,,,1600.,+M\n+M,0.02e-6,22.5e-6,999.\n"
+              "PCOMP,1,,,,,170.,,,+P\n+P,8,0.125e-3,0.,,8,0.125e-3,90.\n"
+              "SPC1,1,123456,1\nTEMPD,5,20.\n"),
+        ",0"));
     const auto s = reduction::solve_static(m);
     const double den = 1.0 - nu12 * nu12 * E2 / E1;
     const double Q11 = E1 / den, Q22 = E2 / den, Q12 = nu12 * E2 / den;
@@ -180,8 +191,8 @@ TEST(ShellThermalLoad, ElementTemperatureIsTheMeanOfItsGrids) {
   const fem::Model m = test::read_deck(plate(1, 0.1, 0.1, false, 0.0, "SPC = 1\nTEMP = 5\n",
                                              kAluminium + "SPC1,1,123456,1\nTEMP,5,2,120.,3,120.\nTEMPD,5,40.\n"));
   const auto s = reduction::solve_static(m);
-  EXPECT_NEAR(u(m, s, 2, 1), alpha * (80.0 - tref) * 0.1, 1e-15);
-  EXPECT_NEAR(u(m, s, 4, 2), alpha * (80.0 - tref) * 0.1, 1e-15);
+  EXPECT_NEAR(u(m, s, 2, 1) / (alpha * (80.0 - tref) * 0.1), 1.0, 1e-9);
+  EXPECT_NEAR(u(m, s, 4, 2) / (alpha * (80.0 - tref) * 0.1), 1.0, 1e-9);
 }
 
 // A heated PSHELL whose MID4 (membrane-bending coupling) expands is refused, naming the card.
@@ -197,6 +208,23 @@ TEST(ShellThermalLoad, Mid4WithThermalExpansionIsRefused) {
     EXPECT_NE(msg.find("CQUAD4"), std::string::npos) << msg;
     EXPECT_NE(msg.find("MID4"), std::string::npos) << msg;
     EXPECT_NE(msg.find("thermal load set 5"), std::string::npos) << msg;
+  }
+}
+
+// A heated shell with a grid that the set gives no temperature (no TEMP for it, no TEMPD): refused,
+// naming the element and the grid.
+TEST(ShellThermalLoad, GridWithoutTemperatureIsRefused) {
+  const fem::Model m = test::read_deck(
+      plate(1, 0.1, 0.1, false, 0.0, "SPC = 1\nTEMP = 5\n", kAluminium + "SPC1,1,123456,1\nTEMP,5,1,50.,2,50.,3,50.\n"));
+  try {
+    reduction::solve_static(m);
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("CQUAD4 1"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("GRID 4 has no temperature in thermal load set 5 (no TEMP card gives it and no TEMPD)"),
+              std::string::npos)
+        << msg;
   }
 }
 
