@@ -10,7 +10,10 @@
 //   Composite Materials, 2nd ed., sec. 4.5; Hyer, Stress Analysis of Fiber-Reinforced Composite
 //   Materials, ch. 11), written out here in closed form for a two-ply cross-ply;
 // - Nastran's element temperature of a shell is the mean of its grids' temperatures (QRG TEMP,
-//   without TEMPPi): one element with two hot and two cold grids expands by the mean.
+//   without TEMPPi): one element with two hot and two cold grids expands by the mean;
+// - `seflex static` on a heated quasi-isotropic [0/45/-45/90]s PCOMP (MYSTRAN's VD0114 laminate):
+//   free expansion by alpha_eff dT with alpha_eff = [(Q11 + Q12) a1 + (Q12 + Q22) a2] / (Q11 + Q22 + 2 Q12)
+//   (the isotropic part of N_T over the isotropic A11 + A12 = T (U1 + U4); Jones ch. 4).
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -20,6 +23,7 @@
 #include "nastran_test_util.hpp"
 #include "seflex/fem/loads.hpp"
 #include "seflex/reduction/statics.hpp"
+#include "test_support.hpp"
 
 namespace seflex {
 namespace {
@@ -226,6 +230,43 @@ TEST(ShellThermalLoad, GridWithoutTemperatureIsRefused) {
               std::string::npos)
         << msg;
   }
+}
+
+// The command line runs a heated laminate (before: refused): VD0114's [0/45/-45/90]s graphite/epoxy
+// (MAT8 E1 2.03e7, E2 1.49e6, NU12 .29, A1 .7e-6, A2 31.2e-6; PCOMP TREF 30, SYM), a 100 x 100 plate of
+// 3 x 3 CQUAD4 held at one corner in 1-2 and along the edge x = 0 in 1, TEMPD 100: the far corner
+// moves by alpha_eff 70 x 100 in x and y.
+TEST(ShellThermalLoad, CommandLineExpandsAQuasiIsotropicLaminate) {
+  std::string d = "SOL 101\nCEND\nSPC = 200\nSUBCASE 2\n  TEMP(LOAD) = 200\nBEGIN BULK\n"
+                  "MAT8,210,2.03+7,1.49+6,.29,74.7+4,1.E+15,1.E+15,0.1,+MA1\n+MA1,0.7E-6,31.2E-6,30.0\n"
+                  "PCOMP,200,-0.5,,1.23+4,TSAI,30.,,SYM,+P1\n+P1,210,0.125,0.,,210,0.125,45.,,+P2\n"
+                  "+P2,210,0.125,-45.,,210,0.125,90.\nTEMPD,200,100.\nSPC1,200,1345,5,9,13\nSPC1,200,12345,1\n";
+  for (int j = 0; j <= 3; ++j)
+    for (int i = 0; i <= 3; ++i)
+      d += "GRID," + std::to_string(1 + i + 4 * j) + ",," + num(100.0 * i / 3) + "," + num(100.0 * j / 3) + ",0.,,6\n";
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) {
+      const int g = 1 + i + 4 * j;
+      d += "CQUAD4," + std::to_string(1 + i + 3 * j) + ",200," + std::to_string(g) + "," + std::to_string(g + 1) + "," +
+           std::to_string(g + 5) + "," + std::to_string(g + 4) + "\n";
+    }
+  d += "ENDDATA\n";
+  test::TempDir dir;
+  dir.write("qi.bdf", d);
+  const auto r = test::run_seflex("static qi.bdf -o u.csv", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const double E1 = 2.03e7, E2 = 1.49e6, nu12 = .29, a1 = .7e-6, a2 = 31.2e-6;
+  const double den = 1 - nu12 * nu12 * E2 / E1, Q11 = E1 / den, Q22 = E2 / den, Q12 = nu12 * E2 / den;
+  const double alpha_eff = ((Q11 + Q12) * a1 + (Q12 + Q22) * a2) / (Q11 + Q22 + 2 * Q12);
+  bool found = false;
+  for (const auto& row : test::csv_rows(dir / "u.csv"))  // grid, t1, t2, t3, r1, r2, r3
+    if (row[0] == 16.0) {
+      found = true;
+      EXPECT_NEAR(row[1] / (alpha_eff * 70 * 100), 1.0, 1e-9);
+      EXPECT_NEAR(row[2] / (alpha_eff * 70 * 100), 1.0, 1e-9);
+      EXPECT_NEAR(row[3], 0.0, 1e-12);  // symmetric laminate: no curvature
+    }
+  EXPECT_TRUE(found);
 }
 
 }  // namespace
