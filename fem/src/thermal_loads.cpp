@@ -116,13 +116,18 @@ class ThermalLoads {
   /// shell without TEMPPi), uniform through the thickness, from the section's TREF.
   void shell(const Shell& s, double k6rot) {
     const ShellSection section = make_shell_section(m_, s);
-    if (!section.thermal()) return;
     const char* card = s.nnode == 4 ? "CQUAD4" : "CTRIA3";
-    pshell_mid4_check(s, card);
+    const bool mid4_expands = pshell_mid4_expands(s);
+    if (!section.thermal() && !mid4_expands) return;
     double T = 0;
     for (int k = 0; k < s.nnode; ++k) T += grid_temperature(s.g[k], s.ref, card, s.id);
     const double dT = T / s.nnode - section.tref;
     if (dT == 0.0) return;
+    if (mid4_expands)
+      detail::fail(m_, s.ref, card, s.id, "",
+                   "thermal load set " + std::to_string(sid_) + " heats it and its PSHELL " + std::to_string(s.pid) +
+                       " has a MID4 (membrane-bending coupling) material with thermal expansion, whose thermal moment "
+                       "seflex does not compute; expected ALPHA blank on MID4's material");
     if (s.nnode == 4)
       scatter(s.g.data(), 4, quad4_thermal_load(make_quad4_element(m_, s, &section), dT, k6rot));
     else
@@ -130,18 +135,13 @@ class ThermalLoads {
   }
 
   /// A PSHELL's MID4 (membrane-bending coupling) with thermal expansion: its thermal moment is not
-  /// computed, so such a shell is refused rather than loaded without it.
-  void pshell_mid4_check(const Shell& s, const char* card) const {
+  /// computed, so such a shell, when heated, is refused rather than loaded without it.
+  bool pshell_mid4_expands(const Shell& s) const {
     const auto pit = m_.shell_prop_index.find(s.pid);
-    if (pit == m_.shell_prop_index.end()) return;
-    const int mid4 = m_.shell_props[pit->second].mid4;
-    if (mid4 <= 0) return;
-    const ShellMaterial m = detail::shell_material(m_, mid4, m_.shell_props[pit->second].ref, "PSHELL", s.pid, "MID4");
-    if (!m.alpha.isZero(0.0))
-      detail::fail(m_, s.ref, card, s.id, "",
-                   "thermal load set " + std::to_string(sid_) + " heats it and its PSHELL " + std::to_string(s.pid) +
-                       " has a MID4 (membrane-bending coupling) material with thermal expansion, whose thermal moment "
-                       "seflex does not compute; expected ALPHA blank on MID4's material");
+    if (pit == m_.shell_prop_index.end()) return false;
+    const ShellProperty& p = m_.shell_props[pit->second];
+    if (p.mid4 <= 0) return false;
+    return !detail::shell_material(m_, p.mid4, p.ref, "PSHELL", p.id, "4 of continuation 1 (MID4)").alpha.isZero(0.0);
   }
 
   /// A CHEXA/CPENTA/CTETRA: its grids' temperatures interpolated over the element.

@@ -213,6 +213,18 @@ TEST(ShellThermalLoad, Mid4WithThermalExpansionIsRefused) {
     EXPECT_NE(msg.find("MID4"), std::string::npos) << msg;
     EXPECT_NE(msg.find("thermal load set 5"), std::string::npos) << msg;
   }
+  // the library's thermal load refuses it too (MID1 here has ALPHA as well; also without it)
+  for (const char* mat1 : {"MAT1,1,7.e10,,0.3,2700.,2.3e-5,20.\n", "MAT1,1,7.e10,,0.3,2700.\n"}) {
+    const fem::Model l = test::read_deck(plate(1, 0.1, 0.1, false, 0.0, "SPC = 1\nTEMP = 5\n",
+                                               std::string(mat1) + "MAT1,4,7.e9,,0.3,0.,1.e-5,20.\n"
+                                               "PSHELL,1,1,2.e-3,1,,1,,,+P\n+P,,,4\nSPC1,1,123456,1\nTEMPD,5,120.\n"));
+    try {
+      fem::thermal_load_vector(l, fem::make_dof_map(l), 5);
+      ADD_FAILURE() << "expected an InputError";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("MID4"), std::string::npos) << e.what();
+    }
+  }
 }
 
 // A heated shell with a grid that the set gives no temperature (no TEMP for it, no TEMPD): refused,
