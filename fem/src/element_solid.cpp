@@ -6,54 +6,11 @@
 
 #include "model_lookup.hpp"
 #include "seflex/common/error.hpp"
+#include "solid_kinematics.hpp"
 #include "solid_shapes.hpp"
 
 namespace seflex::fem {
-namespace {
-
-using detail::ShapeValues;
-
-/// Shape values, x-gradients (rows a: dN_a/dx) and det J at natural point xi.
-struct PointData {
-  ShapeValues s;
-  Eigen::Matrix<double, detail::kMaxSolidNodes, 3> dNdx;
-  double detJ = 0;
-  Eigen::Matrix3d J;  ///< J(i, j) = dx_i / dxi_j
-};
-
-void evaluate(const SolidElement& e, const Eigen::Vector3d& xi, PointData& p) {
-  detail::solid_shape(e.shape, e.nnode, xi, p.s);
-  p.J.setZero();
-  for (int a = 0; a < e.nnode; ++a)
-    for (int j = 0; j < 3; ++j) p.J.col(j) += p.s.dN[a][j] * e.x[static_cast<std::size_t>(a)];
-  p.detJ = p.J.determinant();
-  const Eigen::Matrix3d Jit = p.J.inverse().transpose();
-  for (int a = 0; a < e.nnode; ++a)
-    p.dNdx.row(a) = (Jit * Eigen::Vector3d(p.s.dN[a][0], p.s.dN[a][1], p.s.dN[a][2])).transpose();
-}
-
-/// Strain-displacement columns of one displacement gradient g (3 columns: u, v, w).
-void strain_columns(const Eigen::Vector3d& g, Eigen::Ref<Eigen::Matrix<double, 6, 3>> B) {
-  B.setZero();
-  B(0, 0) = g[0];
-  B(1, 1) = g[1];
-  B(2, 2) = g[2];
-  B(3, 0) = g[1], B(3, 1) = g[0];
-  B(4, 1) = g[2], B(4, 2) = g[1];
-  B(5, 0) = g[2], B(5, 2) = g[0];
-}
-
-Eigen::MatrixXd strain_matrix(const SolidElement& e, const PointData& p) {
-  Eigen::MatrixXd B(6, 3 * e.nnode);
-  for (int a = 0; a < e.nnode; ++a) {
-    Eigen::Matrix<double, 6, 3> b;
-    strain_columns(p.dNdx.row(a).transpose(), b);
-    B.middleCols<3>(3 * a) = b;
-  }
-  return B;
-}
-
-}  // namespace
+using detail::SolidPointData;
 
 Eigen::Matrix<double, 6, 6> isotropic_elasticity(double E, double nu) {
   const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
@@ -69,33 +26,29 @@ Eigen::MatrixXd solid_stiffness(const SolidElement& e) {
   Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
   const bool bubbles = e.scheme == SolidElement::Scheme::IncompatibleModes;
   Eigen::MatrixXd Kci, Kii;
-  Eigen::Matrix3d J0it = Eigen::Matrix3d::Identity();
-  double detJ0 = 0;
+  detail::BubbleCentre centre;
   if (bubbles) {
     Kci = Eigen::MatrixXd::Zero(n, 9);
     Kii = Eigen::MatrixXd::Zero(9, 9);
-    PointData c;
-    evaluate(e, Eigen::Vector3d::Zero(), c);
-    J0it = c.J.inverse().transpose();
-    detJ0 = c.detJ;
+    centre = detail::bubble_centre(e);
   }
-  PointData p;
-  for (const auto& q : detail::solid_rule(e.shape, e.points)) {
-    evaluate(e, q.xi, p);
-    const Eigen::MatrixXd B = strain_matrix(e, p);
-    const double dV = std::abs(p.detJ) * q.w;
-    const Eigen::MatrixXd DB = e.D * B;
-    K.noalias() += B.transpose() * DB * dV;
+  const std::vector<detail::QuadraturePoint> rule = detail::solid_rule(e.shape, e.points);
+  std::vector<Eigen::MatrixXd> B(rule.size());
+  std::vector<double> detJ(rule.size());
+  SolidPointData p;
+  for (std::size_t i = 0; i < rule.size(); ++i) {
+    detail::evaluate(e, rule[i].xi, p);
+    B[i] = detail::strain_matrix(e, p);
+    detJ[i] = std::abs(p.detJ);
+  }
+  if (e.scheme == SolidElement::Scheme::ReducedShear) detail::reduce_shear_rows(rule, detJ, B);
+  for (std::size_t i = 0; i < rule.size(); ++i) {
+    const double dV = detJ[i] * rule[i].w;
+    const Eigen::MatrixXd DB = e.D * B[i];
+    K.noalias() += B[i].transpose() * DB * dV;
     if (bubbles) {
-      // Modes P_k = 1 - xi_k^2 (k = 0..2) for each component; gradient with the centre Jacobian,
-      // scaled by det J0 / det J (constant strain patch test on any shape).
-      Eigen::Matrix<double, 6, 9> Bi;
-      for (int k = 0; k < 3; ++k) {
-        Eigen::Vector3d dP = Eigen::Vector3d::Zero();
-        dP[k] = -2 * q.xi[k];
-        const Eigen::Vector3d g = (detJ0 / p.detJ) * (J0it * dP);
-        strain_columns(g, Bi.middleCols<3>(3 * k));
-      }
+      detail::evaluate(e, rule[i].xi, p);
+      const Eigen::Matrix<double, 6, 9> Bi = detail::bubble_strain_matrix(centre, rule[i].xi, p.detJ);
       Kci.noalias() += DB.transpose() * Bi * dV;
       Kii.noalias() += Bi.transpose() * e.D * Bi * dV;
     }
@@ -106,9 +59,9 @@ Eigen::MatrixXd solid_stiffness(const SolidElement& e) {
 
 double solid_volume(const SolidElement& e) {
   double V = 0;
-  PointData p;
+  SolidPointData p;
   for (const auto& q : detail::solid_rule(e.shape, e.nnode == 20 || e.nnode == 15 || e.nnode == 10 ? 4 : 3)) {
-    evaluate(e, q.xi, p);
+    detail::evaluate(e, q.xi, p);
     V += std::abs(p.detJ) * q.w;
   }
   return V;
@@ -119,9 +72,9 @@ Eigen::MatrixXd solid_mass(const SolidElement& e, MassKind kind) {
   const bool quadratic = N == 20 || N == 15 || N == 10;
   Eigen::MatrixXd m = Eigen::MatrixXd::Zero(N, N);  // scalar mass rho int N_a N_b dV
   Eigen::VectorXd row = Eigen::VectorXd::Zero(N);   // rho int N_a dV
-  PointData p;
+  SolidPointData p;
   for (const auto& q : detail::solid_rule(e.shape, quadratic ? 4 : 3)) {
-    evaluate(e, q.xi, p);
+    detail::evaluate(e, q.xi, p);
     const double dm = e.rho * std::abs(p.detJ) * q.w;
     const Eigen::Map<const Eigen::VectorXd> Nv(p.s.N, N);
     m.noalias() += Nv * Nv.transpose() * dm;
@@ -179,6 +132,9 @@ SolidElement make_solid_element(const Model& model, const Solid& s, bool mass_on
                      "; a solid needs E > 0 and -1 < nu < 0.5");
   e.D = isotropic_elasticity(mat.E, mat.nu);
   e.rho = mat.rho;
+  const Mat1& m1 = model.mat1[model.mat1_index.at(prop.mid)];
+  e.alpha = m1.alpha;
+  e.tref = m1.tref;
   const bool linear = s.nnode == 8 || s.nnode == 6 || s.nnode == 4;
   using In = SolidProperty::Integration;
   using Isop = SolidProperty::Isop;
@@ -190,12 +146,11 @@ SolidElement make_solid_element(const Model& model, const Solid& s, bool mass_on
                        "expected IN blank or THREE and ISOP blank or FULL (full Gauss integration)");
     e.points = 3;
   } else if (s.shape == Solid::Shape::Hexa) {
-    if (!mass_only && prop.in == In::Two && prop.isop != Isop::Full)
-      detail::fail(model, prop.ref, "PSOLID", prop.id, "5 (IN) / 7 (ISOP)",
-                   "IN = TWO with ISOP blank or REDUCED (reduced shear integration) is not modelled; expected IN blank or "
-                   "BUBBLE (bubble functions, the default) or ISOP = FULL (2 x 2 x 2 Gauss)");
     if (prop.in == In::Three) {
       e.points = 3;
+    } else if (prop.in == In::Two && prop.isop != Isop::Full) {  // reduced shear integration
+      e.points = 2;
+      e.scheme = SolidElement::Scheme::ReducedShear;
     } else if (prop.in == In::Two || (prop.in == In::Default && prop.isop == Isop::Full)) {
       e.points = 2;
     } else {
@@ -206,10 +161,10 @@ SolidElement make_solid_element(const Model& model, const Solid& s, bool mass_on
     e.points = prop.in == In::Three ? 3 : 2;
   }
   // Geometry: det J must keep one sign over the element (either grid orientation is accepted).
-  PointData p;
+  SolidPointData p;
   double sign = 0;
   auto check = [&](const Eigen::Vector3d& xi) {
-    evaluate(e, xi, p);
+    detail::evaluate(e, xi, p);
     const double sg = p.detJ > 0 ? 1.0 : p.detJ < 0 ? -1.0 : 0.0;
     if (sign == 0) sign = sg;
     if (sg == 0 || sg != sign || !std::isfinite(p.detJ))

@@ -76,18 +76,21 @@ std::vector<Ply> smcore_plies(const std::vector<Ply>& plies) {
   ShellMaterial face;
   face.kind = ShellMaterial::Kind::Mat2;
   double tf = 0.0;
+  Eigen::Vector3d Qalpha = Eigen::Vector3d::Zero();  // int Qbar alpha dz of the faces
   for (std::size_t k = 0; k + 1 < plies.size(); ++k) {
     const Ply& p = plies[k];
     face.Q += p.t * rotate_plane_matrix(p.material.Q, p.theta);
     face.Ct += p.t * rotate_shear_matrix(p.material.Ct, p.theta);
     face.G_iso += p.t * p.material.G_iso;
     face.rho += p.t * p.material.rho;
+    Qalpha += p.t * (strain_rotation(p.theta).transpose() * (p.material.Q * p.material.alpha));
     tf += p.t;
   }
   face.Q /= tf;
   face.Ct /= tf;
   face.G_iso /= tf;
   face.rho /= tf;
+  face.alpha = face.Q.fullPivLu().solve(Qalpha / tf);  // the smeared face's expansion: same N_T
   Ply half{face, 0.5 * tf, 0.0};
   return {half, core, half};
 }
@@ -104,6 +107,8 @@ ShellMaterial shell_material(const Mat1& m) {
   if (m.G > 0.0) s.Ct = Eigen::Matrix2d::Identity() / m.G;
   s.G_iso = m.G;
   s.rho = m.rho;
+  s.alpha << m.alpha, m.alpha, 0.0;
+  s.tref = m.tref;
   return s;
 }
 
@@ -116,6 +121,8 @@ ShellMaterial shell_material(const Mat2& m) {
   s.has_Gt = true;
   s.G_iso = orientation_average_shear(s.Q);
   s.rho = m.rho;
+  s.alpha << m.a1, m.a2, m.a3;
+  s.tref = m.tref;
   return s;
 }
 
@@ -130,6 +137,8 @@ ShellMaterial shell_material(const Mat8& m) {
   s.Ct << (m.G1z > 0.0 ? 1.0 / m.G1z : 0.0), 0.0, 0.0, (m.G2z > 0.0 ? 1.0 / m.G2z : 0.0);
   s.G_iso = orientation_average_shear(s.Q);
   s.rho = m.rho;
+  s.alpha << m.a1, m.a2, 0.0;
+  s.tref = m.tref;
   return s;
 }
 
@@ -144,6 +153,10 @@ ShellSection pshell_section(const PshellInput& in) {
     s.has_membrane = true;
     s.A = t * in.mid1->Q;
     s.drill_Gt = in.mid1->G_iso * t;
+    s.NT = t * (in.mid1->Q * in.mid1->alpha);
+    s.tref = in.mid1->tref;
+  } else if (in.mid2) {
+    s.tref = in.mid2->tref;
   }
   double G2 = 0.0;
   if (in.mid2) {
@@ -185,6 +198,10 @@ ShellSection laminate_section(std::vector<Ply> plies, std::optional<double> z0, 
   for (const Ply& p : plies) {
     const double zt = zb + p.t;
     const Eigen::Matrix3d Qb = rotate_plane_matrix(p.material.Q, p.theta);
+    // Qbar alphabar = T^T Q T T^-1 alpha = T^T Q alpha (alpha rotates as a strain)
+    const Eigen::Vector3d Qa = strain_rotation(p.theta).transpose() * (p.material.Q * p.material.alpha);
+    s.NT += Qa * (zt - zb);
+    s.MT += Qa * (0.5 * (zt * zt - zb * zb));
     s.A += Qb * (zt - zb);
     s.B += Qb * (0.5 * (zt * zt - zb * zb));
     s.D += Qb * ((zt * zt * zt - zb * zb * zb) / 3.0);
@@ -212,11 +229,13 @@ ShellSection laminate_section(std::vector<Ply> plies, std::optional<double> z0, 
   if (lam == Lam::Mem) {
     s.B.setZero();
     s.D.setZero();
+    s.MT.setZero();
     s.ts2 = T * T;
     return s;
   }
   if (lam == Lam::Smear) {  // stacking ignored: a homogeneous plate of the average stiffness
     s.B.setZero();
+    s.MT.setZero();
     s.D = s.A * (T * T / 12.0);
     Dg = drill * T * T / 12.0;
   }
@@ -308,7 +327,9 @@ ShellSection make_shell_section(const Model& model, const Shell& shell) {
   }
   std::optional<double> z0;
   if (p.has_z0) z0 = p.z0;
-  return laminate_section(std::move(plies), z0, p.nsm, p.lam);
+  ShellSection s = laminate_section(std::move(plies), z0, p.nsm, p.lam);
+  s.tref = p.tref;  // QRG PCOMP: the plies' materials' TREF are not used
+  return s;
 }
 
 }  // namespace seflex::fem

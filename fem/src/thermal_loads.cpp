@@ -1,4 +1,4 @@
-// Thermal loads of TEMP / TEMPD / TEMPRB sets on bars and rods (see loads.hpp).
+// Thermal loads of TEMP / TEMPD / TEMPRB sets on bars, rods, shells and solids (see loads.hpp).
 #include <optional>
 #include <unordered_map>
 
@@ -7,6 +7,8 @@
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/element_bar.hpp"
 #include "seflex/fem/element_rod.hpp"
+#include "seflex/fem/element_shell_thermal.hpp"
+#include "seflex/fem/element_solid.hpp"
 #include "seflex/fem/finalize.hpp"
 #include "seflex/fem/loads.hpp"
 
@@ -88,7 +90,9 @@ class ThermalLoads {
       if (!used.count(eid))
         detail::fail(m_, t->ref, "TEMPRB", t->sid, "EID",
                      "element " + std::to_string(eid) + " is not a CBAR, CBEAM, CROD or CONROD; expected one of them");
-    for (const Shell& s : m_.shells) shell_check(s);
+    const double k6rot = assembly_options(m_).k6rot;
+    for (const Shell& s : m_.shells) shell(s, k6rot);
+    for (const Solid& s : m_.solids) solid(s);
     return p_;
   }
 
@@ -100,48 +104,81 @@ class ThermalLoads {
     const std::uint32_t gi = detail::grid_index(m_, g, ref, card, eid, "G");
     if (const auto it = grid_t_.find(gi); it != grid_t_.end()) return it->second;
     if (tempd_) return *tempd_;
+    const std::string c = card;
+    const bool line = c == "CBAR" || c == "CBEAM" || c == "CROD" || c == "CONROD";
     detail::fail(m_, ref, card, eid, "",
                  "GRID " + std::to_string(g) + " has no temperature in thermal load set " + std::to_string(sid_) +
-                     " (no TEMP card gives it, no TEMPD and no TEMPRB for the element); expected one of them");
+                     (line ? " (no TEMP card gives it, no TEMPD and no TEMPRB for the element); expected one of them"
+                           : " (no TEMP card gives it and no TEMPD); expected one of them"));
   }
 
-  /// Thermal loads of shells are not computed: a shell that would have one is an error.
-  void shell_check(const Shell& s) const {
+  /// A CQUAD4/CTRIA3: the mean of its grids' temperatures (QRG TEMP: the element temperature of a
+  /// shell without TEMPPi), uniform through the thickness, from the section's TREF.
+  void shell(const Shell& s, double k6rot) {
+    const ShellSection section = make_shell_section(m_, s);
+    const char* card = s.nnode == 4 ? "CQUAD4" : "CTRIA3";
+    const bool mid4_expands = pshell_mid4_expands(s);
+    if (!section.thermal() && !mid4_expands) return;
+    double T = 0;
+    for (int k = 0; k < s.nnode; ++k) T += grid_temperature(s.g[k], s.ref, card, s.id);
+    const double dT = T / s.nnode - section.tref;
+    if (dT == 0.0) return;
+    if (mid4_expands)
+      detail::fail(m_, s.ref, card, s.id, "",
+                   "thermal load set " + std::to_string(sid_) + " heats it and its PSHELL " + std::to_string(s.pid) +
+                       " has a MID4 (membrane-bending coupling) material with thermal expansion, whose thermal moment "
+                       "seflex does not compute; expected ALPHA blank on MID4's material");
+    if (s.nnode == 4)
+      scatter(s.g.data(), 4, quad4_thermal_load(make_quad4_element(m_, s, &section), dT, k6rot));
+    else
+      scatter(s.g.data(), 3, tria3_thermal_load(make_tria3_element(m_, s, &section), dT, k6rot));
+  }
+
+  /// A PSHELL's MID4 (membrane-bending coupling) with thermal expansion: its thermal moment is not
+  /// computed, so such a shell, when heated, is refused rather than loaded without it.
+  bool pshell_mid4_expands(const Shell& s) const {
     const auto pit = m_.shell_prop_index.find(s.pid);
-    if (pit == m_.shell_prop_index.end()) return;  // PCOMP or missing: checked by assembly
+    if (pit == m_.shell_prop_index.end()) return false;
     const ShellProperty& p = m_.shell_props[pit->second];
-    double alpha = 0, tref = 0;
-    for (const int mid : {p.mid1, p.mid2}) {
-      const auto mit = m_.mat1_index.find(mid);
-      if (mit != m_.mat1_index.end() && m_.mat1[mit->second].alpha != 0.0) {
-        alpha = m_.mat1[mit->second].alpha;
-        tref = m_.mat1[mit->second].tref;
+    if (p.mid4 <= 0) return false;
+    return !detail::shell_material(m_, p.mid4, p.ref, "PSHELL", p.id, "4 of continuation 1 (MID4)").alpha.isZero(0.0);
+  }
+
+  /// A CHEXA/CPENTA/CTETRA: its grids' temperatures interpolated over the element.
+  void solid(const Solid& s) {
+    const SolidElement e = make_solid_element(m_, s);
+    if (e.alpha == 0.0) return;
+    Eigen::VectorXd dT(s.nnode);
+    for (int k = 0; k < s.nnode; ++k) dT[k] = grid_temperature(s.g[static_cast<std::size_t>(k)], s.ref, s.card(), s.id) - e.tref;
+    if (dT.isZero(0.0)) return;
+    scatter_translations(s.g.data(), s.nnode, solid_thermal_load(e, e.alpha, dT));
+  }
+
+  /// Loads of n grids (6 per grid, basic) into p in the grids' CD systems.
+  void scatter(const int* g, int n, const Eigen::Ref<const Eigen::VectorXd>& f) {
+    for (int i = 0; i < n; ++i) {
+      const std::uint32_t gi = m_.grid_index.at(g[i]);
+      for (int part = 0; part < 2; ++part) {
+        Eigen::Vector3d v = f.segment<3>(6 * i + 3 * part);
+        if (cd_[gi]) v = cd_[gi]->transpose() * v;
+        for (int k = 0; k < 3; ++k) p_[dofs_.grid_dof(gi, 1 + 3 * part + k)] += v[k];
       }
     }
-    if (alpha == 0.0) return;
-    const char* card = s.nnode == 4 ? "CQUAD4" : "CTRIA3";
-    for (int k = 0; k < s.nnode; ++k) {
-      const std::uint32_t gi = detail::grid_index(m_, s.g[k], s.ref, card, s.id, "G");
-      const auto it = grid_t_.find(gi);
-      const std::optional<double> T = it != grid_t_.end() ? std::optional<double>(it->second) : tempd_;
-      if (T && *T != tref)
-        detail::fail(m_, s.ref, card, s.id, "",
-                     "thermal load set " + std::to_string(sid_) +
-                         " gives it a temperature other than its material's TREF, "
-                         "and seflex does not compute thermal loads of shells (only of CBAR, CBEAM, CROD, CONROD)");
+  }
+
+  /// Forces of n grids (3 per grid, basic) into p in the grids' CD systems.
+  void scatter_translations(const int* g, int n, const Eigen::Ref<const Eigen::VectorXd>& f) {
+    for (int i = 0; i < n; ++i) {
+      const std::uint32_t gi = m_.grid_index.at(g[i]);
+      Eigen::Vector3d v = f.segment<3>(3 * i);
+      if (cd_[gi]) v = cd_[gi]->transpose() * v;
+      for (int k = 0; k < 3; ++k) p_[dofs_.grid_dof(gi, 1 + k)] += v[k];
     }
   }
 
   void scatter(int ga, int gb, const Eigen::Matrix<double, 12, 1>& f) {
     const int g[2] = {ga, gb};
-    for (int n = 0; n < 2; ++n) {
-      const std::uint32_t gi = m_.grid_index.at(g[n]);
-      for (int part = 0; part < 2; ++part) {
-        Eigen::Vector3d v = f.segment<3>(6 * n + 3 * part);
-        if (cd_[gi]) v = cd_[gi]->transpose() * v;
-        for (int k = 0; k < 3; ++k) p_[dofs_.grid_dof(gi, 1 + 3 * part + k)] += v[k];
-      }
-    }
+    scatter(g, 2, f);
   }
 
   const Model& m_;

@@ -283,8 +283,12 @@ void parse_mat2(const Card& card, ReaderState& st) {
   m.G23 = card.real_or(5, "G23", 0.0);
   m.G33 = card.real_or(6, "G33", 0.0);
   m.rho = card.real_or(7, "RHO", 0.0);
-  static const char* rest[8] = {"A1", "A2", "A3", "TREF", "GE", "ST", "SC", "SS"};
-  for (std::size_t k = 0; k < 8; ++k) card.real_or(8 + k, rest[k], 0.0);  // read for their types
+  m.a1 = card.real_or(8, "A1", 0.0);
+  m.a2 = card.real_or(9, "A2", 0.0);
+  m.a3 = card.real_or(10, "A3", 0.0);
+  m.tref = card.real_or(11, "TREF", 0.0);
+  static const char* rest[3] = {"ST", "SC", "SS"};
+  for (std::size_t k = 0; k < 3; ++k) card.real_or(13 + k, rest[k], 0.0);  // read for their types
   m.ge = card.real_or(12, "GE", 0.0);
   card.integer_or(16, "MCSID", 0);
   m.ref = card.ref();
@@ -309,8 +313,11 @@ void parse_mat8(const Card& card, ReaderState& st) {
   if (m.G1z < 0.0) card.fail(5, "G1Z", card.got(5) + "; expected a modulus > 0, or blank (rigid in transverse shear)");
   if (m.G2z < 0.0) card.fail(6, "G2Z", card.got(6) + "; expected a modulus > 0, or blank (rigid in transverse shear)");
   m.rho = card.real_or(7, "RHO", 0.0);
-  static const char* rest[8] = {"A1", "A2", "TREF", "Xt", "Xc", "Yt", "Yc", "S"};
-  for (std::size_t k = 0; k < 8; ++k) card.real_or(8 + k, rest[k], 0.0);  // read for their types
+  m.a1 = card.real_or(8, "A1", 0.0);
+  m.a2 = card.real_or(9, "A2", 0.0);
+  m.tref = card.real_or(10, "TREF", 0.0);
+  static const char* rest[5] = {"Xt", "Xc", "Yt", "Yc", "S"};
+  for (std::size_t k = 0; k < 5; ++k) card.real_or(11 + k, rest[k], 0.0);  // read for their types
   m.ge = card.real_or(16, "GE", 0.0);
   card.real_or(17, "F12", 0.0);
   card.real_or(18, "STRN", 0.0);

@@ -469,12 +469,12 @@ void write_nastran(const fem::Model& m, std::ostream& stream, const NastranWrite
   for (const auto& mat : m.mat1) write_mat1(w, mat);
   for (const auto& mat : m.mat2)
     w.start("MAT2").i(mat.id).r(mat.G11).r(mat.G12).r(mat.G13).r(mat.G22).r(mat.G23).r(mat.G33).r(mat.rho)
-        .next_line().blank(4).r(mat.ge).end();
+        .next_line().r(mat.a1).r(mat.a2).r(mat.a3).r(mat.tref).r(mat.ge).end();
   for (const auto& mat : m.mat8) {
     w.start("MAT8").i(mat.id).r(mat.E1).r(mat.E2).r(mat.nu12).r(mat.G12);
     mat.G1z > 0.0 ? w.r(mat.G1z) : w.blank();  // blank = rigid in transverse shear
     mat.G2z > 0.0 ? w.r(mat.G2z) : w.blank();
-    w.r(mat.rho).next_line().blank(8).r(mat.ge).end();
+    w.r(mat.rho).next_line().r(mat.a1).r(mat.a2).r(mat.tref).blank(5).r(mat.ge).end();
   }
   for (const auto& p : m.bar_props) write_bar_property(w, p);
   for (const auto& p : m.rod_props) w.start("PROD").i(p.id).i(p.mid).r(p.A).r(p.J).r(p.C).r(p.nsm).end();

@@ -231,8 +231,8 @@ class Classifier {
     }
   }
 
-  /// TEMPERATURE(LOAD) of a subcase: applied by statics (bars and rods), refused by buckling, unused
-  /// by the others; shells that the set would heat are refused (their thermal loads are not computed).
+  /// TEMPERATURE(LOAD) of a subcase: applied by statics (bars, rods, shells, solids), refused by
+  /// buckling, unused by the others; shells whose thermal load is not computed are refused.
   void temperature_selection(const CaseSelection& c) {
     const std::string in = case_name(c);
     const std::string what = in + ": TEMPERATURE(LOAD) = " + std::to_string(*c.temperature);
@@ -248,71 +248,39 @@ class Classifier {
     heated_shells(*c.temperature);
   }
 
-  /// Shells with thermal expansion that thermal load set `sid` gives a temperature other than TREF
-  /// (fem::thermal_load_vector computes bars and rods only; an element type added later with a
-  /// thermal expansion coefficient belongs here until its thermal load is computed).
+  /// Thermal expansion coefficient of material `mid` (MAT1, MAT2 or MAT8) is not zero.
+  bool expands(int mid) const {
+    if (const auto it = m_.mat1_index.find(mid); it != m_.mat1_index.end()) return m_.mat1[it->second].alpha != 0.0;
+    if (const auto it = m_.mat2_index.find(mid); it != m_.mat2_index.end()) {
+      const fem::Mat2& m = m_.mat2[it->second];
+      return m.a1 != 0.0 || m.a2 != 0.0 || m.a3 != 0.0;
+    }
+    if (const auto it = m_.mat8_index.find(mid); it != m_.mat8_index.end())
+      return m_.mat8[it->second].a1 != 0.0 || m_.mat8[it->second].a2 != 0.0;
+    return false;
+  }
+
+  /// Shells of a PSHELL whose MID4 (membrane-bending coupling) has thermal expansion and that
+  /// thermal load set `sid` gives a temperature: the thermal moment of MID4 is not computed
+  /// (fem::thermal_load_vector computes every other shell, bar, rod and solid; an element type
+  /// added later with a thermal expansion coefficient belongs here until its thermal load is).
   void heated_shells(int sid) {
     std::optional<double> tempd;
-    std::map<int, double> grid_t;
+    std::set<int> grid_t;
     for (const auto& t : m_.default_temperatures)
       if (t.sid == sid) tempd = t.t;
     for (const auto& t : m_.grid_temperatures)
-      if (t.sid == sid) grid_t[t.grid] = t.t;
-    auto has_temperature = [&](const fem::Shell& sh) {
-      if (tempd) return true;
-      for (int k = 0; k < sh.nnode; ++k)
-        if (grid_t.count(sh.g[k])) return true;
-      return false;
-    };
+      if (t.sid == sid) grid_t.insert(t.grid);
     for (const auto& sh : m_.shells) {
-      // PCOMP/PCOMPG plies and MAT2/MAT8 materials: their expansion coefficients are not kept, so any
-      // temperature the set gives such a shell may load it.
-      bool unknown_expansion = m_.composite_prop_index.count(sh.pid) > 0;
       const auto pit = m_.shell_prop_index.find(sh.pid);
-      if (pit != m_.shell_prop_index.end())
-        for (const int mid : {m_.shell_props[pit->second].mid1, m_.shell_props[pit->second].mid2})
-          unknown_expansion = unknown_expansion || m_.mat2_index.count(mid) || m_.mat8_index.count(mid);
-      if (unknown_expansion && has_temperature(sh)) {
+      if (pit == m_.shell_prop_index.end() || m_.shell_props[pit->second].mid4 <= 0) continue;
+      if (!expands(m_.shell_props[pit->second].mid4)) continue;
+      bool heated = tempd.has_value();
+      for (int k = 0; k < sh.nnode; ++k) heated = heated || grid_t.count(sh.g[k]) > 0;
+      if (heated)
         report_.add_set(Kind::Refused, sh.nnode == 4 ? "CQUAD4" : "CTRIA3", sh.ref, "thermal load set", sid,
-                        " gives a temperature to shells of a PCOMP/PCOMPG or of MAT2/MAT8 materials, and seflex "
-                        "computes thermal loads of CBAR, CBEAM, CROD and CONROD only");
-        continue;
-      }
-      if (pit == m_.shell_prop_index.end()) continue;
-      const fem::ShellProperty& p = m_.shell_props[pit->second];
-      for (const int mid : {p.mid1, p.mid2}) {
-        const auto mit = m_.mat1_index.find(mid);
-        if (mit == m_.mat1_index.end() || m_.mat1[mit->second].alpha == 0.0) continue;
-        bool heated = false;
-        for (int k = 0; k < sh.nnode; ++k) {
-          const auto it = grid_t.find(sh.g[k]);
-          const std::optional<double> T = it != grid_t.end() ? std::optional<double>(it->second) : tempd;
-          heated = heated || (T && *T != m_.mat1[mit->second].tref);
-        }
-        if (heated)
-          report_.add_set(Kind::Refused, sh.nnode == 4 ? "CQUAD4" : "CTRIA3", sh.ref, "thermal load set", sid,
-                          " gives shells with thermal expansion (MAT1 ALPHA) a temperature other than TREF, and seflex "
-                          "computes thermal loads of CBAR, CBEAM, CROD and CONROD only");
-        if (heated) break;
-      }
-    }
-    for (const auto& so : m_.solids) {  // solids: thermal loads not computed either
-      const auto pit = m_.solid_prop_index.find(so.pid);
-      if (pit == m_.solid_prop_index.end()) continue;
-      const auto mit = m_.mat1_index.find(m_.solid_props[pit->second].mid);
-      if (mit == m_.mat1_index.end() || m_.mat1[mit->second].alpha == 0.0) continue;
-      bool heated = false;
-      for (int k = 0; k < so.nnode; ++k) {
-        const auto it = grid_t.find(so.g[static_cast<std::size_t>(k)]);
-        const std::optional<double> T = it != grid_t.end() ? std::optional<double>(it->second) : tempd;
-        heated = heated || (T && *T != m_.mat1[mit->second].tref);
-      }
-      if (heated) {
-        report_.add_set(Kind::Refused, so.card(), so.ref, "thermal load set", sid,
-                        " gives solids with thermal expansion (MAT1 ALPHA) a temperature other than TREF, and seflex "
-                        "computes thermal loads of CBAR, CBEAM, CROD and CONROD only");
-        break;
-      }
+                        " gives a temperature to shells whose PSHELL MID4 (membrane-bending coupling) has thermal "
+                        "expansion, and seflex does not compute the thermal moment of MID4");
     }
   }
 

@@ -9,7 +9,12 @@
 #include <map>
 #include <vector>
 
+#include <gtest/gtest.h>
+
+#include <Eigen/SparseCholesky>
+
 #include "fem_test_util.hpp"
+#include "seflex/fem/assembly.hpp"
 
 namespace seflex::fem::test {
 
@@ -99,6 +104,38 @@ inline std::map<int, std::array<int, 3>> add_box_solids(Model& m, const BoxMesh&
     add_grid(m, gid, x.x(), x.y(), x.z());
   }
   return used;
+}
+
+/// Solve K u = p on the translations with the dofs in `fixed` prescribed (rotations are not solved:
+/// solids do not stiffen them). Returns u on all g-set dofs.
+inline Eigen::VectorXd solve_translations(const Model& m, const GlobalMatrices& g, const Eigen::VectorXd& p,
+                                   const std::map<Eigen::Index, double>& fixed) {
+  const Eigen::Index n = g.dofs.size();
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(n);
+  std::vector<Eigen::Index> free;
+  for (Eigen::Index gi = 0; gi < static_cast<Eigen::Index>(m.grids.size()); ++gi)
+    for (int c = 1; c <= 3; ++c) {
+      const Eigen::Index d = g.dofs.grid_dof(gi, c);
+      if (const auto it = fixed.find(d); it != fixed.end())
+        u[d] = it->second;
+      else
+        free.push_back(d);
+    }
+  std::vector<Eigen::Triplet<double>> t;
+  for (std::size_t k = 0; k < free.size(); ++k) t.emplace_back(free[k], static_cast<Eigen::Index>(k), 1.0);
+  Eigen::SparseMatrix<double> S(n, static_cast<Eigen::Index>(free.size()));
+  S.setFromTriplets(t.begin(), t.end());
+  const Eigen::SparseMatrix<double> Kff = S.transpose() * g.K * S;
+  const Eigen::VectorXd rhs = S.transpose() * (p - g.K * u);
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(Kff);
+  EXPECT_EQ(ldlt.info(), Eigen::Success);
+  u += S * ldlt.solve(rhs);
+  return u;
+}
+
+inline Eigen::Vector3d translation(const Model& m, const GlobalMatrices& g, const Eigen::VectorXd& u, int grid) {
+  const Eigen::Index gi = m.grid_index.at(grid);
+  return {u[g.dofs.grid_dof(gi, 1)], u[g.dofs.grid_dof(gi, 2)], u[g.dofs.grid_dof(gi, 3)]};
 }
 
 }  // namespace seflex::fem::test

@@ -88,10 +88,14 @@ TEST(LoadsBadInput, ThermalSelections) {
   EXPECT_TRUE(
       mentions(solve_error(deck("TEMPERATURE(LOAD) = 8\n", bars_only)),
                {"case control TEMPERATURE(LOAD)", "TEMPERATURE(LOAD) = 8 selects no TEMP, TEMPD or TEMPRB card"}));
-  // grid temperatures that heat the shell (its MAT1 has ALPHA): refused, naming the shell
-  EXPECT_TRUE(mentions(solve_error(deck("TEMP(LOAD) = 7\n", "TEMPD,7,50.\n")),
-                       {"deck.bdf:16: CQUAD4", "thermal load set 7 gives shells with thermal expansion",
-                        "CBAR, CBEAM, CROD and CONROD only"}));
+  // grid temperatures that heat the shell (its MAT1 has ALPHA): its thermal load is computed
+  EXPECT_NO_THROW(reduction::solve_statics(test::read_deck(deck("TEMP(LOAD) = 7\n", "TEMPD,7,50.\n"))));
+  // ... but not the thermal moment of a PSHELL MID4 with thermal expansion: refused, naming the shell
+  const std::string mid4 = "MAT1,4,7.e9,,0.3,0.,1.e-5,20.\nPSHELL,3,1,0.002,1,,,,,+P\n+P,,,4\n"
+                           "GRID,7,,0.,2.,0.\nGRID,8,,1.,2.,0.\nCQUAD4,11,3,4,5,8,7\n";
+  EXPECT_TRUE(mentions(solve_error(deck("TEMP(LOAD) = 7\n", mid4 + "TEMPD,7,50.\n")),
+                       {"deck.bdf:23: CQUAD4", "thermal load set 7 gives a temperature to shells whose PSHELL MID4",
+                        "does not compute the thermal moment of MID4"}));
   // TEMPRB on the shell
   EXPECT_TRUE(mentions(solve_error(deck("TEMP(LOAD) = 7\n", bars_only + "TEMPRB,7,10,30.,30.\n")),
                        {"TEMPRB 7", "element 10 is not a CBAR, CBEAM, CROD or CONROD"}));
@@ -114,22 +118,18 @@ TEST(LoadsBadInput, ThermalSelections) {
   EXPECT_NO_THROW(reduction::solve_static(ok));
 }
 
-// Shells of a PCOMP or of MAT8/MAT2 materials: their expansion coefficients are not kept, so a
-// selected thermal set that gives them any temperature is refused (MYSTRAN's VD0114 subcase 2, a
-// heated [0/45/-45/90]s PCOMP, ran before with no load at all: zero displacements).
-TEST(LoadsBadInput, ThermalSetsOnCompositeShellsAreRefused) {
-  const std::string pcomp = "MAT8,8,1.81+11,1.03+10,.28,7.17+9,5.+9,4.+9,1600.\nPCOMP,3\n,8,.001,0.,,8,.001,90.\n"
+// Shells of a PCOMP or of MAT8/MAT2 materials: their ply/material expansion coefficients are used
+// (MYSTRAN's VD0114 subcase 2, a heated [0/45/-45/90]s PCOMP, ran once with no load at all, then was
+// refused; now it is computed): a set that heats them runs, with or without expansion coefficients.
+TEST(LoadsBadInput, ThermalSetsOnCompositeShellsRun) {
+  const std::string pcomp = "MAT8,8,1.81+11,1.03+10,.28,7.17+9,5.+9,4.+9,1600.\n,0.02-6,22.5-6\nPCOMP,3\n,8,.001,0.,,8,.001,90.\n"
                             "GRID,7,,0.,2.,0.\nGRID,8,,1.,2.,0.\nCQUAD4,11,3,4,5,8,7\n";
-  EXPECT_TRUE(mentions(solve_error(deck("TEMP(LOAD) = 7\n", pcomp + "TEMP,7,7,80.\n")),
-                       {"CQUAD4", "thermal load set 7 gives a temperature to shells of a PCOMP/PCOMPG or of MAT2/MAT8",
-                        "CBAR, CBEAM, CROD and CONROD only"}));
+  const auto s = reduction::solve_static(test::read_deck(deck("TEMP(LOAD) = 7\n", pcomp + "TEMP,7,7,80.\nTEMPD,7,20.\n")));
+  EXPECT_GT(s.u_g.cwiseAbs().maxCoeff(), 0.0);  // the unsymmetric [0/90] curls
   const std::string mat8_pshell = "MAT8,8,1.81+11,1.03+10,.28,7.17+9,5.+9,4.+9,1600.\nPSHELL,3,8,.002,8\n"
                                   "GRID,7,,0.,2.,0.\nGRID,8,,1.,2.,0.\nCQUAD4,11,3,4,5,8,7\n";
-  EXPECT_TRUE(mentions(solve_error(deck("TEMP(LOAD) = 7\n", mat8_pshell + "TEMPRB,7,1,30.,30.\nTEMPRB,7,2,30.,30.\nTEMP,7,8,80.\n")),
-                       {"CQUAD4", "shells of a PCOMP/PCOMPG or of MAT2/MAT8"}));
-  // a set that reaches only the bars runs
   EXPECT_NO_THROW(reduction::solve_static(
-      test::read_deck(deck("TEMP(LOAD) = 7\n", pcomp + "TEMPRB,7,1,30.,30.\nTEMPRB,7,2,30.,30.\n"))));
+      test::read_deck(deck("TEMP(LOAD) = 7\n", mat8_pshell + "TEMPRB,7,1,30.,30.\nTEMPRB,7,2,30.,30.\nTEMP,7,8,80.\nTEMPD,7,20.\n"))));
 }
 
 TEST(LoadsBadInput, CommandLineExitsThree) {

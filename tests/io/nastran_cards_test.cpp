@@ -220,8 +220,8 @@ TEST(NastranCards, CompositeCardsMat8Mat2AndPshellMid4) {
   const std::string deck =
       base_deck() +
       fixed_line({"MAT8", "8", "181.+9", "10.3+9", ".28", "7.17+9", "5.+9", "", "1600."}, 8, "+M8") +
-      fixed_line({"+M8", "", "", "", "1.5+9"}, 8, "+M9") + fixed_line({"+M9", ".01"}) +
-      "MAT2,9,1.+9,2.+8,0.,1.1+9,0.,3.+8,900.\n" +
+      fixed_line({"+M8", "2.-8", "3.-5", "25.", "1.5+9"}, 8, "+M9") + fixed_line({"+M9", ".01"}) +
+      "MAT2,9,1.+9,2.+8,0.,1.1+9,0.,3.+8,900.,+A\n+A,1.-5,2.-5,3.-6,15.\n" +
       fixed_line({"PCOMP", "10", "-.001", ".5", "", "HILL", "", "", "SYM"}, 8, "+P1") +
       fixed_line({"+P1", "8", ".000125", "0.", "YES", "", "", "45.", ""}, 8, "+P2") +
       fixed_line({"+P2", "", "", "", "", "9", ".0002", "-45."}) +
@@ -246,6 +246,14 @@ TEST(NastranCards, CompositeCardsMat8Mat2AndPshellMid4) {
   EXPECT_DOUBLE_EQ(m.mat2[0].G22, 1.1e9);
   EXPECT_DOUBLE_EQ(m.mat2[0].G33, 3e8);
   EXPECT_DOUBLE_EQ(m.mat2[0].rho, 900.);
+  // thermal expansion and its reference temperature (thermal loads of shells)
+  EXPECT_DOUBLE_EQ(m8.a1, 2e-8);
+  EXPECT_DOUBLE_EQ(m8.a2, 3e-5);
+  EXPECT_DOUBLE_EQ(m8.tref, 25.);
+  EXPECT_DOUBLE_EQ(m.mat2[0].a1, 1e-5);
+  EXPECT_DOUBLE_EQ(m.mat2[0].a2, 2e-5);
+  EXPECT_DOUBLE_EQ(m.mat2[0].a3, 3e-6);
+  EXPECT_DOUBLE_EQ(m.mat2[0].tref, 15.);
   ASSERT_EQ(m.composite_props.size(), 2u);
   const fem::CompositeProperty& pc = m.composite_props[0];
   EXPECT_FALSE(pc.global);

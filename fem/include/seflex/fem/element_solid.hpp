@@ -14,6 +14,10 @@
 //   "Incompatible displacement models", 1973; Taylor, Beresford & Wilson, IJNME 10 (1976)
 //   1211-1219). Exact in pure bending on a rectangular brick: no shear locking.
 //   IN = TWO with ISOP = FULL: plain 2 x 2 x 2 Gauss. IN = THREE: 3 x 3 x 3 Gauss.
+//   IN = TWO with ISOP blank or REDUCED (the QRG's "reduced shear only"): 2 x 2 x 2 Gauss with each
+//   shear strain averaged over the four points of its own natural plane, on each side of it (the
+//   selective substitution of MYSTRAN's HEXA8, Source/EMG/EMG5/HEXA.f90; solid_kinematics.hpp):
+//   exact in pure bending on a rectangular brick, no spurious zero-energy mode.
 // - CPENTA 6, CTETRA 4: full integration (exact for the straight-sided element), no bubbles.
 // - CHEXA 20 (3 x 3 x 3 Gauss), CPENTA 15 and CTETRA 10 (collapsed Gauss rules, 3 points per
 //   direction, exact for straight sides): full integration; reduced integration of the quadratic
@@ -33,12 +37,13 @@
 namespace seflex::fem {
 
 struct SolidElement {
-  enum class Scheme : unsigned char { Gauss, IncompatibleModes };
+  enum class Scheme : unsigned char { Gauss, IncompatibleModes, ReducedShear };
   Solid::Shape shape = Solid::Shape::Hexa;
   int nnode = 8;
   std::array<Eigen::Vector3d, 20> x{};                         ///< grid positions, basic, QRG order
   Eigen::Matrix<double, 6, 6> D = Eigen::Matrix<double, 6, 6>::Zero();  ///< elasticity (isotropic: any axes)
   double rho = 0;
+  double alpha = 0, tref = 0;                                  ///< MAT1 ALPHA, TREF (thermal loads)
   Scheme scheme = Scheme::Gauss;
   int points = 2;                                              ///< quadrature points per direction
 };
@@ -52,6 +57,15 @@ Eigen::MatrixXd solid_stiffness(const SolidElement& e);
 Eigen::MatrixXd solid_mass(const SolidElement& e, MassKind kind);
 /// Volume int dV.
 double solid_volume(const SolidElement& e);
+
+/// Equivalent grid loads (3N, basic translations) of the thermal strain alpha (T - tref) (1 1 1 0 0 0)
+/// of an isotropic solid, T interpolated from the grid temperatures dT_grid = T_a - tref (size N)
+/// with the shape functions (as Nastran and MYSTRAN do for solids):
+///   f = int B^T D eps_T dV, and with bubble modes (IncompatibleModes) f - K_ci K_ii^-1 f_i, f_i the
+///   same integral over the bubble strains (zero for a uniform temperature, ibid.).
+/// Its response in an unconstrained element is the free thermal expansion when the temperature is
+/// uniform. Implemented in element_solid_thermal.cpp.
+Eigen::VectorXd solid_thermal_load(const SolidElement& e, double alpha, const Eigen::Ref<const Eigen::VectorXd>& dT_grid);
 
 /// Corner grids (0-based positions in the element's grid list) of each face of a shape, ordered so
 /// that the right-hand rule gives the outward normal of an element numbered as the QRG figures show:

@@ -42,10 +42,18 @@
 //               the effective gradients TP1, TP2 (linear along the bar), thermal moments
 //               E alpha (I1 TP1, I2 TP2) (as MYSTRAN BAR1 computes them);
 //   CROD/CONROD: axial force E A alpha (T - TREF) (TEMPRB TA/TB or the grids' temperatures).
-// Grid temperatures give a bar/rod T = mean of its two grids and no gradient. Shells with thermal
-// expansion (ALPHA != 0) are refused (reduction::check_card_usage): their thermal loads are not
-// computed. A new element type with a thermal expansion coefficient must either get its thermal
-// load here or be refused there, never be skipped silently.
+//   CQUAD4/CTRIA3: the mean of the element's grid temperatures (QRG TEMP, no TEMPPi), uniform
+//               through the thickness, from the section's TREF (PSHELL: MID1's; PCOMP/PCOMPG: the
+//               property's); thermal resultants N_T, M_T of the PSHELL (MID1 alphas) or of the
+//               laminate's plies (MAT1/MAT2/MAT8 alphas, classical lamination theory), applied as
+//               the stiffness times the free thermal deformation (element_shell_thermal.hpp). A
+//               PSHELL whose MID4 has thermal expansion is refused (its thermal moment is not
+//               computed);
+//   CHEXA/CPENTA/CTETRA: grid temperatures interpolated by the shape functions, f = int B^T D
+//               eps_T dV (element_solid.hpp: solid_thermal_load).
+// Grid temperatures give a bar/rod T = mean of its two grids and no gradient. A new element type
+// with a thermal expansion coefficient must either get its thermal load here or be refused
+// (reduction::check_card_usage), never be skipped silently.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
@@ -63,9 +71,10 @@ Eigen::VectorXd load_vector(const Model& model, const DofMap& dofs, int sid,
                             const Eigen::SparseMatrix<double>* M_gg = nullptr);
 
 /// Equivalent nodal loads (size dofs.size()) of thermal load set `sid` (TEMP, TEMPD, TEMPRB) on the
-/// CBAR/CBEAM/CROD/CONROD elements. Throws InputError if no temperature card has this SID, if a
-/// TEMPRB names an element that is not a bar or rod, or if a bar/rod without TEMPRB has a grid
-/// with no temperature in the set (no TEMP for it and no TEMPD).
+/// CBAR/CBEAM/CROD/CONROD, CQUAD4/CTRIA3 and CHEXA/CPENTA/CTETRA elements. Throws InputError if no
+/// temperature card has this SID, if a TEMPRB names an element that is not a bar or rod, if an
+/// element with thermal expansion (a bar/rod without TEMPRB) has a grid with no temperature in the
+/// set (no TEMP for it and no TEMPD), or for a heated PSHELL whose MID4 has thermal expansion.
 Eigen::VectorXd thermal_load_vector(const Model& model, const DofMap& dofs, int sid);
 
 }  // namespace seflex::fem

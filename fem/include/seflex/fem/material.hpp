@@ -34,6 +34,8 @@ inline Eigen::Matrix3d plane_stress(const IsotropicMaterial& m) {
 ///    orientations of the layer, (Q11 + Q22 - 2 Q12 + 4 Q33) / 8 (the Tsai-Pagano invariant U5: Q33-bar
 ///    = U5 - U3 cos 4 theta; Jones, Mechanics of Composite Materials, 2nd ed., ch. 2), which is G for
 ///    an isotropic matrix.
+///  - alpha: thermal expansion (Voigt 11, 22, 12 engineering) in the material axes: MAT1 (A, A, 0),
+///    MAT2 (A1, A2, A3), MAT8 (A1, A2, 0); tref its reference temperature (TREF).
 struct ShellMaterial {
   enum class Kind : unsigned char { Mat1, Mat2, Mat8 };
   int id = 0;
@@ -44,6 +46,8 @@ struct ShellMaterial {
   Eigen::Matrix2d Ct = Eigen::Matrix2d::Zero();
   double G_iso = 0;
   double rho = 0;
+  Eigen::Vector3d alpha = Eigen::Vector3d::Zero();
+  double tref = 0;
   const char* card() const { return kind == Kind::Mat1 ? "MAT1" : kind == Kind::Mat2 ? "MAT2" : "MAT8"; }
 };
 

@@ -87,6 +87,8 @@ struct Mat2 {
   int id = 0;
   double G11 = 0, G12 = 0, G13 = 0, G22 = 0, G23 = 0, G33 = 0;
   double rho = 0, ge = 0;
+  double a1 = 0, a2 = 0, a3 = 0;  ///< thermal expansion (xx, yy, xy engineering), material axes
+  double tref = 0;
   CardRef ref;
 };
 
@@ -96,6 +98,8 @@ struct Mat8 {
   int id = 0;
   double E1 = 0, E2 = 0, nu12 = 0, G12 = 0, G1z = 0, G2z = 0;
   double rho = 0, ge = 0;
+  double a1 = 0, a2 = 0;          ///< thermal expansion along axes 1 and 2
+  double tref = 0;
   CardRef ref;
 };
 

@@ -50,6 +50,16 @@ struct ShellSection {
   /// 13 (1993) 371-387, state the plate in the scaled form in which t^2 is exactly this ratio).
   double ts2 = 0;
   double mass_per_area_value = 0;  ///< structural + non-structural, before WTMASS
+  /// Thermal resultants per unit temperature rise (uniform through the thickness) in the section's
+  /// axes: N_T = int Qbar(z) alpha(z) dz, M_T = int Qbar(z) alpha(z) z dz (classical lamination
+  /// theory, Jones, Mechanics of Composite Materials, 2nd ed., sec. 4.5): the resultants are
+  /// [N; M] = [A B; B D] [eps0; kappa] - (T - tref) [N_T; M_T]. PSHELL: N_T = T G1 alpha1 (MID1),
+  /// M_T = 0 (a thermal moment needs a gradient through the thickness, TEMPP1, not supported).
+  Eigen::Vector3d NT = Eigen::Vector3d::Zero();
+  Eigen::Vector3d MT = Eigen::Vector3d::Zero();
+  double tref = 0;  ///< PSHELL: TREF of MID1 (MID2 if MID1 is blank); PCOMP/PCOMPG: the property's TREF
+  /// True when a temperature loads the section (N_T or M_T not zero).
+  bool thermal() const { return !NT.isZero(0.0) || !MT.isZero(0.0); }
 
   /// Transverse shear stiffness of an element whose longest edge squared is h2, stabilised (ibid.):
   /// S t_s^2 / (t_s^2 + alpha h^2), alpha = 0.1; it removes the residual shear locking of thin plates
@@ -69,17 +79,23 @@ struct ShellSection {
     s.B = rotate_plane_matrix(B, theta);
     s.D = rotate_plane_matrix(D, theta);
     s.S = rotate_shear_matrix(S, theta);
+    // Resultants are work-conjugate to the strains: N_xy = T(theta)^T N_12 (material.hpp).
+    const Eigen::Matrix3d Tt = strain_rotation(theta).transpose();
+    s.NT = Tt * NT;
+    s.MT = Tt * MT;
     return s;
   }
   /// The section about a reference surface e below its own (CQUAD4/CTRIA3 ZOFFS = e: the section's
   /// reference plane lies e above the grids, along the element normal): the strain at the section's
   /// plane is eps0 + e kappa, so A' = A, B' = B + e A, D' = D + 2 e B + e^2 A (the parallel-axis
-  /// shift of lamination theory); S, mass and the stabilisation thickness are unchanged.
+  /// shift of lamination theory); S, mass and the stabilisation thickness are unchanged; the
+  /// thermal moment about the new surface is M_T + e N_T.
   ShellSection offset(double e) const {
     if (e == 0.0) return *this;
     ShellSection s = *this;
     s.B = B + e * A;
     s.D = D + 2.0 * e * B + e * e * A;
+    s.MT = MT + e * NT;
     return s;
   }
 };
