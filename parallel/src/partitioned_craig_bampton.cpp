@@ -65,12 +65,7 @@ reduction::CraigBamptonBasis craig_bampton_partitioned(const PartitionedSystem& 
                                                        const std::vector<Eigen::Index>& boundary,
                                                        const reduction::CraigBamptonOptions& options) {
   const Eigen::Index n = system.n_free();
-  SEFLEX_DEMAND(options.modes.has_value() != options.fmax_hz.has_value(),
-                "Craig-Bampton: give either a number of modes or a frequency limit");
-  SEFLEX_DEMAND(!options.modes || *options.modes >= 0, "Craig-Bampton: negative mode count");
-  SEFLEX_DEMAND(!options.fmax_hz || *options.fmax_hz > 0, "Craig-Bampton: the frequency limit must be positive");
-  SEFLEX_DEMAND(options.extra_modes >= 0, "Craig-Bampton: negative extra mode count");
-  SEFLEX_DEMAND(!boundary.empty(), "Craig-Bampton: empty boundary set");
+  reduction::demand_valid_request(options, boundary);
   Mat K = system.pencil().K.get(), M = system.pencil().M.get();
 
   reduction::CraigBamptonBasis cb;

@@ -42,17 +42,21 @@ SparseMatrixd extract_block(const SparseMatrixd& A, const std::vector<Eigen::Ind
 
 }  // namespace
 
-CraigBamptonBasis craig_bampton(const SparseMatrixd& K_ff, const SparseMatrixd& M_ff,
-                                const std::vector<Eigen::Index>& boundary, const CraigBamptonOptions& options) {
-  const Eigen::Index n = K_ff.rows();
-  SEFLEX_DEMAND(K_ff.cols() == n && M_ff.rows() == n && M_ff.cols() == n,
-                "Craig-Bampton: K and M must be square, same size");
+void demand_valid_request(const CraigBamptonOptions& options, const std::vector<Eigen::Index>& boundary) {
   SEFLEX_DEMAND(options.modes.has_value() != options.fmax_hz.has_value(),
                 "Craig-Bampton: give either a number of modes or a frequency limit");
   SEFLEX_DEMAND(!options.modes || *options.modes >= 0, "Craig-Bampton: negative mode count");
   SEFLEX_DEMAND(!options.fmax_hz || *options.fmax_hz > 0, "Craig-Bampton: the frequency limit must be positive");
   SEFLEX_DEMAND(options.extra_modes >= 0, "Craig-Bampton: negative extra mode count");
   SEFLEX_DEMAND(!boundary.empty(), "Craig-Bampton: empty boundary set");
+}
+
+CraigBamptonBasis craig_bampton(const SparseMatrixd& K_ff, const SparseMatrixd& M_ff,
+                                const std::vector<Eigen::Index>& boundary, const CraigBamptonOptions& options) {
+  const Eigen::Index n = K_ff.rows();
+  SEFLEX_DEMAND(K_ff.cols() == n && M_ff.rows() == n && M_ff.cols() == n,
+                "Craig-Bampton: K and M must be square, same size");
+  demand_valid_request(options, boundary);
 
   CraigBamptonBasis cb;
   cb.boundary = boundary;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "../reduction/fem_models.hpp"
+#include "plates.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/constraints.hpp"
 #include "seflex/io/model_reader.hpp"
@@ -20,13 +21,7 @@ namespace seflex::parallel {
 Session& test_session();  // main.cpp's
 namespace {
 
-fem::Model clamped_plate(int nx, int ny) {
-  fem::Model m = test::quad_plate(nx, ny, 0.6, 0.4, 0.003, 7.0e10, 0.33, 2700);
-  for (int j = 0; j <= ny; ++j) test::add_spc1(m, 1, test::mask("123456"), 1 + (nx + 1) * j);
-  m.case_control.global.spc = 1;
-  test::finalize_for_test(m);
-  return m;
-}
+using test::clamped_plate;
 
 std::string deck(const char* name) { return std::string(SEFLEX_TEST_DATA) + "/validation/" + name; }
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "../reduction/fem_models.hpp"
+#include "plates.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/constraints.hpp"
 #include "seflex/parallel/partitioned_craig_bampton.hpp"
@@ -14,13 +15,7 @@
 namespace seflex::parallel {
 namespace {
 
-fem::Model clamped_plate(int nx, int ny) {
-  fem::Model m = test::quad_plate(nx, ny, 0.6, 0.4, 0.003, 7.0e10, 0.33, 2700);
-  for (int j = 0; j <= ny; ++j) test::add_spc1(m, 1, test::mask("123456"), 1 + (nx + 1) * j);
-  m.case_control.global.spc = 1;
-  test::finalize_for_test(m);
-  return m;
-}
+using test::clamped_plate;
 
 /// The clamped plate reduced to the six dofs of every grid of its free short edge.
 void expect_same_reduction(int nx, int ny, reduction::CraigBamptonOptions opt) {

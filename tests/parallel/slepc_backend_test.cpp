@@ -8,6 +8,7 @@
 #include <string>
 
 #include "../reduction/fem_models.hpp"
+#include "plates.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/constraints.hpp"
 #include "seflex/io/model_reader.hpp"
@@ -54,14 +55,7 @@ void expect_mass_orthonormal(const fem::Model& model, const NormalModes& r, doub
   }
 }
 
-/// Aluminium plate 0.6 x 0.4 x 3 mm, nx x ny CQUAD4, one short edge clamped.
-fem::Model clamped_plate(int nx, int ny) {
-  fem::Model m = test::quad_plate(nx, ny, 0.6, 0.4, 0.003, 7.0e10, 0.33, 2700);
-  for (int j = 0; j <= ny; ++j) test::add_spc1(m, 1, test::mask("123456"), 1 + (nx + 1) * j);
-  m.case_control.global.spc = 1;
-  test::finalize_for_test(m);
-  return m;
-}
+using test::clamped_plate;
 
 TEST(SlepcBackend, TenThousandDofPlateMatchesSerial) {
   const fem::Model m = clamped_plate(41, 40);  // 42 x 41 grids, 41 clamped: 10,086 free dofs

@@ -21,6 +21,7 @@
 #include <string>
 
 #include "nastran_test_util.hpp"
+#include "statics_test_util.hpp"
 #include "seflex/fem/loads.hpp"
 #include "seflex/reduction/statics.hpp"
 #include "test_support.hpp"
@@ -28,17 +29,9 @@
 namespace seflex {
 namespace {
 
-std::string num(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  std::string s(buf);
-  if (s.find_first_of(".e") == std::string::npos) s += ".";
-  return s;
-}
+using test::num;
 
-double u(const fem::Model& m, const reduction::StaticSolution& s, int g, int c) {
-  return s.u_g[*fem::find_dof(m, s.dofs, g, c)];
-}
+constexpr auto u = test::displacement;
 
 /// A plate [0, a] x [0, b] in the x-y plane of n x n CQUAD4 (tria: 2 n^2 CTRIA3), property 1, grid
 /// id 1 + i + (n + 1) j; the interior grids moved by `skew` (a fraction of the cell) to distort the

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "nastran_test_util.hpp"
+#include "statics_test_util.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/loads.hpp"
 #include "seflex/reduction/statics.hpp"
@@ -18,18 +19,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-std::string num(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  std::string s(buf);
-  if (s.find_first_of(".e") == std::string::npos) s += ".";
-  return s;
-}
+using test::num;
 
-/// Displacement component c (1..6) of grid id g, in its CD system.
-double u(const fem::Model& m, const reduction::StaticSolution& s, int g, int c) {
-  return s.u_g[*fem::find_dof(m, s.dofs, g, c)];
-}
+constexpr auto u = test::displacement;
 double p(const fem::Model& m, const reduction::StaticSolution& s, int g, int c) {
   return s.p_g[*fem::find_dof(m, s.dofs, g, c)];
 }

@@ -3,6 +3,7 @@
 // from text, and checking error messages.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <initializer_list>
 #include <string>
 
@@ -30,6 +31,16 @@ inline std::string fixed_line(std::initializer_list<std::string> fields, std::si
   }
   while (!line.empty() && line.back() == ' ') line.pop_back();
   return line + "\n";
+}
+
+/// A real number for a free-field bulk-data line, exact to the last bit ("%.17g", with a decimal
+/// point so that it reads as a real).
+inline std::string num(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  std::string s(buf);
+  if (s.find_first_of(".e") == std::string::npos) s += ".";
+  return s;
 }
 
 inline fem::Model read_deck(const std::string& text, const std::string& name = "deck.bdf") {

@@ -67,6 +67,10 @@ struct CraigBamptonBasis {
   CraigBamptonStats stats;
 };
 
+/// Invariants of a request (any backend): a mode count or a frequency limit, not both, neither
+/// negative; a boundary set. Violations are programming errors (InvariantError).
+void demand_valid_request(const CraigBamptonOptions& options, const std::vector<Eigen::Index>& boundary);
+
 /// Reduce (K_ff, M_ff) (both triangles stored, symmetric) to the boundary f-dofs `boundary`.
 /// Throws InvariantError for bad options or indices (empty, out of range, repeated),
 /// FactorizationError if K_ii is singular (the boundary does not hold the interior: the column
