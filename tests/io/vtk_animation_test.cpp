@@ -49,6 +49,15 @@ TEST(VtkAnimation, DeformedCoordinatesAndPointDataReadBack) {
     snaps[0].q = Eigen::VectorXd::Zero(6);
     snaps[0].q.head<3>() = Eigen::Vector3d(0, 0, 0.01 * step);
     series.write_step(0.1 * step, snaps);
+    // The collection on disk is complete after every step: one entry per step, closed once.
+    const std::string now = test::read_file(series.pvd_path());
+    std::size_t entries = 0;
+    for (auto at = now.find("<DataSet "); at != std::string::npos; at = now.find("<DataSet ", at + 1)) ++entries;
+    EXPECT_EQ(entries, static_cast<std::size_t>(step + 1)) << now;
+    const std::string closing = "  </Collection>\n</VTKFile>\n";
+    ASSERT_GE(now.size(), closing.size());
+    EXPECT_EQ(now.substr(now.size() - closing.size()), closing) << now;
+    EXPECT_EQ(now.find("</Collection>"), now.rfind("</Collection>")) << now;
   }
   EXPECT_EQ(series.steps_written(), 3);
   const std::string pvd = test::read_file(series.pvd_path());

@@ -1,7 +1,9 @@
 #pragma once
 // ParaView time series of deformed FE meshes: one .vtu file per output step holding every body's
 // full FE mesh (from its superelement's recovery matrix), listed in a .pvd collection that is
-// rewritten after every step, so a run that stops early still leaves a readable animation.
+// complete after every step (the new entry and the closing tags are written over the previous
+// closing tags and flushed: O(1) per step), so a run that stops early still leaves a readable
+// animation. The cells and the VTK objects are built at the first step and reused.
 //
 // Point coordinates are the deformed positions p_WI = p_WBo + R_WB (p_BoI_B + U_I), U = recovery q.
 // Point data: "elastic_displacement" (R_WB U_I, world axes) - apply ParaView's "Warp By Vector" with
@@ -10,6 +12,7 @@
 #include <Eigen/Core>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -31,19 +34,27 @@ class PvdSeries {
   /// and !overwrite, or the folder cannot be written.
   PvdSeries(std::filesystem::path folder, std::string stem, std::vector<const se::Superelement*> bodies,
             bool overwrite = false);
+  ~PvdSeries();
+  PvdSeries(const PvdSeries&) = delete;
+  PvdSeries& operator=(const PvdSeries&) = delete;
 
   /// Write one step (snapshots in the order of the bodies) and update the .pvd.
   void write_step(double time, const std::vector<BodySnapshot>& snapshots);
 
-  int steps_written() const { return static_cast<int>(entries_.size()); }
+  int steps_written() const { return steps_; }
   std::filesystem::path pvd_path() const { return folder_ / (stem_ + ".pvd"); }
 
  private:
+  struct Vtk;  // the grid, its arrays and the writer (VTK types stay out of this header)
+  void append_to_collection(double time, const std::string& file);
+
   std::filesystem::path folder_;
   std::string stem_;
   std::vector<const se::Superelement*> bodies_;
-  std::vector<std::pair<double, std::string>> entries_;
-  Eigen::Matrix3Xd first_positions_;
+  int steps_ = 0;
+  std::ofstream pvd_;
+  Eigen::Matrix3Xd first_positions_, positions_, elastic_;
+  std::unique_ptr<Vtk> vtk_;
 };
 
 /// Deformed positions (3 x n_fe, world) and elastic displacements (world axes) of one body.
