@@ -85,6 +85,9 @@ int main(int argc, char** argv) {
   line("elastic_force (force + tangent)", [&] { mbd::elastic_force(e, kin, mbd::TangentModel::Exact, f, &Kt, ws); });
   line("inertia full (force)", [&] { mbd::inertia_force(e, kin, mbd::InertiaModel::Full, v, a, false, in, ws); });
   line("inertia full (force + matrices)", [&] { mbd::inertia_force(e, kin, mbd::InertiaModel::Full, v, a, true, in, ws); });
+  line("inertia full (force + M, K; no C)", [&] {
+    mbd::inertia_force(e, kin, mbd::InertiaModel::Full, v, a, mbd::InertiaMatrices::NoVelocityTangent, in, ws);
+  });
   line("inertia simplified (force)", [&] { mbd::inertia_force(e, kin, mbd::InertiaModel::Simplified, v, a, false, in, ws); });
   line("inertia simplified (force + matrices)",
        [&] { mbd::inertia_force(e, kin, mbd::InertiaModel::Simplified, v, a, true, in, ws); });

@@ -286,10 +286,27 @@ def main(argv):
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
         os.makedirs(os.path.join(out, "plots"), exist_ok=True)
-        for name, c in cases.items():
-            plot_case(plt, c, os.path.join(out, "plots", name + ".png"))
-        plot_overlay(plt, cases, os.path.join(out, "plots", "beam-vs-3d.png"))
+        global _PLOTS
+        _PLOTS = [(plot_case, (plt, c, os.path.join(out, "plots", name + ".png"))) for name, c in cases.items()]
+        _PLOTS.append((plot_overlay, (plt, cases, os.path.join(out, "plots", "beam-vs-3d.png"))))
+        # The five figures in $SEFLEX_JOBS processes (forked after matplotlib is imported: no re-import).
+        jobs = max(1, min(len(_PLOTS), int(os.environ.get("SEFLEX_JOBS", os.cpu_count() or 1))))
+        if jobs > 1:
+            import multiprocessing
+            with multiprocessing.get_context("fork").Pool(jobs) as pool:
+                pool.map(_draw, range(len(_PLOTS)))
+        else:
+            for k in range(len(_PLOTS)):
+                _draw(k)
     return 0
+
+
+_PLOTS = []
+
+
+def _draw(k):
+    f, args = _PLOTS[k]
+    f(*args)
 
 
 if __name__ == "__main__":

@@ -298,7 +298,8 @@ struct Reader {
     }
     if (f.has("newton")) {
       const YamlField n = f["newton"];
-      n.check_keys({"tolerance", "increment_tolerance", "error_fraction", "max_iterations"});
+      n.check_keys({"tolerance", "increment_tolerance", "error_fraction", "max_iterations", "inertia_velocity_tangent"});
+      if (n.has("inertia_velocity_tangent")) s.inertia_velocity_tangent = n["inertia_velocity_tangent"].boolean();
       if (n.has("tolerance")) s.newton_residual_tol = n["tolerance"].positive();
       if (n.has("increment_tolerance")) s.newton_increment_tol = n["increment_tolerance"].positive();
       if (n.has("error_fraction")) {

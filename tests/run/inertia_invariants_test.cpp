@@ -93,6 +93,15 @@ Sizes compare(const se::Superelement& s, double omega, double amp, int states = 
     EXPECT_LT(rel(inv.Ct, ref.Ct), 1e-10) << s.name << " state " << k;
     EXPECT_LT(rel(inv.Kt, ref.Kt), 1e-10) << s.name << " state " << k;
     EXPECT_LT(std::abs(inv.kinetic - ref.kinetic), 1e-10 * ref.kinetic) << s.name << " state " << k;
+    // Without the velocity tangent: the same force, mass and configuration tangent, no Ct.
+    InertiaResult cheap;
+    AicWorkspace ws;
+    inertia_force(e, kin, InertiaModel::Full, v, a, InertiaMatrices::NoVelocityTangent, cheap, ws);
+    EXPECT_TRUE(inv.has_Ct);
+    EXPECT_FALSE(cheap.has_Ct);
+    EXPECT_EQ(rel(cheap.f, inv.f), 0.0) << s.name << " state " << k;
+    EXPECT_EQ(rel(cheap.Mt, inv.Mt), 0.0) << s.name << " state " << k;
+    EXPECT_EQ(rel(cheap.Kt, inv.Kt), 0.0) << s.name << " state " << k;
     out.dropped_term = std::max(out.dropped_term, rel(with_gyro.f, ref.f));
   }
   std::printf("%-12s n = %3d: invariants vs nodal sums %.2e; dropped elastic-gyro term %.2e of the force\n",

@@ -43,14 +43,14 @@ void configuration_tangent(const AicElement& e, const AicKinematics& kin, const 
   Kw.noalias() = ws.n3 * kin.ZxL.middleRows<3>(3);
 }
 
-void simplified(const AicElement& e, const AicKinematics& kin, const VectorXd& w, const VectorXd& ab, bool want,
+void simplified(const AicElement& e, const AicKinematics& kin, const VectorXd& w, const VectorXd& ab, InertiaMatrices want,
                 MatrixXd& Mw, MatrixXd& Cw, MatrixXd& Kw, VectorXd& fw, double& kinetic, AicWorkspace& ws) {
   fw.noalias() = e.M * ab;
   ws.v2.noalias() = e.M * w;
   kinetic = 0.5 * w.dot(ws.v2);
-  if (!want) return;
+  if (want == InertiaMatrices::None) return;
   Mw = e.M;
-  Cw.setZero(e.n, e.n);
+  if (want == InertiaMatrices::All) Cw.setZero(e.n, e.n);
   configuration_tangent(e, kin, Mw, ab, fw, ws, Kw);
 }
 
@@ -61,7 +61,7 @@ Vector6d sym_components(const Matrix3d& W) {
   return v;
 }
 
-void full(const AicElement& e, const AicKinematics& kin, const VectorXd& w, const VectorXd& ab, bool want,
+void full(const AicElement& e, const AicKinematics& kin, const VectorXd& w, const VectorXd& ab, InertiaMatrices want,
           MatrixXd& Mw, MatrixXd& Cw, MatrixXd& Kw, VectorXd& fw, double& kinetic, AicWorkspace& ws) {
   const se::InertiaInvariants& I = e.inv;
   const Eigen::Index n = e.n;
@@ -171,13 +171,17 @@ void full(const AicElement& e, const AicKinematics& kin, const VectorXd& w, cons
   fw += ws.v2;
   mass_times(w, ws.v2);
   kinetic = 0.5 * w.dot(ws.v2);
-  if (!want) return;
+  if (want == InertiaMatrices::None) return;
 
   MatrixXd& QZ = ws.nn;
   QZ.noalias() = Q * Z;
   Mw = I.Mpp + QZ + QZ.transpose();
   ws.sixn.noalias() = S * Z;
   Mw.noalias() += Z.transpose() * ws.sixn;
+  if (want == InertiaMatrices::NoVelocityTangent) {
+    configuration_tangent(e, kin, Mw, ab, fw, ws, Kw);
+    return;
+  }
   // d/dOm_a of the velocity-dependent loads (n x 3 and 6 x 3), then d/dxi_dot (n x n and 6 x n).
   MatrixXd& DOp = ws.DOp;
   DOp.resize(n, 3);
@@ -236,12 +240,18 @@ void inertia_force(const AicElement& e, const AicKinematics& kin, InertiaModel m
 
 void inertia_force(const AicElement& e, const AicKinematics& kin, InertiaModel model, const Eigen::Ref<const VectorXd>& v,
                    const Eigen::Ref<const VectorXd>& a, bool want_matrices, InertiaResult& out, AicWorkspace& ws) {
+  inertia_force(e, kin, model, v, a, want_matrices ? InertiaMatrices::All : InertiaMatrices::None, out, ws);
+}
+
+void inertia_force(const AicElement& e, const AicKinematics& kin, InertiaModel model, const Eigen::Ref<const VectorXd>& v,
+                   const Eigen::Ref<const VectorXd>& a, InertiaMatrices want_matrices, InertiaResult& out,
+                   AicWorkspace& ws) {
   if (model == InertiaModel::Full) {
     SEFLEX_DEMAND(e.inv.present(), "full inertia needs the inertia invariants of superelement " + e.name);
   }
   detail::inertia_in_world(e, kin, v, a, want_matrices, out, ws,
-                           [&](const VectorXd& w, const VectorXd& ab, bool want, MatrixXd& Mw, MatrixXd& Cw, MatrixXd& Kw,
-                               VectorXd& fw, double& kinetic) {
+                           [&](const VectorXd& w, const VectorXd& ab, InertiaMatrices want, MatrixXd& Mw, MatrixXd& Cw,
+                               MatrixXd& Kw, VectorXd& fw, double& kinetic) {
                              if (model == InertiaModel::Full)
                                full(e, kin, w, ab, want, Mw, Cw, Kw, fw, kinetic, ws);
                              else

@@ -70,20 +70,22 @@ inline Eigen::MatrixXd times_velocity_accelerations_tangent(const AicElement& e,
 
 /// Evaluate an inertia model in body axes and rotate the result to world components:
 /// body(w, ab, want, Mw, Cw, Kw, fw, kinetic) with w, ab the body-axis velocities and accelerations.
-/// Mw, Cw, Kw are out.Mt, out.Ct, out.Kt, rotated in place afterwards; vectors live in ws.
+/// Mw, Cw, Kw are out.Mt, out.Ct, out.Kt, rotated in place afterwards (Ct only when formed); vectors
+/// live in ws.
 template <class BodyInertia>
 void inertia_in_world(const AicElement& e, const AicKinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& v,
-                      const Eigen::Ref<const Eigen::VectorXd>& a, bool want_matrices, InertiaResult& out,
+                      const Eigen::Ref<const Eigen::VectorXd>& a, InertiaMatrices want_matrices, InertiaResult& out,
                       AicWorkspace& ws, BodyInertia&& body) {
   const Eigen::Matrix3d& R = kin.frame.R_WB;
   to_body(e, R, v, ws.w);
   to_body(e, R, a, ws.ab);
   ws.fi.resize(e.n);
   body(ws.w, ws.ab, want_matrices, out.Mt, out.Ct, out.Kt, ws.fi, out.kinetic);
+  out.has_Ct = want_matrices == InertiaMatrices::All;
   to_world(e, R, ws.fi, out.f);
-  if (!want_matrices) return;
+  if (want_matrices == InertiaMatrices::None) return;
   rotate_to_world(e, R, out.Mt);
-  rotate_to_world(e, R, out.Ct);
+  if (want_matrices == InertiaMatrices::All) rotate_to_world(e, R, out.Ct);
   rotate_to_world(e, R, out.Kt);
 }
 

@@ -81,10 +81,10 @@ void inertia_force_nodal(const AicElement& e, const AicKinematics& kin, const Ei
                          const Eigen::Ref<const VectorXd>& a, bool want_matrices, bool elastic_gyro, InertiaResult& out) {
   SEFLEX_DEMAND(e.has_fe_data, "the nodal inertia needs the FE recovery matrix and FE mass of superelement " + e.name);
   AicWorkspace ws;
-  detail::inertia_in_world(e, kin, v, a, want_matrices, out, ws,
-                           [&](const VectorXd& w, const VectorXd& ab, bool want, MatrixXd& Mw, MatrixXd& Cw, MatrixXd& Kw,
-                               VectorXd& fw, double& kinetic) {
-                             full_nodal(e, kin, w, ab, want, elastic_gyro, Mw, Cw, Kw, fw, kinetic);
+  detail::inertia_in_world(e, kin, v, a, want_matrices ? InertiaMatrices::All : InertiaMatrices::None, out, ws,
+                           [&](const VectorXd& w, const VectorXd& ab, InertiaMatrices want, MatrixXd& Mw, MatrixXd& Cw,
+                               MatrixXd& Kw, VectorXd& fw, double& kinetic) {
+                             full_nodal(e, kin, w, ab, want != InertiaMatrices::None, elastic_gyro, Mw, Cw, Kw, fw, kinetic);
                            });
 }
 

@@ -50,7 +50,10 @@ void assemble_flexible(const Model& model, const State& s, Data& data, const Ass
   InertiaResult& in = sc.inertia;
   const bool need_inertia = opt.dynamics || g.squaredNorm() > 0.0;
   if (need_inertia) {
-    inertia_force(e, fd.kin, body.options.inertia, sc.v, sc.a, opt.matrices, in, sc.aic);
+    const InertiaMatrices wanted = !opt.matrices                 ? InertiaMatrices::None
+                                   : opt.inertia_velocity_tangent ? InertiaMatrices::All
+                                                                  : InertiaMatrices::NoVelocityTangent;
+    inertia_force(e, fd.kin, body.options.inertia, sc.v, sc.a, wanted, in, sc.aic);
     fd.f_in = in.f;
     fd.kinetic = opt.dynamics ? in.kinetic : 0.0;
   } else {
@@ -121,8 +124,12 @@ void assemble_flexible(const Model& model, const State& s, Data& data, const Ass
   scatter_mapped(data.K, off, nc, map, sc.Kl, sc.Y);
   if (opt.dynamics) {
     scatter_mapped(data.M, off, nc, map, in.Mt, sc.Y);
-    if (damped) in.Ct += sc.Cd;
-    scatter_mapped(data.C, off, nc, map, in.Ct, sc.Y);
+    if (in.has_Ct) {
+      if (damped) in.Ct += sc.Cd;
+      scatter_mapped(data.C, off, nc, map, in.Ct, sc.Y);
+    } else if (damped) {
+      scatter_mapped(data.C, off, nc, map, sc.Cd, sc.Y);
+    }
     // Convective terms of the node tree: C += J^T M0 G.
     sc.G.clear();
     for (int j = 0; j < N; ++j) sc.G.push_back(&data.nodes[node_of(j)].G);

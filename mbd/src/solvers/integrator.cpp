@@ -72,6 +72,7 @@ StepResult newton_step(const Model& model, const State& s0, double h, const Coef
   Jl.resize(model.rotation_dof_starts.size());
   Eigen::SparseMatrix<double>& S = ws.S;
   AssemblyOptions opt;
+  opt.inertia_velocity_tangent = st.inertia_velocity_tangent;
   double inc = std::numeric_limits<double>::infinity();
   double r_prev = std::numeric_limits<double>::infinity();
   bool fresh = false;  // the factorisation belongs to this step

@@ -15,6 +15,9 @@ struct AssemblyOptions {
   bool matrices = true;      ///< also K, C, M
   bool dynamics = true;      ///< false: statics (velocities and accelerations taken as zero)
   double load_factor = 1.0;  ///< multiplies node loads and gravity
+  /// With matrices: the flexible bodies' inertia also contributes its velocity derivative
+  /// (gyroscopic/Coriolis) to C; false leaves it out (the integrator's cheaper iteration matrix).
+  bool inertia_velocity_tangent = true;
 };
 
 /// Poses, Jacobians, twists and accelerations of all nodes, and hinge quantities, at `state`

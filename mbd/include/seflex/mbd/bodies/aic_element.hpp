@@ -30,6 +30,10 @@ namespace seflex::mbd {
 enum class FrameRecovery { Newton6, Decoupled3 };
 enum class TangentModel { Exact, Simplified };
 enum class InertiaModel { Simplified, Full };
+/// Which derivatives inertia_force forms besides the force: none; all (Mt, Ct, Kt); or Mt and Kt with
+/// Ct left zero (a Newton iteration matrix without the gyroscopic/Coriolis tangent: its weight
+/// against the mass is about h |Omega|, so Newton still converges where h |Omega| << 1).
+enum class InertiaMatrices { None, All, NoVelocityTangent };
 
 /// Configuration-independent data of one superelement, precomputed once (make_aic_element).
 struct AicElement {
@@ -159,6 +163,7 @@ Eigen::MatrixXd rigid_modes(const AicElement& e, const Eigen::Ref<const Eigen::V
 struct InertiaResult {
   Eigen::VectorXd f;
   Eigen::MatrixXd Mt, Ct, Kt;
+  bool has_Ct = false;  ///< Ct was formed by the last call (InertiaMatrices::All)
   double kinetic = 0.0;
 };
 void inertia_force(const AicElement& e, const AicKinematics& kin, InertiaModel model,
@@ -167,6 +172,9 @@ void inertia_force(const AicElement& e, const AicKinematics& kin, InertiaModel m
 void inertia_force(const AicElement& e, const AicKinematics& kin, InertiaModel model,
                    const Eigen::Ref<const Eigen::VectorXd>& v, const Eigen::Ref<const Eigen::VectorXd>& a,
                    bool want_matrices, InertiaResult& out, AicWorkspace& ws);
+void inertia_force(const AicElement& e, const AicKinematics& kin, InertiaModel model,
+                   const Eigen::Ref<const Eigen::VectorXd>& v, const Eigen::Ref<const Eigen::VectorXd>& a,
+                   InertiaMatrices matrices, InertiaResult& out, AicWorkspace& ws);
 
 /// The full inertia evaluated by sums over the FE nodes (formulation 2.4; needs has_fe_data): the
 /// reference the invariant evaluation is tested against. elastic_gyro = false leaves out the
