@@ -513,8 +513,8 @@ class Classifier {
   // ------------------------------------------------------------------------------------------
   void unsupported() {
     for (const auto& u : m_.unsupported) {
-      if (u.name.find(' ') != std::string::npos) continue;  // a feature note (notes())
       const CardRole* r = detail::find_card_role(u.name);
+      if (r == nullptr && u.name.find(' ') != std::string::npos) continue;  // a feature note (notes())
       if (s_ == Solution::Convert) {
         report_.add(Kind::Unused, u.name, u.first, "not written: seflex does not model it", u.count);
         continue;
@@ -613,7 +613,7 @@ class Classifier {
   void notes() {
     const Kind k = runs(s_) ? Kind::Approximated : Kind::Unused;
     for (const auto& u : m_.unsupported)
-      if (u.name.find(' ') != std::string::npos)
+      if (u.name.find(' ') != std::string::npos && detail::find_card_role(u.name) == nullptr)
         report_.add(k, u.name, u.first, "read with the approximation stated", u.count);
     for (const auto& r : m_.rbe3)
       if (r.has_alpha && r.alpha != 0.0)
