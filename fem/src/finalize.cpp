@@ -2,6 +2,7 @@
 #include "seflex/fem/finalize.hpp"
 
 #include "seflex/fem/components.hpp"
+#include "finalize_unsupported.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -48,6 +49,7 @@ class Finalizer {
 
   void run() {
     m_.finalized = false;
+    detail::leave_out_unsupported(m_);
     index_grids();
     index_coords();
     index_materials_and_properties();
@@ -95,6 +97,36 @@ class Finalizer {
     if (static_cast<std::size_t>(max_id) <= 4 * m_.grids.size() + 1024) {
       dense_grids_.assign(static_cast<std::size_t>(max_id) + 1, false);
       for (const auto& g : m_.grids) dense_grids_[static_cast<std::size_t>(g.id)] = true;
+    }
+    // An SPOINT listed twice defines the same scalar point twice: one is kept (pyNastran reads such
+    // decks, e.g. freq_sine/good_sine.dat; a scalar point carries no data that could differ).
+    {
+      std::unordered_set<int> seen;
+      std::size_t repeats = 0;
+      CardRef first_repeat;
+      auto& sp = m_.spoints;
+      sp.erase(std::remove_if(sp.begin(), sp.end(),
+                              [&](const ScalarPoint& s) {
+                                if (seen.insert(s.id).second) return false;
+                                if (repeats++ == 0) first_repeat = s.ref;
+                                return true;
+                              }),
+               sp.end());
+      if (repeats > 0) note("SPOINT id given twice (one scalar point kept)", first_repeat, repeats);
+      // A scalar point that appears on a scalar element (CELAS3/4, CMASS3/4, or CELAS1/2, CMASS1/2
+      // with component 0 and no GRID of that id) needs no SPOINT (MSC QRG, SPOINT remarks).
+      auto implicit = [&](int g, int c, bool scalar_points, const CardRef& ref) {
+        if (g <= 0 || (!scalar_points && c != 0) || is_grid(g)) return;
+        if (seen.insert(g).second) sp.push_back({g, ref});
+      };
+      for (const auto& e : m_.springs) {
+        implicit(e.g1, e.c1, e.scalar_points, e.ref);
+        implicit(e.g2, e.c2, e.scalar_points, e.ref);
+      }
+      for (const auto& e : m_.scalar_masses) {
+        implicit(e.g1, e.c1, e.scalar_points, e.ref);
+        implicit(e.g2, e.c2, e.scalar_points, e.ref);
+      }
     }
     index(m_.spoints, m_.spoint_index, "SPOINT", "scalar point");
     for (const auto& s : m_.spoints)

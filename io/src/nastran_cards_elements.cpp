@@ -73,8 +73,9 @@ void parse_bar_like(const Card& card, ReaderState& st, bool beam) {
     st.note_unsupported("CBEAM BIT (built-in twist ignored)", card.ref());
   else
     b.offt = offt(card, 7, st);
-  b.pa = card.components(8, "PA", true);
-  b.pb = card.components(9, "PB", true);
+  // 0: no pin flags, as blank (MSC's test decks dbxdra2, d200obus write it)
+  b.pa = card.raw(8) == "0" ? fem::ComponentMask{0} : card.components(8, "PA", true);
+  b.pb = card.raw(9) == "0" ? fem::ComponentMask{0} : card.components(9, "PB", true);
   b.wa = {card.real_or(10, "W1A", 0.0), card.real_or(11, "W2A", 0.0), card.real_or(12, "W3A", 0.0)};
   b.wb = {card.real_or(13, "W1B", 0.0), card.real_or(14, "W2B", 0.0), card.real_or(15, "W3B", 0.0)};
   if (beam && (card.integer_or(16, "SA", 0) != 0 || card.integer_or(17, "SB", 0) != 0))

@@ -42,7 +42,7 @@ void parse_grid(const Card& card, ReaderState& st) {
   if (card.blank(6))
     blank |= 4;
   else
-    g.ps = card.components(6, "PS", false);
+    g.ps = card.raw(6) == "0" ? fem::ComponentMask{0} : card.components(6, "PS", false);  // 0: none (MSC's dbxdra2)
   if (card.integer_or(7, "SEID", 0) != 0) st.note_unsupported("GRID SEID (superelement id ignored)", card.ref());
   g.ref = card.ref();
   st.model.grids.push_back(g);

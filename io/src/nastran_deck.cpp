@@ -25,6 +25,11 @@ void ReaderState::note_unsupported(std::string_view name, const fem::CardRef& re
   ++model.unsupported[it->second].count;
 }
 
+void ReaderState::note_unsupported_member(std::string_view name, int id, const fem::CardRef& ref) {
+  note_unsupported(name, ref);
+  model.unsupported[unsupported_index.at(std::string(name))].members.push_back({id, ref});
+}
+
 void ReaderState::note_unsupported_card(const Card& card) {
   note_unsupported(card.name(), card.ref());
   int sid = 0;

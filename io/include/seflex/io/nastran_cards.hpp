@@ -32,6 +32,9 @@ struct ReaderState {
   /// A whole card seflex does not read: as note_unsupported, and its field 2 (a set id) kept when
   /// it is an integer (fem::UnsupportedCard::members).
   void note_unsupported_card(const Card& card);
+  /// As note_unsupported, with `id` kept as a member (an element on a property of that id is left
+  /// out by fem::finalize, as on an unsupported property card).
+  void note_unsupported_member(std::string_view name, int id, const fem::CardRef& ref);
 };
 
 using CardParser = void (*)(const Card&, ReaderState&);
@@ -41,6 +44,7 @@ using CardParser = void (*)(const Card&, ReaderState&);
 inline constexpr const char* kMat1NuAboveHalf = "MAT1 NU above 0.5";
 inline constexpr const char* kShellTflagFraction = "CQUAD4/CTRIA3 TFLAG a fraction";
 inline constexpr const char* kFluidGrid = "GRID CD = -1 (fluid)";
+inline constexpr const char* kFluidSolid = "PSOLID FCTN = PFLUID";
 
 /// The parser of a bulk-data card name (upper case), or nullptr if seflex does not support it.
 CardParser find_card_parser(std::string_view name);
