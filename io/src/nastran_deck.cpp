@@ -429,7 +429,7 @@ class DeckReader {
     if (!valid_card_name(uname) || name.size() > 8) {
       if (starts_with_word(trim(line.text), "BEGIN"))
         throw InputError(location(src.name, line.number) + ": " + quote_field(trim(line.text)) +
-                         " inside the bulk data; expected one BEGIN BULK (part superelements are not supported)");
+                         " inside the bulk data; expected one BEGIN BULK (BEGIN SUPER parts are read as unsupported; other sections are not)");
       throw InputError(location(src.name, line.number) + ": got " + quote_field(field1) +
                        " where a card name belongs; expected a name of up to 8 letters and digits in columns 1-8"
                        " (or before the first comma)");
@@ -492,7 +492,7 @@ class DeckReader {
       count_text = count_text.substr(1, count_text.size() - 2);
     int count = 0;
     if (!parse_int(count_text, count) || count < 1 || count > kMaxThru)
-      throw InputError(where + ": replication " + quote_field(field1) + ": expected '=', '==' or a repeat count '=n' or '=(n)' with 1 <= n <= " +
+      throw InputError(where + ": replication " + quote_field(field1) + ": expected '=' or a repeat count '=n' or '=(n)' with 1 <= n <= " +
                        std::to_string(kMaxThru) + " in field 1");
     for (std::size_t k = 0; k < n; ++k)
       if (!fields_[k].empty())
