@@ -255,7 +255,8 @@ void parse_pshell(const Card& card, ReaderState& st) {
   p.t = card.real_or(2, "T", 0.0);
   if (p.t < 0.0) card.fail(2, "T", card.got(2) + "; expected a thickness >= 0 or blank");
   p.mid2 = card.integer_or(3, "MID2", 0);
-  if (p.mid2 < 0) card.fail(3, "MID2", card.got(3) + "; expected a material id or blank (MID2 = -1, plane strain, is not supported)");
+  const bool plane_strain = p.mid2 == -1;
+  if (p.mid2 < -1) card.fail(3, "MID2", card.got(3) + "; expected a material id, -1 (plane strain) or blank");
   p.bend_ratio = card.real_or(4, "12I/T**3", 1.0);
   if (p.bend_ratio < 0.0) card.fail(4, "12I/T**3", card.got(4) + "; expected a ratio >= 0 or blank");
   p.mid3 = card.id_or(5, "MID3", 0);
@@ -272,6 +273,12 @@ void parse_pshell(const Card& card, ReaderState& st) {
   if (p.mid1 == 0 && p.mid2 == 0 && p.mid3 == 0)
     card.fail(1, "MID1", "MID1, MID2 and MID3 are all blank; expected at least one material");
   p.ref = card.ref();
+  if (plane_strain) {
+    // MID2 = -1: a plane-strain membrane (MSC QRG PSHELL), which seflex does not model: the property
+    // is not kept, its elements are left out by fem::finalize and every solution refuses the deck.
+    st.note_unsupported_member("PSHELL MID2 = -1 (plane strain)", p.id, p.ref);
+    return;
+  }
   st.model.shell_props.push_back(p);
 }
 

@@ -18,27 +18,25 @@ void parse_solid(const Card& card, ReaderState& st, fem::Solid::Shape shape, int
   s.id = card.id(0, "EID");
   s.pid = card.id(1, "PID");
   for (int k = 0; k < corners; ++k) s.g[static_cast<std::size_t>(k)] = card.id(2 + static_cast<std::size_t>(k), kGridNames[k]);
-  int mids = 0, first_blank = -1, first_given = -1;
+  int mids = 0;
   for (int k = corners; k < total; ++k) {
     const std::size_t i = 2 + static_cast<std::size_t>(k);
     if (card.blank(i) || (card.kind(i) == FieldKind::Integer && card.integer(i, kGridNames[k]) == 0)) {
-      if (first_blank < 0) first_blank = k;
       continue;
     }
     s.g[static_cast<std::size_t>(k)] = card.id(i, kGridNames[k]);
-    if (first_given < 0) first_given = k;
     ++mids;
-  }
-  if (mids != 0 && mids != total - corners) {
-    const int k = first_blank;
-    card.fail(2 + static_cast<std::size_t>(k), kGridNames[k],
-              "blank while " + std::string(kGridNames[first_given]) + " is given; expected all " +
-                  std::to_string(total - corners) +
-                  " mid-edge grids or none (elements with some mid-edge grids are not supported)");
   }
   if (card.used() > 2 + static_cast<std::size_t>(total))
     card.fail(2 + static_cast<std::size_t>(total), "G", card.got(2 + static_cast<std::size_t>(total)) +
                                                        "; expected at most " + std::to_string(total) + " grids");
+  s.ref = card.ref();
+  if (mids != 0 && mids != total - corners) {
+    // Some mid-edge grids (Nastran allows any subset): seflex's shapes have all or none. Left out and
+    // listed; every solution refuses the deck.
+    st.note_unsupported(std::string(s.card()) + " with some mid-edge grids (left out)", s.ref);
+    return;
+  }
   s.nnode = static_cast<std::uint8_t>(corners + mids);
   for (int a = 0; a < s.nnode; ++a)
     for (int b = a + 1; b < s.nnode; ++b)
@@ -46,7 +44,6 @@ void parse_solid(const Card& card, ReaderState& st, fem::Solid::Shape shape, int
         card.fail(2 + static_cast<std::size_t>(b), kGridNames[b],
                   "grid " + std::to_string(s.g[static_cast<std::size_t>(b)]) + " repeats " + kGridNames[a] +
                       "; expected distinct grids");
-  s.ref = card.ref();
   st.model.solids.push_back(s);
 }
 

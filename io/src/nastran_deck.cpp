@@ -331,7 +331,7 @@ class DeckReader {
                   std::size_t& n) {
     if (line.free) {
       std::array<std::string_view, 12> short_line;
-      const std::size_t count = split_free(line.text, short_line.data(), short_line.size());
+      std::size_t count = split_free(line.text, short_line.data(), short_line.size());
       const std::string_view* f = short_line.data();
       if (count > short_line.size() && count <= kMaxFreeFields) {  // rare: split again into the long buffer
         long_line_.resize(count);
@@ -343,6 +343,10 @@ class DeckReader {
       const bool large = first ? (!field1.empty() && field1.back() == '*') : (!field1.empty() && field1[0] == '*');
       n = large ? 4 : 8;
       overflow_.clear();
+      // Blank fields after the last one ("..., 1.0, +C1," in conedg01e.bdf) add nothing: dropped
+      // so that a trailing comma after the continuation marker does not make a long line of it.
+      if (count <= kMaxFreeFields)
+        while (count > n + 2 && f[count - 1].empty()) --count;
       if (count > n + 2 && (large || count > kMaxFreeFields))
         throw InputError(location(src.name, line.number) + ": free-field line has " + std::to_string(count) +
                          " fields; expected at most " + std::to_string(large ? n + 2 : kMaxFreeFields) +
@@ -359,6 +363,7 @@ class DeckReader {
       const std::string_view f1 = trim(line.text.substr(0, std::min<std::size_t>(8, line.text.size())));
       const bool large = first ? (!f1.empty() && f1.back() == '*') : line.text[0] == '*';
       n = large ? 4 : 8;
+      overflow_.clear();  // a long free-field line before must not lend its fields to this card
       split_fixed(line.text, n, field1, fields_.data(), marker);
     }
   }
@@ -407,7 +412,7 @@ class DeckReader {
     std::size_t n = 0;
     split_line(src, line, true, field1, marker, n);
     std::string_view name = field1;
-    if (!name.empty() && name.back() == '*') name.remove_suffix(1);
+    if (!name.empty() && name.back() == '*') name = trim(name.substr(0, name.size() - 1));  // "CORD2R *" too
     char buf[16];
     const std::size_t len = std::min(name.size(), sizeof buf);
     for (std::size_t i = 0; i < len; ++i) buf[i] = ascii_upper(name[i]);

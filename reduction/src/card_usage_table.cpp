@@ -82,6 +82,7 @@ const CardRole kRows[] = {
     // features of supported cards that no solution may use (io/include/seflex/io/nastran_cards.hpp)
     {"MAT1 NU above 0.5", R::Structure, N, nullptr}, {"CQUAD4/CTRIA3 TFLAG a fraction", R::Structure, N, nullptr},
     {"GRID CD = -1 (fluid)", R::Structure, N, nullptr}, {"PSOLID FCTN = PFLUID", R::Structure, N, nullptr},
+    {"PSHELL MID2 = -1 (plane strain)", R::Structure, N, nullptr},
     {"RBE1", R::Structure, N, nullptr}, {"RBAR1", R::Structure, N, nullptr}, {"RROD", R::Structure, N, nullptr},
     {"RTRPLT", R::Structure, N, nullptr}, {"RTRPLT1", R::Structure, N, nullptr}, {"RSPLINE", R::Structure, N, nullptr},
     {"RJOINT", R::Structure, N, nullptr}, {"RBE2A", R::Structure, N, nullptr},

@@ -157,6 +157,26 @@ TEST(PublicDecks, IndentedFreeFieldContinuations) {
                        {"deck.bdf:4: free-field continuation of RBE2 9 with data in columns 1-8", "start the line with a comma"}));
 }
 
+TEST(PublicDecks, FreeFieldTrailingCommaLargeFieldNameAndAFixedCardAfterALongLine) {
+  // conedg01e.bdf: "CORD2R, 5, , 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, +C1," continued by "+C1, ..."
+  const fem::Model m = read_deck("CORD2R, 5, , 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, +C1,\n+C1, 0.0, 1.0, 0.0\nGRID,1,5,1.,2.,3.\n");
+  ASSERT_EQ(m.coords.size(), 1u);
+  EXPECT_EQ(m.coords[0].abc[7], 1.0);
+  EXPECT_NEAR(m.grids[0].x_basic.x(), -2.0, 1e-12);  // x' = basic y: (1, 2, 3) in 5 is (-2, 1, 3)
+  EXPECT_NEAR(m.grids[0].x_basic.y(), 1.0, 1e-12);
+  // se_test_n11.asm: "CORD2R *" (a blank before the large-field '*')
+  const fem::Model l = read_deck(test::fixed_line({"CORD2R *", "5", "", "0.", "0."}, 16) +
+                                 test::fixed_line({"*", "0.", "0.", "0.", "1."}, 16) + test::fixed_line({"*", "0.", "1.", "0."}, 16) +
+                                 "GRID,1,5,1.,2.,3.\n");
+  ASSERT_EQ(l.coords.size(), 1u);
+  EXPECT_NEAR(l.grids[0].x_basic.x(), -2.0, 1e-12);
+  // tb5pfstt.bdf: the fields of a long free-field line must not go to a fixed-format card after it
+  const fem::Model t = read_deck("GRID,1,,0.,0.,0.\nPFASTT,1000,K,51,61,10251,,,,1,2\nTEMPD    111     20.\n");
+  ASSERT_EQ(t.default_temperatures.size(), 1u);
+  EXPECT_EQ(t.default_temperatures[0].sid, 111);
+  EXPECT_EQ(t.default_temperatures[0].t, 20.0);
+}
+
 TEST(PublicDecks, CaseControlParamTakesPrecedenceOverTheBulkData) {
   // flyswatter.bdf: PARAM,WTMASS,.00259 in the case control, param,wtmass,.002588 in the bulk data
   const fem::Model m = read_deck(statics_deck("PARAM,WTMASS,.002588\n", "PARAM,WTMASS,.00259\n"));
@@ -283,6 +303,11 @@ TEST(PublicDecks, ElementsOnUnsupportedMaterialsOrPropertiesAreLeftOutAndRefused
   EXPECT_NE(listed(beam, "PBEAML on MAT8 (left out)"), nullptr);
   EXPECT_NE(listed(beam, "CBEAM on PBEAML on MAT8 (left out)"), nullptr);
   EXPECT_TRUE(mentions(statics_refusal(beam), {"PBEAML on MAT8 (left out)"}));
+  // contact/model1_sim1-solution_1.bdf: a CTETRA with some of its mid-edge grids
+  const fem::Model tetra = read_deck(statics_deck(hexa.substr(0, hexa.find("CHEXA")) + "PSOLID,4,1\nCTETRA,41,4,11,12,13,15,0,17\n"));
+  EXPECT_TRUE(tetra.solids.empty());
+  ASSERT_NE(listed(tetra, "CTETRA with some mid-edge grids (left out)"), nullptr);
+  EXPECT_TRUE(mentions(statics_refusal(tetra), {"deck.bdf:22: CTETRA with some mid-edge grids (left out)"}));
   // a MID or PID that no card defines is still an error
   EXPECT_TRUE(mentions(read_error(hexa + "PSOLID,4,9\n"), {"PSOLID 4, field 3 (MID): references MAT1 9, which is not defined"}));
   EXPECT_TRUE(mentions(read_error(hexa), {"CHEXA 40, field 3 (PID): references property 4, which is not defined"}));
