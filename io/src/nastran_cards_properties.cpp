@@ -276,7 +276,7 @@ void parse_pshell(const Card& card, ReaderState& st) {
   if (plane_strain) {
     // MID2 = -1: a plane-strain membrane (MSC QRG PSHELL), which seflex does not model: the property
     // is not kept, its elements are left out by fem::finalize and every solution refuses the deck.
-    st.note_unsupported_member("PSHELL MID2 = -1 (plane strain)", p.id, p.ref);
+    st.note_unsupported_member(kPlaneStrainShell, p.id, p.ref);
     return;
   }
   st.model.shell_props.push_back(p);

@@ -302,7 +302,7 @@ class DeckReader {
     if (is_begin_super(t)) {
       in_part_ = true;
       have_previous_ = have_pattern_ = false;
-      state_.note_unsupported("BEGIN SUPER", {src.index, line.number});
+      state_.note_unsupported(kPartSuperelement, {src.index, line.number});
     } else if (starts_with_word(t, "ENDDATA")) {
       done_ = true;
     }

@@ -79,7 +79,8 @@ const CardRole kRows[] = {
     {"CDAMP5", R::Damping, N, nullptr}, {"CVISC", R::Damping, N, nullptr}, {"PLOTEL", R::Output, N, nullptr},
     // rigid and interpolation elements
     {"RBE2", R::Structure, Y, nullptr}, {"RBAR", R::Structure, Y, nullptr}, {"RBE3", R::Structure, Y, nullptr},
-    // features of supported cards that no solution may use (io/include/seflex/io/nastran_cards.hpp)
+    // features of supported cards the reader keeps for `seflex info` but no solution may use (the
+    // names the reader gives them: io/include/seflex/io/nastran_cards.hpp, io/src/nastran_deck.cpp)
     {"MAT1 NU above 0.5", R::Structure, N, nullptr}, {"CQUAD4/CTRIA3 TFLAG a fraction", R::Structure, N, nullptr},
     {"GRID CD = -1 (fluid)", R::Structure, N, nullptr}, {"PSOLID FCTN = PFLUID", R::Structure, N, nullptr},
     {"PSHELL MID2 = -1 (plane strain)", R::Structure, N, nullptr},

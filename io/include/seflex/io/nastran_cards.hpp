@@ -45,6 +45,8 @@ inline constexpr const char* kMat1NuAboveHalf = "MAT1 NU above 0.5";
 inline constexpr const char* kShellTflagFraction = "CQUAD4/CTRIA3 TFLAG a fraction";
 inline constexpr const char* kFluidGrid = "GRID CD = -1 (fluid)";
 inline constexpr const char* kFluidSolid = "PSOLID FCTN = PFLUID";
+inline constexpr const char* kPlaneStrainShell = "PSHELL MID2 = -1 (plane strain)";
+inline constexpr const char* kPartSuperelement = "BEGIN SUPER";
 
 /// The parser of a bulk-data card name (upper case), or nullptr if seflex does not support it.
 CardParser find_card_parser(std::string_view name);
