@@ -2,6 +2,7 @@
 #include "seflex/fem/finalize.hpp"
 
 #include "seflex/fem/components.hpp"
+#include "finalize_unsupported.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -48,6 +49,7 @@ class Finalizer {
 
   void run() {
     m_.finalized = false;
+    detail::leave_out_unsupported(m_);
     index_grids();
     index_coords();
     index_materials_and_properties();
@@ -95,6 +97,36 @@ class Finalizer {
     if (static_cast<std::size_t>(max_id) <= 4 * m_.grids.size() + 1024) {
       dense_grids_.assign(static_cast<std::size_t>(max_id) + 1, false);
       for (const auto& g : m_.grids) dense_grids_[static_cast<std::size_t>(g.id)] = true;
+    }
+    // An SPOINT listed twice defines the same scalar point twice: one is kept (pyNastran reads such
+    // decks, e.g. freq_sine/good_sine.dat; a scalar point carries no data that could differ).
+    {
+      std::unordered_set<int> seen;
+      std::size_t repeats = 0;
+      CardRef first_repeat;
+      auto& sp = m_.spoints;
+      sp.erase(std::remove_if(sp.begin(), sp.end(),
+                              [&](const ScalarPoint& s) {
+                                if (seen.insert(s.id).second) return false;
+                                if (repeats++ == 0) first_repeat = s.ref;
+                                return true;
+                              }),
+               sp.end());
+      if (repeats > 0) note("SPOINT id given twice (one scalar point kept)", first_repeat, repeats);
+      // A scalar point that appears on a scalar element (CELAS3/4, CMASS3/4, or CELAS1/2, CMASS1/2
+      // with component 0 and no GRID of that id) needs no SPOINT (MSC QRG, SPOINT remarks).
+      auto implicit = [&](int g, int c, bool scalar_points, const CardRef& ref) {
+        if (g <= 0 || (!scalar_points && c != 0) || is_grid(g)) return;
+        if (seen.insert(g).second) sp.push_back({g, ref});
+      };
+      for (const auto& e : m_.springs) {
+        implicit(e.g1, e.c1, e.scalar_points, e.ref);
+        implicit(e.g2, e.c2, e.scalar_points, e.ref);
+      }
+      for (const auto& e : m_.scalar_masses) {
+        implicit(e.g1, e.c1, e.scalar_points, e.ref);
+        implicit(e.g2, e.c2, e.scalar_points, e.ref);
+      }
     }
     index(m_.spoints, m_.spoint_index, "SPOINT", "scalar point");
     for (const auto& s : m_.spoints)
@@ -185,8 +217,8 @@ class Finalizer {
     it->first = first;
   }
 
-  /// All elements share one id space: CBAR, CBEAM, CROD, CONROD, CQUAD4, CTRIA3, CONM2, CELAS1/2,
-  /// RBE2, RBAR, RBE3.
+  /// The elements share one id space (CBAR, CBEAM, CROD, CONROD, CQUAD4, CTRIA3, CONM2, CONM1,
+  /// CELASi, CMASSi, CBUSH, solids); the rigid elements RBE2, RBAR, RBE3 another.
   void index_elements() {
     const std::size_t total = m_.bars.size() + m_.rods.size() + m_.shells.size() + m_.conm2.size() +
                               m_.springs.size() + m_.rbe2.size() + m_.rbars.size() + m_.rbe3.size() +
@@ -196,7 +228,14 @@ class Finalizer {
     seen.model = &m_;
     seen.map.reserve(total);
     auto add = [&](int id, const CardRef& ref, const char* card) {
-      seen.add(id, ref, card, "field 2 (EID)", "element", "expected unique ids across all elements (incl. CONM2, CELASi, RBE2)");
+      seen.add(id, ref, card, "field 2 (EID)", "element", "expected unique ids across all elements (incl. CONM2, CELASi, CBUSH)");
+    };
+    // Rigid elements are numbered apart: MSC's own decks (aerobeam, dbxdra7) give an RBAR the id of a
+    // CONM2 or a CBEAM, and pyNastran keeps them apart too. Unique among themselves.
+    IdSpace rigid;
+    rigid.model = &m_;
+    auto add_rigid = [&](int id, const CardRef& ref, const char* card) {
+      rigid.add(id, ref, card, "field 2 (EID)", "rigid element", "expected unique ids across RBE2, RBAR and RBE3");
     };
     for (const auto& e : m_.bars) add(e.id, e.ref, e.is_beam ? "CBEAM" : "CBAR");
     for (const auto& e : m_.rods) add(e.id, e.ref, e.inline_property ? "CONROD" : "CROD");
@@ -206,9 +245,9 @@ class Finalizer {
     for (const auto& e : m_.bushes) add(e.id, e.ref, "CBUSH");
     for (const auto& e : m_.scalar_masses) add(e.id, e.ref, scalar_mass_card(e));
     for (const auto& e : m_.conm1) add(e.id, e.ref, "CONM1");
-    for (const auto& e : m_.rbe2) add(e.id, e.ref, "RBE2");
-    for (const auto& e : m_.rbars) add(e.id, e.ref, "RBAR");
-    for (const auto& e : m_.rbe3) add(e.id, e.ref, "RBE3");
+    for (const auto& e : m_.rbe2) add_rigid(e.id, e.ref, "RBE2");
+    for (const auto& e : m_.rbars) add_rigid(e.id, e.ref, "RBAR");
+    for (const auto& e : m_.rbe3) add_rigid(e.id, e.ref, "RBE3");
     for (const auto& e : m_.solids) add(e.id, e.ref, e.card());
   }
 
@@ -422,11 +461,19 @@ class Finalizer {
     check_params();
   }
 
+  /// The parameters seflex reads (param_number and the AUTOSPC / INREL lookups).
+  static const std::set<std::string>& used_params() {
+    static const std::set<std::string> names = {"WTMASS", "COUPMASS", "K6ROT", "GRDPNT", "AUTOSPC", "CK2", "CM2", "INREL"};
+    return names;
+  }
+
   void check_params() {
     std::unordered_map<std::string, const Param*> first;
     for (const auto& p : m_.params) {
       const auto [it, inserted] = first.emplace(p.name, &p);
-      if (!inserted && it->second->values != p.values)
+      // Two values of a parameter seflex does not use are Nastran's business (subcase-level PARAMs
+      // in the case control, e.g.); of one it uses, ambiguous.
+      if (!inserted && it->second->values != p.values && used_params().count(p.name))
         throw InputError(where(m_, p.ref), "PARAM " + p.name + ": a second value (the first, at " + at(it->second->ref) +
                                                ", differs); expected one value per parameter");
     }

@@ -7,7 +7,18 @@ namespace seflex::io::nastran {
 namespace {
 
 /// OFFT: three letters, B or G for the orientation vector, then G or O for each end's offset.
-std::string offt(const Card& card, std::size_t i) {
+/// An integer there is COSMIC NASTRAN's orientation flag F (1: X1-X3 is a vector, 2: X1 is G0; the
+/// offsets then are at the grids in global axes, MSC's GGG): read as blank (the default) and listed.
+std::string offt(const Card& card, std::size_t i, ReaderState& st) {
+  if (card.kind(i) == FieldKind::Integer) {
+    const int f = card.integer(i, "OFFT");
+    const bool g0 = card.kind(i - 3) == FieldKind::Integer;
+    if ((f == 1 && !g0) || (f == 2 && g0)) {
+      st.note_unsupported("CBAR/CBEAM/BAROR field 9 as COSMIC's orientation flag F (read as OFFT blank)", card.ref());
+      return "";
+    }
+    card.fail(i, "OFFT", card.got(i) + "; expected one of GGG, BGG, GGO, BGO, GOG, BOG, GOO, BOO (or COSMIC's flag F: 1 with a vector X1-X3, 2 with G0)");
+  }
   std::string s = card.text_or(i, "OFFT", "");
   if (s.empty()) return s;
   if (s.size() != 3 || (s[0] != 'G' && s[0] != 'B') || (s[1] != 'G' && s[1] != 'O') || (s[2] != 'G' && s[2] != 'O'))
@@ -61,9 +72,10 @@ void parse_bar_like(const Card& card, ReaderState& st, bool beam) {
   if (beam && card.kind(7) == FieldKind::Real)
     st.note_unsupported("CBEAM BIT (built-in twist ignored)", card.ref());
   else
-    b.offt = offt(card, 7);
-  b.pa = card.components(8, "PA", true);
-  b.pb = card.components(9, "PB", true);
+    b.offt = offt(card, 7, st);
+  // 0: no pin flags, as blank (MSC's test decks dbxdra2, d200obus write it)
+  b.pa = card.raw(8) == "0" ? fem::ComponentMask{0} : card.components(8, "PA", true);
+  b.pb = card.raw(9) == "0" ? fem::ComponentMask{0} : card.components(9, "PB", true);
   b.wa = {card.real_or(10, "W1A", 0.0), card.real_or(11, "W2A", 0.0), card.real_or(12, "W3A", 0.0)};
   b.wb = {card.real_or(13, "W1B", 0.0), card.real_or(14, "W2B", 0.0), card.real_or(15, "W3B", 0.0)};
   if (beam && (card.integer_or(16, "SA", 0) != 0 || card.integer_or(17, "SB", 0) != 0))
@@ -85,7 +97,7 @@ void parse_bar_defaults(const Card& card, ReaderState& st, fem::BarDefaults& d) 
   if (card.name() == "BEAMOR" && card.kind(7) == FieldKind::Real)
     st.note_unsupported("BEAMOR BIT (built-in twist ignored)", card.ref());
   else
-    d.offt = offt(card, 7);
+    d.offt = offt(card, 7, st);
   if (d.offt.empty()) d.offt = "GGG";
 }
 
@@ -115,8 +127,22 @@ void parse_shell(const Card& card, ReaderState& st, std::uint8_t nnode) {
   theta_mcid(card, 2 + nnode, s);
   s.zoffs = card.real_or(3 + nnode, "ZOFFS", 0.0);
   if (card.size() > 8) {
-    s.tflag = card.integer_or(10, "TFLAG", 0);
-    if (s.tflag != 0 && s.tflag != 1) card.fail(10, "TFLAG", card.got(10) + "; expected 0, 1 or blank");
+    if (card.kind(10) == FieldKind::Real) {
+      // TFLAG written as a real: 0. and 1. are read as 0 and 1 (listed); a fraction such as .63 is
+      // likely a thickness one column to the left of T1 (an older layout): read as 0 and listed as
+      // refused, since which thickness is meant is not known.
+      const double t = card.real(10, "TFLAG");
+      if (t == 0.0 || t == 1.0) {
+        s.tflag = static_cast<int>(t);
+        st.note_unsupported("CQUAD4/CTRIA3 TFLAG written as a real (0. or 1.)", card.ref());
+      } else {
+        s.tflag = 0;
+        st.note_unsupported(kShellTflagFraction, card.ref());
+      }
+    } else {
+      s.tflag = card.integer_or(10, "TFLAG", 0);
+      if (s.tflag != 0 && s.tflag != 1) card.fail(10, "TFLAG", card.got(10) + "; expected 0, 1 or blank");
+    }
     for (std::size_t k = 0; k < nnode; ++k) {
       s.t[k] = card.real_or(11 + k, tnames[k], 0.0);
       if (s.t[k] < 0.0) card.fail(11 + k, tnames[k], card.got(11 + k) + "; expected a thickness >= 0 or blank");

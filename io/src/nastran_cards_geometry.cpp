@@ -30,13 +30,19 @@ void parse_grid(const Card& card, ReaderState& st) {
     blank |= 2;
   } else {
     g.cd = card.integer(5, "CD");
-    if (g.cd < 0)
-      card.fail(5, "CD", card.got(5) + "; expected a coordinate system id >= 0 or blank (fluid grids, CD = -1, are not supported)");
+    if (g.cd == -1) {
+      // A fluid grid (acoustic pressure, one degree of freedom): read with CD = 0 and listed; every
+      // solution refuses the deck (seflex has no fluid elements).
+      g.cd = 0;
+      st.note_unsupported(kFluidGrid, card.ref());
+    } else if (g.cd < 0) {
+      card.fail(5, "CD", card.got(5) + "; expected a coordinate system id >= 0, blank or -1 (a fluid grid)");
+    }
   }
   if (card.blank(6))
     blank |= 4;
   else
-    g.ps = card.components(6, "PS", false);
+    g.ps = card.raw(6) == "0" ? fem::ComponentMask{0} : card.components(6, "PS", false);  // 0: none (MSC's dbxdra2)
   if (card.integer_or(7, "SEID", 0) != 0) st.note_unsupported("GRID SEID (superelement id ignored)", card.ref());
   g.ref = card.ref();
   st.model.grids.push_back(g);
@@ -55,7 +61,12 @@ void parse_grdset(const Card& card, ReaderState& st) {
   d.cp = card.integer_or(1, "CP", 0);
   if (d.cp < 0) card.fail(1, "CP", card.got(1) + "; expected a coordinate system id >= 0 or blank");
   d.cd = card.integer_or(5, "CD", 0);
-  if (d.cd < 0) card.fail(5, "CD", card.got(5) + "; expected a coordinate system id >= 0 or blank");
+  if (d.cd == -1) {  // fluid grids by default: as on GRID
+    d.cd = 0;
+    st.note_unsupported(kFluidGrid, card.ref());
+  } else if (d.cd < 0) {
+    card.fail(5, "CD", card.got(5) + "; expected a coordinate system id >= 0, blank or -1 (fluid grids)");
+  }
   d.ps = card.components(6, "PS", true);
 }
 

@@ -73,7 +73,10 @@ void parse_mat1(const Card& card, ReaderState& st) {
   m.nu = card.real_or(3, "NU", 0.0);
   if (m.E < 0.0) card.fail(1, "E", card.got(1) + "; expected E >= 0");
   if (m.G < 0.0) card.fail(2, "G", card.got(2) + "; expected G >= 0");
-  if (has_nu && !(m.nu > -1.0 && m.nu <= 0.5)) card.fail(3, "NU", card.got(3) + "; expected -1 < NU <= 0.5");
+  if (has_nu && !(m.nu > -1.0)) card.fail(3, "NU", card.got(3) + "; expected -1 < NU <= 0.5");
+  // NU above 0.5 (the QRG's range is -1 < NU <= 0.5): decks with E, G and NU = E/2G - 1 of an
+  // "equivalent" plate material have it. Read, listed; every solution refuses the deck.
+  if (has_nu && m.nu > 0.5) st.note_unsupported(kMat1NuAboveHalf, card.ref());
   // Nastran's rules (QRG MAT1, remarks 2-4): E or G must be given; if E and NU, or G and NU, are
   // both blank they are both 0 (e.g. an E-only truss material); otherwise a single blank one follows
   // from E = 2 (1 + NU) G.
@@ -252,7 +255,8 @@ void parse_pshell(const Card& card, ReaderState& st) {
   p.t = card.real_or(2, "T", 0.0);
   if (p.t < 0.0) card.fail(2, "T", card.got(2) + "; expected a thickness >= 0 or blank");
   p.mid2 = card.integer_or(3, "MID2", 0);
-  if (p.mid2 < 0) card.fail(3, "MID2", card.got(3) + "; expected a material id or blank (MID2 = -1, plane strain, is not supported)");
+  const bool plane_strain = p.mid2 == -1;
+  if (p.mid2 < -1) card.fail(3, "MID2", card.got(3) + "; expected a material id, -1 (plane strain) or blank");
   p.bend_ratio = card.real_or(4, "12I/T**3", 1.0);
   if (p.bend_ratio < 0.0) card.fail(4, "12I/T**3", card.got(4) + "; expected a ratio >= 0 or blank");
   p.mid3 = card.id_or(5, "MID3", 0);
@@ -269,6 +273,12 @@ void parse_pshell(const Card& card, ReaderState& st) {
   if (p.mid1 == 0 && p.mid2 == 0 && p.mid3 == 0)
     card.fail(1, "MID1", "MID1, MID2 and MID3 are all blank; expected at least one material");
   p.ref = card.ref();
+  if (plane_strain) {
+    // MID2 = -1: a plane-strain membrane (MSC QRG PSHELL), which seflex does not model: the property
+    // is not kept, its elements are left out by fem::finalize and every solution refuses the deck.
+    st.note_unsupported_member(kPlaneStrainShell, p.id, p.ref);
+    return;
+  }
   st.model.shell_props.push_back(p);
 }
 

@@ -18,27 +18,25 @@ void parse_solid(const Card& card, ReaderState& st, fem::Solid::Shape shape, int
   s.id = card.id(0, "EID");
   s.pid = card.id(1, "PID");
   for (int k = 0; k < corners; ++k) s.g[static_cast<std::size_t>(k)] = card.id(2 + static_cast<std::size_t>(k), kGridNames[k]);
-  int mids = 0, first_blank = -1, first_given = -1;
+  int mids = 0;
   for (int k = corners; k < total; ++k) {
     const std::size_t i = 2 + static_cast<std::size_t>(k);
     if (card.blank(i) || (card.kind(i) == FieldKind::Integer && card.integer(i, kGridNames[k]) == 0)) {
-      if (first_blank < 0) first_blank = k;
       continue;
     }
     s.g[static_cast<std::size_t>(k)] = card.id(i, kGridNames[k]);
-    if (first_given < 0) first_given = k;
     ++mids;
-  }
-  if (mids != 0 && mids != total - corners) {
-    const int k = first_blank;
-    card.fail(2 + static_cast<std::size_t>(k), kGridNames[k],
-              "blank while " + std::string(kGridNames[first_given]) + " is given; expected all " +
-                  std::to_string(total - corners) +
-                  " mid-edge grids or none (elements with some mid-edge grids are not supported)");
   }
   if (card.used() > 2 + static_cast<std::size_t>(total))
     card.fail(2 + static_cast<std::size_t>(total), "G", card.got(2 + static_cast<std::size_t>(total)) +
                                                        "; expected at most " + std::to_string(total) + " grids");
+  s.ref = card.ref();
+  if (mids != 0 && mids != total - corners) {
+    // Some mid-edge grids (Nastran allows any subset): seflex's shapes have all or none. Left out and
+    // listed; every solution refuses the deck.
+    st.note_unsupported(std::string(s.card()) + " with some mid-edge grids (left out)", s.ref);
+    return;
+  }
   s.nnode = static_cast<std::uint8_t>(corners + mids);
   for (int a = 0; a < s.nnode; ++a)
     for (int b = a + 1; b < s.nnode; ++b)
@@ -46,7 +44,6 @@ void parse_solid(const Card& card, ReaderState& st, fem::Solid::Shape shape, int
         card.fail(2 + static_cast<std::size_t>(b), kGridNames[b],
                   "grid " + std::to_string(s.g[static_cast<std::size_t>(b)]) + " repeats " + kGridNames[a] +
                       "; expected distinct grids");
-  s.ref = card.ref();
   st.model.solids.push_back(s);
 }
 
@@ -73,7 +70,10 @@ void parse_psolid(const Card& card, ReaderState& st) {
   else if (in == "2" || in == "TWO") p.in = In::Two;
   else if (in == "3" || in == "THREE") p.in = In::Three;
   else card.fail(3, "IN", card.got(3) + "; expected 0/BUBBLE, 2/TWO, 3/THREE or blank");
-  p.stress = card.text_or(4, "STRESS", "");
+  // STRESS: 0 or GRID, 1 or GAUSS (integers as in IN and ISOP; gpst17, an MSC test deck, has 1)
+  p.stress = card.kind(4) == FieldKind::Integer ? std::to_string(card.integer(4, "STRESS")) : card.text_or(4, "STRESS", "");
+  if (card.kind(4) == FieldKind::Integer && p.stress != "0" && p.stress != "1")
+    card.fail(4, "STRESS", card.got(4) + "; expected 0/GRID, 1/GAUSS or blank");
   using Isop = fem::SolidProperty::Isop;
   const std::string isop = card.kind(5) == FieldKind::Integer ? std::to_string(card.integer(5, "ISOP")) : card.text_or(5, "ISOP", "");
   if (isop.empty()) p.isop = Isop::Default;
@@ -81,9 +81,15 @@ void parse_psolid(const Card& card, ReaderState& st) {
   else if (isop == "1" || isop == "FULL") p.isop = Isop::Full;
   else card.fail(5, "ISOP", card.got(5) + "; expected 0/REDUCED, 1/FULL or blank (other schemes are not modelled)");
   p.fctn = card.text_or(6, "FCTN", "");
-  if (!p.fctn.empty() && p.fctn != "SMECH")
-    card.fail(6, "FCTN", card.got(6) + "; expected SMECH or blank (fluid elements are not supported)");
   if (card.used() > 7) card.fail_card("fields after FCTN (field 8); expected none");
+  if (p.fctn == "PFLUID") {
+    // A fluid (acoustic) property: not kept; its elements are left out by fem::finalize and every
+    // solution refuses the deck.
+    st.note_unsupported_member(kFluidSolid, p.id, card.ref());
+    return;
+  }
+  if (!p.fctn.empty() && p.fctn != "SMECH")
+    card.fail(6, "FCTN", card.got(6) + "; expected SMECH, PFLUID (a fluid, listed as unsupported) or blank");
   if (!p.stress.empty()) st.note_unsupported("PSOLID STRESS (stress output system; seflex gives no stresses)", card.ref());
   if (p.cordm != 0) st.note_unsupported("PSOLID CORDM (material axes: no effect with an isotropic MAT1)", card.ref());
   p.ref = card.ref();

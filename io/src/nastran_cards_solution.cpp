@@ -114,6 +114,14 @@ void parse_param(const Card& card, ReaderState& st) {
     p.values.push_back(param_value(f));
   }
   p.ref = card.ref();
+  // A parameter the case control sets: its value takes precedence over the bulk data's (MSC Nastran
+  // QRG, "Parameter Applicability Tables"): the bulk data value is left out, and listed.
+  for (std::size_t i = 0; i < st.case_control_params && i < st.model.params.size(); ++i)
+    if (st.model.params[i].name == p.name) {
+      if (st.model.params[i].values != p.values)
+        st.note_unsupported("PARAM in the bulk data overridden by the case control", p.ref);
+      return;
+    }
   st.model.params.push_back(std::move(p));
 }
 

@@ -69,7 +69,8 @@ void CaseControlReader::command(const std::string& text, const std::string& file
   const std::string u = upper(text);
   const std::string key(first_word(u));
   if (is_command(key, "SUBCASE")) {
-    const std::string_view rest = trim(std::string_view(u).substr(u.find(key) + key.size()));
+    std::string_view rest = trim(std::string_view(u).substr(u.find(key) + key.size()));
+    if (!rest.empty() && rest[0] == '=') rest = trim(rest.substr(1));  // "SUBCASE = 1" (ZONA's decks; pyNastran reads it)
     int id = 0;
     const auto [p, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), id);
     if (ec != std::errc() || p != rest.data() + rest.size() || id <= 0)

@@ -3,6 +3,8 @@
 // parsers, and the defaults that need the whole deck (GRDSET, BAROR, BEAMOR).
 #include <algorithm>
 #include <array>
+#include <charconv>
+#include <limits>
 #include <memory>
 #include <unordered_map>
 
@@ -21,6 +23,11 @@ void ReaderState::note_unsupported(std::string_view name, const fem::CardRef& re
   auto [it, inserted] = unsupported_index.try_emplace(std::string(name), model.unsupported.size());
   if (inserted) model.unsupported.push_back({std::string(name), 0, ref, {}});
   ++model.unsupported[it->second].count;
+}
+
+void ReaderState::note_unsupported_member(std::string_view name, int id, const fem::CardRef& ref) {
+  note_unsupported(name, ref);
+  model.unsupported[unsupported_index.at(std::string(name))].members.push_back({id, ref});
 }
 
 void ReaderState::note_unsupported_card(const Card& card) {
@@ -96,6 +103,15 @@ bool is_begin_bulk(std::string_view text) {
   return equals_upper(trim(t.substr(5)), "BULK");
 }
 
+/// "BEGIN SUPER = n" or "BEGIN BULK SUPER = n" (any case): the bulk data of a part superelement.
+bool is_begin_super(std::string_view text) {
+  std::string_view t = trim(text);
+  if (!starts_with_word(t, "BEGIN")) return false;
+  t = trim(t.substr(5));
+  if (starts_with_word(t, "BULK")) t = trim(t.substr(4));
+  return starts_with_word(t, "SUPER");
+}
+
 /// Does the text have a BEGIN BULK or a CEND line? Decides whether it starts with executive control.
 bool has_control_sections(std::string_view text) {
   std::size_t pos = 0;
@@ -130,9 +146,11 @@ bool stray_mark(std::string_view f) {
   return true;
 }
 
-/// Continuation marker without its leading '+' or '*', upper case, for comparing.
+/// Continuation marker without its first character, upper case, for comparing: Nastran matches
+/// columns 2-8 of field 10 with columns 2-8 of the continuation's field 1 (the first column holds '+'
+/// or '*' on the continuation, any character in field 10: "CORD1" continues as "+ORD1").
 std::string marker_key(std::string_view m) {
-  if (!m.empty() && (m[0] == '+' || m[0] == '*')) m.remove_prefix(1);
+  if (!m.empty()) m.remove_prefix(1);
   return upper(trim(m));
 }
 
@@ -187,6 +205,10 @@ class DeckReader {
     Line line;
     while (!done_ && cursor.next(line)) {
       if (line.blank()) continue;
+      if (in_part_ && section_ == Section::Bulk) {
+        part_line(src, line);
+        continue;
+      }
       if (starts_with_word(line.text, "INCLUDE")) {
         include(src, cursor, line, stack);
         continue;
@@ -205,8 +227,10 @@ class DeckReader {
           }
           break;
         case Section::CaseControl:
-          if (is_begin_bulk(line.text))
+          if (is_begin_bulk(line.text)) {
             section_ = Section::Bulk;
+            state_.case_control_params = model_.params.size();
+          }
           else
             case_control_.case_line(line, src.name, src.index);
           break;
@@ -270,11 +294,34 @@ class DeckReader {
     stack.pop_back();
   }
 
+  /// A line of a part superelement's bulk data (BEGIN [BULK] SUPER = n up to the next BEGIN or
+  /// ENDDATA): skipped, INCLUDE lines too. Each part is listed as "BEGIN SUPER" (first at its BEGIN
+  /// line); check_card_usage refuses it in every solution, as seflex reads the residual structure only.
+  void part_line(const Source& src, const Line& line) {
+    const std::string_view t = trim(line.text);
+    if (is_begin_super(t)) {
+      in_part_ = true;
+      have_previous_ = have_pattern_ = false;
+      state_.note_unsupported(kPartSuperelement, {src.index, line.number});
+    } else if (starts_with_word(t, "ENDDATA")) {
+      done_ = true;
+    }
+  }
+
+  /// A free-field line with columns 1-8 blank and data before its first comma ("        PART=PELEM,
+  /// ELSET=101", "        206, 207, 208"): how the p-element and geometry cards ADAPT, PVAL and GMCURV
+  /// continue in MSC's decks. A continuation, whose fields are ambiguous (is the first one field 1 or
+  /// field 2?): read_lines refuses it on a card seflex parses.
+  static bool indented_free(const Line& line) {
+    return line.free && line.text.size() > 8 && trim(line.text.substr(0, 8)).empty() &&
+           !trim(line.text.substr(0, line.text.find(','))).empty();
+  }
+
   /// Field 1 of a line is blank, '+...' or '*...': it continues the card before it.
   static bool is_continuation(const Line& line) {
     const char c = line.text[0];
     if (c == '+' || c == '*') return true;
-    if (line.free) return trim(line.text.substr(0, line.text.find(','))).empty();
+    if (line.free) return trim(line.text.substr(0, line.text.find(','))).empty() || indented_free(line);
     return trim(line.text.substr(0, std::min<std::size_t>(8, line.text.size()))).empty();
   }
 
@@ -284,7 +331,7 @@ class DeckReader {
                   std::size_t& n) {
     if (line.free) {
       std::array<std::string_view, 12> short_line;
-      const std::size_t count = split_free(line.text, short_line.data(), short_line.size());
+      std::size_t count = split_free(line.text, short_line.data(), short_line.size());
       const std::string_view* f = short_line.data();
       if (count > short_line.size() && count <= kMaxFreeFields) {  // rare: split again into the long buffer
         long_line_.resize(count);
@@ -296,6 +343,10 @@ class DeckReader {
       const bool large = first ? (!field1.empty() && field1.back() == '*') : (!field1.empty() && field1[0] == '*');
       n = large ? 4 : 8;
       overflow_.clear();
+      // Blank fields after the last one ("..., 1.0, +C1," in conedg01e.bdf) add nothing: dropped
+      // so that a trailing comma after the continuation marker does not make a long line of it.
+      if (count <= kMaxFreeFields)
+        while (count > n + 2 && f[count - 1].empty()) --count;
       if (count > n + 2 && (large || count > kMaxFreeFields))
         throw InputError(location(src.name, line.number) + ": free-field line has " + std::to_string(count) +
                          " fields; expected at most " + std::to_string(large ? n + 2 : kMaxFreeFields) +
@@ -312,6 +363,7 @@ class DeckReader {
       const std::string_view f1 = trim(line.text.substr(0, std::min<std::size_t>(8, line.text.size())));
       const bool large = first ? (!f1.empty() && f1.back() == '*') : line.text[0] == '*';
       n = large ? 4 : 8;
+      overflow_.clear();  // a long free-field line before must not lend its fields to this card
       split_fixed(line.text, n, field1, fields_.data(), marker);
     }
   }
@@ -332,12 +384,12 @@ class DeckReader {
   }
 
   /// The data fields of the line split last (fields_, then any overflow_ 8 per card line).
-  void append_line(std::size_t n, std::uint32_t number) {
-    card_.append(fields_.data(), n, number);
+  void append_line(Card& card, std::size_t n, std::uint32_t number) {
+    card.append(fields_.data(), n, number);
     for (std::size_t k = 0; k < overflow_.size(); k += 8) {
       std::array<std::string_view, 8> chunk{};
       for (std::size_t j = 0; j < 8 && k + j < overflow_.size(); ++j) chunk[j] = overflow_[k + j];
-      card_.append(chunk.data(), 8, number);
+      card.append(chunk.data(), 8, number);
     }
   }
 
@@ -345,6 +397,11 @@ class DeckReader {
     if (starts_with_word(line.text, "DEQATN") || (line.text.size() > 6 && starts_with_word(line.text.substr(0, 6), "DEQATN") &&
                                                   (line.text[6] == '*' || line.text[6] == '\t'))) {
       skip_equation_card(src, cursor, line);
+      have_previous_ = have_pattern_ = false;
+      return;
+    }
+    if (is_begin_super(line.text)) {
+      part_line(src, line);
       return;
     }
     if (is_continuation(line))
@@ -355,7 +412,7 @@ class DeckReader {
     std::size_t n = 0;
     split_line(src, line, true, field1, marker, n);
     std::string_view name = field1;
-    if (!name.empty() && name.back() == '*') name.remove_suffix(1);
+    if (!name.empty() && name.back() == '*') name = trim(name.substr(0, name.size() - 1));  // "CORD2R *" too
     char buf[16];
     const std::size_t len = std::min(name.size(), sizeof buf);
     for (std::size_t i = 0; i < len; ++i) buf[i] = ascii_upper(name[i]);
@@ -367,18 +424,32 @@ class DeckReader {
     if (stray_mark(field1) && trim(line.text.substr(std::min(line.text.size(), field1.size() + line.text.find_first_not_of(' ')))).empty()) {
       // A line holding only a mark such as '&' (MYSTRAN's decks have some): listed, not a card.
       state_.note_unsupported(std::string("'") + std::string(field1) + "'", {src.index, line.number});
+      have_previous_ = have_pattern_ = false;
+      return;
+    }
+    if (!field1.empty() && field1[0] == '=') {
+      replicate(src, cursor, line, field1, marker, n);
       return;
     }
     if (!valid_card_name(uname) || name.size() > 8) {
       if (starts_with_word(trim(line.text), "BEGIN"))
         throw InputError(location(src.name, line.number) + ": " + quote_field(trim(line.text)) +
-                         " inside the bulk data; expected one BEGIN BULK (part superelements are not supported)");
+                         " inside the bulk data; expected one BEGIN BULK (BEGIN SUPER parts are read as unsupported; other sections are not)");
       throw InputError(location(src.name, line.number) + ": got " + quote_field(field1) +
                        " where a card name belongs; expected a name of up to 8 letters and digits in columns 1-8"
                        " (or before the first comma)");
     }
     card_.reset(uname, &src.name, src.index, line.number);
-    append_line(n, line.number);
+    read_lines(card_, src, cursor, line, marker, n);
+    dispatch();
+    have_previous_ = true;
+    have_pattern_ = false;
+  }
+
+  /// The first line of a card (already split) and its continuation lines, into `card`.
+  void read_lines(Card& card, const Source& src, LineCursor& cursor, const Line& line, std::string_view marker,
+                  std::size_t n) {
+    append_line(card, n, line.number);
     Line next;
     while (cursor.next(next)) {
       if (next.blank()) continue;
@@ -386,17 +457,128 @@ class DeckReader {
         cursor.push_back(next);
         break;
       }
+      if (indented_free(next) && find_card_type(card.name()) >= 0)
+        throw InputError(location(src.name, next.number) + ": free-field continuation of " + card.label() +
+                         " with data in columns 1-8 (" + quote_field(trim(next.text).substr(0, 16)) +
+                         "); expected a blank field 1: start the line with a comma");
       std::string_view cont1, cont_marker;
       split_line(src, next, false, cont1, cont_marker, n);
       const std::string a = marker_key(marker), b = marker_key(cont1);
       if (!a.empty() && !b.empty() && a != b)
         throw InputError(location(src.name, next.number) + ": continuation " + quote_field(cont1) + " does not match " +
-                         quote_field(marker) + " in field 10 of the line before (" + card_.label() +
+                         quote_field(marker) + " in field 10 of the line before (" + card.label() +
                          "); expected matching continuation markers, or blank ones");
-      append_line(n, next.number);
+      append_line(card, n, next.number);
       marker = cont_marker;
     }
+  }
+
+  /// Bulk Data replication (MSC Nastran QRG, "Format of Bulk Data Entries", replication; pyNastran
+  /// reads it the same way): a line with '=' in field 1 makes a card of the card before it, field by
+  /// field: '=' copies the field, '==' copies it and every field after it, '*x' or '*(x)' adds x to it
+  /// (an integer to an integer field, a real or an integer to a real field, either to a blank
+  /// field as to 0), a blank field stays blank and any other text replaces it; fields after the last one of the '=' line are left out.
+  /// A line '=n' or '=(n)' repeats the last replication n times, each from the card made before.
+  void replicate(const Source& src, LineCursor& cursor, const Line& line, std::string_view field1,
+                 std::string_view marker, std::size_t n) {
+    const std::string where = location(src.name, line.number);
+    if (!have_previous_)
+      throw InputError(where + ": replication " + quote_field(field1) +
+                       " without a card before it; expected '=' lines directly after the card they copy");
+    if (field1 == "=") {
+      pattern_.reset("=", &src.name, src.index, line.number);
+      read_lines(pattern_, src, cursor, line, marker, n);
+      replicate_once(src, line.number, where);
+      have_pattern_ = true;
+      return;
+    }
+    std::string_view count_text = field1.substr(1);
+    if (count_text.size() >= 2 && count_text.front() == '(' && count_text.back() == ')')
+      count_text = count_text.substr(1, count_text.size() - 2);
+    int count = 0;
+    if (!parse_int(count_text, count) || count < 1 || count > kMaxThru)
+      throw InputError(where + ": replication " + quote_field(field1) + ": expected '=' or a repeat count '=n' or '=(n)' with 1 <= n <= " +
+                       std::to_string(kMaxThru) + " in field 1");
+    for (std::size_t k = 0; k < n; ++k)
+      if (!fields_[k].empty())
+        throw InputError(where + ": replication " + quote_field(field1) + ": field " + std::to_string(k + 2) + " is " +
+                         quote_field(fields_[k]) + "; expected nothing after a repeat count");
+    if (!have_pattern_)
+      throw InputError(where + ": replication " + quote_field(field1) +
+                       " does not follow a '=' replication line; expected the increments to repeat on the line before");
+    // The repeat line itself may not have continuations; a continuation after it is an error below.
+    for (int k = 0; k < count; ++k) replicate_once(src, line.number, where);
+  }
+
+  /// One card from card_ (the card before) and pattern_ (the '=' line), parsed.
+  void replicate_once(const Source& src, std::uint32_t line_number, const std::string& where) {
+    std::vector<std::string>& out = generated_[generated_which_ ^= 1];
+    out.clear();
+    for (std::size_t i = 0; i < pattern_.size(); ++i) {
+      const std::string_view f = pattern_.raw(i);
+      const std::string field = "field " + std::to_string(i % 8 + 2) + (i >= 8 ? " of continuation " + std::to_string(i / 8) : std::string());
+      if (f.empty()) {
+        out.emplace_back();
+      } else if (f == "=") {
+        out.emplace_back(card_.raw(i));
+      } else if (f == "==") {
+        for (std::size_t j = i; j < card_.size(); ++j) out.emplace_back(card_.raw(j));
+        break;
+      } else if (f[0] == '*') {
+        out.push_back(increment(f, card_.raw(i), where + ": replication of " + card_.label() + ", " + field));
+      } else if (f.find('=') != std::string_view::npos) {
+        throw InputError(where + ": replication of " + card_.label() + ", " + field + ": got " + quote_field(f) +
+                         "; expected '=' or '==' alone in a field");
+      } else {
+        out.emplace_back(f);
+      }
+    }
+    while (!out.empty() && out.back().empty()) out.pop_back();
+    if (out.empty()) throw InputError(where + ": replication of " + card_.label() + " gives a card with no fields; expected data");
+    std::vector<std::string_view> views(out.begin(), out.end());
+    const std::string name(card_.name());
+    card_.reset(name, &src.name, src.index, line_number);
+    card_.append(views.data(), views.size(), line_number);
     dispatch();
+  }
+
+  /// "*x" or "*(x)" added to the field `old` of the card before, as field text.
+  static std::string increment(std::string_view f, std::string_view old, const std::string& what) {
+    std::string_view x = f.substr(1);
+    if (x.size() >= 2 && x.front() == '(' && x.back() == ')') x = x.substr(1, x.size() - 2);
+    const FieldKind kx = classify(x);
+    // A blank field is incremented from 0 (MSC's test deck dbxdra7 gives its grids' CD so).
+    if (old.empty()) old = kx == FieldKind::Real ? std::string_view("0.") : std::string_view("0");
+    const FieldKind ko = classify(old);
+    if (kx != FieldKind::Integer && kx != FieldKind::Real)
+      throw InputError(what + ": got " + quote_field(f) + "; expected an increment *x or *(x) with x a number");
+    if (ko == FieldKind::Integer && kx == FieldKind::Integer) {
+      int a = 0, b = 0;
+      parse_int(old, a);
+      parse_int(x, b);
+      const long long sum = static_cast<long long>(a) + b;
+      if (sum > std::numeric_limits<int>::max() || sum < std::numeric_limits<int>::min())
+        throw InputError(what + ": " + quote_field(old) + " + " + quote_field(x) + " overflows; expected an integer");
+      return std::to_string(sum);
+    }
+    if (ko != FieldKind::Real)
+      throw InputError(what + ": " + quote_field(f) + " increments " + quote_field(old) + "; expected an integer increment of an integer field or an increment of a real field");
+    double a = 0.0, b = 0.0;
+    parse_real(old, a);
+    if (kx == FieldKind::Integer) {
+      int bi = 0;
+      parse_int(x, bi);
+      b = bi;
+    } else {
+      parse_real(x, b);
+    }
+    char buf[40];
+    const auto r = std::to_chars(buf, buf + sizeof buf, a + b);
+    std::string s(buf, r.ptr);
+    const std::size_t e = s.find('e');
+    if (e != std::string::npos) s[e] = 'E';
+    if (s.find('.') == std::string::npos) s.insert(e == std::string::npos ? s.size() : e, ".");
+    return s;
   }
 
   void dispatch() {
@@ -448,8 +630,14 @@ class DeckReader {
   std::vector<std::unique_ptr<Source>> sources_;
   Section section_ = Section::Bulk;
   bool done_ = false;
+  bool in_part_ = false;  ///< inside BEGIN SUPER: lines skipped
   bool executive_statements_ = false;
   Card card_;
+  Card pattern_;                                ///< the last '=' replication line (and its continuations)
+  std::array<std::vector<std::string>, 2> generated_;  ///< fields of the last two replicated cards
+  unsigned generated_which_ = 0;
+  bool have_previous_ = false;                  ///< card_ holds a card a replication line can copy
+  bool have_pattern_ = false;                   ///< card_ was made by pattern_ ('=n' may repeat it)
   std::array<std::string_view, 8> fields_{};
   static constexpr std::size_t kMaxFreeFields = 1 + 8 * 32;  ///< field 1 and 32 card lines of data
   std::vector<std::string_view> overflow_;                  ///< data beyond one card line of a long free-field line

@@ -511,10 +511,20 @@ class Classifier {
   }
 
   // ------------------------------------------------------------------------------------------
+  /// The table's row, or for an element or property fem::finalize left out ("CHEXA on PCOMPS (left
+  /// out)") a structural card seflex does not model.
+  static const CardRole* role_of(const std::string& name) {
+    static const CardRole kLeftOut{"", Role::Structure, false, nullptr};
+    static const std::string kSuffix = " (left out)";
+    if (name.size() > kSuffix.size() && name.compare(name.size() - kSuffix.size(), kSuffix.size(), kSuffix) == 0)
+      return &kLeftOut;
+    return detail::find_card_role(name);
+  }
+
   void unsupported() {
     for (const auto& u : m_.unsupported) {
-      if (u.name.find(' ') != std::string::npos) continue;  // a feature note (notes())
-      const CardRole* r = detail::find_card_role(u.name);
+      const CardRole* r = role_of(u.name);
+      if (r == nullptr && u.name.find(' ') != std::string::npos) continue;  // a feature note (notes())
       if (s_ == Solution::Convert) {
         report_.add(Kind::Unused, u.name, u.first, "not written: seflex does not model it", u.count);
         continue;
@@ -613,7 +623,7 @@ class Classifier {
   void notes() {
     const Kind k = runs(s_) ? Kind::Approximated : Kind::Unused;
     for (const auto& u : m_.unsupported)
-      if (u.name.find(' ') != std::string::npos)
+      if (u.name.find(' ') != std::string::npos && role_of(u.name) == nullptr)
         report_.add(k, u.name, u.first, "read with the approximation stated", u.count);
     for (const auto& r : m_.rbe3)
       if (r.has_alpha && r.alpha != 0.0)

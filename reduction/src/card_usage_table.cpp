@@ -79,6 +79,11 @@ const CardRole kRows[] = {
     {"CDAMP5", R::Damping, N, nullptr}, {"CVISC", R::Damping, N, nullptr}, {"PLOTEL", R::Output, N, nullptr},
     // rigid and interpolation elements
     {"RBE2", R::Structure, Y, nullptr}, {"RBAR", R::Structure, Y, nullptr}, {"RBE3", R::Structure, Y, nullptr},
+    // features of supported cards the reader keeps for `seflex info` but no solution may use (the
+    // names the reader gives them: io/include/seflex/io/nastran_cards.hpp, io/src/nastran_deck.cpp)
+    {"MAT1 NU above 0.5", R::Structure, N, nullptr}, {"CQUAD4/CTRIA3 TFLAG a fraction", R::Structure, N, nullptr},
+    {"GRID CD = -1 (fluid)", R::Structure, N, nullptr}, {"PSOLID FCTN = PFLUID", R::Structure, N, nullptr},
+    {"PSHELL MID2 = -1 (plane strain)", R::Structure, N, nullptr},
     {"RBE1", R::Structure, N, nullptr}, {"RBAR1", R::Structure, N, nullptr}, {"RROD", R::Structure, N, nullptr},
     {"RTRPLT", R::Structure, N, nullptr}, {"RTRPLT1", R::Structure, N, nullptr}, {"RSPLINE", R::Structure, N, nullptr},
     {"RJOINT", R::Structure, N, nullptr}, {"RBE2A", R::Structure, N, nullptr},
@@ -179,7 +184,7 @@ const CardRole kRows[] = {
     {"QHBDY", R::Heat, N, nullptr}, {"QVOL", R::Heat, N, nullptr}, {"QVECT", R::Heat, N, nullptr},
     {"TEMPBC", R::Heat, N, nullptr},
     // superelements, contact, other solvers
-    {"SESET", R::Superelement, N, nullptr}, {"SEBSET", R::Superelement, N, nullptr}, {"SEBSET1", R::Superelement, N, nullptr},
+    {"BEGIN SUPER", R::Superelement, N, nullptr}, {"SESET", R::Superelement, N, nullptr}, {"SEBSET", R::Superelement, N, nullptr}, {"SEBSET1", R::Superelement, N, nullptr},
     {"SECONCT", R::Superelement, N, nullptr}, {"SEELT", R::Superelement, N, nullptr}, {"SELOC", R::Superelement, N, nullptr},
     {"SEMPLN", R::Superelement, N, nullptr}, {"SELABEL", R::Superelement, N, nullptr}, {"BCTSET", R::Contact, N, nullptr},
     {"BCTPARA", R::Contact, N, nullptr}, {"BSURF", R::Contact, N, nullptr}, {"BSURFS", R::Contact, N, nullptr},

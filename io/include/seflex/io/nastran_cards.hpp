@@ -22,6 +22,8 @@ struct ReaderState {
   /// DMIG name -> index in model.dmigs; whether its header card has been read.
   std::unordered_map<std::string, std::size_t> dmig_index;
   std::vector<bool> dmig_has_header;
+  /// model.params[0, case_control_params) came from the case control (set at BEGIN BULK).
+  std::size_t case_control_params = 0;
   /// Name -> index in model.unsupported.
   std::unordered_map<std::string, std::size_t> unsupported_index;
 
@@ -30,9 +32,21 @@ struct ReaderState {
   /// A whole card seflex does not read: as note_unsupported, and its field 2 (a set id) kept when
   /// it is an integer (fem::UnsupportedCard::members).
   void note_unsupported_card(const Card& card);
+  /// As note_unsupported, with `id` kept as a member (an element on a property of that id is left
+  /// out by fem::finalize, as on an unsupported property card).
+  void note_unsupported_member(std::string_view name, int id, const fem::CardRef& ref);
 };
 
 using CardParser = void (*)(const Card&, ReaderState&);
+
+// Features of supported cards that seflex reads for `seflex info` but no solution may use (listed
+// as unsupported; reduction/src/card_usage_table.cpp gives them the role Structure: refused).
+inline constexpr const char* kMat1NuAboveHalf = "MAT1 NU above 0.5";
+inline constexpr const char* kShellTflagFraction = "CQUAD4/CTRIA3 TFLAG a fraction";
+inline constexpr const char* kFluidGrid = "GRID CD = -1 (fluid)";
+inline constexpr const char* kFluidSolid = "PSOLID FCTN = PFLUID";
+inline constexpr const char* kPlaneStrainShell = "PSHELL MID2 = -1 (plane strain)";
+inline constexpr const char* kPartSuperelement = "BEGIN SUPER";
 
 /// The parser of a bulk-data card name (upper case), or nullptr if seflex does not support it.
 CardParser find_card_parser(std::string_view name);

@@ -1,0 +1,170 @@
+// Elements on properties or materials seflex does not model: left out and listed (finalize_unsupported.hpp).
+#include "finalize_unsupported.hpp"
+
+#include <algorithm>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace seflex::fem::detail {
+namespace {
+
+const char* bar_prop_card(const BarProperty& p) {
+  switch (p.source) {
+    case BarProperty::Source::PBAR: return "PBAR";
+    case BarProperty::Source::PBARL: return "PBARL";
+    case BarProperty::Source::PBEAM: return "PBEAM";
+    case BarProperty::Source::PBEAML: return "PBEAML";
+  }
+  return "PBAR";
+}
+
+class LeaveOut {
+ public:
+  explicit LeaveOut(Model& m) : m_(m) {}
+
+  void run() {
+    for (const auto& u : m_.unsupported) {
+      if (u.name.rfind("MAT", 0) == 0)
+        for (const auto& mb : u.members) unsupported_mat_.emplace(mb.sid, u.name);
+      else if (!u.name.empty() && u.name[0] == 'P')
+        for (const auto& mb : u.members) unsupported_prop_.emplace(mb.sid, u.name);
+    }
+    if (unsupported_mat_.empty() && unsupported_prop_.empty() && m_.mat2.empty() && m_.mat8.empty()) return;
+    for (const auto& x : m_.mat1) mat1_.insert(x.id);
+    for (const auto& x : m_.mat2) other_mat_.emplace(x.id, "MAT2");
+    for (const auto& x : m_.mat8) other_mat_.emplace(x.id, "MAT8");
+    properties();
+    elements();
+  }
+
+ private:
+  /// Why a property with material `mid` that needs a MAT1 (isotropic) is left out, or "" if it stays.
+  std::string isotropic_problem(int mid) const {
+    if (mid == 0 || mat1_.count(mid)) return "";
+    if (const auto it = other_mat_.find(mid); it != other_mat_.end()) return it->second;
+    if (const auto it = unsupported_mat_.find(mid); it != unsupported_mat_.end()) return it->second;
+    return "";  // not defined at all: finalize's error
+  }
+  /// Same for a shell material (MAT1, MAT2 or MAT8 accepted).
+  std::string shell_problem(int mid) const {
+    if (mid == 0 || mat1_.count(mid) || other_mat_.count(mid)) return "";
+    if (const auto it = unsupported_mat_.find(mid); it != unsupported_mat_.end()) return it->second;
+    return "";
+  }
+
+  template <class Vec, class Why>
+  void drop_properties(Vec& props, const char* kind, Why why) {
+    auto& dropped = dropped_[kind];
+    props.erase(std::remove_if(props.begin(), props.end(),
+                               [&](const auto& p) {
+                                 const std::string reason = why(p);
+                                 if (reason.empty()) return false;
+                                 note(reason + " (left out)", p.ref);
+                                 dropped.emplace(p.id, reason);
+                                 return true;
+                               }),
+                props.end());
+  }
+
+  void properties() {
+    drop_properties(m_.bar_props, "bar", [&](const BarProperty& p) {
+      const std::string mat = isotropic_problem(p.mid);
+      return mat.empty() ? mat : std::string(bar_prop_card(p)) + " on " + mat;
+    });
+    drop_properties(m_.rod_props, "rod", [&](const RodProperty& p) {
+      const std::string mat = isotropic_problem(p.mid);
+      return mat.empty() ? mat : "PROD on " + mat;
+    });
+    drop_properties(m_.solid_props, "solid", [&](const SolidProperty& p) {
+      const std::string mat = isotropic_problem(p.mid);
+      return mat.empty() ? mat : "PSOLID on " + mat;
+    });
+    drop_properties(m_.shell_props, "shell", [&](const ShellProperty& p) {
+      for (const int mid : {p.mid1, p.mid2, p.mid3, p.mid4})
+        if (const std::string mat = shell_problem(mid); !mat.empty()) return "PSHELL on " + mat;
+      return std::string();
+    });
+    drop_properties(m_.composite_props, "shell", [&](const CompositeProperty& p) {
+      for (const auto& ply : p.plies)
+        if (const std::string mat = shell_problem(ply.mid); !mat.empty())
+          return std::string(p.global ? "PCOMPG" : "PCOMP") + " on " + mat;
+      return std::string();
+    });
+  }
+
+  /// Why an element on property `pid` of kind `kind` is left out, or "" if it stays. `kept` tells
+  /// whether a supported property of that id remains.
+  std::string element_problem(int pid, const char* kind, const std::unordered_set<int>& kept) const {
+    if (kept.count(pid)) return "";
+    const auto& dropped = dropped_.at(kind);
+    if (const auto it = dropped.find(pid); it != dropped.end()) return it->second;
+    if (const auto it = unsupported_prop_.find(pid); it != unsupported_prop_.end()) return it->second;
+    return "";  // not defined: finalize's error
+  }
+
+  template <class Vec, class Kept, class Card>
+  void drop_elements(Vec& elements, const char* kind, Kept kept_of, Card card_of) {
+    const auto& dropped = dropped_[kind];
+    if (dropped.empty() && unsupported_prop_.empty()) return;
+    const std::unordered_set<int> kept = kept_of();
+    elements.erase(std::remove_if(elements.begin(), elements.end(),
+                                  [&](const auto& e) {
+                                    if (e.pid == 0) return false;
+                                    const std::string reason = element_problem(e.pid, kind, kept);
+                                    if (reason.empty()) return false;
+                                    note(std::string(card_of(e)) + " on " + reason + " (left out)", e.ref);
+                                    return true;
+                                  }),
+                   elements.end());
+  }
+
+  template <class Vec>
+  static std::unordered_set<int> ids(const Vec& v) {
+    std::unordered_set<int> s;
+    for (const auto& x : v) s.insert(x.id);
+    return s;
+  }
+
+  void elements() {
+    drop_elements(m_.bars, "bar", [&] { return ids(m_.bar_props); },
+                  [](const Bar& b) { return b.is_beam ? "CBEAM" : "CBAR"; });
+    drop_elements(m_.rods, "rod", [&] { return ids(m_.rod_props); }, [](const Rod&) { return "CROD"; });
+    drop_elements(m_.solids, "solid", [&] { return ids(m_.solid_props); }, [](const Solid& s) { return s.card(); });
+    drop_elements(m_.shells, "shell",
+                  [&] {
+                    std::unordered_set<int> s = ids(m_.shell_props);
+                    for (const auto& p : m_.composite_props) s.insert(p.id);
+                    return s;
+                  },
+                  [](const Shell& s) { return s.nnode == 4 ? "CQUAD4" : "CTRIA3"; });
+    // CONROD: its own material
+    m_.rods.erase(std::remove_if(m_.rods.begin(), m_.rods.end(),
+                                 [&](const Rod& r) {
+                                   if (!r.inline_property) return false;
+                                   const std::string mat = isotropic_problem(r.mid);
+                                   if (mat.empty()) return false;
+                                   note("CONROD on " + mat + " (left out)", r.ref);
+                                   return true;
+                                 }),
+                  m_.rods.end());
+  }
+
+  void note(const std::string& name, const CardRef& ref) {
+    const auto [it, inserted] = notes_.try_emplace(name, m_.unsupported.size());
+    if (inserted) m_.unsupported.push_back({name, 0, ref, {}});
+    ++m_.unsupported[it->second].count;
+  }
+
+  Model& m_;
+  std::unordered_map<int, std::string> unsupported_mat_, unsupported_prop_, other_mat_;
+  std::unordered_set<int> mat1_;
+  std::unordered_map<std::string, std::unordered_map<int, std::string>> dropped_;  ///< kind -> pid -> reason
+  std::unordered_map<std::string, std::size_t> notes_;
+};
+
+}  // namespace
+
+void leave_out_unsupported(Model& model) { LeaveOut(model).run(); }
+
+}  // namespace seflex::fem::detail
