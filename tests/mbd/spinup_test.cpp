@@ -26,7 +26,7 @@ struct SpinupHistory {
 
 // L = 10 m, EI = 1.4e4 N m^2, EA = 2.8e7 N, rho A = 1.2 kg/m, cut into `bodies` AIC superelements
 // of 2 FE elements each, on a driven hub hinge.
-SpinupHistory spinup(int bodies, InertiaModel inertia, bool velocity_tangent = true) {
+SpinupHistory spinup(int bodies, InertiaModel inertia, bool velocity_tangent = true, double tol = 1e-5) {
   const double L = 10.0;
   const test::BeamSection sec = test::spinup_section(1e-3);
   auto fe = test::straight_beam(L / bodies, 2, sec);
@@ -53,7 +53,7 @@ SpinupHistory spinup(int bodies, InertiaModel inertia, bool velocity_tangent = t
   is.t_end = 30;
   is.h_initial = 1e-3;
   is.rho_inf = 0.8;
-  is.tol_position = is.tol_angle = 1e-5;
+  is.tol_position = is.tol_angle = tol;
   is.output_interval = 0.25;
   is.inertia_velocity_tangent = velocity_tangent;
   test::Recorder rec;
@@ -110,22 +110,31 @@ TEST(Spinup, SimoVuQocBeam) {
   }
 }
 
-// The gyroscopic/Coriolis tangent of the full inertia changes only how fast Newton converges, not
-// what it converges to: with and without it in the iteration matrix the spin-up gives the same tip
-// motion, to the Newton tolerance (1e-3 of the local error 1e-5 per step, accumulated over the run).
-TEST(Spinup, SameMotionWithAndWithoutTheVelocityTangent) {
-  const SpinupHistory without = spinup(4, InertiaModel::Full, false);
+// The gyroscopic/Coriolis tangent of the full inertia changes how fast Newton converges, not the
+// accuracy: with and without it in the iteration matrix the spin-up's tip lag is as close to a run
+// at 100x tighter local error. (The two runs differ from each other by as much as each differs from
+// the reference: the adaptive steps follow different Newton iterates, so the difference is the
+// integration error, not the Newton tolerance.)
+TEST(Spinup, AsAccurateWithoutTheVelocityTangent) {
+  const SpinupHistory ref = spinup(4, InertiaModel::Full, true, 1e-7);
   const SpinupHistory with = spinup(4, InertiaModel::Full, true);
-  ASSERT_EQ(without.t.size(), with.t.size());
-  double worst = 0, peak = 0;
-  for (std::size_t k = 0; k < with.t.size(); ++k) {
-    ASSERT_EQ(without.t[k], with.t[k]);
-    worst = std::max(worst, std::abs(without.v[k] - with.v[k]));
-    peak = std::max(peak, std::abs(with.v[k]));
-  }
-  std::printf("spin-up tip lag with and without the velocity tangent: largest difference %.2e m (peak %.3f m)\n", worst,
-              peak);
-  EXPECT_LT(worst, 1e-4 * peak);
+  const SpinupHistory without = spinup(4, InertiaModel::Full, false);
+  auto error = [&](const SpinupHistory& h) {
+    EXPECT_EQ(h.t.size(), ref.t.size());
+    double e = 0;
+    for (std::size_t k = 0; k < std::min(h.t.size(), ref.t.size()); ++k) {
+      EXPECT_EQ(h.t[k], ref.t[k]);
+      e = std::max(e, std::abs(h.v[k] - ref.v[k]));
+    }
+    return e;
+  };
+  double peak = 0;
+  for (double v : ref.v) peak = std::max(peak, std::abs(v));
+  const double e_with = error(with), e_without = error(without);
+  std::printf("spin-up tip lag against local error 1e-7: with the velocity tangent %.2e m, without %.2e m (peak %.3f m)\n",
+              e_with, e_without, peak);
+  EXPECT_LT(e_with, 0.02 * peak);
+  EXPECT_LT(e_without, 2.0 * e_with);
 }
 
 // What goes wrong with the simplified mass: an L-shaped arm (one superelement, 1 m out along x,
