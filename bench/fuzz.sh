@@ -37,7 +37,7 @@ if [ "${SEFLEX_FUZZ_NO_BUILD:-0}" != 1 ]; then
     cmake -S . -B "$build" "${args[@]}" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
       -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSEFLEX_FUZZ=ON -DSEFLEX_BUILD_BENCH=OFF -DSEFLEX_BUILD_EXAMPLES=OFF -DSEFLEX_MPI=OFF
   fi
-  export CCACHE_BASEDIR="$root"
+  export CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1  # as scripts/bootstrap.sh: hits across checkouts
   grep -q '^SEFLEX_FUZZ:BOOL=ON' "$build/CMakeCache.txt" ||
     { echo "fuzz.sh: $build is not configured with -DSEFLEX_FUZZ=ON" >&2; exit 2; }
   cmake --build "$build" -j "$jobs" --target fuzz_all seflex

@@ -20,10 +20,13 @@ scripts/install-deps.sh
 cmake_args=()
 command -v ninja >/dev/null 2>&1 && cmake_args=(-G Ninja)
 # A compiler cache (ccache, installed by install-deps.sh) makes a rebuild of unchanged sources in
-# any checkout of the project a cache hit; paths are taken relative to the checkout.
+# any checkout of the project a cache hit; paths are taken relative to the checkout. CCACHE_NOHASHDIR:
+# the sanitizer folder compiles with debug line tables, and ccache then hashes the build folder's
+# absolute path by default, which would miss in every fresh clone (CI's); without it, a hit's line
+# tables name the folder of the checkout that compiled it first (file names stay relative).
 if command -v ccache >/dev/null 2>&1; then
   cmake_args+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
-  export CCACHE_BASEDIR="$PWD"
+  export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=1
 fi
 
 configure() {  # build-dir, extra cmake args
