@@ -113,7 +113,7 @@ for h in "${harnesses[@]}"; do
   cov=$(echo "$last" | sed -n 's/.* cov: \([0-9]*\).*/\1/p')
   ft=$(echo "$last" | sed -n 's/.* ft: \([0-9]*\).*/\1/p')
   files=$(find "$dir/$h/corpus" -type f | wc -l)
-  bytes=$(du -sk "$dir/$h/corpus" | cut -f1)
+  bytes=$(du -sk --apparent-size "$dir/$h/corpus" | cut -f1)
   rows+=("$(printf '%-13s %6s %10s %8s %7s %7s %7s %8s %9s' "$h" "$elapsed" "${execs:-?}" "${rate:-?}" \
     "${cov:-?}" "${ft:-?}" "$files" "${bytes}K" "$((after - before))")")
   if [ "$rc" -ne 0 ] || [ "$after" -gt "$before" ]; then
