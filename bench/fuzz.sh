@@ -5,7 +5,8 @@
 #   bench/fuzz.sh [SECONDS] [HARNESS...]       (default 60 s; harnesses: nastran dmig gmsh scene superelement)
 # Environment:
 #   SEFLEX_FUZZ_DIR    corpora, seeds, findings and logs (default ~/.cache/seflex-fuzz; outside the tree)
-#   SEFLEX_FUZZ_BUILD  build folder (default build-fuzz: clang, -DSEFLEX_FUZZ=ON, RelWithDebInfo)
+#   SEFLEX_FUZZ_BUILD  build folder (default build-fuzz: clang, -DSEFLEX_FUZZ=ON, RelWithDebInfo; the folder
+#                      of the sanitizer stage of scripts/bootstrap.sh test, which runs this script 20 s)
 #   SEFLEX_JOBS        build parallelism (default 1)
 #   SEFLEX_FUZZ_NICE   nice level of the fuzzers (default 15)
 #   SEFLEX_FUZZ_NO_BUILD=1  use the binaries already built
@@ -30,11 +31,13 @@ case "$build" in /*) ;; *) build="$root/$build" ;; esac
 
 if [ "${SEFLEX_FUZZ_NO_BUILD:-0}" != 1 ]; then
   if [ ! -f "$build/CMakeCache.txt" ]; then
-    generator=()
-    command -v ninja >/dev/null 2>&1 && generator=(-G Ninja)
-    CC=clang CXX=clang++ cmake -S . -B "$build" "${generator[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSEFLEX_FUZZ=ON \
-      -DSEFLEX_BUILD_BENCH=OFF -DSEFLEX_BUILD_EXAMPLES=OFF
+    args=()  # the same configuration as the sanitizer stage of scripts/bootstrap.sh test
+    command -v ninja >/dev/null 2>&1 && args=(-G Ninja)
+    command -v ccache >/dev/null 2>&1 && args+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+    cmake -S . -B "$build" "${args[@]}" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+      -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSEFLEX_FUZZ=ON -DSEFLEX_BUILD_BENCH=OFF -DSEFLEX_BUILD_EXAMPLES=OFF -DSEFLEX_MPI=OFF
   fi
+  export CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1  # as scripts/bootstrap.sh: hits across checkouts
   grep -q '^SEFLEX_FUZZ:BOOL=ON' "$build/CMakeCache.txt" ||
     { echo "fuzz.sh: $build is not configured with -DSEFLEX_FUZZ=ON" >&2; exit 2; }
   cmake --build "$build" -j "$jobs" --target fuzz_all seflex
@@ -73,7 +76,7 @@ make_seeds() {  # harness
     superelement)  # first byte odd: the file as is; even: body, the harness appends the SHA-256 trailer
       local t; t="$(mktemp -d)"
       "$build/apps/seflex" reduce examples/scenes/link.bdf --interface 1,5 --frame 3 --modes 3 -o "$t/link.se" >/dev/null
-      "$build/apps/seflex" reduce examples/scenes/link.bdf --interface 1,5 --modes 1 --no-mesh -o "$t/nomesh.se" >/dev/null
+      "$build/apps/seflex" reduce examples/scenes/link.bdf --interface 1,5 --modes 0 --no-mesh -o "$t/nomesh.se" >/dev/null
       for f in "$t"/*.se; do
         { printf '\001'; cat "$f"; } >"$s/file_$(basename "$f")"
         { printf '\000'; head -c $(($(stat -c %s "$f") - 40)) "$f"; } >"$s/body_$(basename "$f")"
@@ -110,13 +113,14 @@ for h in "${harnesses[@]}"; do
   cov=$(echo "$last" | sed -n 's/.* cov: \([0-9]*\).*/\1/p')
   ft=$(echo "$last" | sed -n 's/.* ft: \([0-9]*\).*/\1/p')
   files=$(find "$dir/$h/corpus" -type f | wc -l)
-  bytes=$(du -sk "$dir/$h/corpus" | cut -f1)
+  bytes=$(du -sk --apparent-size "$dir/$h/corpus" | cut -f1)
   rows+=("$(printf '%-13s %6s %10s %8s %7s %7s %7s %8s %9s' "$h" "$elapsed" "${execs:-?}" "${rate:-?}" \
     "${cov:-?}" "${ft:-?}" "$files" "${bytes}K" "$((after - before))")")
   if [ "$rc" -ne 0 ] || [ "$after" -gt "$before" ]; then
     status=1
     echo "   FINDING (exit $rc): $(grep -m1 -E 'ERROR: |==ERROR|runtime error|not an InputError|deadly signal' "$log" || true)"
     echo "   log: $log; inputs: $dir/$h/findings/"
+    echo "   ---- end of the log:"; tail -n 40 "$log" | sed 's/^/   | /'
   fi
 done
 

@@ -2,8 +2,9 @@
 # The two set-up commands of the README:
 #   scripts/bootstrap.sh demo   install what is missing, build, run the main job
 #   scripts/bootstrap.sh test   install what is missing, build, run the whole test suite (CTest),
-#                               then the bad-input tests again under ASan + UBSan
-# Build folders: build/ (Release) and build-asan/ (sanitizers); bench/fuzz.sh uses build-fuzz/ (clang).
+#                               then the bad-input tests again under ASan + UBSan and every fuzz
+#                               harness for 20 s (clang)
+# Build folders: build/ (Release) and build-fuzz/ (clang, sanitizers + fuzzers; bench/fuzz.sh uses it too).
 # Parallelism: $SEFLEX_JOBS or nproc.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -19,10 +20,13 @@ scripts/install-deps.sh
 cmake_args=()
 command -v ninja >/dev/null 2>&1 && cmake_args=(-G Ninja)
 # A compiler cache (ccache, installed by install-deps.sh) makes a rebuild of unchanged sources in
-# any checkout of the project a cache hit; paths are taken relative to the checkout.
+# any checkout of the project a cache hit; paths are taken relative to the checkout. CCACHE_NOHASHDIR:
+# the sanitizer folder compiles with debug line tables, and ccache then hashes the build folder's
+# absolute path by default, which would miss in every fresh clone (CI's); without it, a hit's line
+# tables name the folder of the checkout that compiled it first (file names stay relative).
 if command -v ccache >/dev/null 2>&1; then
   cmake_args+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
-  export CCACHE_BASEDIR="$PWD"
+  export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=1
 fi
 
 configure() {  # build-dir, extra cmake args
@@ -42,10 +46,19 @@ configure build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j "$jobs"
 (cd build && ctest --output-on-failure -j "$jobs" --timeout 900)
 
-# The bad-input tests again under ASan + UBSan (gcc). The libFuzzer harnesses (fuzz/, clang) run with
-# bench/fuzz.sh SECONDS; they are not part of this command yet (docs/reliability.md: CI time).
-# (No distributed backend there: the input tests run the serial commands only.)
-configure build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSEFLEX_SANITIZE=ON -DSEFLEX_BUILD_BENCH=OFF -DSEFLEX_BUILD_EXAMPLES=OFF -DSEFLEX_MPI=OFF
-cmake --build build-asan -j "$jobs" --target seflex test_input
-(cd build-asan && ctest --output-on-failure -j "$jobs" -L input --timeout 900)
+# The sanitizer stage, one clang folder (build-fuzz; docs/reliability.md): ASan + UBSan + libFuzzer's
+# coverage counters (-DSEFLEX_FUZZ=ON). It builds seflex, the bad-input tests and the fuzz harnesses;
+# runs the bad-input tests (ctest -L input, fuzz regression inputs included), then every harness for
+# $SEFLEX_CI_FUZZ_SECONDS (default 20) from its seeds in a fresh corpus (a temporary folder, not the
+# long-run corpus of bench/fuzz.sh; fixed libFuzzer seed): any crash, sanitizer report, leak, hang or
+# allocation over 2 GB fails the run. No distributed backend there (the input tests run serial commands).
+configure build-fuzz -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DSEFLEX_FUZZ=ON -DSEFLEX_BUILD_BENCH=OFF -DSEFLEX_BUILD_EXAMPLES=OFF -DSEFLEX_MPI=OFF
+cmake --build build-fuzz -j "$jobs" --target seflex test_input fuzz_all
+(cd build-fuzz && ctest --output-on-failure -j "$jobs" -L input --timeout 900)
+fuzz_dir="$(mktemp -d "${TMPDIR:-/tmp}/seflex-ci-fuzz.XXXXXX")"
+SEFLEX_FUZZ_BUILD=build-fuzz SEFLEX_FUZZ_NO_BUILD=1 SEFLEX_FUZZ_DIR="$fuzz_dir" SEFLEX_FUZZ_SEED=1 \
+  bench/fuzz.sh "${SEFLEX_CI_FUZZ_SECONDS:-20}" ||
+  { echo "bootstrap: fuzzing found something; inputs and logs kept in $fuzz_dir" >&2; exit 1; }
+rm -rf "$fuzz_dir"
 echo "bootstrap: all tests passed"

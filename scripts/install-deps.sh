@@ -10,11 +10,16 @@
 # petsc-dev and slepc-dev (PETSc 3.18 with MUMPS, SLEPc 3.18) and MPI (OpenMPI through
 # mpi-default-dev/-bin) build the distributed backend (SEFLEX_MPI, docs/distributed.md); without
 # them the build is serial and everything else works.
+#
+# clang 14 (the `clang` package: clang-14 and the clang/clang++ links) with libclang-rt-14-dev builds
+# the sanitizer and fuzzing stage of `scripts/bootstrap.sh test` (build-fuzz/): libclang-rt-14-dev
+# holds the ASan/UBSan runtimes and libFuzzer itself (libclang_rt.fuzzer*.a, what -fsanitize=fuzzer
+# links), so Debian's separate libfuzzer-14-dev (libFuzzer.a for other compilers) is not needed.
 set -euo pipefail
 
 packages=(
   g++ cmake make ninja-build pkg-config git ccache
-  clang libclang-rt-14-dev llvm-14
+  clang clang-14 libclang-rt-14-dev llvm-14
   libeigen3-dev libspectra-dev libarpack2-dev libmetis-dev libsuitesparse-dev libopenblas-dev
   libgmsh-dev gmsh libvtk9-dev libyaml-cpp-dev libgtest-dev
   python3 python3-numpy python3-scipy python3-matplotlib

@@ -210,7 +210,8 @@ MeshData load_gmsh_mesh(const std::filesystem::path& path, const std::vector<Gms
   std::vector<std::pair<int, int>> groups;
   checked(session, file, "gmsh cannot list its physical groups", [&] { return api::model_get_physical_groups(groups); });
   std::sort(groups.begin(), groups.end());
-  for (const auto& [dim, tag] : groups) {
+  for (const auto& group : groups) {
+    const int dim = group.first, tag = group.second;  // no structured binding: clang 14 cannot capture one
     PhysicalGroup g;
     g.dim = dim;
     g.tag = tag;
