@@ -7,9 +7,8 @@
 #include <unordered_set>
 
 namespace seflex::fem::detail {
-namespace {
 
-const char* bar_prop_card(const BarProperty& p) {
+const char* bar_property_card(const BarProperty& p) {
   switch (p.source) {
     case BarProperty::Source::PBAR: return "PBAR";
     case BarProperty::Source::PBARL: return "PBARL";
@@ -18,6 +17,8 @@ const char* bar_prop_card(const BarProperty& p) {
   }
   return "PBAR";
 }
+
+namespace {
 
 class LeaveOut {
  public:
@@ -70,7 +71,7 @@ class LeaveOut {
   void properties() {
     drop_properties(m_.bar_props, "bar", [&](const BarProperty& p) {
       const std::string mat = isotropic_problem(p.mid);
-      return mat.empty() ? mat : std::string(bar_prop_card(p)) + " on " + mat;
+      return mat.empty() ? mat : std::string(bar_property_card(p)) + " on " + mat;
     });
     drop_properties(m_.rod_props, "rod", [&](const RodProperty& p) {
       const std::string mat = isotropic_problem(p.mid);
