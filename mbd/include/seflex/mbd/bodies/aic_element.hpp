@@ -30,9 +30,10 @@ namespace seflex::mbd {
 enum class FrameRecovery { Newton6, Decoupled3 };
 enum class TangentModel { Exact, Simplified };
 enum class InertiaModel { Simplified, Full };
-/// Which derivatives inertia_force forms besides the force: none; all (Mt, Ct, Kt); or Mt and Kt with
-/// Ct left zero (a Newton iteration matrix without the gyroscopic/Coriolis tangent: its weight
-/// against the mass is about h |Omega|, so Newton still converges where h |Omega| << 1).
+/// Which derivatives inertia_force forms besides the force: none; all (Mt, Ct, Kt); or Mt and Kt
+/// without Ct (InertiaResult::has_Ct false): a Newton iteration matrix without the gyroscopic/Coriolis
+/// tangent, whose weight against the mass is about h |Omega|, so Newton still converges where
+/// h |Omega| << 1.
 enum class InertiaMatrices { None, All, NoVelocityTangent };
 
 /// Configuration-independent data of one superelement, precomputed once (make_aic_element).

@@ -41,9 +41,11 @@ struct IntegratorSettings {
   bool reuse_iteration_matrix = true;  ///< modified Newton: re-form only when convergence is slow
   /// The iteration matrix holds the flexible bodies' gyroscopic/Coriolis tangent (the velocity
   /// derivative of the full inertia). It weighs about h |Omega| against the mass term and costs a
-  /// third of a body's matrices; without it Newton converges to the same solution within its
-  /// tolerance, a little slower (docs/benchmarks.md: 13 % less CPU on the demo, hinge angles moved
-  /// by up to 0.03 deg in the lock ringing). Needed where h |Omega| is not small.
+  /// third of a body's matrices. Without it Newton takes a few more iterations and, through other
+  /// iterates and hence other adaptive steps, the results move at the level of the integration
+  /// error, not of round-off (docs/benchmarks.md: 13 % less CPU on the demo; hinge angles moved by
+  /// up to 0.03 deg in the lock ringing; as accurate against a tight reference). Keep it where
+  /// h |Omega| is not small.
   bool inertia_velocity_tangent = true;
   double event_tol = 1e-9;        ///< located lock crossing: |phi - phi_lock| [rad]
 };
