@@ -290,7 +290,11 @@ def main(argv):
         _PLOTS = [(plot_case, (plt, c, os.path.join(out, "plots", name + ".png"))) for name, c in cases.items()]
         _PLOTS.append((plot_overlay, (plt, cases, os.path.join(out, "plots", "beam-vs-3d.png"))))
         # The five figures in $SEFLEX_JOBS processes (forked after matplotlib is imported: no re-import).
-        jobs = max(1, min(len(_PLOTS), int(os.environ.get("SEFLEX_JOBS", os.cpu_count() or 1))))
+        try:
+            jobs = int(os.environ.get("SEFLEX_JOBS", os.cpu_count() or 1))
+        except ValueError:
+            jobs = 1
+        jobs = max(1, min(len(_PLOTS), jobs))
         if jobs > 1:
             import multiprocessing
             with multiprocessing.get_context("fork").Pool(jobs) as pool:
