@@ -7,7 +7,7 @@ hub whose angle follows exactly (mbd/src/forces/drive_profile.cpp spin_up_drive)
 w = 6 rad/s (or 12 with --rate 12), T = 15 s. Beam straight and at rest at t = 0. No gravity, no damping.
 
 Assumptions: rotary inertia of the cross-section neglected (no mass on the nodal rotations); shear
-deformation neglected (Euler-Bernoulli kinematics; for Simo and Vu-Quoc's GA = 1e7 N... the shear flexibility
+deformation neglected (Euler-Bernoulli kinematics; for any realistic GA the shear flexibility
 EI/(GA L^2) ~ 1e-5 would not show); linear elastic axial and bending laws (N = EA eps, M = EI kappa).
 
 Model: corotational planar beam (Crisfield 1991, vol. 1 ch. 7; the local element is the linear
