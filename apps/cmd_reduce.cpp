@@ -176,6 +176,7 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
   const int compare = args.integer("compare", kAbsent);
   const std::string solver = args.value_or("eigensolver", "spectra");
   const bool no_mesh = args.flag("no-mesh");
+  const bool no_stiffening = args.flag("no-stiffening");
   const bool force = args.flag("force");
   const seflex::io::ModelReadOptions model_options = seflex::app::model_read_options(args);
   const std::string model_path = args.positional("MODEL");
@@ -243,6 +244,7 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
   if (session != nullptr) seflex::app::checkpoint(*session);  // every rank read the model (or stop them all)
   o.name = name ? *name : std::filesystem::path(model_path).stem().string();
   o.full_mesh = true;  // the inertia invariants are computed from the mesh part before --no-mesh drops it
+  o.stiffening = !no_stiffening;
   const auto t1 = std::chrono::steady_clock::now();
   red::SuperelementInfo info;
   seflex::se::Superelement s = red::reduce_to_superelement(model, o, &info);
@@ -277,6 +279,12 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
     std::printf("  inertia invariants: stored (full inertia without the mesh)\n");
   else
     std::printf("  inertia invariants: not computed (full inertia will need the mesh part)\n");
+  if (s.stiffening.present())
+    std::printf("  geometric-stiffness invariants: stored (%d inertia load cases, %zu constraint modes; %.2f s)\n",
+                seflex::se::StiffeningInvariants::kInertiaCases, s.stiffening.interface.size(), info.seconds_stiffening);
+  else
+    std::printf("  geometric-stiffness invariants: not computed (%s: no stress stiffening in the run)\n",
+                no_stiffening ? "--no-stiffening" : "not with the distributed backend");
   if (no_mesh)
     std::printf("  mesh part: left out (--no-mesh; %zu FE nodes, %zu cells not written: no animation or recovery)\n",
                 mesh_nodes, mesh_cells);
@@ -308,10 +316,11 @@ int run_reduce(seflex::app::Args& args) {
 
 SEFLEX_COMMAND(reduce,
                "MODEL --interface IDS|SETS|aset|bset|suport [--modes N | --fmax HZ] [--frame NODE|SET] [--name NAME] "
-               "[--compare K] [--eigensolver block|spectra|arpack|dense] [--backend serial|slepc] [--no-mesh] -o FILE.se [--force] "
+               "[--compare K] [--eigensolver block|spectra|arpack|dense] [--backend serial|slepc] [--no-mesh] [--no-stiffening] -o FILE.se [--force] "
                "[--properties FILE] [--set NAME=VALUE]...",
                "Craig-Bampton reduction to an absolute-interface-coordinate superelement: constraint modes of all six "
                "dofs of the interface grids plus fixed-interface modes; prints mass properties, the truncation report "
                "and the reduced model's free-free frequencies (--compare K: against the full model's); --no-mesh writes the "
-               "dynamics only (reduced matrices and inertia invariants, no FE mesh, recovery or FE mass)",
+               "dynamics only (reduced matrices and inertia invariants, no FE mesh, recovery or FE mass); --no-stiffening leaves out "
+               "the geometric-stiffness invariants (docs/geometric-stiffening.md)",
                run_reduce);

@@ -1,5 +1,5 @@
 #pragma once
-// The datasets of the inertia invariants in a superelement file (format 1.2,
+// The datasets of the inertia invariants (format 1.2) and geometric-stiffness invariants (1.3) in a superelement file (
 // docs/superelement-format.md): one table, used by the writer, the reader and `seflex info`, so
 // names and shapes cannot drift apart. Internal to io/.
 #include <Eigen/Core>
@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "seflex/superelement/inertia_invariants.hpp"
+#include "seflex/superelement/stiffening_invariants.hpp"
 
 namespace seflex::io::detail {
 
@@ -41,6 +42,29 @@ void for_each_invariant_dataset(Inv& inv, Eigen::Index n, Eigen::Index m, F&& f)
   each("PgOV", inv.PgOV, n, n);
   each("EgOV", inv.EgOV, 3, n);
   f(p + "mode_max_translation", inv.mode_max_translation, m, 1);
+}
+
+/// Calls f(name, matrix, rows, cols) for every matrix of the geometric-stiffness invariants (format 1.3):
+/// "stiff.inertia.c" (c = 0..11) and "stiff.interface.j" (j = 0..6N-1), each n x n. The interface vector
+/// of a non-const `st` is sized to 6N first.
+template <class St, class F>
+void for_each_stiffening_dataset(St& st, Eigen::Index n, int N, F&& f) {
+  static_assert(std::is_same_v<std::remove_const_t<St>, se::StiffeningInvariants>);
+  if constexpr (!std::is_const_v<St>) st.interface.resize(static_cast<std::size_t>(6 * N));
+  for (std::size_t c = 0; c < st.inertia.size(); ++c) f("stiff.inertia." + std::to_string(c), st.inertia[c], n, n);
+  for (std::size_t j = 0; j < static_cast<std::size_t>(6 * N) && j < st.interface.size(); ++j)
+    f("stiff.interface." + std::to_string(j), st.interface[j], n, n);
+}
+
+/// The stiffening invariants of the same body with its first n_new coordinates: each matrix's
+/// top-left corner (exact: G = B^T K_sigma B, and the stress states do not depend on the modes kept).
+inline se::StiffeningInvariants truncate_stiffening(const se::StiffeningInvariants& st, Eigen::Index n_new) {
+  if (!st.present()) return st;
+  se::StiffeningInvariants out = st;
+  out.n = static_cast<int>(n_new);
+  for (auto& G : out.inertia) G = G.topLeftCorner(n_new, n_new).eval();
+  for (auto& G : out.interface) G = G.topLeftCorner(n_new, n_new).eval();
+  return out;
 }
 
 /// Total bytes of the invariants' datasets for reduced size n (float64).

@@ -309,6 +309,13 @@ struct Builder {
     o.inertia = body.inertia;
     o.stiffness_damping = body.stiffness_damping;
     o.modal_damping = body.modal_damping;
+    const bool has_stiffening = se_of(static_cast<int>(b)).stiffening.present();
+    if (body.geometric_stiffening.value_or(false) && !has_stiffening)
+      body.where.fail("geometric_stiffening: on, but " + body.superelement.string() +
+                      " carries no geometric-stiffness invariants (reduced with --no-stiffening, with the distributed "
+                      "backend, or by a seflex before format 1.3); re-run `seflex reduce` without --no-stiffening, or "
+                      "set geometric_stiffening: off");
+    o.geometric_stiffening = body.geometric_stiffening.value_or(true) && has_stiffening;
     const mbd::FlexibleBodyIndex fb = at(body.where, [&] {
       return mb.add_flexible_body(body.name, se_index(b), nodes, X_WB[b], o);
     });
@@ -365,6 +372,7 @@ se::Superelement keep_internal_modes(const se::Superelement& s, int modes) {
   r.Phi_f = s.Phi_f.leftCols(n);
   if (s.recovery.size() != 0) r.recovery = s.recovery.leftCols(n);
   r.invariants = detail::truncate_invariants(s.invariants, n);
+  r.stiffening = detail::truncate_stiffening(s.stiffening, n);
   r.mode_frequencies_hz = s.mode_frequencies_hz.head(modes);
   if (modes < s.num_modes) r.truncation.first_neglected_hz = s.mode_frequencies_hz(modes);
   r.truncation.max_kept_hz = modes > 0 ? s.mode_frequencies_hz(modes - 1) : 0.0;

@@ -83,7 +83,8 @@ struct Reader {
   }
 
   void body(const YamlField& f) {
-    f.check_keys({"name", "superelement", "fidelity", "inertia", "internal_modes", "placement", "damping"});
+    f.check_keys({"name", "superelement", "fidelity", "inertia", "internal_modes", "placement", "damping",
+                  "geometric_stiffening"});
     SceneBody b;
     b.where = where_of(f);
     const YamlField name = f.required("name", "the body's name");
@@ -101,6 +102,7 @@ struct Reader {
     const std::string in = f.text_or("inertia", "simplified");
     if (in == "full") b.inertia = mbd::InertiaModel::Full;
     else if (in != "simplified") f["inertia"].fail("expected simplified or full, got '" + in + "'");
+    if (f.has("geometric_stiffening")) b.geometric_stiffening = f["geometric_stiffening"].boolean();
     if (f.has("internal_modes")) {
       b.internal_modes = f["internal_modes"].integer();
       if (b.internal_modes < 0) f["internal_modes"].fail("expected a number of modes >= 0");

@@ -346,6 +346,25 @@ class Reader {
     if (s.size() == 0) fail("the inertia invariants are stored for a body of size 0");
   }
 
+  // Format 1.3: the geometric-stiffness invariants, all datasets or none.
+  void read_stiffening(const YAML::Node& table, se::Superelement& s) const {
+    std::string first_present, first_missing;
+    se::StiffeningInvariants probe;
+    detail::for_each_stiffening_dataset(probe, s.size(), s.num_interfaces(), [&](const std::string& name, auto&, Eigen::Index, Eigen::Index) {
+      if (table[name] && first_present.empty()) first_present = name;
+      if (!table[name] && first_missing.empty()) first_missing = name;
+    });
+    if (first_present.empty()) return;
+    if (!first_missing.empty())
+      fail("dataset '" + first_missing + "' is missing; the file has '" + first_present +
+           "', and the geometric-stiffness invariants are stored complete or not at all");
+    detail::for_each_stiffening_dataset(s.stiffening, s.size(), s.num_interfaces(),
+                                        [&](const std::string& name, auto& A, Eigen::Index r, Eigen::Index c) {
+                                          fill(table, name, A, r, c);
+                                        });
+    s.stiffening.n = s.size();
+  }
+
   void list_table(const YAML::Node& table) {
     for (const auto& kv : table) {
       DatasetEntry e;
@@ -413,6 +432,7 @@ class Reader {
     s.M = matrix(table, "M", n, n);
     s.Phi_f = matrix(table, "Phi_f", 6, n);
     read_invariants(table, s);
+    read_stiffening(table, s);
 
     const std::int64_t nfe = get<std::int64_t>(h, "num_fe_nodes");
     if (nfe < 0 || static_cast<std::uint64_t>(nfe) > src_.size()) fail("header: 'num_fe_nodes' out of range");
@@ -542,6 +562,21 @@ std::string serialize_superelement(const se::Superelement& s) {
                                                                 name + " has non-finite entries");
                                          data.push_back(make_dataset(name, "float64", A.data(), {r, c}));
                                        });
+  }
+  if (s.stiffening.present()) {
+    if (s.stiffening.n != s.size() || s.stiffening.interface.size() != static_cast<std::size_t>(6 * s.num_interfaces()))
+      throw InvariantError("cannot save superelement '" + s.name + "': its geometric-stiffness invariants are for n = " +
+                           std::to_string(s.stiffening.n) + " with " + std::to_string(s.stiffening.interface.size()) +
+                           " interface dofs, the body has n = " + std::to_string(s.size()) + " and " +
+                           std::to_string(6 * s.num_interfaces()));
+    detail::for_each_stiffening_dataset(s.stiffening, s.size(), s.num_interfaces(),
+                                        [&](const std::string& name, const auto& A, Eigen::Index r, Eigen::Index c) {
+                                          if (A.rows() != r || A.cols() != c || !A.allFinite())
+                                            throw InvariantError("cannot save superelement '" + s.name + "': " + name +
+                                                                 " is not a finite " + std::to_string(r) + "x" +
+                                                                 std::to_string(c) + " matrix");
+                                          data.push_back(make_dataset(name, "float64", A.data(), {r, c}));
+                                        });
   }
   if (nfe > 0) {  // format 1.2: no mesh part, no fe_node_ids/fe_positions
     std::vector<std::int32_t> ids(s.fe_node_ids.begin(), s.fe_node_ids.end());
@@ -707,6 +742,8 @@ std::uint64_t superelement_memory_bytes(const se::Superelement& s) {
   detail::for_each_invariant_dataset(s.invariants, s.size(), s.num_modes, [&](const std::string&, const auto& A, Eigen::Index, Eigen::Index) {
     total += 8 * static_cast<std::uint64_t>(A.size());
   });
+  for (const auto& G : s.stiffening.inertia) total += 8 * static_cast<std::uint64_t>(G.size());
+  for (const auto& G : s.stiffening.interface) total += 8 * static_cast<std::uint64_t>(G.size());
   return total;
 }
 

@@ -94,6 +94,16 @@ CraigBamptonBasis craig_bampton(const SparseMatrixd& K_ff, const SparseMatrixd& 
     factor->solve_in_place(Psi_i);
     cb.stats.interior_factorization = factor->stats();
   }
+  if (options.interior_loads.cols() > 0) {
+    SEFLEX_DEMAND(options.interior_loads.rows() == n, "Craig-Bampton: interior_loads must have one row per f-dof");
+    cb.static_responses = Eigen::MatrixXd::Zero(n, options.interior_loads.cols());
+    if (ni > 0) {
+      Eigen::MatrixXd Y(ni, options.interior_loads.cols());
+      for (Eigen::Index r = 0; r < ni; ++r) Y.row(r) = options.interior_loads.row(cb.interior[static_cast<std::size_t>(r)]);
+      factor->solve_in_place(Y);
+      for (Eigen::Index r = 0; r < ni; ++r) cb.static_responses.row(cb.interior[static_cast<std::size_t>(r)]) = Y.row(r);
+    }
+  }
   cb.Psi = Eigen::MatrixXd::Zero(n, nb);
   for (Eigen::Index k = 0; k < nb; ++k) cb.Psi(boundary[static_cast<std::size_t>(k)], k) = 1.0;
   for (Eigen::Index r = 0; r < ni; ++r) cb.Psi.row(cb.interior[static_cast<std::size_t>(r)]) = Psi_i.row(r);

@@ -2,6 +2,7 @@
 #include "seflex/reduction/craig_bampton_superelement.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -18,6 +19,7 @@
 #include "seflex/fem/finalize.hpp"
 #include "seflex/reduction/card_usage.hpp"
 #include "seflex/reduction/case_selection.hpp"
+#include "seflex/reduction/stiffening.hpp"
 
 namespace seflex::reduction {
 
@@ -313,9 +315,15 @@ se::Superelement reduce_to_superelement(const fem::Model& model, const Superelem
   std::vector<Eigen::Index> boundary;
   for (std::size_t gi : interface_index)
     for (int k = 0; k < 6; ++k) boundary.push_back(c.g_to_f[6 * gi + static_cast<std::size_t>(k)]);
+  // With the geometric-stiffness invariants: the inertia load cases ride on the factor of K_ii.
+  const bool stiffening = options.stiffening && !partitioned;
+  CraigBamptonOptions cbo = options.modes;
+  const auto t_loads = std::chrono::steady_clock::now();
+  if (stiffening) cbo.interior_loads = Eigen::MatrixXd(c.T.transpose() * inertia_load_cases(model, g.dofs, g.M, X_f));
+  double seconds_stiffening = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_loads).count();
   CraigBamptonBasis cb;
   try {
-    cb = partitioned ? options.basis(boundary, options.modes) : craig_bampton(c.K_ff, c.M_ff, boundary, options.modes);
+    cb = partitioned ? options.basis(boundary, options.modes) : craig_bampton(c.K_ff, c.M_ff, boundary, cbo);
   } catch (const FactorizationError& e) {
     std::vector<char> is_b(static_cast<std::size_t>(c.n_free()), 0);
     for (Eigen::Index f : boundary) is_b[static_cast<std::size_t>(f)] = 1;
@@ -370,6 +378,15 @@ se::Superelement reduce_to_superelement(const fem::Model& model, const Superelem
   s.I_Cm_B = rm.I_cg;
   s.truncation = truncation_report(cb, c.M_ff, interface_rigid_modes(s));
   c.M_ff = SparseMatrixd();
+
+  if (stiffening) {
+    const auto t0 = std::chrono::steady_clock::now();
+    Eigen::MatrixXd B_f(cb.Psi.rows(), n);
+    B_f << cb.Psi, cb.Phi;
+    s.stiffening = compute_stiffening_invariants(model, g.dofs, c.T, B_f, nb, cb.static_responses);
+    seconds_stiffening += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    inf.seconds_stiffening = seconds_stiffening;
+  }
 
   // 4. Recovery to every grid (basic components) and the frame node's rows.
   const auto ng = static_cast<Eigen::Index>(model.grids.size());

@@ -1,4 +1,5 @@
-// Superelement file format 1.2 (docs/superelement-format.md): the inertia invariants round-trip
+// Superelement file format 1.2 and 1.3 (docs/superelement-format.md): the inertia invariants (and the 1.3
+// geometric-stiffness invariants) round-trip
 // bit-exactly; a reader can load the dynamics without the mesh (and still verifies the checksum
 // over every byte); invariants with a wrong shape or an incomplete set are refused with a message
 // naming the dataset; 1.1 files are still read; fewer internal modes truncate the invariants
@@ -144,8 +145,8 @@ TEST(SuperelementParts, InvariantsRoundTripBitExactly) {
   s.invariants = random_invariants(s.size(), s.num_modes, 11);
   io::save_superelement(s, tmp / "body.se");
   const std::string bytes = test::read_file(tmp / "body.se");
-  EXPECT_EQ(bytes.substr(8, 8), std::string("\x01\0\0\0\x02\0\0\0", 8));  // format 1.2
-  EXPECT_NE(bytes.find("\"format_version\": \"1.2\""), std::string::npos);
+  EXPECT_EQ(bytes.substr(8, 8), std::string("\x01\0\0\0\x03\0\0\0", 8));  // format 1.3
+  EXPECT_NE(bytes.find("\"format_version\": \"1.3\""), std::string::npos);
   EXPECT_NE(bytes.find("\"inv.PmLP.5\""), std::string::npos);
   EXPECT_NE(bytes.find("\"inv.EgOV.2\""), std::string::npos);
   const se::Superelement r = io::load_superelement(tmp / "body.se");
@@ -198,7 +199,7 @@ TEST(SuperelementParts, DynamicsLoadSkipsTheMeshButChecksEveryByte) {
   // inspect_superelement: what `seflex info` prints.
   const io::SuperelementFileInfo info = io::inspect_superelement(tmp / "body.se");
   EXPECT_EQ(info.format_major, 1);
-  EXPECT_EQ(info.format_minor, 2);
+  EXPECT_EQ(info.format_minor, 3);
   EXPECT_TRUE(info.has_invariants());
   EXPECT_TRUE(info.has_mesh());
   EXPECT_EQ(info.num_fe_nodes, 5);
@@ -250,9 +251,9 @@ TEST(SuperelementParts, MissingFileOrFolderIsNamed) {
 }
 
 TEST(SuperelementParts, Format11FileIsStillRead) {
-  // A 1.1 file: the same bytes as 1.2 without invariants, with minor version 1.
+  // A 1.1 file: the same bytes as 1.3 without invariants, with minor version 1.
   const se::Superelement s = beam(2);
-  std::string bytes = edit_header(io::serialize_superelement(s), "\"format_version\": \"1.2\"", "\"format_version\": \"1.1\"");
+  std::string bytes = edit_header(io::serialize_superelement(s), "\"format_version\": \"1.3\"", "\"format_version\": \"1.1\"");
   bytes[12] = 1;
   io::Sha256 h;
   h.update(bytes.data(), bytes.size() - 40);
@@ -385,4 +386,67 @@ TEST(SuperelementParts, SceneLoadsTheDynamicsOnlyWhenTheMeshIsNotNeeded) {
   } else {
     EXPECT_EQ(c.superelements[0].recovery.size(), s.recovery.size());  // until they exist: the mesh serves
   }
+}
+
+// Format 1.3: the geometric-stiffness invariants (docs/geometric-stiffening.md) round-trip bit-exactly,
+// fewer internal modes keep each matrix's top-left corner, and a scene that asks for
+// geometric_stiffening: on from a file without them is refused with a message saying what to do.
+namespace {
+se::StiffeningInvariants random_stiffening(Eigen::Index n, int N, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> nd;
+  auto sym = [&] {
+    Eigen::MatrixXd A(n, n);
+    for (Eigen::Index i = 0; i < A.size(); ++i) A.data()[i] = nd(rng);
+    return Eigen::MatrixXd(A + A.transpose());
+  };
+  se::StiffeningInvariants st;
+  st.n = static_cast<int>(n);
+  for (auto& G : st.inertia) G = sym();
+  for (int j = 0; j < 6 * N; ++j) st.interface.push_back(sym());
+  return st;
+}
+}  // namespace
+
+TEST(SuperelementParts, StiffeningInvariantsRoundTripAndTruncate) {
+  test::TempDir tmp;
+  se::Superelement s = beam(3);
+  s.stiffening = random_stiffening(s.size(), s.num_interfaces(), 21);
+  io::save_superelement(s, tmp / "body.se");
+  const std::string bytes = test::read_file(tmp / "body.se");
+  EXPECT_NE(bytes.find("\"stiff.inertia.11\""), std::string::npos);
+  EXPECT_NE(bytes.find("\"stiff.interface." + std::to_string(6 * s.num_interfaces() - 1) + "\""), std::string::npos);
+  const se::Superelement r = io::load_superelement(tmp / "body.se", {io::SuperelementParts::Dynamics});
+  ASSERT_TRUE(r.stiffening.present());
+  ASSERT_EQ(r.stiffening.interface.size(), s.stiffening.interface.size());
+  for (std::size_t c = 0; c < 12; ++c) EXPECT_TRUE(same_bits(r.stiffening.inertia[c], s.stiffening.inertia[c])) << c;
+  for (std::size_t j = 0; j < s.stiffening.interface.size(); ++j)
+    EXPECT_TRUE(same_bits(r.stiffening.interface[j], s.stiffening.interface[j])) << j;
+  const se::Superelement t = io::keep_internal_modes(s, 1);
+  const Eigen::Index n = t.size();
+  ASSERT_EQ(t.stiffening.n, n);
+  EXPECT_TRUE(same_bits(t.stiffening.inertia[7], Eigen::MatrixXd(s.stiffening.inertia[7].topLeftCorner(n, n))));
+  EXPECT_TRUE(same_bits(t.stiffening.interface[3], Eigen::MatrixXd(s.stiffening.interface[3].topLeftCorner(n, n))));
+  EXPECT_NO_THROW(io::serialize_superelement(t));
+  // A file without them reads as before (not present).
+  se::Superelement plain = beam(3);
+  EXPECT_FALSE(io::parse_superelement(io::serialize_superelement(plain), "plain.se").stiffening.present());
+}
+
+TEST(SuperelementParts, StiffeningAskedFromAFileWithoutItIsRefused) {
+  test::TempDir tmp;
+  se::Superelement s = beam(1);
+  io::save_superelement(s, tmp / "link.se");
+  std::string text = scene_text("simplified");
+  text.replace(text.find("inertia: simplified}"), 20, "inertia: simplified, geometric_stiffening: on}");
+  const auto scene = tmp.write("scene.yaml", text);
+  const std::string msg = message_of([&] { io::build_scene(io::read_scene(scene), {.keep_mesh = false}); });
+  for (const char* part : {"scene.yaml:3: bodies[0]: geometric_stiffening: on, but ", "link.se carries no geometric-stiffness invariants",
+                           "re-run `seflex reduce` without --no-stiffening", "or set geometric_stiffening: off"})
+    EXPECT_NE(msg.find(part), std::string::npos) << part << "\n" << msg;
+  // Unset, the body runs without stiffening; with the invariants in the file it runs with them.
+  EXPECT_NO_THROW(io::build_scene(io::read_scene(tmp.write("plain.yaml", scene_text("simplified"))), {.keep_mesh = false}));
+  s.stiffening = random_stiffening(s.size(), s.num_interfaces(), 3);
+  io::save_superelement(s, tmp / "link.se", io::SaveOptions{true});
+  EXPECT_NO_THROW(io::build_scene(io::read_scene(scene), {.keep_mesh = false}));
 }

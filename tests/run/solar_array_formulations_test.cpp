@@ -55,11 +55,13 @@ std::string scene(int modes, const std::string& h) {
 
 class SolarArrayFormulations : public ::testing::Test {
  protected:
+  // Without the geometric-stiffness invariants: the FFRF-LM baseline has no stress stiffening yet, so the
+  // two formulations are compared on the same (linear elastic) bodies.
   void reduce(int modes) {
     const std::string m = std::to_string(modes);
     for (const auto& [body, set] : {std::pair{"yoke", "1,5"}, std::pair{"panel", "5,6"}}) {
       const auto r = run_seflex("reduce " + q(source_dir() / "meshes" / (std::string(body) + ".bdf")) + " --interface " + set +
-                                " --modes " + m + " -o " + q(dir_ / (std::string(body) + "-m" + m + ".se")));
+                                " --modes " + m + " --no-stiffening -o " + q(dir_ / (std::string(body) + "-m" + m + ".se")));
       ASSERT_EQ(r.exit_code, 0) << r.err;
     }
   }

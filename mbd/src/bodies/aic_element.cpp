@@ -142,6 +142,22 @@ AicElement make_aic_element(const se::Superelement& s) {
     e.inv = se::compute_inertia_invariants(s);
   }
   if (e.inv.present()) stack_invariants(e);
+  if (s.stiffening.present()) {
+    const auto& st = s.stiffening;
+    const auto nb = static_cast<std::size_t>(6 * e.N);
+    if (st.n != e.n || st.interface.size() != nb)
+      throw InputError(who(name) + ": its geometric-stiffness invariants are for " + std::to_string(st.n) +
+                       " reduced coordinates and " + std::to_string(st.interface.size()) +
+                       " interface dofs, the superelement has " + std::to_string(e.n) + " and " + std::to_string(nb));
+    e.G_stack.resize(e.n, static_cast<Eigen::Index>(12 + nb) * e.n);
+    for (std::size_t c = 0; c < 12 + nb; ++c) {
+      const MatrixXd& G = c < 12 ? st.inertia[c] : st.interface[c - 12];
+      if (G.rows() != e.n || G.cols() != e.n)
+        throw InputError(who(name) + ": a geometric-stiffness invariant is " + std::to_string(G.rows()) + "x" +
+                         std::to_string(G.cols()) + ", expected " + std::to_string(e.n) + " square");
+      e.G_stack.middleCols(static_cast<Eigen::Index>(c) * e.n, e.n) = 0.5 * (G + G.transpose());
+    }
+  }
   e.eta_amplitude = VectorXd::Ones(e.m);
   e.omega_modes = VectorXd::Zero(e.m);
   for (int k = 0; k < e.m; ++k) {
@@ -362,12 +378,19 @@ void elastic_force(const AicElement& e, const AicKinematics& kin, TangentModel t
 
 void elastic_force(const AicElement& e, const AicKinematics& kin, TangentModel tangent, VectorXd& f, MatrixXd* Kt,
                    AicWorkspace& ws) {
+  ws.g.noalias() = e.K * kin.xi;
+  detail::elastic_force_of_local(e, kin, tangent, e.K, f, Kt, ws);
+}
+
+namespace detail {
+
+void elastic_force_of_local(const AicElement& e, const AicKinematics& kin, TangentModel tangent, const MatrixXd& H,
+                                VectorXd& f, MatrixXd* Kt, AicWorkspace& ws) {
   // Tx = I - R6 Zx with R6 = [Phi_rig; 0] (rank-6 defect): every product with Tx is O(n^2).
   const int N = e.N, nb = 6 * N;
   const MatrixXd& Phi = kin.Phi_rig;
-  VectorXd& g = ws.g;
+  const VectorXd& g = ws.g;
   VectorXd& fw = ws.fw;
-  g.noalias() = e.K * kin.xi;
   fw = g;  // Tx^T g
   Eigen::Matrix<double, 6, 1> Pg;
   Pg.noalias() = Phi.transpose() * g.head(nb);
@@ -376,10 +399,10 @@ void elastic_force(const AicElement& e, const AicKinematics& kin, TangentModel t
   if (!Kt) return;
   const bool exact = tangent == TangentModel::Exact;
   const MatrixXd& ZxL = exact ? kin.ZxL : kin.Zx;
-  MatrixXd& KL = ws.KL;  // K Lambda_x
-  KL = e.K;
+  MatrixXd& KL = ws.KL;  // H Lambda_x
+  KL = H;
   if (exact)
-    for (int j = 0; j < N; ++j) KL.middleCols<3>(6 * j + 3).noalias() = e.K.middleCols<3>(6 * j + 3) * kin.Lambda[j];
+    for (int j = 0; j < N; ++j) KL.middleCols<3>(6 * j + 3).noalias() = H.middleCols<3>(6 * j + 3) * kin.Lambda[j];
   // Material part Tx^T KL TxL, TxL = I - R6 ZxL.
   MatrixXd& Kw = *Kt;  // built in body axes, rotated to world in place at the end
   Kw = KL;
@@ -403,6 +426,8 @@ void elastic_force(const AicElement& e, const AicKinematics& kin, TangentModel t
   Kw.noalias() -= ws.S3 * ZxL.middleRows<3>(3);
   rotate_to_world(e, kin.frame.R_WB, Kw);
 }
+
+}  // namespace detail
 
 Vector3d deformed_com(const AicElement& e, const Eigen::Ref<const VectorXd>& xi) {
   Vector3d s = Vector3d::Zero();  // sum over interfaces of the translation rows of M xi

@@ -19,6 +19,12 @@ inline Eigen::MatrixXd stacked_skew(const AicElement& e, const Eigen::VectorXd& 
   return S;
 }
 
+/// Elastic force f (world) and, when Kt != nullptr, its tangent, of a local elastic force g(xi) the
+/// caller left in ws.g, with derivative H = dg/dxi (n x n), at kin.xi: f_w = Tx^T g (formulation 2.2, 3).
+/// elastic_force uses g = K xi; elastic_force_stiffened adds the stress stiffening K_G xi.
+void elastic_force_of_local(const AicElement& e, const AicKinematics& kin, TangentModel tangent,
+                                const Eigen::MatrixXd& H, Eigen::VectorXd& f, Eigen::MatrixXd* Kt, AicWorkspace& ws);
+
 /// Quadratic-velocity accelerations of the interface nodes (formulation 2.4 item 2), body axes:
 /// c_j = [Om x (Om x s_j) + 2 Om x u_dot_j;  Om x theta_dot_j], s_j = x_j + u_j; zero on eta.
 inline void interface_velocity_accelerations(const AicElement& e, const Eigen::VectorXd& xi, const Eigen::Vector3d& Om,

@@ -44,8 +44,14 @@ void assemble_flexible(const Model& model, const State& s, Data& data, const Ass
     }
   }
   recover_frame(e, sc.R_WI, sc.p_WI, eta, body.options.recovery, s.frames[static_cast<std::size_t>(bi)], fd.kin, sc.aic);
-  elastic_force(e, fd.kin, body.options.tangent, fd.f_el, opt.matrices ? &sc.Kl : nullptr, sc.aic);
-  fd.elastic = 0.5 * fd.kin.xi.dot(sc.aic.g);  // g = K xi
+  if (body.options.geometric_stiffening && e.has_stiffening()) {
+    stiffening_load_factors(e, fd.kin, sc.v, sc.a, sc.stiffening_loads, sc.aic);
+    elastic_force_stiffened(e, fd.kin, body.options.tangent, sc.stiffening_loads, fd.f_el, opt.matrices ? &sc.Kl : nullptr,
+                            sc.aic, &fd.elastic);
+  } else {
+    elastic_force(e, fd.kin, body.options.tangent, fd.f_el, opt.matrices ? &sc.Kl : nullptr, sc.aic);
+    fd.elastic = 0.5 * fd.kin.xi.dot(sc.aic.g);  // g = K xi
+  }
 
   InertiaResult& in = sc.inertia;
   const bool need_inertia = opt.dynamics || g.squaredNorm() > 0.0;

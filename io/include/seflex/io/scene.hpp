@@ -53,6 +53,8 @@ struct SceneBody {
   mbd::Pose X_WF;                       ///< world pose of the superelement's basic (FE) frame
   double stiffness_damping = 0.0;       ///< [s] D = beta K
   double modal_damping = 0.0;           ///< damping ratio of the internal modes
+  /// geometric_stiffening: on|off (docs/geometric-stiffening.md); unset: on when the file carries the invariants
+  std::optional<bool> geometric_stiffening;
   SceneWhere where;
   SceneWhere file_where;                ///< where the superelement file was named
 };

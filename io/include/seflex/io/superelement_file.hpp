@@ -21,7 +21,7 @@
 namespace seflex::io {
 
 inline constexpr int kSuperelementFormatMajor = 1;
-inline constexpr int kSuperelementFormatMinor = 2;
+inline constexpr int kSuperelementFormatMinor = 3;
 
 
 struct SaveOptions {

@@ -58,6 +58,7 @@ struct FlexibleBodyScratch {
   ElementMap map, gmap;
   std::vector<const std::vector<Vector6d>*> G;
   std::vector<Eigen::MatrixXd> Y;     ///< scatter blocks
+  StiffeningLoads stiffening_loads = StiffeningLoads::Zero();  ///< load factors of the stiffening (aic_stiffening.cpp)
 };
 
 struct FlexibleBodyData {

@@ -74,6 +74,9 @@ struct FlexibleBodyOptions {
   double stiffness_damping = 0.0;   ///< beta: damping D = beta K (formulation 2.6) [s]
   double modal_damping = 0.0;       ///< damping ratio of the internal modes
   double placement_tolerance = 1e-6;///< allowed mismatch of interface nodes, relative to body size
+  /// Stress stiffening from the superelement's geometric-stiffness invariants, when it has them
+  /// (docs/geometric-stiffening.md); false: the linear elastic body.
+  bool geometric_stiffening = true;
 };
 
 struct FlexibleBody {

@@ -44,6 +44,10 @@ struct CraigBamptonOptions {
   /// use that factor go to `external` (EigenOptions::external).
   FactorizationMaker factorization_maker;
   ExternalEigensolver external;
+  /// Loads (n_f x k, f-set rows) whose static response with the boundary held, K_ii^-1 F_i, is
+  /// returned in CraigBamptonBasis::static_responses: one more block solve with the factor of K_ii
+  /// (the inertia load cases of the geometric-stiffness invariants, stiffening.hpp).
+  Eigen::MatrixXd interior_loads;
 };
 
 /// Figures of the work done.
@@ -64,6 +68,7 @@ struct CraigBamptonBasis {
   Eigen::VectorXd eigenvalues;            ///< m kept, ascending, (rad/s)^2
   Eigen::VectorXd neglected_eigenvalues;  ///< the next fixed-interface eigenvalues (up to extra_modes)
   Eigen::MatrixXd K, M;                   ///< (n_b + m) square reduced matrices (see above)
+  Eigen::MatrixXd static_responses;       ///< n_f x k: K_ii^-1 of options.interior_loads, zero on b
   CraigBamptonStats stats;
 };
 

@@ -58,6 +58,8 @@ struct SuperelementOptions {
   CraigBamptonOptions modes;       ///< fixed-interface modes (count or frequency limit)
   std::string name;                ///< body name
   bool full_mesh = true;           ///< keep recovery, M_fe and cells (animation, recovery); the invariants are always computed
+  /// Compute the geometric-stiffness invariants (stiffening.hpp; not with the partitioned backend below).
+  bool stiffening = true;
   /// The distributed backend's partitioned assembly (parallel/, `reduce --backend slepc`): when both
   /// are set, step 1 takes the g-set matrices from `assemble` (M whole; K only as far as
   /// apply_constraints needs it: each grid's diagonal block, enough when no dof is dependent) and
@@ -75,6 +77,7 @@ struct SuperelementInfo {
   int mpc_set = 0;                  ///< MPC set applied (0 = none)
   Eigen::Index autospc_dofs = 0;    ///< dofs removed by AUTOSPC
   Eigen::Index dependent_dofs = 0;  ///< dependent dofs (rigid elements, RBE3, MPC) eliminated
+  double seconds_stiffening = 0;    ///< the geometric-stiffness invariants (0 when not computed)
 };
 
 /// Reduce a finalized model. Fills every field of se::Superelement except the provenance ones the

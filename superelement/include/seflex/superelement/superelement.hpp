@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "seflex/superelement/inertia_invariants.hpp"
+#include "seflex/superelement/stiffening_invariants.hpp"
 
 namespace seflex::se {
 
@@ -88,6 +89,8 @@ struct Superelement {
 
   // ---- inertia invariants (full inertia without the mesh; inertia_invariants.hpp); n == 0 when absent
   InertiaInvariants invariants;
+  // ---- geometric-stiffness invariants (stress stiffening; stiffening_invariants.hpp); n == 0 when absent
+  StiffeningInvariants stiffening;
 
   int num_interfaces() const { return static_cast<int>(interfaces.size()); }
   int size() const { return 6 * num_interfaces() + num_modes; }

@@ -64,6 +64,12 @@ struct AicElement {
   Eigen::MatrixXd inv_by_xid;                ///< (6 n + 27) x n
   std::array<Eigen::MatrixXd, 3> inv_GPV;    ///< n x n: PmGP[a] + PgOV[a]
 
+  // Geometric-stiffness invariants (se::StiffeningInvariants, docs/geometric-stiffening.md) side by side,
+  // G_stack = [G_0 ... G_{k-1}] (n x k n), k = 12 + 6N: the 12 inertia load cases, then the 6N
+  // constraint modes. Empty when the superelement carries none.
+  Eigen::MatrixXd G_stack;
+  bool has_stiffening() const { return G_stack.size() > 0; }
+
   // FE-level data (FFRF baseline, the nodal reference of the tests); present when the superelement
   // carries recovery and M_fe.
   bool has_fe_data = false;
@@ -141,6 +147,22 @@ void elastic_force(const AicElement& e, const AicKinematics& kin, TangentModel t
                    Eigen::MatrixXd* Kt);
 void elastic_force(const AicElement& e, const AicKinematics& kin, TangentModel tangent, Eigen::VectorXd& f,
                    Eigen::MatrixXd* Kt, AicWorkspace& ws);
+
+/// Geometric stiffening (docs/geometric-stiffening.md). The load factors of the 12 inertia load cases
+/// of se::StiffeningInvariants at this evaluation, body axes: [a_o - g; alpha; w_s(Om~ Om~)], from the
+/// world velocities v and accelerations a (gravity subtracted) as inertia_force takes them:
+/// [a_o - g; alpha] = Zx (a_b - c), Om = Zx_r w (formulation 2.4-2.5).
+using StiffeningLoads = Eigen::Matrix<double, 12, 1>;
+void stiffening_load_factors(const AicElement& e, const AicKinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& v,
+                             const Eigen::Ref<const Eigen::VectorXd>& a, StiffeningLoads& lambda, AicWorkspace& ws);
+/// Elastic force and tangent (as elastic_force) of the local force (K + K_G) xi, K_G the differential
+/// stiffness of the current stress state: K_G = sum_c lambda_c G_c + sum_{j<6N} xi_j G_j
+/// (se::StiffeningInvariants). The tangent holds the load factors `lambda` fixed (their own variation
+/// is left out) and includes the stress's variation with the interface coordinates.
+/// Needs e.has_stiffening(). Writes 1/2 xi^T (K + K_G) xi to *energy when given.
+void elastic_force_stiffened(const AicElement& e, const AicKinematics& kin, TangentModel tangent,
+                             const StiffeningLoads& lambda, Eigen::VectorXd& f, Eigen::MatrixXd* Kt, AicWorkspace& ws,
+                             double* energy = nullptr);
 
 /// Rotate between world components and body-axis components: y = Rhat^T x (to_body) or Rhat x.
 Eigen::VectorXd to_body(const AicElement& e, const Eigen::Matrix3d& R_WB, const Eigen::Ref<const Eigen::VectorXd>& x);

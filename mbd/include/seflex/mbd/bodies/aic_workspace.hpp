@@ -29,6 +29,11 @@ struct AicWorkspace {
   Eigen::MatrixXd Ap, Ae, Xp, Xe;    ///< n x n, 6 x n, n x n, 6 x n
   Eigen::MatrixXd nn;                ///< n x n scratch
   Eigen::MatrixXd AOm, AD, ADPhi;    ///< n x 3, n x n, n x 6 (velocity-acceleration tangent)
+  // Geometric stiffening (aic_stiffening.cpp).
+  Eigen::VectorXd sw, sab, sc, sxid;  ///< n: body-axis velocities, accelerations, c, xi_dot
+  Eigen::VectorXd Gxi;                ///< k n: G_c xi for every case c, stacked
+  Eigen::VectorXd mu;                 ///< k: [lambda; xi_b]
+  Eigen::MatrixXd Keff;               ///< n x n: K + Hessian of V_G
 };
 
 }  // namespace seflex::mbd

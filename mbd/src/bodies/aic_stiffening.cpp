@@ -1,0 +1,66 @@
+// Geometric stiffening of an AIC superelement (docs/geometric-stiffening.md): the differential
+// stiffness of the body's current stress state, from se::StiffeningInvariants, added to the elastic
+// force and its tangent, at a cost of two products with the n x (12 + 6N) n stacked invariants.
+//
+//   K_G(lambda, xi) = sum_c lambda_c G_c + sum_{j < 6N} xi_j G_j      (stress of the inertia loads and
+//                                                                       of the interface deformation)
+//   f_G   = K_G xi
+//   df_G  = K_G + [G_j xi]_j e_j^T   (the stress's variation with the interface coordinates; lambda fixed)
+//
+// The stress is taken at the current loads, not derived from a potential: the cubic energy
+// 1/2 sum_j xi_j xi^T G_j xi would add the axial force of the bending (1/2 [xi^T G_j xi]_j), but without
+// the quartic term of the Green strain it is unbounded below (a beam whose ends are interface nodes
+// buckles at deflections of a fraction of its thickness; docs/geometric-stiffening.md).
+#include <Eigen/Dense>
+
+#include "bodies/aic_inertia_detail.hpp"
+#include "seflex/common/error.hpp"
+#include "seflex/common/so3.hpp"
+#include "seflex/mbd/bodies/aic_element.hpp"
+
+namespace seflex::mbd {
+
+using Eigen::MatrixXd;
+using Eigen::Vector3d;
+using Eigen::VectorXd;
+
+void stiffening_load_factors(const AicElement& e, const AicKinematics& kin, const Eigen::Ref<const VectorXd>& v,
+                             const Eigen::Ref<const VectorXd>& a, StiffeningLoads& lambda, AicWorkspace& ws) {
+  to_body(e, kin.frame.R_WB, v, ws.sw);
+  to_body(e, kin.frame.R_WB, a, ws.sab);
+  const Vector3d Om = kin.Zx.middleRows<3>(3) * ws.sw;
+  apply_transfer(e, kin, ws.sw, ws.sxid);
+  detail::interface_velocity_accelerations(e, kin.xi, Om, ws.sxid, ws.sc);
+  ws.sab -= ws.sc;
+  lambda.head<6>().noalias() = kin.Zx * ws.sab;
+  const Eigen::Matrix3d W = so3::skew(Om) * so3::skew(Om);
+  lambda.tail<6>() << W(0, 0), W(1, 1), W(2, 2), W(0, 1), W(0, 2), W(1, 2);
+}
+
+void elastic_force_stiffened(const AicElement& e, const AicKinematics& kin, TangentModel tangent,
+                             const StiffeningLoads& lambda, VectorXd& f, MatrixXd* Kt, AicWorkspace& ws, double* energy) {
+  SEFLEX_DEMAND(e.has_stiffening(), "superelement " + e.name + " has no geometric-stiffness invariants");
+  const Eigen::Index n = e.n, nb = 6 * e.N, k = 12 + nb;
+  const VectorXd& xi = kin.xi;
+  // G_c xi for every case (the G_c are symmetric): one product with the stacked invariants.
+  ws.Gxi.noalias() = e.G_stack.transpose() * xi;
+  const Eigen::Map<const MatrixXd> Gx(ws.Gxi.data(), n, k);  // column c: G_c xi
+  ws.mu.resize(k);
+  ws.mu.head<12>() = lambda;
+  ws.mu.tail(nb) = xi.head(nb);
+  ws.g.noalias() = e.K * xi;
+  ws.g.noalias() += Gx * ws.mu;  // + K_G xi
+  if (energy != nullptr) *energy = 0.5 * xi.dot(ws.g);
+  if (Kt == nullptr) {
+    detail::elastic_force_of_local(e, kin, tangent, e.K, f, nullptr, ws);
+    return;
+  }
+  MatrixXd& H = ws.Keff;
+  H = e.K;
+  for (Eigen::Index c = 0; c < k; ++c)
+    if (ws.mu(c) != 0.0) H.noalias() += ws.mu(c) * e.G_stack.middleCols(c * n, n);
+  H.leftCols(nb) += Gx.rightCols(nb);
+  detail::elastic_force_of_local(e, kin, tangent, H, f, Kt, ws);
+}
+
+}  // namespace seflex::mbd

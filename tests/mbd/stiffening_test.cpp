@@ -1,0 +1,150 @@
+// Geometric stiffening of the AIC superelement (mbd/src/bodies/aic_stiffening.cpp,
+// docs/geometric-stiffening.md): the stiffened elastic tangent against central finite differences of
+// the stiffened force, and the load factors of a rigidly spinning body against its kinematics.
+// The invariants here are random symmetric matrices: the tangent is that of the stiffened force
+// whatever the G's are (their physics is tested in tests/reduction/stiffening_invariants_test.cpp and
+// tests/mbd/spinup_stiffening_test.cpp).
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "beam_superelement.hpp"
+#include "seflex/common/so3.hpp"
+#include "seflex/mbd/bodies/aic_element.hpp"
+
+using namespace seflex;
+using namespace seflex::mbd;
+using Eigen::Matrix3d;
+using Eigen::MatrixXd;
+using Eigen::Vector3d;
+using Eigen::VectorXd;
+
+namespace {
+
+Eigen::MatrixXd random_symmetric(Eigen::Index n, double scale, std::mt19937& rng) {
+  std::normal_distribution<double> nd;
+  MatrixXd A(n, n);
+  for (Eigen::Index i = 0; i < A.size(); ++i) A.data()[i] = nd(rng);
+  return 0.5 * scale * (A + A.transpose());
+}
+
+/// The L-frame of aic_kernel_test.cpp (3 interfaces, 3 modes) with random stiffening invariants whose
+/// terms are of the order of the elastic force at deformations of 1e-2.
+se::Superelement stiffened_lframe() {
+  auto fe = test::l_frame();
+  se::Superelement s = test::craig_bampton(fe, {0, 8, 6}, 3, 3, "lframe");
+  std::mt19937 rng(7);
+  const double k = s.K.cwiseAbs().maxCoeff();
+  s.stiffening.n = s.size();
+  for (auto& G : s.stiffening.inertia) G = random_symmetric(s.size(), 0.05 * k, rng);
+  for (int j = 0; j < 6 * s.num_interfaces(); ++j) s.stiffening.interface.push_back(random_symmetric(s.size(), 5.0 * k, rng));
+  return s;
+}
+
+struct Poses {
+  std::vector<Matrix3d> R;
+  std::vector<Vector3d> p;
+};
+
+Poses poses_from(const AicElement& e, const Matrix3d& Rk, const Vector3d& rk, const VectorXd& xi) {
+  Poses P;
+  for (int j = 0; j < e.N; ++j) {
+    P.p.push_back(rk + Rk * (e.x[j] + xi.segment<3>(6 * j)));
+    P.R.push_back(Rk * so3::exp(xi.segment<3>(6 * j + 3)) * e.C[j]);
+  }
+  return P;
+}
+
+VectorXd stiffened_force(const AicElement& e, const Poses& P, const VectorXd& eta, const FloatingFrame& warm,
+                         const StiffeningLoads& lambda, MatrixXd* K = nullptr) {
+  AicKinematics kin;
+  recover_frame(e, P.R, P.p, eta, FrameRecovery::Newton6, warm, kin);
+  AicWorkspace ws;
+  VectorXd f;
+  elastic_force_stiffened(e, kin, TangentModel::Exact, lambda, f, K, ws);
+  return f;
+}
+
+TEST(Stiffening, TangentAgainstFiniteDifferences) {
+  const se::Superelement s = stiffened_lframe();
+  const AicElement e = make_aic_element(s);
+  ASSERT_TRUE(e.has_stiffening());
+  std::mt19937 rng(3);
+  std::normal_distribution<double> nd;
+  StiffeningLoads lambda;
+  for (int c = 0; c < 12; ++c) lambda[c] = nd(rng);
+  const Matrix3d Rk = so3::exp(Vector3d(0.3, -1.1, 0.7));
+  const Vector3d rk(0.4, -0.2, 1.3);
+  VectorXd xi(e.n);
+  for (int i = 0; i < e.n; ++i) xi[i] = 1e-2 * nd(rng);
+  // the frame condition Phi_f xi = 0
+  const MatrixXd P0 = rigid_modes(e, VectorXd::Zero(e.n));
+  const Eigen::Matrix<double, 6, 1> c = (e.Phi_f.leftCols(6 * e.N) * P0).lu().solve(e.Phi_f * xi);
+  xi.head(6 * e.N) -= P0 * c;
+  const Poses P = poses_from(e, Rk, rk, xi);
+  const VectorXd eta = xi.tail(e.m);
+  const FloatingFrame warm{Rk, rk};
+  MatrixXd K;
+  const VectorXd f0 = stiffened_force(e, P, eta, warm, lambda, &K);
+  // The stiffening really acts: the force differs from the linear elastic one by more than 10 %.
+  AicKinematics kin;
+  recover_frame(e, P.R, P.p, eta, FrameRecovery::Newton6, warm, kin);
+  VectorXd f_lin;
+  elastic_force(e, kin, TangentModel::Exact, f_lin, nullptr);
+  EXPECT_GT((f0 - f_lin).norm(), 0.1 * f_lin.norm());
+  const double h = 1e-7;
+  MatrixXd Kfd(e.n, e.n);
+  for (int col = 0; col < e.n; ++col) {
+    VectorXd fs[2];
+    for (int sg = 0; sg < 2; ++sg) {
+      const double d = sg == 0 ? h : -h;
+      Poses Q = P;
+      VectorXd et = eta;
+      if (col < 6 * e.N) {
+        const int j = col / 6, k = col % 6;
+        if (k < 3) Q.p[j][k] += d;
+        else Q.R[j] = so3::exp(d * Vector3d::Unit(k - 3)) * Q.R[j];
+      } else {
+        et[col - 6 * e.N] += d;
+      }
+      fs[sg] = stiffened_force(e, Q, et, warm, lambda);
+    }
+    Kfd.col(col) = (fs[0] - fs[1]) / (2 * h);
+  }
+  const double err = (K - Kfd).norm() / Kfd.norm();
+  EXPECT_LT(err, 1e-7);
+  std::printf("stiffened tangent against central differences: %.2e\n", err);
+}
+
+// A body turning rigidly at Om (world) about the world origin: the frame origin's acceleration is
+// centripetal, Om x (Om x p_WBo); the angular acceleration zero; w_s the components of Om_B~ Om_B~.
+TEST(Stiffening, LoadFactorsOfARigidSpin) {
+  const se::Superelement s = stiffened_lframe();
+  const AicElement e = make_aic_element(s);
+  const Matrix3d Rk = so3::exp(Vector3d(0.2, 0.5, -0.4));
+  const Vector3d rk(1.5, -0.5, 0.3);
+  const Vector3d Om(0.3, -1.2, 2.0);
+  const Poses P = poses_from(e, Rk, rk, VectorXd::Zero(e.n));
+  AicKinematics kin;
+  recover_frame(e, P.R, P.p, VectorXd::Zero(e.m), FrameRecovery::Newton6, FloatingFrame{Rk, rk}, kin);
+  VectorXd v = VectorXd::Zero(e.n), a = VectorXd::Zero(e.n);
+  for (int j = 0; j < e.N; ++j) {
+    v.segment<3>(6 * j) = Om.cross(P.p[j]);
+    v.segment<3>(6 * j + 3) = Om;
+    a.segment<3>(6 * j) = Om.cross(Om.cross(P.p[j]));
+  }
+  StiffeningLoads lambda;
+  AicWorkspace ws;
+  stiffening_load_factors(e, kin, v, a, lambda, ws);
+  const Vector3d a_o = Rk.transpose() * Om.cross(Om.cross(kin.frame.p_WBo));
+  const Vector3d Om_B = Rk.transpose() * Om;
+  const Matrix3d W = so3::skew(Om_B) * so3::skew(Om_B);
+  const double tol = 1e-12 * Om.squaredNorm() * (1.0 + rk.norm());
+  EXPECT_LE((lambda.head<3>() - a_o).norm(), tol);
+  EXPECT_LE(lambda.segment<3>(3).norm(), tol);
+  Eigen::Matrix<double, 6, 1> w;
+  w << W(0, 0), W(1, 1), W(2, 2), W(0, 1), W(0, 2), W(1, 2);
+  EXPECT_LE((lambda.tail<6>() - w).norm(), tol);
+}
+
+}  // namespace
