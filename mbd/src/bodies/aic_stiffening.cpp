@@ -55,10 +55,10 @@ void elastic_force_stiffened(const AicElement& e, const AicKinematics& kin, Tang
     detail::elastic_force_of_local(e, kin, tangent, e.K, f, nullptr, ws);
     return;
   }
+  // vec(K_G) = [vec G_0 ... vec G_k-1] mu: the blocks of G_stack are contiguous, one product.
   MatrixXd& H = ws.Keff;
   H = e.K;
-  for (Eigen::Index c = 0; c < k; ++c)
-    if (ws.mu(c) != 0.0) H.noalias() += ws.mu(c) * e.G_stack.middleCols(c * n, n);
+  Eigen::Map<VectorXd>(H.data(), n * n).noalias() += Eigen::Map<const MatrixXd>(e.G_stack.data(), n * n, k) * ws.mu;
   H.leftCols(nb) += Gx.rightCols(nb);
   detail::elastic_force_of_local(e, kin, tangent, H, f, Kt, ws);
 }
