@@ -2,7 +2,7 @@
 # The two set-up commands of the README:
 #   scripts/bootstrap.sh demo   install what is missing, build, run the main job
 #   scripts/bootstrap.sh test   install what is missing, build, run the whole test suite (CTest),
-#                               then the bad-input tests again under ASan + UBSan and every fuzz
+#                               then the bad-input and card tests again under ASan + UBSan and every fuzz
 #                               harness for 20 s (clang)
 # Build folders: build/ (Release) and build-fuzz/ (clang, sanitizers + fuzzers; bench/fuzz.sh uses it too).
 # Parallelism: $SEFLEX_JOBS or nproc.
@@ -47,15 +47,17 @@ cmake --build build -j "$jobs"
 (cd build && ctest --output-on-failure -j "$jobs" --timeout 900)
 
 # The sanitizer stage, one clang folder (build-fuzz; docs/reliability.md): ASan + UBSan + libFuzzer's
-# coverage counters (-DSEFLEX_FUZZ=ON). It builds seflex, the bad-input tests and the fuzz harnesses;
-# runs the bad-input tests (ctest -L input, fuzz regression inputs included), then every harness for
+# coverage counters (-DSEFLEX_FUZZ=ON). It builds seflex, the bad-input and card tests and the fuzz
+# harnesses; runs the bad-input tests (label input, fuzz regression inputs included) and the Nastran card
+# tests (label cards: 41 tests, 17 s there; the rest of the suite takes hours under the sanitizers, see
+# docs/reliability.md), then every harness for
 # $SEFLEX_CI_FUZZ_SECONDS (default 20) from its seeds in a fresh corpus (a temporary folder, not the
 # long-run corpus of bench/fuzz.sh; fixed libFuzzer seed): any crash, sanitizer report, leak, hang or
 # allocation over 2 GB fails the run. No distributed backend there (the input tests run serial commands).
 configure build-fuzz -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DSEFLEX_FUZZ=ON -DSEFLEX_BUILD_BENCH=OFF -DSEFLEX_BUILD_EXAMPLES=OFF -DSEFLEX_MPI=OFF
-cmake --build build-fuzz -j "$jobs" --target seflex test_input fuzz_all
-(cd build-fuzz && ctest --output-on-failure -j "$jobs" -L input --timeout 900)
+cmake --build build-fuzz -j "$jobs" --target seflex test_input test_cards fuzz_all
+(cd build-fuzz && ctest --output-on-failure -j "$jobs" -L '^(input|cards)$' --timeout 900)
 fuzz_dir="$(mktemp -d "${TMPDIR:-/tmp}/seflex-ci-fuzz.XXXXXX")"
 SEFLEX_FUZZ_BUILD=build-fuzz SEFLEX_FUZZ_NO_BUILD=1 SEFLEX_FUZZ_DIR="$fuzz_dir" SEFLEX_FUZZ_SEED=1 \
   bench/fuzz.sh "${SEFLEX_CI_FUZZ_SECONDS:-20}" ||

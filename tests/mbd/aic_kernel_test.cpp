@@ -4,6 +4,9 @@
 // central finite differences of the implemented force.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <random>
 
 #include "beam_superelement.hpp"
@@ -121,8 +124,63 @@ TEST(AicKernel, T1_CraigBamptonIdentities) {
   EXPECT_LT((e.I_Cm_B - F.s.I_Cm_B).norm(), 1e-10 * F.s.I_Cm_B.norm());
 }
 
+// Error bounds of a recovered frame (T2), from what recover_frame guarantees. It stops when its
+// Newton step is below 1e-9 (|dp|/scale + |dtheta|); its Newton matrix is exact, so one more step
+// would leave ~1e-18 and what remains is rounding, and for Decoupled3 the reduction's own defect:
+// - Rounding: every local coordinate is formed by about ten floating-point operations on positions
+//   no longer than `scale` (poses_from, then R^T (p_WI - p) - x_j, and the exp/log of rotations), so
+//   its error is below c eps scale with c = 16 (a generous count): |d xi| <= delta = 16 eps scale sqrt(n).
+// - The frame solves Phi_f xi(z) = 0, z = [dp_B; dtheta]. To first order a change d xi of the local
+//   coordinates moves it by dz = A^-1 Phi_f d xi, A = sum_j Phi_f,j B_j with
+//   B_j = [I, -skew(x_j + u_j); 0, jl_inv(theta_j)] (the Newton matrix at the solution), and the
+//   recomputed local coordinates by d xi - B dz.
+// - Decoupled3 forms the frame condition from the world positions R^T p_WI instead of R^T (p_WI - p):
+//   it is exact only if Phi_f maps a rigid translation to itself. The reduced basis does so up to its
+//   defect D = Phi_f Phi_rig0 - I (round-off of the reduction, T1 bounds it by 1e-10), so Decoupled3
+//   solves Phi_f xi = -D_t R^T p_WBo (D_t: the 3 translation columns), which moves the frame by up
+//   to |A^-1| |D_t| |p_WBo| more: a body far from the world origin is recovered less exactly (checked
+//   on this L-frame, |D_t| = 4.4e-13: Decoupled3's R error is 5e-16, 7.7e-13 and 7.7e-11 for |r_k| = 0,
+//   2.24 and 224 m with gcc -O3, Newton6's 5e-16 to 8e-15).
+// Hence |dz| <= |A^-1 Phi_f| delta (+ |A^-1| |D_t| |p_WBo|), |R - R_k|_F <= sqrt(2) |dz|,
+// |p - r_k| <= |dz|, |xi - xi_k| <= delta + |B| |dz| (Frobenius norms, which bound the 2-norms).
+// On the L-frame the bounds are 1.5e-13..1.5e-11. Errors seen (R, p, xi; modes 0): Newton6 6e-16,
+// 2e-16, 9e-16 (gcc -O3) and 7e-16, 4e-16, 9e-16 (clang -O0 ASan); Decoupled3 7.7e-13, 1.5e-13,
+// 9.7e-13 (gcc) and 1.05e-12, 2.0e-13, 1.32e-12 (clang) against bounds 3.6e-12, 2.5e-12, 1.2e-11:
+// the fixed 1e-12 this test had was below Decoupled3's defect term and failed with clang. A recovery
+// that stopped one Newton step early would be off by ~1e-9, above the 1e-10 the bounds must stay under.
+namespace {
+
+struct RecoveryBounds {
+  double R, p, xi;
+};
+
+RecoveryBounds recovery_bounds(const AicElement& e, const Poses& P, const Vector3d& rk, FrameRecovery method,
+                               const AicKinematics& kin) {
+  double scale = std::max(e.length, rk.norm());
+  for (int j = 0; j < e.N; ++j) scale = std::max({scale, P.p[j].norm(), rk.norm() + e.x[j].norm()});
+  const double delta = 16 * std::numeric_limits<double>::epsilon() * scale * std::sqrt(double(e.n));
+  Eigen::Matrix<double, 6, 6> A = Eigen::Matrix<double, 6, 6>::Zero();
+  MatrixXd B = MatrixXd::Zero(6 * e.N, 6);
+  for (int j = 0; j < e.N; ++j) {
+    B.block<3, 3>(6 * j, 0).setIdentity();
+    B.block<3, 3>(6 * j, 3) = -so3::skew(e.x[j] + kin.xi.segment<3>(6 * j));
+    B.block<3, 3>(6 * j + 3, 3) = so3::jl_inv(kin.xi.segment<3>(6 * j + 3));
+    A += e.Phi_f.middleCols(6 * j, 6) * B.middleRows(6 * j, 6);
+  }
+  const Eigen::Matrix<double, 6, 6> A_inv = A.inverse();
+  double dz = (A_inv * e.Phi_f).norm() * delta;
+  if (method == FrameRecovery::Decoupled3) {
+    const MatrixXd D = e.Phi_f.leftCols(6 * e.N) * rigid_modes(e, VectorXd::Zero(e.n)) - MatrixXd::Identity(6, 6);
+    dz += A_inv.norm() * D.leftCols(3).norm() * kin.frame.p_WBo.norm();
+  }
+  return {std::sqrt(2.0) * dz, dz, delta + B.norm() * dz};
+}
+
+}  // namespace
+
 // T2: recover a random frame (rotation ~1.5 rad) from interface poses with both algorithms,
-// starting from interface node 0; pose error <= 1e-12 in <= 5 iterations. With internal modes too.
+// starting from interface node 0; pose error within round-off (recovery_bounds) in <= 5 iterations.
+// With internal modes too.
 TEST(AicKernel, T2_FrameRecovery) {
   for (int modes : {0, 3}) {
     Fixture F(modes);
@@ -137,9 +195,12 @@ TEST(AicKernel, T2_FrameRecovery) {
     for (auto method : {FrameRecovery::Newton6, FrameRecovery::Decoupled3}) {
       AicKinematics kin;
       recover_frame(e, P.R, P.p, eta, method, frame_guess(e, P.R[0], P.p[0]), kin);
-      EXPECT_LT((kin.frame.R_WB - Rk).norm(), 1e-12) << "modes " << modes;
-      EXPECT_LT((kin.frame.p_WBo - rk).norm(), 1e-12) << "modes " << modes;
-      EXPECT_LT((kin.xi - xi).norm(), 1e-12) << "modes " << modes;
+      const RecoveryBounds tol = recovery_bounds(e, P, rk, method, kin);
+      // The bounds stay at round-off, far below what one Newton step short of convergence leaves.
+      EXPECT_LT(std::max({tol.R, tol.p, tol.xi}), 1e-10) << "modes " << modes;
+      EXPECT_LT((kin.frame.R_WB - Rk).norm(), tol.R) << "modes " << modes;
+      EXPECT_LT((kin.frame.p_WBo - rk).norm(), tol.p) << "modes " << modes;
+      EXPECT_LT((kin.xi - xi).norm(), tol.xi) << "modes " << modes;
       EXPECT_LE(kin.iterations, 5);
     }
   }
