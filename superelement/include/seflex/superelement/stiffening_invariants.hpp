@@ -13,11 +13,12 @@
 //                S_s and L_s as in inertia_invariants.hpp, s = xx, yy, zz, xy, xz, yz);
 //   interface[j] the j-th constraint mode (unit displacement or rotation j of the interface, the other
 //                interface dofs held), j = 0..6N-1.
-// In the run (load factors lambda = [a_o - g; alpha; w_s] of the frame, all in body axes):
-//   V_G(q) = 1/2 q^T (sum_c lambda_c inertia[c]) q + 1/2 sum_j q_j q^T interface[j] q
-// the second term being the cubic strain energy of the interface deformation (exact for a structure
-// whose stresses come from its interface loads; the fixed-interface modes' own stresses are left out:
-// the inertia load cases already carry the quasi-static part of them).
+// In the run (load factors lambda = [a_o - g; alpha; w_s] of the frame, all in body axes) the body's
+// stress stiffness is
+//   K_G(lambda, q) = sum_c lambda_c inertia[c] + sum_j q_j interface[j]
+// with the stress held at the current loads (docs/geometric-stiffening.md says why not the cubic
+// energy); the fixed-interface modes' own dynamic stresses are left out (the inertia load cases carry
+// the quasi-static part of them).
 #include <Eigen/Core>
 #include <array>
 #include <vector>
