@@ -326,43 +326,39 @@ class Reader {
     return v;
   }
 
-  // Format 1.2: the inertia invariants, all datasets or none.
-  void read_invariants(const YAML::Node& table, se::Superelement& s) const {
+  /// Datasets stored complete or not at all (the inertia invariants, format 1.2; the geometric-stiffness
+  /// invariants, 1.3): each(obj, f) calls f(name, matrix, rows, cols) for every dataset of obj.
+  /// Fills `out` and returns true when the file has them.
+  template <class T, class Each>
+  bool read_all_or_none(const YAML::Node& table, T& out, Each&& each, const char* what) const {
     std::string first_present, first_missing;
-    se::InertiaInvariants probe;
-    detail::for_each_invariant_dataset(probe, s.size(), s.num_modes, [&](const std::string& name, auto&, Eigen::Index, Eigen::Index) {
+    T probe;
+    each(probe, [&](const std::string& name, auto&, Eigen::Index, Eigen::Index) {
       if (table[name] && first_present.empty()) first_present = name;
       if (!table[name] && first_missing.empty()) first_missing = name;
     });
-    if (first_present.empty()) return;
+    if (first_present.empty()) return false;
     if (!first_missing.empty())
-      fail("dataset '" + first_missing + "' is missing; the file has '" + first_present +
-           "', and the inertia invariants are stored complete or not at all");
-    detail::for_each_invariant_dataset(s.invariants, s.size(), s.num_modes,
-                                       [&](const std::string& name, auto& A, Eigen::Index r, Eigen::Index c) {
-                                         fill(table, name, A, r, c);
-                                       });
+      fail("dataset '" + first_missing + "' is missing; the file has '" + first_present + "', and the " + what +
+           " are stored complete or not at all");
+    each(out, [&](const std::string& name, auto& A, Eigen::Index r, Eigen::Index c) { fill(table, name, A, r, c); });
+    return true;
+  }
+
+  void read_invariants(const YAML::Node& table, se::Superelement& s) const {
+    const bool present = read_all_or_none(table, s.invariants, [&](auto& inv, auto&& f) {
+      detail::for_each_invariant_dataset(inv, s.size(), s.num_modes, f);
+    }, "inertia invariants");
+    if (!present) return;
     s.invariants.n = s.size();
     if (s.size() == 0) fail("the inertia invariants are stored for a body of size 0");
   }
 
-  // Format 1.3: the geometric-stiffness invariants, all datasets or none.
   void read_stiffening(const YAML::Node& table, se::Superelement& s) const {
-    std::string first_present, first_missing;
-    se::StiffeningInvariants probe;
-    detail::for_each_stiffening_dataset(probe, s.size(), s.num_interfaces(), [&](const std::string& name, auto&, Eigen::Index, Eigen::Index) {
-      if (table[name] && first_present.empty()) first_present = name;
-      if (!table[name] && first_missing.empty()) first_missing = name;
-    });
-    if (first_present.empty()) return;
-    if (!first_missing.empty())
-      fail("dataset '" + first_missing + "' is missing; the file has '" + first_present +
-           "', and the geometric-stiffness invariants are stored complete or not at all");
-    detail::for_each_stiffening_dataset(s.stiffening, s.size(), s.num_interfaces(),
-                                        [&](const std::string& name, auto& A, Eigen::Index r, Eigen::Index c) {
-                                          fill(table, name, A, r, c);
-                                        });
-    s.stiffening.n = s.size();
+    if (read_all_or_none(table, s.stiffening, [&](auto& st, auto&& f) {
+          detail::for_each_stiffening_dataset(st, s.size(), s.num_interfaces(), f);
+        }, "geometric-stiffness invariants"))
+      s.stiffening.n = s.size();
   }
 
   void list_table(const YAML::Node& table) {

@@ -9,6 +9,7 @@
 #include <limits>
 #include <random>
 
+#include "aic_test_util.hpp"
 #include "beam_superelement.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/common/so3.hpp"
@@ -23,31 +24,9 @@ using Eigen::VectorXd;
 
 namespace {
 
-struct Poses {
-  std::vector<Matrix3d> R;
-  std::vector<Vector3d> p;
-};
-
-// Interface poses of a body whose frame is (R_k, r_k) with local coordinates q (Phi_f xi = 0).
-Poses poses_from(const AicElement& e, const Matrix3d& Rk, const Vector3d& rk, const VectorXd& xi) {
-  Poses P;
-  for (int j = 0; j < e.N; ++j) {
-    P.p.push_back(rk + Rk * (e.x[j] + xi.segment<3>(6 * j)));
-    P.R.push_back(Rk * so3::exp(xi.segment<3>(6 * j + 3)) * e.C[j]);
-  }
-  return P;
-}
-
-// Random xi of amplitude amp satisfying the frame condition Phi_f xi = 0.
-VectorXd random_xi(const AicElement& e, double amp, std::mt19937& rng) {
-  std::normal_distribution<double> nd;
-  VectorXd xi(e.n);
-  for (int i = 0; i < e.n; ++i) xi[i] = amp * nd(rng);
-  const MatrixXd P0 = rigid_modes(e, VectorXd::Zero(e.n));
-  const Eigen::Matrix<double, 6, 1> c = (e.Phi_f.leftCols(6 * e.N) * P0).lu().solve(e.Phi_f * xi);
-  xi.head(6 * e.N) -= P0 * c;
-  return xi;
-}
+using test::Poses;
+using test::poses_from;
+using test::random_xi;
 
 struct Fixture {
   se::Superelement s;
@@ -68,28 +47,9 @@ VectorXd force(const AicElement& e, const Poses& P, const VectorXd& eta, const F
   return f;
 }
 
-// Central finite-difference tangent w.r.t. [dr_j; dpi_j (spatial); deta].
+// Central finite-difference tangent of the exact elastic force.
 MatrixXd fd_tangent(const AicElement& e, const Poses& P, const VectorXd& eta, const FloatingFrame& warm) {
-  const double h = 1e-7;
-  MatrixXd Kfd(e.n, e.n);
-  for (int c = 0; c < e.n; ++c) {
-    VectorXd col[2];
-    for (int sgn = 0; sgn < 2; ++sgn) {
-      const double s = sgn == 0 ? h : -h;
-      Poses Q = P;
-      VectorXd et = eta;
-      if (c < 6 * e.N) {
-        const int j = c / 6, k = c % 6;
-        if (k < 3) Q.p[j][k] += s;
-        else Q.R[j] = so3::exp(s * Vector3d::Unit(k - 3)) * Q.R[j];
-      } else {
-        et[c - 6 * e.N] += s;
-      }
-      col[sgn] = force(e, Q, et, warm, TangentModel::Exact);
-    }
-    Kfd.col(c) = (col[0] - col[1]) / (2 * h);
-  }
-  return Kfd;
+  return test::fd_tangent(e, P, eta, [&](const Poses& Q, const VectorXd& et) { return force(e, Q, et, warm, TangentModel::Exact); });
 }
 
 }  // namespace

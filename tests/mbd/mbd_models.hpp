@@ -2,6 +2,7 @@
 // Small models shared by the multibody tests: rigid rods, flexible pendulum chains, and an
 // observer that keeps every sample.
 #include <Eigen/Dense>
+#include <cmath>
 #include <functional>
 #include <vector>
 
@@ -46,6 +47,24 @@ struct Recorder : mbd::Observer {
   std::vector<mbd::Sample> samples;
   void on_sample(const mbd::Model&, const mbd::Sample& s) override { samples.push_back(s); }
 };
+
+/// The tip of a spinning beam in the hub frame at each recorded sample (spin-up tests): the last
+/// node's position rotated back by the first hinge's angle about z, less the undeformed tip (L, 0, 0):
+/// v transverse, u axial.
+struct HubFrameTip {
+  std::vector<double> t, v, u;
+};
+inline HubFrameTip tip_in_hub_frame(const Recorder& rec, double L) {
+  HubFrameTip out;
+  for (const auto& smp : rec.samples) {
+    const double th = smp.hinges[0].phi;
+    const Eigen::Vector3d p = smp.nodes.back().p;
+    out.t.push_back(smp.t);
+    out.v.push_back(-std::sin(th) * p.x() + std::cos(th) * p.y());
+    out.u.push_back(std::cos(th) * p.x() + std::sin(th) * p.y() - L);
+  }
+  return out;
+}
 
 struct ChainOptions {
   int bodies = 2;

@@ -45,9 +45,7 @@ se::Superelement beam_superelement(int elements, int modes) {
   return reduction::reduce_to_superelement(m, o);
 }
 
-struct History {
-  std::vector<double> t, v;
-};
+using History = test::HubFrameTip;
 
 History spin_up(const se::Superelement& s, bool stiffening, double rate, double t_end) {
   ModelBuilder mb;
@@ -72,14 +70,7 @@ History spin_up(const se::Superelement& s, bool stiffening, double rate, double 
   is.output_interval = 0.05;
   test::Recorder rec;
   simulate(model, st, data, is, &rec);
-  History out;
-  for (const auto& smp : rec.samples) {
-    const double th = smp.hinges[0].phi;
-    const Vector3d p = smp.nodes.back().p;
-    out.t.push_back(smp.t);
-    out.v.push_back(-std::sin(th) * p.x() + std::cos(th) * p.y());
-  }
-  return out;
+  return test::tip_in_hub_frame(rec, kL);
 }
 
 /// t -> v of a reference file (lines "t, v, u, torque"; '#' comments).

@@ -20,9 +20,7 @@ namespace {
 // Hub angle of Simo and Vu-Quoc: spin-up to 6 rad/s over 15 s, then constant rate.
 DriveValue hub(double t) { return spin_up_drive(6.0, 15.0, t); }
 
-struct SpinupHistory {
-  std::vector<double> t, v, u;  // tip transverse and axial displacement in the hub frame
-};
+using SpinupHistory = test::HubFrameTip;  // tip transverse and axial displacement in the hub frame
 
 // L = 10 m, EI = 1.4e4 N m^2, EA = 2.8e7 N, rho A = 1.2 kg/m, cut into `bodies` AIC superelements
 // of 2 FE elements each, on a driven hub hinge.
@@ -58,15 +56,7 @@ SpinupHistory spinup(int bodies, InertiaModel inertia, bool velocity_tangent = t
   is.inertia_velocity_tangent = velocity_tangent;
   test::Recorder rec;
   simulate(model, st, data, is, &rec);
-  SpinupHistory out;
-  for (const auto& smp : rec.samples) {
-    const double th = smp.hinges[0].phi;
-    const Vector3d p = smp.nodes.back().p;
-    out.t.push_back(smp.t);
-    out.v.push_back(-std::sin(th) * p.x() + std::cos(th) * p.y());
-    out.u.push_back(std::cos(th) * p.x() + std::sin(th) * p.y() - L);
-  }
-  return out;
+  return test::tip_in_hub_frame(rec, L);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include <random>
 
+#include "aic_test_util.hpp"
 #include "beam_superelement.hpp"
 #include "seflex/common/so3.hpp"
 #include "seflex/mbd/bodies/aic_element.hpp"
@@ -41,19 +42,8 @@ se::Superelement stiffened_lframe() {
   return s;
 }
 
-struct Poses {
-  std::vector<Matrix3d> R;
-  std::vector<Vector3d> p;
-};
-
-Poses poses_from(const AicElement& e, const Matrix3d& Rk, const Vector3d& rk, const VectorXd& xi) {
-  Poses P;
-  for (int j = 0; j < e.N; ++j) {
-    P.p.push_back(rk + Rk * (e.x[j] + xi.segment<3>(6 * j)));
-    P.R.push_back(Rk * so3::exp(xi.segment<3>(6 * j + 3)) * e.C[j]);
-  }
-  return P;
-}
+using test::Poses;
+using test::poses_from;
 
 VectorXd stiffened_force(const AicElement& e, const Poses& P, const VectorXd& eta, const FloatingFrame& warm,
                          const StiffeningLoads& lambda, MatrixXd* K = nullptr) {
@@ -75,12 +65,7 @@ TEST(Stiffening, TangentAgainstFiniteDifferences) {
   for (int c = 0; c < 12; ++c) lambda[c] = nd(rng);
   const Matrix3d Rk = so3::exp(Vector3d(0.3, -1.1, 0.7));
   const Vector3d rk(0.4, -0.2, 1.3);
-  VectorXd xi(e.n);
-  for (int i = 0; i < e.n; ++i) xi[i] = 1e-2 * nd(rng);
-  // the frame condition Phi_f xi = 0
-  const MatrixXd P0 = rigid_modes(e, VectorXd::Zero(e.n));
-  const Eigen::Matrix<double, 6, 1> c = (e.Phi_f.leftCols(6 * e.N) * P0).lu().solve(e.Phi_f * xi);
-  xi.head(6 * e.N) -= P0 * c;
+  const VectorXd xi = test::random_xi(e, 1e-2, rng);
   const Poses P = poses_from(e, Rk, rk, xi);
   const VectorXd eta = xi.tail(e.m);
   const FloatingFrame warm{Rk, rk};
@@ -92,25 +77,9 @@ TEST(Stiffening, TangentAgainstFiniteDifferences) {
   VectorXd f_lin;
   elastic_force(e, kin, TangentModel::Exact, f_lin, nullptr);
   EXPECT_GT((f0 - f_lin).norm(), 0.1 * f_lin.norm());
-  const double h = 1e-7;
-  MatrixXd Kfd(e.n, e.n);
-  for (int col = 0; col < e.n; ++col) {
-    VectorXd fs[2];
-    for (int sg = 0; sg < 2; ++sg) {
-      const double d = sg == 0 ? h : -h;
-      Poses Q = P;
-      VectorXd et = eta;
-      if (col < 6 * e.N) {
-        const int j = col / 6, k = col % 6;
-        if (k < 3) Q.p[j][k] += d;
-        else Q.R[j] = so3::exp(d * Vector3d::Unit(k - 3)) * Q.R[j];
-      } else {
-        et[col - 6 * e.N] += d;
-      }
-      fs[sg] = stiffened_force(e, Q, et, warm, lambda);
-    }
-    Kfd.col(col) = (fs[0] - fs[1]) / (2 * h);
-  }
+  const MatrixXd Kfd = test::fd_tangent(e, P, eta, [&](const Poses& Q, const VectorXd& et) {
+    return stiffened_force(e, Q, et, warm, lambda);
+  });
   const double err = (K - Kfd).norm() / Kfd.norm();
   EXPECT_LT(err, 1e-7);
   std::printf("stiffened tangent against central differences: %.2e\n", err);
