@@ -5,21 +5,13 @@
 #include "seflex/common/so3.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/geometric_stiffness.hpp"
+#include "seflex/superelement/symmetric_basis.hpp"
 
 namespace seflex::reduction {
 
 Eigen::MatrixXd inertia_load_cases(const fem::Model& model, const fem::DofMap& dofs,
                                    const Eigen::SparseMatrix<double>& M_gg, const Eigen::Vector3d& p_frame) {
   const auto axes = fem::grid_cd_axes(model);
-  // The symmetric basis S_s of inertia_invariants.hpp.
-  std::array<Eigen::Matrix3d, 6> S;
-  for (int s = 0; s < 3; ++s) S[static_cast<std::size_t>(s)] = Eigen::Vector3d::Unit(s).asDiagonal();
-  const int pair[3][2] = {{0, 1}, {0, 2}, {1, 2}};
-  for (int s = 0; s < 3; ++s) {
-    Eigen::Matrix3d& P = S[static_cast<std::size_t>(3 + s)];
-    P.setZero();
-    P(pair[s][0], pair[s][1]) = P(pair[s][1], pair[s][0]) = 1.0;
-  }
   Eigen::MatrixXd D = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(dofs.size()), 12);
   for (std::size_t i = 0; i < model.grids.size(); ++i) {
     const Eigen::Vector3d X = model.grids[i].x_basic - p_frame;
@@ -27,7 +19,7 @@ Eigen::MatrixXd inertia_load_cases(const fem::Model& model, const fem::DofMap& d
     B.block<3, 3>(0, 0).setIdentity();
     B.block<3, 3>(0, 3) = -so3::skew(X);
     B.block<3, 3>(3, 3).setIdentity();
-    for (int s = 0; s < 6; ++s) B.block<3, 1>(0, 6 + s) = S[static_cast<std::size_t>(s)] * X;
+    for (int s = 0; s < 6; ++s) B.block<3, 1>(0, 6 + s) = se::sym_basis(s) * X;
     if (const auto& A = axes[i]) {  // CD components = A^T basic
       B.topRows<3>() = A->transpose() * B.topRows<3>();
       B.bottomRows<3>() = A->transpose() * B.bottomRows<3>();

@@ -2,6 +2,7 @@
 // Every invariant is a mass pairing a^T M b of FE-level fields that are linear in the reduced
 // coordinates; node sums of cross products become GEMMs over the component rows of the fields.
 #include "seflex/superelement/inertia_invariants.hpp"
+#include "seflex/superelement/symmetric_basis.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -30,15 +31,6 @@ MatrixXd component_rows(const MatrixXd& Y, int t) {
   MatrixXd out(nfe, Y.cols());
   for (Index i = 0; i < nfe; ++i) out.row(i) = Y.row(6 * i + t);
   return out;
-}
-
-// Symmetric basis S_s, s = 0..5 <-> xx, yy, zz, xy, xz, yz.
-Matrix3d sym_basis(int s) {
-  static constexpr int pairs[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
-  Matrix3d S = Matrix3d::Zero();
-  S(pairs[s][0], pairs[s][1]) = 1.0;
-  S(pairs[s][1], pairs[s][0]) = 1.0;
-  return S;
 }
 
 struct Fields {
@@ -135,7 +127,7 @@ InertiaInvariants compute_inertia_invariants(const Superelement& body) {
   v.PmLX.resize(n, 6);
   v.HLX.resize(18, n);
   for (int s = 0; s < 6; ++s) {
-    const Matrix3d S = sym_basis(s);
+    const Matrix3d S = se::sym_basis(s);
     const MatrixXd MLX = M * apply_L(S, f.Xf);
     v.PmLX.col(s) = P.transpose() * MLX;
     v.E0mLX.col(s) = f.E0.transpose() * MLX;

@@ -17,6 +17,7 @@
 #include "seflex/common/error.hpp"
 #include "seflex/common/so3.hpp"
 #include "seflex/mbd/bodies/aic_element.hpp"
+#include "seflex/superelement/symmetric_basis.hpp"
 
 namespace seflex::mbd {
 
@@ -25,6 +26,7 @@ using Eigen::MatrixXd;
 using Eigen::Vector3d;
 using Eigen::VectorXd;
 using so3::skew;
+using se::sym_components;
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 using Vector6d = Eigen::Matrix<double, 6, 1>;
 using Matrix36d = Eigen::Matrix<double, 3, 6>;
@@ -52,13 +54,6 @@ void simplified(const AicElement& e, const AicKinematics& kin, const VectorXd& w
   Mw = e.M;
   if (want == InertiaMatrices::All) Cw.setZero(e.n, e.n);
   configuration_tangent(e, kin, Mw, ab, fw, ws, Kw);
-}
-
-// Symmetric components (xx, yy, zz, xy, xz, yz) of a symmetric 3x3 W = sum_s w_s S_s.
-Vector6d sym_components(const Matrix3d& W) {
-  Vector6d v;
-  v << W(0, 0), W(1, 1), W(2, 2), W(0, 1), W(0, 2), W(1, 2);
-  return v;
 }
 
 void full(const AicElement& e, const AicKinematics& kin, const VectorXd& w, const VectorXd& ab, InertiaMatrices want,

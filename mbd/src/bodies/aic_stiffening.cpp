@@ -17,6 +17,7 @@
 #include "seflex/common/error.hpp"
 #include "seflex/common/so3.hpp"
 #include "seflex/mbd/bodies/aic_element.hpp"
+#include "seflex/superelement/symmetric_basis.hpp"
 
 namespace seflex::mbd {
 
@@ -34,7 +35,7 @@ void stiffening_load_factors(const AicElement& e, const AicKinematics& kin, cons
   ws.sab -= ws.sc;
   lambda.head<6>().noalias() = kin.Zx * ws.sab;
   const Eigen::Matrix3d W = so3::skew(Om) * so3::skew(Om);
-  lambda.tail<6>() << W(0, 0), W(1, 1), W(2, 2), W(0, 1), W(0, 2), W(1, 2);
+  lambda.tail<6>() = se::sym_components(W);
 }
 
 void elastic_force_stiffened(const AicElement& e, const AicKinematics& kin, TangentModel tangent,
