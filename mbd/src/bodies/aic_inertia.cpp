@@ -32,6 +32,79 @@ using Vector6d = Eigen::Matrix<double, 6, 1>;
 using Matrix36d = Eigen::Matrix<double, 3, 6>;
 using Vector9d = Eigen::Matrix<double, 9, 1>;
 
+namespace detail {
+
+void inertia_projections(const AicElement& e, const VectorXd& xi, const VectorXd& xid, const Vector3d& Om, AicWorkspace& ws,
+                         InertiaProjections& pr) {
+  const se::InertiaInvariants& I = e.inv;
+  const Eigen::Index n = e.n;
+  // Every contraction with xi and with xi_dot: two products with the stacked invariants
+  // (StackedInvariantRows), read in place below.
+  const StackedInvariantRows r(n);
+  ws.t.noalias() = e.inv_by_xi * xi;
+  ws.q.noalias() = e.inv_by_xid * xid;
+  const double* X = ws.t.data();
+  const double* Y = ws.q.data();
+  using Map3n = Eigen::Map<const Eigen::Matrix<double, 3, Eigen::Dynamic>>;
+  using MapN = Eigen::Map<const MatrixXd>;
+
+  // Mass pairing at xi.
+  MatrixXd& PmE = ws.PmE;
+  PmE = I.PmE0;
+  PmE.rightCols<3>() += Map3n(X + r.HP, 3, n).transpose();
+  Matrix6d& EmE = pr.EmE;
+  EmE = I.E0mE0;
+  {
+    const Eigen::Map<const Matrix36d> B(X + r.HE0);
+    EmE.bottomRows<3>() += B;
+    EmE.rightCols<3>() += B.transpose();
+    Vector9d q;
+    q.noalias() = Eigen::Map<const Eigen::Matrix<double, 9, Eigen::Dynamic>>(X + r.HE1, 9, n) * xi;
+    EmE.bottomRightCorner<3, 3>() += Eigen::Map<const Matrix3d>(q.data());
+  }
+  // Centrifugal field: pm = CLp s(W), em = CLe s(W) + [0; CLh s(W)].
+  MatrixXd& CLp = ws.CLp;
+  CLp = I.PmLX;
+  CLp += MapN(X + r.LP, n, 6);
+  Matrix6d& CLe = pr.CLe;
+  CLe = I.E0mLX;
+  CLe += Eigen::Map<const Matrix6d>(X + r.E0LP);
+  Matrix36d& CLh = pr.CLh;
+  CLh = Eigen::Map<const Matrix36d>(X + r.HLX);
+  for (int s = 0; s < 6; ++s) CLh.col(s).noalias() += Map3n(X + r.HLP + 3 * n * s, 3, n) * xi;
+  // Coriolis field and gyroscopic moments, linear in Om at fixed xi_dot: columns a.
+  MatrixXd& GPp = ws.GPp;
+  MatrixXd& GVp = ws.GVp;
+  GPp = MapN(Y + r.PmGP, n, 3);
+  GVp = MapN(Y + r.PgOV, n, 3);
+  pr.GPe = Eigen::Map<const Eigen::Matrix<double, 6, 3>>(Y + r.E0mGP);
+  pr.GVe = Eigen::Map<const Matrix3d>(Y + r.EgOV);
+  for (int a = 0; a < 3; ++a) {
+    ws.HGPxi[a] = Map3n(X + r.HGP + 3 * n * a, 3, n);
+    pr.GPh.col(a).noalias() = ws.HGPxi[a] * xid;
+  }
+  Vector9d& OO = pr.OO;
+  for (int b = 0; b < 3; ++b)
+    for (int a = 0; a < 3; ++a) OO[a + 3 * b] = Om[a] * Om[b];
+  const Matrix3d Wc = skew(Om) * skew(Om);
+  const Vector6d sW = sym_components(Wc);
+  VectorXd& pm = ws.pm;
+  pm.noalias() = CLp * sW;
+  pm.noalias() += GPp * Om;
+  pm.noalias() += I.PgOO * OO;
+  pm.noalias() += GVp * Om;
+  Vector6d& em = pr.em;
+  em.noalias() = CLe * sW;
+  em.noalias() += pr.GPe * Om;
+  em.tail<3>().noalias() += CLh * sW;
+  em.tail<3>().noalias() += pr.GPh * Om;
+  em.tail<3>().noalias() += I.EgOO * OO;
+  em.tail<3>().noalias() += pr.GVe * Om;
+
+}
+
+}  // namespace detail
+
 namespace {
 
 /// Kw = (Mw Ab~ - Fw~) ZxL_r: the rotation of the inertia force with the frame (Ab~, Fw~: stacked
@@ -72,66 +145,20 @@ void full(const AicElement& e, const AicKinematics& kin, const VectorXd& w, cons
   Zw.noalias() = Z * w;
   xid.head(nb).noalias() -= Phi * Zw;
 
-  // Every contraction with xi and with xi_dot: two products with the stacked invariants
-  // (StackedInvariantRows), read in place below.
-  const StackedInvariantRows r(n);
-  ws.t.noalias() = e.inv_by_xi * xi;
-  ws.q.noalias() = e.inv_by_xid * xid;
-  const double* X = ws.t.data();
-  const double* Y = ws.q.data();
-  using Map3n = Eigen::Map<const Eigen::Matrix<double, 3, Eigen::Dynamic>>;
-  using MapN = Eigen::Map<const MatrixXd>;
-
-  // Mass pairing at xi.
-  MatrixXd& PmE = ws.PmE;
-  PmE = I.PmE0;
-  PmE.rightCols<3>() += Map3n(X + r.HP, 3, n).transpose();
-  Matrix6d EmE = I.E0mE0;
-  {
-    const Eigen::Map<const Matrix36d> B(X + r.HE0);
-    EmE.bottomRows<3>() += B;
-    EmE.rightCols<3>() += B.transpose();
-    Vector9d q;
-    q.noalias() = Eigen::Map<const Eigen::Matrix<double, 9, Eigen::Dynamic>>(X + r.HE1, 9, n) * xi;
-    EmE.bottomRightCorner<3, 3>() += Eigen::Map<const Matrix3d>(q.data());
-  }
-  // Centrifugal field: pm = CLp s(W), em = CLe s(W) + [0; CLh s(W)].
-  MatrixXd& CLp = ws.CLp;
-  CLp = I.PmLX;
-  CLp += MapN(X + r.LP, n, 6);
-  Matrix6d CLe = I.E0mLX;
-  CLe += Eigen::Map<const Matrix6d>(X + r.E0LP);
-  Matrix36d CLh = Eigen::Map<const Matrix36d>(X + r.HLX);
-  for (int s = 0; s < 6; ++s) CLh.col(s).noalias() += Map3n(X + r.HLP + 3 * n * s, 3, n) * xi;
-  // Coriolis field and gyroscopic moments, linear in Om at fixed xi_dot: columns a.
-  MatrixXd& GPp = ws.GPp;
-  MatrixXd& GVp = ws.GVp;
-  GPp = MapN(Y + r.PmGP, n, 3);
-  GVp = MapN(Y + r.PgOV, n, 3);
-  const Eigen::Matrix<double, 6, 3> GPe = Eigen::Map<const Eigen::Matrix<double, 6, 3>>(Y + r.E0mGP);
-  const Matrix3d GVe = Eigen::Map<const Matrix3d>(Y + r.EgOV);
-  Matrix3d GPh;
-  for (int a = 0; a < 3; ++a) {
-    ws.HGPxi[a] = Map3n(X + r.HGP + 3 * n * a, 3, n);
-    GPh.col(a).noalias() = ws.HGPxi[a] * xid;
-  }
-  Vector9d OO;
-  for (int b = 0; b < 3; ++b)
-    for (int a = 0; a < 3; ++a) OO[a + 3 * b] = Om[a] * Om[b];
-  const Matrix3d Wc = skew(Om) * skew(Om);
-  const Vector6d sW = sym_components(Wc);
-  VectorXd& pm = ws.pm;
-  pm.noalias() = CLp * sW;
-  pm.noalias() += GPp * Om;
-  pm.noalias() += I.PgOO * OO;
-  pm.noalias() += GVp * Om;
-  Vector6d em;
-  em.noalias() = CLe * sW;
-  em.noalias() += GPe * Om;
-  em.tail<3>().noalias() += CLh * sW;
-  em.tail<3>().noalias() += GPh * Om;
-  em.tail<3>().noalias() += I.EgOO * OO;
-  em.tail<3>().noalias() += GVe * Om;
+  detail::InertiaProjections pr;
+  detail::inertia_projections(e, xi, xid, Om, ws, pr);
+  const MatrixXd& PmE = ws.PmE;
+  const Matrix6d& EmE = pr.EmE;
+  const MatrixXd& CLp = ws.CLp;
+  const Matrix6d& CLe = pr.CLe;
+  const Matrix36d& CLh = pr.CLh;
+  const MatrixXd& GPp = ws.GPp;
+  const MatrixXd& GVp = ws.GVp;
+  const Eigen::Matrix<double, 6, 3>& GPe = pr.GPe;
+  const Matrix3d& GVe = pr.GVe;
+  const Matrix3d& GPh = pr.GPh;
+  const VectorXd& pm = ws.pm;
+  const Vector6d& em = pr.em;
 
   // N = P T + E Z = P + D Z with D = E - P R6, R6 = [Phi_rig; 0] (T = I - R6 Z has rank-6 defect):
   // N^T M N = Mpp + Q Z + Z^T Q^T + Z^T S Z, Q = P^T M D, S = D^T M D; N^T y = pm + Z^T (em - R6^T pm).

@@ -25,6 +25,32 @@ inline Eigen::MatrixXd stacked_skew(const AicElement& e, const Eigen::VectorXd& 
 void elastic_force_of_local(const AicElement& e, const AicKinematics& kin, TangentModel tangent,
                                 const Eigen::MatrixXd& H, Eigen::VectorXd& f, Eigen::MatrixXd* Kt, AicWorkspace& ws);
 
+/// The FE-level projections of the full inertia at local coordinates xi, local elastic velocities
+/// xid and angular velocity Om (body axes), from the inertia invariants (docs/inertia-invariants.md):
+/// with P the recovery basis, E = E0 + E1(P xi) the FE rigid modes about the frame origin at the
+/// deformed positions and y = M c_FE + gyro the FE load of the velocity-dependent accelerations,
+///   ws.PmE = P^T M E (n x 6),  EmE = E^T M E,  ws.pm = P^T y (n),  em = E^T y (6),
+/// plus the pieces the gyroscopic tangent reuses (centrifugal maps CL*, Coriolis and gyroscopic
+/// columns G*, Om Om^T). Cost O(n^2), never the mesh. Used by the AIC full inertia and by FFRF-LM.
+struct InertiaProjections {
+  Eigen::Matrix<double, 6, 6> EmE, CLe;
+  Eigen::Matrix<double, 3, 6> CLh;
+  Eigen::Matrix<double, 6, 3> GPe;
+  Eigen::Matrix3d GVe, GPh;
+  Eigen::Matrix<double, 9, 1> OO;
+  Eigen::Matrix<double, 6, 1> em;
+};
+void inertia_projections(const AicElement& e, const Eigen::VectorXd& xi, const Eigen::VectorXd& xid,
+                         const Eigen::Vector3d& Om, AicWorkspace& ws, InertiaProjections& pr);
+
+/// g += K_G(lambda, xi) xi, the stress stiffening of the 12 inertia load cases scaled by lambda and of
+/// the interface deformation xi_b (docs/geometric-stiffening.md); leaves G_c xi in ws.Gxi (column c of
+/// an n x (12 + 6N) map) and [lambda; xi_b] in ws.mu. Used by the AIC body and by FFRF-LM.
+void add_stress_stiffening(const AicElement& e, const Eigen::VectorXd& xi, const StiffeningLoads& lambda, Eigen::VectorXd& g,
+                           AicWorkspace& ws);
+/// The last six load factors: the symmetric components of Om~ Om~ (body axes).
+void centrifugal_load_factors(const Eigen::Vector3d& Om, StiffeningLoads& lambda);
+
 /// Quadratic-velocity accelerations of the interface nodes (formulation 2.4 item 2), body axes:
 /// c_j = [Om x (Om x s_j) + 2 Om x u_dot_j;  Om x theta_dot_j], s_j = x_j + u_j; zero on eta.
 inline void interface_velocity_accelerations(const AicElement& e, const Eigen::VectorXd& xi, const Eigen::Vector3d& Om,

@@ -34,23 +34,37 @@ void stiffening_load_factors(const AicElement& e, const AicKinematics& kin, cons
   detail::interface_velocity_accelerations(e, kin.xi, Om, ws.sxid, ws.sc);
   ws.sab -= ws.sc;
   lambda.head<6>().noalias() = kin.Zx * ws.sab;
-  const Eigen::Matrix3d W = so3::skew(Om) * so3::skew(Om);
-  lambda.tail<6>() = se::sym_components(W);
+  detail::centrifugal_load_factors(Om, lambda);
 }
 
-void elastic_force_stiffened(const AicElement& e, const AicKinematics& kin, TangentModel tangent,
-                             const StiffeningLoads& lambda, VectorXd& f, MatrixXd* Kt, AicWorkspace& ws, double* energy) {
-  SEFLEX_DEMAND(e.has_stiffening(), "superelement " + e.name + " has no geometric-stiffness invariants");
+namespace detail {
+
+void add_stress_stiffening(const AicElement& e, const VectorXd& xi, const StiffeningLoads& lambda, VectorXd& g, AicWorkspace& ws) {
   const Eigen::Index n = e.n, nb = 6 * e.N, k = 12 + nb;
-  const VectorXd& xi = kin.xi;
   // G_c xi for every case (the G_c are symmetric): one product with the stacked invariants.
   ws.Gxi.noalias() = e.G_stack.transpose() * xi;
   const Eigen::Map<const MatrixXd> Gx(ws.Gxi.data(), n, k);  // column c: G_c xi
   ws.mu.resize(k);
   ws.mu.head<12>() = lambda;
   ws.mu.tail(nb) = xi.head(nb);
+  g.noalias() += Gx * ws.mu;
+}
+
+void centrifugal_load_factors(const Vector3d& Om, StiffeningLoads& lambda) {
+  const Eigen::Matrix3d W = so3::skew(Om) * so3::skew(Om);
+  lambda.tail<6>() = se::sym_components(W);
+}
+
+}  // namespace detail
+
+void elastic_force_stiffened(const AicElement& e, const AicKinematics& kin, TangentModel tangent,
+                             const StiffeningLoads& lambda, VectorXd& f, MatrixXd* Kt, AicWorkspace& ws, double* energy) {
+  SEFLEX_DEMAND(e.has_stiffening(), "superelement " + e.name + " has no geometric-stiffness invariants");
+  const Eigen::Index n = e.n, nb = 6 * e.N, k = 12 + nb;
+  const VectorXd& xi = kin.xi;
   ws.g.noalias() = e.K * xi;
-  ws.g.noalias() += Gx * ws.mu;  // + K_G xi
+  detail::add_stress_stiffening(e, xi, lambda, ws.g, ws);  // + K_G xi
+  const Eigen::Map<const MatrixXd> Gx(ws.Gxi.data(), n, k);  // column c: G_c xi
   if (energy != nullptr) *energy = 0.5 * xi.dot(ws.g);
   if (Kt == nullptr) {
     detail::elastic_force_of_local(e, kin, tangent, e.K, f, nullptr, ws);

@@ -5,6 +5,7 @@
 #include <Eigen/SparseCore>
 #include <vector>
 
+#include "seflex/mbd/bodies/aic_workspace.hpp"
 #include "seflex/mbd/ffrf/ffrf.hpp"
 #include "seflex/mbd/forces/hinge_force.hpp"
 
@@ -42,6 +43,7 @@ struct BodyForce {
   Eigen::VectorXd f;
   Eigen::MatrixXd M;
   double kinetic = 0.0, elastic = 0.0;
+  AicWorkspace ws;  ///< scratch of the invariant evaluation
 };
 void body_force(const FfrfSystem& sys, const FfrfState& s, int b, bool want_mass, BodyForce& out);
 

@@ -24,7 +24,7 @@ Pose relative(const Pose& X_WA, const Pose& X_WB) {  // X_AB = X_WA^-1 X_WB
 /// only torsional inertia is a CONM2 at mid-span. Such massless directions (mu = 0, infinite
 /// frequency) cannot be mass-normalised and are left out, as truncation would drop them first;
 /// the remaining modes are the finite-frequency ones, lowest first (omega^2 = 1 / mu).
-void frame_clamped_modes(const AicElement& e, int modes, FfrfBody& b) {
+void frame_clamped_modes(const AicElement& e, int modes, bool nodal, FfrfBody& b) {
   Eigen::JacobiSVD<MatrixXd> svd(e.Phi_f, Eigen::ComputeFullV);
   const MatrixXd Q = svd.matrixV().rightCols(e.n - 6);  // Phi_f Q = 0 (Phi_f has full row rank)
   const MatrixXd Kq = Q.transpose() * e.K * Q, Mq = Q.transpose() * e.M * Q;
@@ -46,7 +46,24 @@ void frame_clamped_modes(const AicElement& e, int modes, FfrfBody& b) {
     b.V.col(i) = Q * es.eigenvectors().col(c) / std::sqrt(mu[c]);  // x^T Mq x = mu
     b.omega2[i] = 1.0 / mu[c];
   }
-  b.PV = e.Psi * b.V;
+  // Natural scale of each modal coordinate: its largest translation [m] per unit amplitude, over the
+  // FE nodes when the recovery is at hand, else over the interface nodes and internal modes.
+  b.amplitude = Eigen::VectorXd::Zero(b.k);
+  if (e.has_fe_data) {
+    const MatrixXd PV = e.Psi * b.V;
+    for (int m = 0; m < b.k; ++m)
+      for (Eigen::Index r = 0; r < PV.rows(); r += 6) b.amplitude[m] = std::max(b.amplitude[m], PV.col(m).segment<3>(r).cwiseAbs().maxCoeff());
+    if (nodal) b.PV = PV;
+  } else {
+    for (int m = 0; m < b.k; ++m) {
+      for (Eigen::Index r = 0; r < 6 * e.N; r += 6) b.amplitude[m] = std::max(b.amplitude[m], b.V.col(m).segment<3>(r).cwiseAbs().maxCoeff());
+      for (int i = 0; i < e.m; ++i) b.amplitude[m] = std::max(b.amplitude[m], std::abs(b.V(6 * e.N + i, m)) * e.eta_amplitude[i]);
+    }
+  }
+  if (!nodal) {
+    b.MppV = e.inv.Mpp * b.V;
+    b.VMppV = b.V.transpose() * b.MppV;
+  }
 }
 
 }  // namespace
@@ -77,10 +94,14 @@ FfrfSystem make_ffrf_system(const Model& model, const FfrfOptions& options) {
         b.X_BN.push_back(relative(fb.X_WB0, model.node(fb.nodes[static_cast<std::size_t>(j)]).X_WN0));
     }
     if (b.flexible) {
-      if (!e.has_fe_data)
-        throw InputError("flexible body '" + fb.name + "': the floating-frame formulation needs the FE recovery matrix, FE node positions and FE mass (M_fe) of superelement '" +
-                         e.name + "', which it does not carry (use the rigid formulation or a superelement file with FE data)");
-      frame_clamped_modes(e, options.modes, b);
+      if (options.nodal_inertia && !e.has_fe_data)
+        throw InputError("flexible body '" + fb.name + "': the floating-frame formulation with nodal inertia needs the FE recovery matrix, FE node positions and FE mass (M_fe) of superelement '" +
+                         e.name + "', which it does not carry (use the inertia invariants or a superelement file with FE data)");
+      if (!options.nodal_inertia && !e.inv.present())
+        throw InputError("flexible body '" + fb.name + "': the floating-frame formulation needs the inertia invariants or the FE data of superelement '" + e.name +
+                         "', which it carries neither of (reduce it again with seflex reduce, or use the rigid formulation)");
+      frame_clamped_modes(e, options.modes, options.nodal_inertia, b);
+      b.stiffening = fb.options.geometric_stiffening && e.has_stiffening();
     }
     sys.bodies.push_back(std::move(b));
   }
@@ -115,12 +136,7 @@ FfrfSystem make_ffrf_system(const Model& model, const FfrfOptions& options) {
     b.z_offset = sys.num_z;
     sys.num_z += b.k;
     for (int c = 0; c < 6; ++c) push(c < 3 ? 't' : 'r', c < 3 ? 1.0 / L : 1.0, owner);
-    for (int m = 0; m < b.k; ++m) {
-      double amp = 0.0;
-      for (Eigen::Index r = 0; r < b.PV.rows(); ++r)
-        if (r % 6 < 3) amp = std::max(amp, std::abs(b.PV(r, m)));
-      push('e', std::max(amp, 1e-12) / L, owner);
-    }
+    for (int m = 0; m < b.k; ++m) push('e', std::max(b.amplitude[m], 1e-12) / L, owner);
   }
   for (std::size_t h = 0; h < model.hinges.size(); ++h)
     sys.hinge_coord.push_back(model.hinges[h].drive ? -1 : push('h', 1.0, static_cast<int>(h)));

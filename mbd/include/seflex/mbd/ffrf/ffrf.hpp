@@ -32,6 +32,13 @@ struct FfrfOptions {
   int modes = -1;                  ///< frame-clamped modes kept per flexible body (-1: all n - 6 that carry mass)
   bool scale_constraints = true;   ///< beta h^2 scaling of the equations of motion and multipliers
   bool condition_estimate = false; ///< 2-norm condition number of each iteration matrix (dense SVD: small models)
+  /// Flexible bodies' inertia from the FE-node sums (the reference of the tests; needs the
+  /// superelement's FE data) instead of the inertia invariants (the default: the same terms at a
+  /// cost set by the reduced size, docs/ffrf.md).
+  bool nodal_inertia = false;
+  /// Nodal inertia only: keep the gyroscopic moment quadratic in the elastic rotation rates, the one
+  /// term the invariants leave out (docs/inertia-invariants.md); false: the invariants' terms exactly.
+  bool elastic_gyro = true;
 };
 
 /// What an FFRF run reports beyond RunStats.
@@ -50,7 +57,8 @@ struct FfrfStats {
 /// Integrate `model` from t = 0 to settings.t_end with FFRF-LM (or rigid-LM). Samples go to
 /// `observer` as with `simulate` (flexible bodies report xi = V z in the superelement's order).
 /// Throws InputError when the model cannot be expressed (a Free node that no body carries; a
-/// flexible body whose superelement has no FE recovery/mass data, unless options.rigid), and
+/// flexible body whose superelement has neither inertia invariants nor FE recovery/mass data, or no
+/// FE data with options.nodal_inertia; unless options.rigid), and
 /// ConvergenceError (after delivering the last accepted state) when Newton fails at h_min.
 FfrfStats simulate_ffrf(const Model& model, const IntegratorSettings& settings, const FfrfOptions& options = {},
                         Observer* observer = nullptr);
@@ -69,8 +77,12 @@ struct FfrfBody {
   Eigen::Vector3d p_BoCm_B = Eigen::Vector3d::Zero();
   Eigen::Matrix3d I_Cm_B = Eigen::Matrix3d::Zero();
   Eigen::MatrixXd V;                ///< n x k frame-clamped modes: xi = V z, V^T M V = I, Phi_f V = 0
-  Eigen::MatrixXd PV;               ///< 6 n_fe x k FE displacements per mode (recovery * V)
+  Eigen::MatrixXd PV;               ///< 6 n_fe x k FE displacements per mode (recovery * V; nodal inertia only)
+  Eigen::VectorXd amplitude;        ///< k: largest translation per unit modal coordinate [m] (its natural scale)
+  Eigen::MatrixXd MppV;             ///< n x k: Mpp V (the invariants' P^T M P times the modes)
+  Eigen::MatrixXd VMppV;            ///< k x k: V^T Mpp V
   Eigen::VectorXd omega2;           ///< k squared frequencies: V^T K V = diag(omega2)
+  bool stiffening = false;          ///< geometric stiffening from the superelement's invariants (docs/geometric-stiffening.md)
   double stiffness_damping = 0.0;   ///< beta of D = beta K
   std::vector<NodeIndex> nodes;     ///< one per interface
   std::vector<Pose> X_BN;           ///< node pose in B at z = 0 (rigid: exact; flexible: undeformed)
