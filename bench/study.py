@@ -22,6 +22,8 @@ Cases and formulations:
     (otherwise skipped, and said so). A run longer than --timeout (300 s) is stopped: status timeout.
 Reference: the finest AIC full-inertia run (3D, local error 1e-6); cross-checked against the finest
 FFRF-LM run when there is one (printed as a note: its errors, and FFRF-LM's next run against it). --quick: the spin-up beam only, 3 s, four runs (a CTest).
+Geometric stiffening (bench/stiffening_study.py, not with --quick or --no-stiffening-study): the spin-up beam as 1..10
+superelements with and without stiffening against the independent corotational reference, at 6 and 12 rad/s.
 """
 import argparse, csv, json, os, re, resource, shutil, subprocess, sys, time
 import numpy as np
@@ -199,6 +201,7 @@ def main():
     ap.add_argument("--out", default="study-output")
     ap.add_argument("--quick", action="store_true")
     ap.add_argument("--no-solar", action="store_true")
+    ap.add_argument("--no-stiffening-study", action="store_true", help="skip bench/stiffening_study.py")
     ap.add_argument("--img", default=None, help="also copy the charts here (e.g. docs/img)")
     ap.add_argument("--timeout", type=float, default=300.0, help="stop a run after this many seconds (status timeout)")
     a = ap.parse_args()
@@ -245,6 +248,15 @@ def main():
     for r in st.rows:
         if r["case"] == "spinup":
             r.update(errors_spinup(r, lag_ref))
+
+    # Superelements per beam with and without geometric stiffening (its own CSV, table and chart).
+    if a.quick or a.no_stiffening_study:
+        st.notes.append("stiffening study: skipped (" + ("--quick" if a.quick else "--no-stiffening-study") + ")")
+    else:
+        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+        import stiffening_study
+        print("stiffening study (bench/stiffening_study.py):", flush=True)
+        stiffening_study.run_study(a.bin, a.out, a.img, cmd=cmd)
 
     # Solar array (the demo's scenes and reductions).
     have_solar = os.path.exists(os.path.join(ROOT, "examples", "solar_array", "sync-3d.yaml"))
