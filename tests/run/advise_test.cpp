@@ -363,7 +363,8 @@ TEST(Advise, NodesAlternativesAndTheirErrors) {
     sec.A = 1e-4;
     sec.Iy = sec.Iz = 2e-9;
     sec.J = 4e-9;
-    io::save_superelement(craig_bampton(straight_beam(0.5, 4, sec), {0, 4}, 2, 0, "short"), dir / "short.se", io::SaveOptions{true});
+    FrameFE fe = straight_beam(0.5, 4, sec);
+    io::save_superelement(craig_bampton(fe, {0, 4}, 2, 0, "short"), dir / "short.se", io::SaveOptions{true});
   }
   const auto short_alt = dir.write("short.yaml", shorter);
   const auto away = run_seflex("advise " + q(scene) + " --tol 0.1 --t-end 0.2 --node link.5 --tol-position 0.01 --alternative " + q(short_alt));
