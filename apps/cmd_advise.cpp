@@ -65,6 +65,7 @@ int run_advise(seflex::app::Args& args) {
   std::printf("seflex advise %s --tol %s", scene_path.c_str(), tol->c_str());
   for (const auto& n : nodes) std::printf(" --node %s", n.c_str());
   if (tol_position) std::printf(" --tol-position %s", tol_position->c_str());
+  for (const auto& a : alternatives) std::printf(" --alternative %s", a.c_str());
   std::printf("\n");
   std::fflush(stdout);
   const io::AdviseReport r = io::advise(d, o);
