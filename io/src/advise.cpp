@@ -65,11 +65,11 @@ class AngleRecorder : public mbd::Observer {
   std::vector<std::size_t> track_;
 };
 
-/// Linear interpolation of the recorded quantity `f(j)` (sample j) at time `tq`; NaN past the end.
-template <class F>
-auto interpolate(const AngleRecorder& r, double tq, F f) -> decltype(f(std::size_t{0})) {
+/// Linear interpolation of the recorded quantity `f(j)` (sample j) at time `tq`; `none` past the end.
+template <class T, class F>
+T interpolate(const AngleRecorder& r, double tq, F f, const T& none) {
   const auto it = std::lower_bound(r.t.begin(), r.t.end(), tq);
-  if (it == r.t.end()) return f(0) * std::numeric_limits<double>::quiet_NaN();
+  if (it == r.t.end()) return none;
   const auto j = static_cast<std::size_t>(it - r.t.begin());
   if (*it == tq || j == 0) return f(j);
   const double t0 = r.t[j - 1], t1 = r.t[j];
@@ -79,12 +79,13 @@ auto interpolate(const AngleRecorder& r, double tq, F f) -> decltype(f(std::size
 
 /// Angle of hinge `h` at time `tq` by linear interpolation between the recorded samples.
 double angle_at(const AngleRecorder& r, std::size_t h, double tq) {
-  return interpolate(r, tq, [&](std::size_t j) { return r.phi[j][h]; });
+  return interpolate(r, tq, [&](std::size_t j) { return r.phi[j][h]; }, std::numeric_limits<double>::quiet_NaN());
 }
 
 /// Position of tracked node `k` at time `tq`.
 Eigen::Vector3d position_at(const AngleRecorder& r, std::size_t k, double tq) {
-  return interpolate(r, tq, [&](std::size_t j) -> Eigen::Vector3d { return r.pos[j][k]; });
+  return interpolate(r, tq, [&](std::size_t j) -> Eigen::Vector3d { return r.pos[j][k]; },
+                     Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()).eval());
 }
 
 /// The model nodes of the compared nodes: the node at the same initial position, the one of the same
