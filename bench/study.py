@@ -22,6 +22,8 @@ Cases and formulations:
     (otherwise skipped, and said so). A run longer than --timeout (300 s) is stopped: status timeout.
 Reference: the finest AIC full-inertia run (3D, local error 1e-6); cross-checked against the finest
 FFRF-LM run when there is one (printed as a note: its errors, and FFRF-LM's next run against it). --quick: the spin-up beam only, 3 s, four runs (a CTest).
+Geometric stiffening (bench/stiffening_study.py, not with --quick or --no-stiffening-study): the spin-up beam as 1..10
+superelements with and without stiffening against the independent corotational reference, at 6 and 12 rad/s.
 """
 import argparse, csv, json, os, re, resource, shutil, subprocess, sys, time
 import numpy as np
@@ -199,6 +201,7 @@ def main():
     ap.add_argument("--out", default="study-output")
     ap.add_argument("--quick", action="store_true")
     ap.add_argument("--no-solar", action="store_true")
+    ap.add_argument("--no-stiffening-study", action="store_true", help="skip bench/stiffening_study.py")
     ap.add_argument("--img", default=None, help="also copy the charts here (e.g. docs/img)")
     ap.add_argument("--timeout", type=float, default=300.0, help="stop a run after this many seconds (status timeout)")
     a = ap.parse_args()
@@ -245,6 +248,15 @@ def main():
     for r in st.rows:
         if r["case"] == "spinup":
             r.update(errors_spinup(r, lag_ref))
+
+    # Superelements per beam with and without geometric stiffening (its own CSV, table and chart).
+    if a.quick or a.no_stiffening_study:
+        st.notes.append("stiffening study: skipped (" + ("--quick" if a.quick else "--no-stiffening-study") + ")")
+    else:
+        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+        import stiffening_study
+        print("stiffening study (bench/stiffening_study.py):", flush=True)
+        stiffening_study.run_study(a.bin, a.out, a.img, cmd=cmd)
 
     # Solar array (the demo's scenes and reductions).
     have_solar = os.path.exists(os.path.join(ROOT, "examples", "solar_array", "sync-3d.yaml"))
@@ -340,7 +352,11 @@ def main():
         ax.set_title(titles[c], fontsize=9)
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=7)
-    png = save_figure(fig, a.out, "speed-vs-accuracy.png", a.img, cmd)
+    # docs/img/speed-vs-accuracy.png charts all three cases: a run without the arrays does not replace it.
+    full = all(c in cases for c in ("spinup", "unsync", "sync"))
+    if a.img and not full:
+        st.notes.append(f"speed-vs-accuracy.png not copied to {a.img} (the solar cases did not run)")
+    png = save_figure(fig, a.out, "speed-vs-accuracy.png", a.img if full else None, cmd)
     print(f"\n{'case':8s} {'formulation':16s} {'variant':22s} {'CPU [s]':>9s} {'angle err':>10s} {'lock t err':>10s} {'torque err':>10s}")
     for r in st.rows:
         print(f"{r['case']:8s} {r['formulation']:16s} {r['variant']:22s} {r['cpu_s']:9.3f} {r.get('angle_err_deg', np.nan):10.3g} "
