@@ -157,6 +157,16 @@ AicElement make_aic_element(const se::Superelement& s) {
                          std::to_string(G.cols()) + ", expected " + std::to_string(e.n) + " square");
       e.G_stack.middleCols(static_cast<Eigen::Index>(c) * e.n, e.n) = 0.5 * (G + G.transpose());
     }
+    // Pseudo-inverse of K_bb: its 6 rigid-motion eigenvalues are round-off against the largest.
+    const auto nbi = static_cast<Eigen::Index>(nb);
+    const MatrixXd Kbb = 0.5 * (e.K.topLeftCorner(nbi, nbi) + e.K.topLeftCorner(nbi, nbi).transpose());
+    Eigen::SelfAdjointEigenSolver<MatrixXd> es(Kbb);
+    const VectorXd& lam = es.eigenvalues();
+    const double floor = 1e-9 * lam.cwiseAbs().maxCoeff();
+    VectorXd inv = VectorXd::Zero(nbi);
+    for (Eigen::Index i = 0; i < nbi; ++i)
+      if (lam[i] > floor) inv[i] = 1.0 / lam[i];
+    e.Kbb_pinv = es.eigenvectors() * inv.asDiagonal() * es.eigenvectors().transpose();
   }
   e.eta_amplitude = VectorXd::Ones(e.m);
   e.omega_modes = VectorXd::Zero(e.m);

@@ -43,10 +43,11 @@ struct InertiaProjections {
 void inertia_projections(const AicElement& e, const Eigen::VectorXd& xi, const Eigen::VectorXd& xid,
                          const Eigen::Vector3d& Om, AicWorkspace& ws, InertiaProjections& pr);
 
-/// g += K_G(lambda, xi) xi, the stress stiffening of the 12 inertia load cases scaled by lambda and of
-/// the interface deformation xi_b (docs/geometric-stiffening.md); leaves G_c xi in ws.Gxi (column c of
-/// an n x (12 + 6N) map) and [lambda; xi_b] in ws.mu. Used by the AIC body and by FFRF-LM.
-void add_stress_stiffening(const AicElement& e, const Eigen::VectorXd& xi, const StiffeningLoads& lambda, Eigen::VectorXd& g,
+/// g += the stress-stiffening force of the 12 inertia load cases scaled by lambda and of the interface
+/// deformation xi_b with its foreshortening (aic_stiffening.cpp, docs/geometric-stiffening.md); returns
+/// its potential V_G. Leaves G_c xi in ws.Gxi (column c of an n x (12 + 6N) map), [lambda; xi_b + s] in
+/// ws.mu, b and s in ws.fb, ws.fs. Used by the AIC body and by FFRF-LM.
+double add_stress_stiffening(const AicElement& e, const Eigen::VectorXd& xi, const StiffeningLoads& lambda, Eigen::VectorXd& g,
                            AicWorkspace& ws);
 /// The last six load factors: the symmetric components of Om~ Om~ (body axes).
 void centrifugal_load_factors(const Eigen::Vector3d& Om, StiffeningLoads& lambda);

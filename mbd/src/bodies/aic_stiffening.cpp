@@ -2,15 +2,18 @@
 // stiffness of the body's current stress state, from se::StiffeningInvariants, added to the elastic
 // force and its tangent, at a cost of two products with the n x (12 + 6N) n stacked invariants.
 //
-//   K_G(lambda, xi) = sum_c lambda_c G_c + sum_{j < 6N} xi_j G_j      (stress of the inertia loads and
-//                                                                       of the interface deformation)
-//   f_G   = K_G xi
-//   df_G  = K_G + [G_j xi]_j e_j^T   (the stress's variation with the interface coordinates; lambda fixed)
-//
-// The stress is taken at the current loads, not derived from a potential: the cubic energy
-// 1/2 sum_j xi_j xi^T G_j xi would add the axial force of the bending (1/2 [xi^T G_j xi]_j), but without
-// the quartic term of the Green strain it is unbounded below (a beam whose ends are interface nodes
-// buckles at deflections of a fraction of its thickness; docs/geometric-stiffening.md).
+// The stress of the inertia loads is taken at the current load factors lambda (a frozen load); the
+// stress of the interface deformation comes from a potential, the energy of that stress on the
+// nonlinear (Green) strain, with its quartic term condensed onto the interface coordinates:
+//   V_G = 1/2 xi^T (sum_c lambda_c G_c) xi + xi_b . b + 1/2 b . s,
+//   b_j = 1/2 xi^T G_j xi (j < 6N: the foreshortening load),  s = Kbb^+ b (the interface shortening),
+//   f_G = (sum_c lambda_c G_c + sum_j (xi_j + s_j) G_j) xi + [b; 0]
+//   df_G = sum_c mu_c G_c + Gb E^T + E Gb^T + Gb Kbb^+ Gb^T,  Gb = [G_j xi]_j,  mu = [lambda; xi_b + s]
+// (lambda held fixed). 1/2 xi_b Kbb xi_b + xi_b . b + 1/2 b . s = 1/2 (xi_b + s)^T Kbb (xi_b + s): the
+// axial energy of a bar with the bending's foreshortening, exact for a uniform axial strain, and
+// bounded below (the cubic term alone is not: a beam whose ends are interfaces buckles at
+// deflections of a fraction of its thickness, and a force that is not a gradient, the stress frozen
+// at the current xi_b, is circulatory and fed a chain's axial vibration).
 #include <Eigen/Dense>
 
 #include "bodies/aic_inertia_detail.hpp"
@@ -39,15 +42,22 @@ void stiffening_load_factors(const AicElement& e, const AicKinematics& kin, cons
 
 namespace detail {
 
-void add_stress_stiffening(const AicElement& e, const VectorXd& xi, const StiffeningLoads& lambda, VectorXd& g, AicWorkspace& ws) {
+double add_stress_stiffening(const AicElement& e, const VectorXd& xi, const StiffeningLoads& lambda, VectorXd& g, AicWorkspace& ws) {
   const Eigen::Index n = e.n, nb = 6 * e.N, k = 12 + nb;
   // G_c xi for every case (the G_c are symmetric): one product with the stacked invariants.
   ws.Gxi.noalias() = e.G_stack.transpose() * xi;
   const Eigen::Map<const MatrixXd> Gx(ws.Gxi.data(), n, k);  // column c: G_c xi
+  ws.fb.noalias() = 0.5 * Gx.rightCols(nb).transpose() * xi;  // b_j = 1/2 xi^T G_j xi
+  ws.fs.noalias() = e.Kbb_pinv * ws.fb;                       // s = Kbb^+ b
   ws.mu.resize(k);
   ws.mu.head<12>() = lambda;
-  ws.mu.tail(nb) = xi.head(nb);
+  ws.mu.tail(nb) = xi.head(nb) + ws.fs;
   g.noalias() += Gx * ws.mu;
+  g.head(nb) += ws.fb;
+  // 1/2 xi^T (sum lambda_c G_c) xi + xi_b . b + 1/2 b . s
+  StiffeningLoads xGx;  // xi^T G_c xi, c < 12 (fixed size: no allocation)
+  xGx.noalias() = Gx.leftCols<12>().transpose() * xi;
+  return 0.5 * lambda.dot(xGx) + xi.head(nb).dot(ws.fb) + 0.5 * ws.fb.dot(ws.fs);
 }
 
 void centrifugal_load_factors(const Vector3d& Om, StiffeningLoads& lambda) {
@@ -63,18 +73,24 @@ void elastic_force_stiffened(const AicElement& e, const AicKinematics& kin, Tang
   const Eigen::Index n = e.n, nb = 6 * e.N, k = 12 + nb;
   const VectorXd& xi = kin.xi;
   ws.g.noalias() = e.K * xi;
-  detail::add_stress_stiffening(e, xi, lambda, ws.g, ws);  // + K_G xi
+  const double eK = 0.5 * xi.dot(ws.g);
+  const double eG = detail::add_stress_stiffening(e, xi, lambda, ws.g, ws);
   const Eigen::Map<const MatrixXd> Gx(ws.Gxi.data(), n, k);  // column c: G_c xi
-  if (energy != nullptr) *energy = 0.5 * xi.dot(ws.g);
+  if (energy != nullptr) *energy = eK + eG;
   if (Kt == nullptr) {
     detail::elastic_force_of_local(e, kin, tangent, e.K, f, nullptr, ws);
     return;
   }
-  // vec(K_G) = [vec G_0 ... vec G_k-1] mu: the blocks of G_stack are contiguous, one product.
+  // H = K + sum_c mu_c G_c + Gb E^T + E Gb^T + Gb Kbb^+ Gb^T, Gb = [G_j xi]_j (n x 6N), E the interface
+  // rows. vec(sum mu_c G_c) = [vec G_0 ... vec G_k-1] mu: the blocks of G_stack are contiguous, one product.
   MatrixXd& H = ws.Keff;
   H = e.K;
   Eigen::Map<VectorXd>(H.data(), n * n).noalias() += Eigen::Map<const MatrixXd>(e.G_stack.data(), n * n, k) * ws.mu;
-  H.leftCols(nb) += Gx.rightCols(nb);
+  const auto Gb = Gx.rightCols(nb);
+  H.leftCols(nb) += Gb;
+  H.topRows(nb) += Gb.transpose();
+  ws.GK.noalias() = Gb * e.Kbb_pinv;
+  H.noalias() += ws.GK * Gb.transpose();
   detail::elastic_force_of_local(e, kin, tangent, H, f, Kt, ws);
 }
 

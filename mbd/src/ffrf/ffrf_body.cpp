@@ -113,9 +113,8 @@ void flexible(const FfrfSystem& sys, const FfrfBody& b, const AicElement& e, con
     lambda.head<6>() = ab.head<6>();
     detail::centrifugal_load_factors(v.segment<3>(3), lambda);
     VectorXd g = VectorXd::Zero(e.n);
-    detail::add_stress_stiffening(e, xi, lambda, g, out.ws);
+    out.elastic += detail::add_stress_stiffening(e, xi, lambda, g, out.ws);
     out.f.tail(k).noalias() += b.V.transpose() * g;
-    out.elastic += 0.5 * xi.dot(g);
   }
   if (!want) return;
   MatrixXd Rh = MatrixXd::Identity(nb, nb);

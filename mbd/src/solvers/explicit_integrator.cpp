@@ -16,16 +16,35 @@ using Eigen::VectorXd;
 
 namespace {
 
-/// Accelerations at `s` (s.vdot is overwritten): vdot = -M^-1 r(vdot = 0). Keeps the frames.
+/// True when some flexible body's force depends on the accelerations beyond the mass matrix: the
+/// geometric stiffening's load factors are the frame's accelerations (docs/geometric-stiffening.md).
+bool acceleration_dependent_stiffness(const Model& model) {
+  for (const FlexibleBody& b : model.flexible_bodies)
+    if (b.options.geometric_stiffening && model.superelement(b.se).has_stiffening()) return true;
+  return false;
+}
+
+/// Accelerations at `s`, from the guess in s.vdot (the step's start: the stage states copy it):
+/// vdot = guess - M^-1 r(guess), exact when r is linear in vdot (r = M vdot + f); with stiffening f
+/// depends on vdot through the load factors, and a second pass on the same factor takes them at the
+/// first pass's accelerations (their weight is that of the stress stiffness against the mass).
+/// Keeps the frames.
 void accelerations(const Model& model, State& s, Data& data, Eigen::SparseMatrix<double>& M, long& factorizations) {
-  s.vdot.setZero();
+  if (!s.vdot.allFinite()) s.vdot.setZero();
   assemble(model, s, data, AssemblyOptions{});
   if (model.num_dofs == 0) return;  // fully prescribed motion: nothing to solve for
   combine_matrices(model, data, 0.0, 0.0, 1.0, nullptr, M);
   if (!data.factorize(M))
     throw ConvergenceError("the mass matrix at t = " + std::to_string(s.t) + " s is singular (" + detail::describe_singular(model, M) + ")");
   ++factorizations;
-  data.solve_negated(data.residual, s.vdot);
+  VectorXd delta(model.num_dofs);
+  data.solve_negated(data.residual, delta);
+  s.vdot += delta;
+  if (acceleration_dependent_stiffness(model)) {
+    assemble(model, s, data, AssemblyOptions{false, true, 1.0});
+    data.solve_negated(data.residual, delta);
+    s.vdot += delta;
+  }
   s.a = s.vdot;
   for (std::size_t b = 0; b < model.flexible_bodies.size(); ++b) s.frames[b] = data.flex[b].kin.frame;
 }

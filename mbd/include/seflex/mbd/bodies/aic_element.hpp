@@ -68,6 +68,9 @@ struct AicElement {
   // G_stack = [G_0 ... G_{k-1}] (n x k n), k = 12 + 6N: the 12 inertia load cases, then the 6N
   // constraint modes. Empty when the superelement carries none.
   Eigen::MatrixXd G_stack;
+  /// 6N x 6N pseudo-inverse of K's interface block (its null space: the rigid motions): the compliance
+  /// through which the bending's foreshortening loads the interface (the quartic energy term).
+  Eigen::MatrixXd Kbb_pinv;
   bool has_stiffening() const { return G_stack.size() > 0; }
 
   // FE-level data (FFRF baseline, the nodal reference of the tests); present when the superelement
@@ -155,11 +158,13 @@ void elastic_force(const AicElement& e, const AicKinematics& kin, TangentModel t
 using StiffeningLoads = Eigen::Matrix<double, 12, 1>;
 void stiffening_load_factors(const AicElement& e, const AicKinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& v,
                              const Eigen::Ref<const Eigen::VectorXd>& a, StiffeningLoads& lambda, AicWorkspace& ws);
-/// Elastic force and tangent (as elastic_force) of the local force (K + K_G) xi, K_G the differential
-/// stiffness of the current stress state: K_G = sum_c lambda_c G_c + sum_{j<6N} xi_j G_j
+/// Elastic force and tangent (as elastic_force) with the stress stiffening (docs/geometric-stiffening.md):
+/// the local force is the gradient of the potential 1/2 xi^T (K + sum_c lambda_c G_c) xi + xi_b . b
+/// + 1/2 b . s, with b_j = 1/2 xi^T G_j xi (the bending's foreshortening load on interface coordinate
+/// j < 6N) and s = Kbb^+ b, i.e. (K + sum_c lambda_c G_c + sum_j (xi_j + s_j) G_j) xi + [b; 0]
 /// (se::StiffeningInvariants). The tangent holds the load factors `lambda` fixed (their own variation
-/// is left out) and includes the stress's variation with the interface coordinates.
-/// Needs e.has_stiffening(). Writes 1/2 xi^T (K + K_G) xi to *energy when given.
+/// is left out) and is otherwise exact (symmetric in xi). Needs e.has_stiffening(). Writes the
+/// potential to *energy when given.
 void elastic_force_stiffened(const AicElement& e, const AicKinematics& kin, TangentModel tangent,
                              const StiffeningLoads& lambda, Eigen::VectorXd& f, Eigen::MatrixXd* Kt, AicWorkspace& ws,
                              double* energy = nullptr);

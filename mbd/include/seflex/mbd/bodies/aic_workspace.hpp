@@ -32,7 +32,9 @@ struct AicWorkspace {
   // Geometric stiffening (aic_stiffening.cpp).
   Eigen::VectorXd sw, sab, sc, sxid;  ///< n: body-axis velocities, accelerations, c, xi_dot
   Eigen::VectorXd Gxi;                ///< k n: G_c xi for every case c, stacked
-  Eigen::VectorXd mu;                 ///< k: [lambda; xi_b]
+  Eigen::VectorXd mu;                 ///< k: [lambda; xi_b + s]
+  Eigen::VectorXd fb, fs;             ///< 6N: foreshortening loads b and their interface displacements s
+  Eigen::MatrixXd GK;                 ///< n x 6N: [G_j xi] Kbb^+
   Eigen::MatrixXd Keff;               ///< n x n: K + Hessian of V_G
 };
 
