@@ -11,7 +11,9 @@
 #include "aic_test_util.hpp"
 #include "beam_superelement.hpp"
 #include "seflex/common/so3.hpp"
+#include "seflex/mbd/assembly/assembly.hpp"
 #include "seflex/mbd/bodies/aic_element.hpp"
+#include "seflex/mbd/model.hpp"
 
 using namespace seflex;
 using namespace seflex::mbd;
@@ -114,6 +116,59 @@ TEST(Stiffening, LoadFactorsOfARigidSpin) {
   Eigen::Matrix<double, 6, 1> w;
   w << W(0, 0), W(1, 1), W(2, 2), W(0, 1), W(0, 2), W(1, 2);
   EXPECT_LE((lambda.tail<6>() - w).norm(), tol);
+}
+
+// The assembled mass matrix is the acceleration derivative of the residual also with stiffening,
+// whose first six load factors are the frame's accelerations (a rank-6, unsymmetric addition):
+// the stiffened L-frame on free nodes, deformed and moving, against central differences in the
+// accelerations (the residual is affine in them, so differences are exact to round-off).
+TEST(Stiffening, MassMatrixIncludesTheLoadFactorsAccelerationDependence) {
+  for (bool on : {false, true}) {  // without: the plain mass matrix, symmetric
+    const se::Superelement s = stiffened_lframe();
+    ModelBuilder mb;
+    const auto sei = mb.add_superelement(s);
+    std::vector<NodeIndex> nodes;
+    for (int j = 0; j < s.num_interfaces(); ++j)
+      nodes.push_back(mb.add_node("n" + std::to_string(j), Pose{Matrix3d::Identity(), s.p_OBo + s.interfaces[static_cast<std::size_t>(j)].p_BoN_B}));
+    FlexibleBodyOptions fo;
+    fo.inertia = InertiaModel::Full;
+    fo.geometric_stiffening = on;
+    mb.add_flexible_body("frame", sei, nodes, Pose{Matrix3d::Identity(), s.p_OBo}, fo);
+    mb.set_gravity(Vector3d(0, -9.81, 1.0));
+    const Model model = mb.build();
+    State st = initial_state(model);
+    std::mt19937 rng(3);
+    std::normal_distribution<double> nd;
+    VectorXd dx(model.num_dofs);
+    for (int i = 0; i < model.num_dofs; ++i) dx[i] = nd(rng) * (model.dof_kind[static_cast<std::size_t>(i)] == 'e' ? 1e-2 : 1e-2);
+    apply_increment(model, st, dx);
+    for (int i = 0; i < model.num_dofs; ++i) {
+      st.v[i] = nd(rng);
+      st.vdot[i] = 10.0 * nd(rng);
+    }
+    auto residual = [&](const State& x) {
+      Data d(model);
+      assemble(model, x, d, AssemblyOptions{false, true, 1.0});
+      return VectorXd(d.residual);
+    };
+    Data data(model);
+    assemble(model, st, data, AssemblyOptions{});
+    Eigen::SparseMatrix<double> S;
+    combine_matrices(model, data, 0, 0, 1, nullptr, S);
+    const MatrixXd M(S);
+    MatrixXd Mfd(model.num_dofs, model.num_dofs);
+    const double h = 1.0;  // affine in the accelerations: a large step only lowers the round-off
+    for (int c = 0; c < model.num_dofs; ++c) {
+      State sp = st, sm = st;
+      sp.vdot[c] += h;
+      sm.vdot[c] -= h;
+      Mfd.col(c) = (residual(sp) - residual(sm)) / (2 * h);
+    }
+    const double err = (M - Mfd).norm() / Mfd.norm(), asym = (M - M.transpose()).norm() / M.norm();
+    std::printf("%s: mass matrix against differences of the residual %.2e, its asymmetry %.2e\n", on ? "stiffened" : "linear", err, asym);
+    EXPECT_LT(err, 1e-9);
+    if (on) EXPECT_GT(asym, 1e-6);  // the load factors' term is there
+  }
 }
 
 }  // namespace

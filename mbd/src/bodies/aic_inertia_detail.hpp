@@ -49,6 +49,10 @@ void inertia_projections(const AicElement& e, const Eigen::VectorXd& xi, const E
 /// ws.mu, b and s in ws.fb, ws.fs. Used by the AIC body and by FFRF-LM.
 double add_stress_stiffening(const AicElement& e, const Eigen::VectorXd& xi, const StiffeningLoads& lambda, Eigen::VectorXd& g,
                            AicWorkspace& ws);
+/// Mt (world) += d f / d a of the stiffening force through its first six load factors, the frame's
+/// accelerations (a rank-6, unsymmetric term; after add_stress_stiffening at the same state, whose
+/// ws.Gxi it reads). The load factors' velocity dependence (Om, c) stays out of C.
+void add_stiffening_mass_tangent(const AicElement& e, const AicKinematics& kin, AicWorkspace& ws, Eigen::MatrixXd& Mt);
 /// The last six load factors: the symmetric components of Om~ Om~ (body axes).
 void centrifugal_load_factors(const Eigen::Vector3d& Om, StiffeningLoads& lambda);
 

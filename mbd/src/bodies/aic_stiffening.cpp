@@ -60,6 +60,18 @@ double add_stress_stiffening(const AicElement& e, const VectorXd& xi, const Stif
   return 0.5 * lambda.dot(xGx) + xi.head(nb).dot(ws.fb) + 0.5 * ws.fb.dot(ws.fs);
 }
 
+void add_stiffening_mass_tangent(const AicElement& e, const AicKinematics& kin, AicWorkspace& ws, MatrixXd& Mt) {
+  const Eigen::Index n = e.n, nb = 6 * e.N;
+  const Eigen::Map<const MatrixXd> Gx(ws.Gxi.data(), n, 12 + nb);
+  // d f_local / d a_b = [G_c xi]_{c<6} Zx (lambda_0..5 = Zx (a_b - c)); f_w = Tx^T f_local, with
+  // Tx^T A = A - Zx^T Phi_rig^T A_b (Tx = I - [Phi_rig; 0] Zx); then to world as the mass matrix.
+  ws.nn.noalias() = Gx.leftCols<6>() * kin.Zx;
+  ws.sixn.noalias() = kin.Phi_rig.transpose() * ws.nn.topRows(nb);
+  ws.nn.noalias() -= kin.Zx.transpose() * ws.sixn;
+  rotate_to_world(e, kin.frame.R_WB, ws.nn);
+  Mt += ws.nn;
+}
+
 void centrifugal_load_factors(const Vector3d& Om, StiffeningLoads& lambda) {
   const Eigen::Matrix3d W = so3::skew(Om) * so3::skew(Om);
   lambda.tail<6>() = se::sym_components(W);

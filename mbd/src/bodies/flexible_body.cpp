@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "assembly/assembly_detail.hpp"
+#include "bodies/aic_inertia_detail.hpp"
 
 namespace seflex::mbd::detail {
 
@@ -60,6 +61,8 @@ void assemble_flexible(const Model& model, const State& s, Data& data, const Ass
                                    : opt.inertia_velocity_tangent ? InertiaMatrices::All
                                                                   : InertiaMatrices::NoVelocityTangent;
     inertia_force(e, fd.kin, body.options.inertia, sc.v, sc.a, wanted, in, sc.aic);
+    if (opt.matrices && opt.dynamics && body.options.geometric_stiffening && e.has_stiffening())
+      add_stiffening_mass_tangent(e, fd.kin, sc.aic, in.Mt);  // the load factors are the frame's accelerations
     fd.f_in = in.f;
     fd.kinetic = opt.dynamics ? in.kinetic : 0.0;
   } else {

@@ -115,6 +115,8 @@ void flexible(const FfrfSystem& sys, const FfrfBody& b, const AicElement& e, con
     VectorXd g = VectorXd::Zero(e.n);
     out.elastic += detail::add_stress_stiffening(e, xi, lambda, g, out.ws);
     out.f.tail(k).noalias() += b.V.transpose() * g;
+    // The first six load factors are the frame's body-axis accelerations: d f_z / d ab_frame = V^T [G_c xi]_{c<6}.
+    if (want) Mw.bottomLeftCorner(k, 6).noalias() += b.V.transpose() * Eigen::Map<const MatrixXd>(out.ws.Gxi.data(), e.n, 6);
   }
   if (!want) return;
   MatrixXd Rh = MatrixXd::Identity(nb, nb);
