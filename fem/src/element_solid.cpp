@@ -12,6 +12,14 @@
 namespace seflex::fem {
 using detail::SolidPointData;
 
+namespace {
+
+bool quadratic(const SolidElement& e) {
+  return e.nnode > (e.shape == Solid::Shape::Hexa ? 8 : e.shape == Solid::Shape::Penta ? 6 : 4);
+}
+
+}  // namespace
+
 Eigen::Matrix<double, 6, 6> isotropic_elasticity(double E, double nu) {
   const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
   Eigen::Matrix<double, 6, 6> D = Eigen::Matrix<double, 6, 6>::Zero();
@@ -60,7 +68,7 @@ Eigen::MatrixXd solid_stiffness(const SolidElement& e) {
 double solid_volume(const SolidElement& e) {
   double V = 0;
   SolidPointData p;
-  for (const auto& q : detail::solid_rule(e.shape, e.nnode == 20 || e.nnode == 15 || e.nnode == 10 ? 4 : 3)) {
+  for (const auto& q : detail::solid_rule(e.shape, quadratic(e) ? 4 : 3)) {
     detail::evaluate(e, q.xi, p);
     V += std::abs(p.detJ) * q.w;
   }
@@ -69,11 +77,11 @@ double solid_volume(const SolidElement& e) {
 
 Eigen::MatrixXd solid_mass(const SolidElement& e, MassKind kind) {
   const int N = e.nnode;
-  const bool quadratic = N == 20 || N == 15 || N == 10;
+  const bool is_quadratic = quadratic(e);
   Eigen::MatrixXd m = Eigen::MatrixXd::Zero(N, N);  // scalar mass rho int N_a N_b dV
   Eigen::VectorXd row = Eigen::VectorXd::Zero(N);   // rho int N_a dV
   SolidPointData p;
-  for (const auto& q : detail::solid_rule(e.shape, quadratic ? 4 : 3)) {
+  for (const auto& q : detail::solid_rule(e.shape, is_quadratic ? 4 : 3)) {
     detail::evaluate(e, q.xi, p);
     const double dm = e.rho * std::abs(p.detJ) * q.w;
     const Eigen::Map<const Eigen::VectorXd> Nv(p.s.N, N);
@@ -88,7 +96,7 @@ Eigen::MatrixXd solid_mass(const SolidElement& e, MassKind kind) {
     return M;
   }
   Eigen::VectorXd lumped = row;
-  if (quadratic) {  // HRZ: diagonal of the coupled mass scaled to the total
+  if (is_quadratic) {  // HRZ: diagonal of the coupled mass scaled to the total
     const double total = row.sum(), diag = m.diagonal().sum();
     lumped = diag > 0 ? Eigen::VectorXd(m.diagonal() * (total / diag)) : Eigen::VectorXd::Zero(N);
   }
@@ -108,9 +116,10 @@ SolidElement make_solid_element(const Model& model, const Solid& s, bool mass_on
   SolidElement e;
   e.shape = s.shape;
   e.nnode = s.nnode;
+  e.missing_mid = s.quadratic() ? s.missing_mid : 0;
   for (int k = 0; k < s.nnode; ++k) {
     const std::uint32_t gi = detail::grid_index(model, s.g[static_cast<std::size_t>(k)], s.ref, card, s.id,
-                                                "G" + std::to_string(k + 1));
+                                                "G" + std::to_string(s.grid_number(k)));
     e.x[static_cast<std::size_t>(k)] = model.grids[gi].x_basic;
   }
   const auto pit = model.solid_prop_index.find(s.pid);
@@ -135,7 +144,7 @@ SolidElement make_solid_element(const Model& model, const Solid& s, bool mass_on
   const Mat1& m1 = model.mat1[model.mat1_index.at(prop.mid)];
   e.alpha = m1.alpha;
   e.tref = m1.tref;
-  const bool linear = s.nnode == 8 || s.nnode == 6 || s.nnode == 4;
+  const bool linear = !s.quadratic();
   using In = SolidProperty::Integration;
   using Isop = SolidProperty::Isop;
   if (!linear) {

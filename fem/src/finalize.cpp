@@ -391,7 +391,7 @@ class Finalizer {
     }
     for (const auto& e : m_.solids) {
       for (int k = 0; k < e.nnode; ++k)
-        need_grid(e.g[static_cast<std::size_t>(k)], e.ref, e.card(), e.id, "G" + std::to_string(k + 1));
+        need_grid(e.g[static_cast<std::size_t>(k)], e.ref, e.card(), e.id, "G" + std::to_string(e.grid_number(k)));
       if (!m_.solid_prop_index.count(e.pid))
         fail(e.ref, e.card(), e.id, "field 3 (PID)", "references property " + std::to_string(e.pid) + undefined(e.pid) + "; expected the id of a PSOLID card");
     }

@@ -223,7 +223,10 @@ void write_elements(const fem::Model& m, CardWriter& w) {
   for (const auto& s : m.shells) write_shell(w, s);
   for (const auto& s : m.solids) {
     w.start(s.card()).i(s.id).i(s.pid);
-    for (int k = 0; k < s.nnode; ++k) w.i(s.g[static_cast<std::size_t>(k)]);
+    for (int k = 0; k < s.corners(); ++k) w.i(s.g[static_cast<std::size_t>(k)]);
+    if (s.quadratic())
+      for (int e = 0, k = s.corners(); e < s.edges(); ++e)  // a blank mid-edge grid: a straight edge
+        (s.missing_mid >> e & 1u) ? w.blank() : w.i(s.g[static_cast<std::size_t>(k++)]);
     w.end();
   }
   for (const auto& s : m.springs) {

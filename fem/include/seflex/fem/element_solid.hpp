@@ -1,12 +1,20 @@
 #pragma once
-// CHEXA (8/20 grids), CPENTA (6/15), CTETRA (4/10): isoparametric linear-elastic solids with PSOLID
+// CHEXA (8-20 grids), CPENTA (6-15), CTETRA (4-10): isoparametric linear-elastic solids with PSOLID
 // and an isotropic MAT1. Matrices are 3N x 3N on the translations T1 T2 T3 of the N grids (grid after
 // grid, BASIC components); solids give no rotational stiffness or mass (assembly puts these blocks
 // into the 6-dof grid blocks; AUTOSPC removes rotations nothing else stiffens).
 //
 // Stiffness K = int B^T D B dV, D the isotropic elasticity matrix (Voigt xx yy zz xy yz zx,
 // engineering shear strains; lambda = E nu / ((1 + nu)(1 - 2 nu)), mu = E / (2 (1 + nu)) from MAT1
-// E and nu, nu < 0.5). Integration (PSOLID IN / ISOP, docs/nastran-support.md):
+// E and nu, nu < 0.5).
+// Some mid-edge grids blank (CHEXA 9-19, CPENTA 7-14, CTETRA 5-9 grids): that edge is straight and
+// its displacement linear (QRG). The shape functions are the full quadratic element's with the
+// missing mid-edge functions removed and half of each added to the two corners of its edge, which
+// is the corner correction of the variable-number-of-nodes elements (Bathe, Finite Element
+// Procedures, 1996, sec. 5.3.1: elements with a variable number of nodes, 2-D and 3-D):
+//   N_corner = N_corner,linear - 1/2 sum over the mid-edge grids present on its edges of N_mid.
+// Integration, mass lumping and checks are those of the full quadratic element.
+// Integration (PSOLID IN / ISOP, docs/nastran-support.md):
 // - CHEXA 8, IN blank or BUBBLE (MSC's default "reduced shear with bubble functions"): 2 x 2 x 2
 //   Gauss with the three incompatible bubble modes 1 - xi_k^2 per displacement component, condensed
 //   statically; their strains use the centre Jacobian scaled by det J0 / det J so that the element
@@ -29,6 +37,7 @@
 // processes in the finite element method", Earthquake Eng. Struct. Dyn. 4 (1976) 245-249).
 #include <Eigen/Core>
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "seflex/fem/element_common.hpp"
@@ -40,7 +49,8 @@ struct SolidElement {
   enum class Scheme : unsigned char { Gauss, IncompatibleModes, ReducedShear };
   Solid::Shape shape = Solid::Shape::Hexa;
   int nnode = 8;
-  std::array<Eigen::Vector3d, 20> x{};                         ///< grid positions, basic, QRG order
+  std::uint16_t missing_mid = 0;                               ///< Solid::missing_mid (nnode > corners)
+  std::array<Eigen::Vector3d, 20> x{};                         ///< positions of Solid::g[0..nnode), basic
   Eigen::Matrix<double, 6, 6> D = Eigen::Matrix<double, 6, 6>::Zero();  ///< elasticity (isotropic: any axes)
   double rho = 0;
   double alpha = 0, tref = 0;                                  ///< MAT1 ALPHA, TREF (thermal loads)
