@@ -147,14 +147,16 @@ class Finalizer {
     IdSpace mats;
     mats.model = &m_;
     auto add_mat = [&](int id, const CardRef& ref, const char* card) {
-      mats.add(id, ref, card, "field 2 (MID)", "material", "expected unique material ids across MAT1, MAT2, MAT8");
+      mats.add(id, ref, card, "field 2 (MID)", "material", "expected unique material ids across MAT1, MAT2, MAT8, MAT9");
     };
     index(m_.mat1, m_.mat1_index, "MAT1", "material");
     for (const auto& m : m_.mat1) add_mat(m.id, m.ref, "MAT1");
     for (const auto& m : m_.mat2) add_mat(m.id, m.ref, "MAT2");
     for (const auto& m : m_.mat8) add_mat(m.id, m.ref, "MAT8");
+    for (const auto& m : m_.mat9) add_mat(m.id, m.ref, "MAT9");
     index_unchecked(m_.mat2, m_.mat2_index);
     index_unchecked(m_.mat8, m_.mat8_index);
+    index_unchecked(m_.mat9, m_.mat9_index);
     index(m_.bar_props, m_.bar_prop_index, "PBAR", "property");
     index(m_.rod_props, m_.rod_prop_index, "PROD", "property");
     index(m_.shell_props, m_.shell_prop_index, "PSHELL", "property");
@@ -180,7 +182,8 @@ class Finalizer {
     index_unchecked(m_.composite_props, m_.composite_prop_index);
     for (const auto& p : m_.bar_props) need_material(p.mid, p.ref, bar_property_card(p), p.id, "field 3 (MID)");
     for (const auto& p : m_.rod_props) need_material(p.mid, p.ref, "PROD", p.id, "field 3 (MID)");
-    for (const auto& p : m_.solid_props) need_material(p.mid, p.ref, "PSOLID", p.id, "field 3 (MID)");
+    for (const auto& p : m_.solid_props)
+      if (!m_.mat9_index.count(p.mid)) need_material(p.mid, p.ref, "PSOLID", p.id, "field 3 (MID)", true);
     for (const auto& p : m_.shell_props) {
       if (p.mid1) need_shell_material(p.mid1, p.ref, "PSHELL", p.id, "field 3 (MID1)");
       if (p.mid2) need_shell_material(p.mid2, p.ref, "PSHELL", p.id, "field 5 (MID2)");
@@ -243,16 +246,22 @@ class Finalizer {
     for (const auto& e : m_.solids) add(e.id, e.ref, e.card());
   }
 
-  void need_material(int mid, const CardRef& ref, const char* card, int id, const char* field) {
+  /// An isotropic MAT1 (or, with solid, a MAT9: the caller checks that one first).
+  void need_material(int mid, const CardRef& ref, const char* card, int id, const char* field, bool solid = false) {
     if (m_.mat1_index.count(mid)) return;
-    const char* other = m_.mat2_index.count(mid) ? "MAT2" : m_.mat8_index.count(mid) ? "MAT8" : nullptr;
-    if (other)
-      fail(ref, card, id, field, "references material " + std::to_string(mid) + ", a " + other +
-                                     " (a shell material); expected the id of a MAT1 card");
-    fail(ref, card, id, field, "references MAT1 " + std::to_string(mid) + undefined(mid) + "; expected the id of a MAT1 card");
+    const std::string expected = solid ? "; expected the id of a MAT1 or MAT9 card" : "; expected the id of a MAT1 card";
+    const char* other = m_.mat2_index.count(mid) ? "MAT2 (a shell material)"
+                        : m_.mat8_index.count(mid) ? "MAT8 (a shell material)"
+                        : m_.mat9_index.count(mid) ? "MAT9 (an anisotropic solid material, for PSOLID only)"
+                                                   : nullptr;
+    if (other) fail(ref, card, id, field, "references material " + std::to_string(mid) + ", a " + other + expected);
+    fail(ref, card, id, field, "references MAT1 " + std::to_string(mid) + undefined(mid) + expected);
   }
 
   void need_shell_material(int mid, const CardRef& ref, const char* card, int id, const std::string& field) {
+    if (m_.mat9_index.count(mid))
+      fail(ref, card, id, field, "references material " + std::to_string(mid) +
+                                     ", a MAT9 (an anisotropic solid material, for PSOLID only); expected the id of a MAT1, MAT2 or MAT8 card");
     if (!m_.mat1_index.count(mid) && !m_.mat2_index.count(mid) && !m_.mat8_index.count(mid))
       fail(ref, card, id, field, "references material " + std::to_string(mid) + undefined(mid) +
                                      "; expected the id of a MAT1, MAT2 or MAT8 card");

@@ -64,7 +64,7 @@ constexpr CardType kCardTypes[] = {
     {"CMASS1", parse_cmass1},   {"CMASS2", parse_cmass2},   {"CMASS3", parse_cmass1},  {"CMASS4", parse_cmass2},
     {"PMASS", parse_pmass},     {"CONM1", parse_conm1},     {"PLOAD1", parse_pload1},  {"SPCD", parse_spcd},
     {"CHEXA", parse_chexa},     {"CPENTA", parse_cpenta},   {"CTETRA", parse_ctetra},  {"PSOLID", parse_psolid},
-    {"PLOAD4", parse_pload4},
+    {"PLOAD4", parse_pload4},   {"MAT9", parse_mat9},
 };
 constexpr std::size_t kNumCardTypes = sizeof(kCardTypes) / sizeof(kCardTypes[0]);
 

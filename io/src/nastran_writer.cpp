@@ -479,6 +479,13 @@ void write_nastran(const fem::Model& m, std::ostream& stream, const NastranWrite
     mat.G2z > 0.0 ? w.r(mat.G2z) : w.blank();
     w.r(mat.rho).next_line().r(mat.a1).r(mat.a2).r(mat.tref).blank(5).r(mat.ge).end();
   }
+  for (const auto& mat : m.mat9) {
+    w.start("MAT9").i(mat.id);
+    for (const double g : mat.g) w.r(g);
+    w.r(mat.rho);
+    for (const double a : mat.a) w.r(a);
+    w.r(mat.tref).r(mat.ge).end();
+  }
   for (const auto& p : m.bar_props) write_bar_property(w, p);
   for (const auto& p : m.rod_props) w.start("PROD").i(p.id).i(p.mid).r(p.A).r(p.J).r(p.C).r(p.nsm).end();
   for (const auto& p : m.shell_props)

@@ -56,6 +56,7 @@ struct Model {
   std::vector<Mat1> mat1;
   std::vector<Mat2> mat2;
   std::vector<Mat8> mat8;
+  std::vector<Mat9> mat9;                      ///< anisotropic solid material (model_solids.hpp)
   std::vector<BarProperty> bar_props;
   std::vector<RodProperty> rod_props;
   std::vector<ShellProperty> shell_props;
@@ -107,7 +108,7 @@ struct Model {
   std::map<std::string, std::vector<int>> node_sets;
 
   // Lookups, built by fem::finalize (id -> position in the vector above).
-  std::unordered_map<int, std::uint32_t> grid_index, coord_index, mat1_index, mat2_index, mat8_index,
+  std::unordered_map<int, std::uint32_t> grid_index, coord_index, mat1_index, mat2_index, mat8_index, mat9_index,
       bar_prop_index, rod_prop_index, shell_prop_index, composite_prop_index, spring_prop_index, spoint_index,
       bush_prop_index, mass_prop_index, solid_prop_index;
   bool finalized = false;

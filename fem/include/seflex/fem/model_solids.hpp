@@ -1,6 +1,6 @@
 #pragma once
 // Model cards of solid elements and face pressure loads (part of model.hpp, kept apart to keep that
-// header short): PSOLID, CHEXA/CPENTA/CTETRA, PLOAD4. Field layouts: MSC Nastran Quick Reference
+// header short): PSOLID, MAT9, CHEXA/CPENTA/CTETRA, PLOAD4. Field layouts: MSC Nastran Quick Reference
 // Guide (docs/nastran-support.md). No parsing and no numerics here.
 #include <Eigen/Core>
 #include <array>
@@ -11,8 +11,9 @@
 
 namespace seflex::fem {
 
-/// PSOLID PID MID CORDM IN STRESS ISOP FCTN. Only isotropic MAT1 materials are modelled, so CORDM
-/// (the material axes) does not change results; IN/ISOP select the integration (element_solid.hpp);
+/// PSOLID PID MID CORDM IN STRESS ISOP FCTN. MID: a MAT1 (isotropic: CORDM does not change results)
+/// or a MAT9 (anisotropic, in the material axes CORDM: 0 basic or a rectangular system); IN/ISOP
+/// select the integration (element_solid.hpp);
 /// STRESS (stress output system) is read and ignored; FCTN other than SMECH is refused by the reader.
 struct SolidProperty {
   enum class Integration : std::uint8_t { Default, Bubble, Two, Three };
@@ -23,6 +24,19 @@ struct SolidProperty {
   Isop isop = Isop::Default;
   std::string stress;                ///< raw field text (GRID, blank or a system id)
   std::string fctn;                  ///< raw field text (blank = SMECH)
+  CardRef ref;
+};
+
+/// MAT9: anisotropic solid material, G = the symmetric 6 x 6 matrix of G11 ... G66 (upper triangle,
+/// row by row) relating stress and strain in Voigt order xx yy zz xy yz zx (engineering shear
+/// strains), in the PSOLID CORDM axes; A1-A6 thermal expansion (same order), TREF, GE (QRG MAT9).
+/// PSOLID only: a shell or line element property on a MAT9 is an error of fem::finalize.
+struct Mat9 {
+  int id = 0;
+  std::array<double, 21> g{};        ///< G11 G12 G13 G14 G15 G16 G22 ... G66, as on the card
+  double rho = 0;
+  std::array<double, 6> a{};
+  double tref = 0, ge = 0;
   CardRef ref;
 };
 
