@@ -180,6 +180,9 @@ class DeckReader {
       if (counts_[i] > 0) model_.card_counts[std::string(kCardTypes[i].name)] += counts_[i];
   }
 
+  /// The main file's text (moved out: call once, after read_main).
+  std::string take_main_text() { return sources_.empty() ? std::string() : std::move(sources_.front()->text); }
+
  private:
   enum class Section { Executive, CaseControl, Bulk };
   struct Source {
@@ -591,6 +594,7 @@ fem::Model read_nastran(const std::filesystem::path& path, const NastranReadOpti
   fem::Model model;
   nastran::DeckReader reader(model);
   reader.read_main(std::move(text), path.string(), path.parent_path(), canonical);
+  if (options.main_text) *options.main_text = reader.take_main_text();
   if (options.finalize) fem::finalize(model);
   return model;
 }
@@ -602,6 +606,7 @@ fem::Model read_nastran_text(std::string_view text, const std::string& name, con
   fem::Model model;
   nastran::DeckReader reader(model);
   reader.read_main(std::move(copy), name, dir, dir / name);
+  if (options.main_text) *options.main_text = reader.take_main_text();
   if (options.finalize) fem::finalize(model);
   return model;
 }
