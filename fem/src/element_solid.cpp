@@ -34,8 +34,11 @@ Eigen::Matrix<double, 6, 6> strain_rotation(const Eigen::Matrix3d& R_BM) {
   return T;
 }
 
-/// Elasticity and thermal expansion of a PSOLID's MAT9 in basic axes (element_solid.hpp).
-void mat9_elasticity(const Model& model, const SolidProperty& prop, const Mat9& m, SolidElement& e) {
+/// Elasticity and thermal expansion of a PSOLID's MAT9 in basic axes (element_solid.hpp); with
+/// mass_only the density alone (the mass does not depend on the axes or on G).
+void mat9_elasticity(const Model& model, const SolidProperty& prop, const Mat9& m, bool mass_only, SolidElement& e) {
+  e.rho = m.rho;
+  if (mass_only) return;
   Eigen::Matrix<double, 6, 6> G;
   for (int i = 0, k = 0; i < 6; ++i)
     for (int j = i; j < 6; ++j, ++k) G(i, j) = G(j, i) = m.g[static_cast<std::size_t>(k)];
@@ -64,7 +67,6 @@ void mat9_elasticity(const Model& model, const SolidProperty& prop, const Mat9& 
                      "); expected a positive definite elasticity matrix");
   const Eigen::Matrix<double, 6, 6> T = strain_rotation(R_BM);
   e.D = T.transpose() * G * T;
-  e.rho = m.rho;
   e.tref = m.tref;
   const Eigen::Map<const Eigen::Matrix<double, 6, 1>> a_M(m.a.data());
   e.alpha = a_M.isZero(0.0) ? 0.0 : 1.0;
@@ -181,7 +183,7 @@ SolidElement make_solid_element(const Model& model, const Solid& s, bool mass_on
                  "references property " + std::to_string(s.pid) + ", which is not defined; expected the id of a PSOLID card");
   const SolidProperty& prop = model.solid_props[pit->second];
   if (const auto m9 = model.mat9_index.find(prop.mid); m9 != model.mat9_index.end()) {
-    mat9_elasticity(model, prop, model.mat9[m9->second], e);
+    mat9_elasticity(model, prop, model.mat9[m9->second], mass_only, e);
   } else {
     if (!model.mat1_index.count(prop.mid)) {
       const char* other = model.mat2_index.count(prop.mid) ? "MAT2" : model.mat8_index.count(prop.mid) ? "MAT8" : nullptr;

@@ -177,6 +177,10 @@ TEST(SolidMat9, UnusableMaterialAxesAndMatricesAreErrors) {
   const Eigen::Matrix<double, 6, 6> iso = isotropic_elasticity(1e9, 0.3);
   EXPECT_NE(error(model(-1, iso)).find("PSOLID 1, field 4 (CORDM): is -1 (the element coordinate system) with MAT9 1"), std::string::npos)
       << error(model(-1, iso));
+  {  // the mass needs neither the axes nor G (seflex info's mass properties)
+    const Model m = model(-1, iso);
+    EXPECT_EQ(make_solid_element(m, m.solids[0], true).rho, 1.0);
+  }
   EXPECT_NE(error(model(3, iso, CoordType::Cylindrical)).find("PSOLID 1, field 4 (CORDM): coordinate system 3 is cylindrical"), std::string::npos)
       << error(model(3, iso, CoordType::Cylindrical));
   Eigen::Matrix<double, 6, 6> bad = iso;
