@@ -54,7 +54,7 @@ void print_model(const seflex::fem::Model& m) {
     if (n) row(name, n, 4);
   row("properties", m.bar_props.size() + m.rod_props.size() + m.shell_props.size() + m.composite_props.size() +
                          m.spring_props.size() + m.bush_props.size() + m.mass_props.size() + m.solid_props.size());
-  row("materials", m.mat1.size() + m.mat2.size() + m.mat8.size());
+  row("materials", m.mat1.size() + m.mat2.size() + m.mat8.size() + m.mat9.size());
   row("SPC entries", m.spcs.size());
   row("MPC equations", m.mpcs.size());
   row("loads (FORCE, MOMENT)", m.point_loads.size());

@@ -146,7 +146,7 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
   for (const Solid& s : model.solids) {
     std::int32_t n[20];
     for (int k = 0; k < s.nnode; ++k)
-      n[k] = node_of_grid(model, s.g[static_cast<std::size_t>(k)], s.ref, s.card(), s.id, "G" + std::to_string(k + 1));
+      n[k] = node_of_grid(model, s.g[static_cast<std::size_t>(k)], s.ref, s.card(), s.id, "G" + std::to_string(s.grid_number(k)));
     conn.add(n, n + s.nnode);
     solids.push_back(make_solid_element(model, s));
     solid_nodes.insert(solid_nodes.end(), n, n + s.nnode);

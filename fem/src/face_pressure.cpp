@@ -140,7 +140,7 @@ void solid_face_forces(const Model& model, const Solid& so, const FaceLoad& l, s
   std::array<std::uint32_t, 20> gi{};
   Eigen::Vector3d centre = Eigen::Vector3d::Zero(), face_centre = Eigen::Vector3d::Zero();
   for (int a = 0; a < so.nnode; ++a) {
-    gi[static_cast<std::size_t>(a)] = grid_index(model, so.g[static_cast<std::size_t>(a)], so.ref, card, so.id, "G" + std::to_string(a + 1));
+    gi[static_cast<std::size_t>(a)] = grid_index(model, so.g[static_cast<std::size_t>(a)], so.ref, card, so.id, "G" + std::to_string(so.grid_number(a)));
     x[static_cast<std::size_t>(a)] = model.grids[gi[static_cast<std::size_t>(a)]].x_basic;
     if (a < corners) centre += x[static_cast<std::size_t>(a)] / corners;
   }
@@ -156,8 +156,8 @@ void solid_face_forces(const Model& model, const Solid& so, const FaceLoad& l, s
   ShapeValues sv, lin;
   for (const SurfacePoint& q : surface_rule(F.ncorner == 4)) {
     const Eigen::Vector3d xi = F.origin + F.ds * q.s[0] + F.dt * q.s[1];
-    solid_shape(so.shape, so.nnode, xi, sv);
-    solid_shape(so.shape, corners, xi, lin);
+    solid_shape(so.shape, so.nnode, so.missing_mid, xi, sv);
+    solid_shape(so.shape, corners, 0, xi, lin);
     Eigen::Vector3d xs = Eigen::Vector3d::Zero(), xt = Eigen::Vector3d::Zero(), xp = Eigen::Vector3d::Zero();
     for (int a = 0; a < so.nnode; ++a) {
       const Eigen::Vector3d dN(sv.dN[a][0], sv.dN[a][1], sv.dN[a][2]);

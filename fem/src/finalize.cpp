@@ -21,10 +21,16 @@ using detail::bar_property_card;
 struct IdSpace {
   struct Entry {
     CardRef ref;
-    const char* card;
+    const char* card = nullptr;  ///< nullptr: no id (dense)
   };
   std::unordered_map<int, Entry> map;
+  /// Ids 1..max in a table instead of the map when they are dense (use_dense): a 1M-element deck
+  /// spends less in one table than in a million hash nodes.
+  std::vector<Entry> dense;
   const Model* model = nullptr;
+  void use_dense(int max_id, std::size_t count) {
+    if (max_id > 0 && static_cast<std::size_t>(max_id) <= 4 * count + 1024) dense.assign(static_cast<std::size_t>(max_id) + 1, Entry{});
+  }
   void add(int id, const CardRef& ref, const char* card, const char* field, const char* what, const char* expected);
 };
 
@@ -147,14 +153,16 @@ class Finalizer {
     IdSpace mats;
     mats.model = &m_;
     auto add_mat = [&](int id, const CardRef& ref, const char* card) {
-      mats.add(id, ref, card, "field 2 (MID)", "material", "expected unique material ids across MAT1, MAT2, MAT8");
+      mats.add(id, ref, card, "field 2 (MID)", "material", "expected unique material ids across MAT1, MAT2, MAT8, MAT9");
     };
     index(m_.mat1, m_.mat1_index, "MAT1", "material");
     for (const auto& m : m_.mat1) add_mat(m.id, m.ref, "MAT1");
     for (const auto& m : m_.mat2) add_mat(m.id, m.ref, "MAT2");
     for (const auto& m : m_.mat8) add_mat(m.id, m.ref, "MAT8");
+    for (const auto& m : m_.mat9) add_mat(m.id, m.ref, "MAT9");
     index_unchecked(m_.mat2, m_.mat2_index);
     index_unchecked(m_.mat8, m_.mat8_index);
+    index_unchecked(m_.mat9, m_.mat9_index);
     index(m_.bar_props, m_.bar_prop_index, "PBAR", "property");
     index(m_.rod_props, m_.rod_prop_index, "PROD", "property");
     index(m_.shell_props, m_.shell_prop_index, "PSHELL", "property");
@@ -180,7 +188,8 @@ class Finalizer {
     index_unchecked(m_.composite_props, m_.composite_prop_index);
     for (const auto& p : m_.bar_props) need_material(p.mid, p.ref, bar_property_card(p), p.id, "field 3 (MID)");
     for (const auto& p : m_.rod_props) need_material(p.mid, p.ref, "PROD", p.id, "field 3 (MID)");
-    for (const auto& p : m_.solid_props) need_material(p.mid, p.ref, "PSOLID", p.id, "field 3 (MID)");
+    for (const auto& p : m_.solid_props)
+      if (!m_.mat9_index.count(p.mid)) need_material(p.mid, p.ref, "PSOLID", p.id, "field 3 (MID)", true);
     for (const auto& p : m_.shell_props) {
       if (p.mid1) need_shell_material(p.mid1, p.ref, "PSHELL", p.id, "field 3 (MID1)");
       if (p.mid2) need_shell_material(p.mid2, p.ref, "PSHELL", p.id, "field 5 (MID2)");
@@ -218,7 +227,14 @@ class Finalizer {
                               m_.solids.size();
     IdSpace seen;
     seen.model = &m_;
-    seen.map.reserve(total);
+    int max_id = 0;
+    auto max_of = [&](const auto& v) {
+      for (const auto& e : v) max_id = std::max(max_id, e.id);
+    };
+    max_of(m_.bars), max_of(m_.rods), max_of(m_.shells), max_of(m_.conm2), max_of(m_.springs), max_of(m_.bushes);
+    max_of(m_.scalar_masses), max_of(m_.conm1), max_of(m_.solids);
+    seen.use_dense(max_id, total);
+    if (seen.dense.empty()) seen.map.reserve(total);
     auto add = [&](int id, const CardRef& ref, const char* card) {
       seen.add(id, ref, card, "field 2 (EID)", "element", "expected unique ids across all elements (incl. CONM2, CELASi, CBUSH)");
     };
@@ -243,16 +259,22 @@ class Finalizer {
     for (const auto& e : m_.solids) add(e.id, e.ref, e.card());
   }
 
-  void need_material(int mid, const CardRef& ref, const char* card, int id, const char* field) {
+  /// An isotropic MAT1 (or, with solid, a MAT9: the caller checks that one first).
+  void need_material(int mid, const CardRef& ref, const char* card, int id, const char* field, bool solid = false) {
     if (m_.mat1_index.count(mid)) return;
-    const char* other = m_.mat2_index.count(mid) ? "MAT2" : m_.mat8_index.count(mid) ? "MAT8" : nullptr;
-    if (other)
-      fail(ref, card, id, field, "references material " + std::to_string(mid) + ", a " + other +
-                                     " (a shell material); expected the id of a MAT1 card");
-    fail(ref, card, id, field, "references MAT1 " + std::to_string(mid) + undefined(mid) + "; expected the id of a MAT1 card");
+    const std::string expected = solid ? "; expected the id of a MAT1 or MAT9 card" : "; expected the id of a MAT1 card";
+    const char* other = m_.mat2_index.count(mid) ? "MAT2 (a shell material)"
+                        : m_.mat8_index.count(mid) ? "MAT8 (a shell material)"
+                        : m_.mat9_index.count(mid) ? "MAT9 (an anisotropic solid material, for PSOLID only)"
+                                                   : nullptr;
+    if (other) fail(ref, card, id, field, "references material " + std::to_string(mid) + ", a " + other + expected);
+    fail(ref, card, id, field, "references MAT1 " + std::to_string(mid) + undefined(mid) + expected);
   }
 
   void need_shell_material(int mid, const CardRef& ref, const char* card, int id, const std::string& field) {
+    if (m_.mat9_index.count(mid))
+      fail(ref, card, id, field, "references material " + std::to_string(mid) +
+                                     ", a MAT9 (an anisotropic solid material, for PSOLID only); expected the id of a MAT1, MAT2 or MAT8 card");
     if (!m_.mat1_index.count(mid) && !m_.mat2_index.count(mid) && !m_.mat8_index.count(mid))
       fail(ref, card, id, field, "references material " + std::to_string(mid) + undefined(mid) +
                                      "; expected the id of a MAT1, MAT2 or MAT8 card");
@@ -391,7 +413,7 @@ class Finalizer {
     }
     for (const auto& e : m_.solids) {
       for (int k = 0; k < e.nnode; ++k)
-        need_grid(e.g[static_cast<std::size_t>(k)], e.ref, e.card(), e.id, "G" + std::to_string(k + 1));
+        need_grid(e.g[static_cast<std::size_t>(k)], e.ref, e.card(), e.id, "G" + std::to_string(e.grid_number(k)));
       if (!m_.solid_prop_index.count(e.pid))
         fail(e.ref, e.card(), e.id, "field 3 (PID)", "references property " + std::to_string(e.pid) + undefined(e.pid) + "; expected the id of a PSOLID card");
     }
@@ -497,9 +519,20 @@ class Finalizer {
 
 void IdSpace::add(int id, const CardRef& ref, const char* card, const char* field, const char* what,
                   const char* expected) {
-  const auto [it, inserted] = map.emplace(id, Entry{ref, card});
-  if (inserted) return;
-  Entry first = it->second, later{ref, card};
+  Entry* present = nullptr;
+  if (id > 0 && static_cast<std::size_t>(id) < dense.size()) {
+    Entry& e = dense[static_cast<std::size_t>(id)];
+    if (e.card == nullptr) {
+      e = Entry{ref, card};
+      return;
+    }
+    present = &e;
+  } else {
+    const auto [it, inserted] = map.emplace(id, Entry{ref, card});
+    if (inserted) return;
+    present = &it->second;
+  }
+  Entry first = *present, later{ref, card};
   if (std::tie(later.ref.file, later.ref.line) < std::tie(first.ref.file, first.ref.line)) std::swap(first, later);
   throw InputError(where(*model, later.ref), std::string(later.card) + " " + std::to_string(id) + ", " + field +
                                                  ": duplicate " + what + " id, first defined at " +

@@ -3,6 +3,8 @@
 
 #include <Eigen/Eigenvalues>
 #include <array>
+#include <cstdint>
+#include <vector>
 
 #include "model_lookup.hpp"
 #include "seflex/fem/finalize.hpp"
@@ -37,10 +39,6 @@ void add_point_mass(double m, const Eigen::Vector3d& r, Matrix6& M0) {
   M0.bottomRightCorner<3, 3>() -= m * S * S;
 }
 
-const Eigen::Vector3d& grid_x(const Model& model, int id, const CardRef& ref, const std::string& card, int eid) {
-  return model.grids[detail::grid_index(model, id, ref, card, eid, "G")].x_basic;
-}
-
 }  // namespace
 
 MassProperties mass_properties(const Model& model, std::optional<int> reference_grid) {
@@ -67,16 +65,23 @@ MassProperties mass_properties(const Model& model, std::optional<int> reference_
     add_element<2>({e.x_A, e.x_B}, ref, rod_mass(e, kind), M0);
   }
   detail::ShellSectionCache sections;
+  std::vector<double> grid_mass;  // lumped CQUAD4 masses by grid index
   for (const Shell& s : model.shells) {
     const ShellSection& sec = sections.get(model, s);
     if (s.nnode == 4) {
       if (kind == MassKind::Lumped) {
         // Fast path: four point masses (no element object needed beyond the corner positions).
+        // Their masses are summed per grid first (grid_mass), and each grid's sum added to M0 once.
         Quad4Element e;
         e.section = sec;
-        for (int k = 0; k < 4; ++k) e.x[k] = grid_x(model, s.g[k], s.ref, "CQUAD4", s.id);
+        std::uint32_t gi[4];
+        for (int k = 0; k < 4; ++k) {
+          gi[k] = detail::grid_index(model, s.g[k], s.ref, "CQUAD4", s.id, "G");
+          e.x[k] = model.grids[gi[k]].x_basic;
+        }
         const auto m = quad4_lumped_masses(e);
-        for (int k = 0; k < 4; ++k) add_point_mass(m[k], e.x[k] - ref, M0);
+        if (grid_mass.empty()) grid_mass.assign(model.grids.size(), 0.0);
+        for (int k = 0; k < 4; ++k) grid_mass[gi[k]] += m[k];
       } else {
         const Quad4Element e = make_quad4_element(model, s, &sec);
         add_element<4>(e.x, ref, quad4_mass(e, kind), M0);
@@ -86,6 +91,8 @@ MassProperties mass_properties(const Model& model, std::optional<int> reference_
       add_element<3>(e.x, ref, tria3_mass(e, kind), M0);
     }
   }
+  for (std::size_t i = 0; i < grid_mass.size(); ++i)
+    if (grid_mass[i] != 0.0) add_point_mass(grid_mass[i], model.grids[i].x_basic - ref, M0);
   for (const Solid& so : model.solids) {  // translations only: D_e = [I, -skew(x_a - ref)] per grid
     const SolidElement e = make_solid_element(model, so, true);
     const Eigen::MatrixXd M = solid_mass(e, kind);

@@ -20,7 +20,7 @@ struct SolidPointData {
 };
 
 inline void evaluate(const SolidElement& e, const Eigen::Vector3d& xi, SolidPointData& p) {
-  solid_shape(e.shape, e.nnode, xi, p.s);
+  solid_shape(e.shape, e.nnode, e.missing_mid, xi, p.s);
   p.J.setZero();
   for (int a = 0; a < e.nnode; ++a)
     for (int j = 0; j < 3; ++j) p.J.col(j) += p.s.dN[a][j] * e.x[static_cast<std::size_t>(a)];

@@ -6,14 +6,6 @@
 
 namespace seflex::fem::detail {
 
-void solid_shape(Solid::Shape shape, int nnode, const Eigen::Vector3d& xi, ShapeValues& s) {
-  switch (shape) {
-    case Solid::Shape::Hexa: hexa_shape(nnode, xi, s); return;
-    case Solid::Shape::Penta: penta_shape(nnode, xi, s); return;
-    case Solid::Shape::Tetra: tetra_shape(nnode, xi, s); return;
-  }
-}
-
 void gauss_legendre(int n, double* x, double* w) {
   SEFLEX_DEMAND(n >= 1 && n <= 5, "gauss_legendre: 1 to 5 points");
   switch (n) {

@@ -9,6 +9,7 @@
 //   TETRA: L1 = 1 - xi1 - xi2 - xi3, L2 = xi1, L3 = xi2, L4 = xi3.
 #include <Eigen/Core>
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "seflex/fem/model_solids.hpp"
@@ -27,7 +28,13 @@ struct ShapeValues {
 void hexa_shape(int nnode, const Eigen::Vector3d& xi, ShapeValues& s);   ///< nnode 8 or 20
 void penta_shape(int nnode, const Eigen::Vector3d& xi, ShapeValues& s);  ///< nnode 6 or 15
 void tetra_shape(int nnode, const Eigen::Vector3d& xi, ShapeValues& s);  ///< nnode 4 or 10
-void solid_shape(Solid::Shape shape, int nnode, const Eigen::Vector3d& xi, ShapeValues& s);
+/// The shape functions of the element with nnode grids (Solid::g order). nnode between corners and
+/// the full count: the quadratic element without the mid-edge grids of missing_mid (Solid), each
+/// missing mid-edge function removed and half of it added to the two corners of its edge (Bathe,
+/// Finite Element Procedures, sec. 5.3.1); throws std::logic_error if nnode and missing_mid disagree.
+void solid_shape(Solid::Shape shape, int nnode, std::uint16_t missing_mid, const Eigen::Vector3d& xi, ShapeValues& s);
+/// The corners (0-based) at the ends of mid-edge grid k (0-based among the mid-edge grids).
+std::array<int, 2> solid_edge_ends(Solid::Shape shape, int k);
 
 struct QuadraturePoint {
   Eigen::Vector3d xi = Eigen::Vector3d::Zero();

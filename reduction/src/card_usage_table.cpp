@@ -102,7 +102,7 @@ const CardRole kRows[] = {
     {"PELAST", R::Nonlinear, N, nullptr}, {"PDAMPT", R::Damping, N, nullptr}, {"PSHELL1", R::Structure, N, nullptr},
     // materials
     {"MAT1", R::Structure, Y, nullptr}, {"MAT2", R::Structure, Y, nullptr}, {"MAT3", R::Structure, N, nullptr},
-    {"MAT8", R::Structure, Y, nullptr}, {"MAT9", R::Structure, N, nullptr}, {"MAT10", R::Structure, N, nullptr},
+    {"MAT8", R::Structure, Y, nullptr}, {"MAT9", R::Structure, Y, nullptr}, {"MAT10", R::Structure, N, nullptr},
     {"MAT11", R::Structure, N, nullptr}, {"MATS1", R::Nonlinear, N, nullptr}, {"MATS3", R::Nonlinear, N, nullptr},
     {"MATS8", R::Nonlinear, N, nullptr}, {"MATHP", R::Nonlinear, N, nullptr}, {"MATHE", R::Nonlinear, N, nullptr},
     {"CREEP", R::Nonlinear, N, nullptr}, {"MATT1", R::TempMaterial, N, nullptr}, {"MATT2", R::TempMaterial, N, nullptr},

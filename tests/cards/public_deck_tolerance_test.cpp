@@ -303,11 +303,15 @@ TEST(PublicDecks, ElementsOnUnsupportedMaterialsOrPropertiesAreLeftOutAndRefused
   EXPECT_NE(listed(beam, "PBEAML on MAT8 (left out)"), nullptr);
   EXPECT_NE(listed(beam, "CBEAM on PBEAML on MAT8 (left out)"), nullptr);
   EXPECT_TRUE(mentions(statics_refusal(beam), {"PBEAML on MAT8 (left out)"}));
-  // contact/model1_sim1-solution_1.bdf: a CTETRA with some of its mid-edge grids
+  // contact/model1_sim1-solution_1.bdf: a CTETRA with some of its mid-edge grids (G5 = 0 and G7-G10
+  // blank: straight edges; tests/fem/solid_partial_test.cpp): read, used by solutions
   const fem::Model tetra = read_deck(statics_deck(hexa.substr(0, hexa.find("CHEXA")) + "PSOLID,4,1\nCTETRA,41,4,11,12,13,15,0,17\n"));
-  EXPECT_TRUE(tetra.solids.empty());
-  ASSERT_NE(listed(tetra, "CTETRA with some mid-edge grids (left out)"), nullptr);
-  EXPECT_TRUE(mentions(statics_refusal(tetra), {"deck.bdf:22: CTETRA with some mid-edge grids (left out)"}));
+  ASSERT_EQ(tetra.solids.size(), 1u);
+  EXPECT_EQ(tetra.solids[0].nnode, 5);
+  EXPECT_EQ(tetra.solids[0].g[4], 17);
+  EXPECT_EQ(tetra.solids[0].missing_mid, 0b111101);
+  EXPECT_TRUE(tetra.unsupported.empty());
+  EXPECT_EQ(statics_refusal(tetra), "");
   // a MID or PID that no card defines is still an error
   EXPECT_TRUE(mentions(read_error(hexa + "PSOLID,4,9\n"), {"PSOLID 4, field 3 (MID): references MAT1 9, which is not defined"}));
   EXPECT_TRUE(mentions(read_error(hexa), {"CHEXA 40, field 3 (PID): references property 4, which is not defined"}));

@@ -137,6 +137,28 @@ TEST(NastranBadInput, BinaryGarbageNulBytesHugeLinesEmptyFiles) {
   expect_cli_input_error("", {"no bulk data cards"});
 }
 
+// The line scanner skips eight clean bytes at a time (nastran_lines.cpp): a control character or a
+// '$' at any column of a long fixed-format line is still found at its own column.
+TEST(NastranBadInput, EveryColumnOfALongLineIsChecked) {
+  std::string line = fixed_line({"GRID", "1", "", "0.", "1.5", "2.5"});
+  line.pop_back();  // the newline
+  ASSERT_EQ(line.size(), 43u);
+  for (std::size_t k = 0; k < line.size(); ++k) {
+    std::string bad = line;
+    bad[k] = '\x01';
+    EXPECT_TRUE(mentions(read_error(fixed_line({"GRID", "7", "", "0.", "0.", "0."}) + bad + "\n"),
+                         {"deck.bdf:2, column " + std::to_string(k + 1) + ": a control character (0x01)"}))
+        << k;
+  }
+  for (const std::size_t k : {24u, 32u, 40u, 43u}) {  // a comment from column k + 1: later fields blank
+    const fem::Model m = read_deck(line.substr(0, k) + "$ the rest is a comment\n");
+    ASSERT_EQ(m.grids.size(), 1u) << k;
+    EXPECT_EQ(m.grids[0].x.y(), k >= 40 ? 1.5 : 0.0) << k;
+    EXPECT_EQ(m.grids[0].x.z(), k >= 43 ? 2.5 : 0.0) << k;
+  }
+  EXPECT_TRUE(mentions(read_error(line + "\x7f\n"), {"deck.bdf:1, column 44: a control character (0x7F)"}));
+}
+
 TEST(NastranBadInput, MalformedLines) {
   EXPECT_TRUE(mentions(read_error("GRID,1,,0.,0.,0.\n=,*1.,,*1.\n"), {"deck.bdf:2: replication of GRID 1, field 2: '*1.' increments '1'"}));
   EXPECT_TRUE(mentions(read_error("GRID,1,,0.,0.,0.\n==,*1\n"), {"deck.bdf:2: replication '=='", "expected '=' or a repeat count"}));

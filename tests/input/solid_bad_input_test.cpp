@@ -55,12 +55,9 @@ TEST(SolidInput, CardsAreReadWithTheirDefaults) {
 }
 
 TEST(SolidInput, ReaderErrorsNameTheField) {
-  {  // some mid-edge grids: left out and listed, refused by solutions (tests/cards/public_deck_tolerance_test.cpp)
-    const fem::Model m = test::read_deck(cube("CHEXA,11,2,1,2,3,4,5,6\n,7,8,9\n"));
-    bool listed = false;
-    for (const auto& u : m.unsupported) listed = listed || u.name == "CHEXA with some mid-edge grids (left out)";
-    EXPECT_TRUE(listed);
-    for (const auto& e : m.solids) EXPECT_NE(e.id, 11);
+  {  // some mid-edge grids: read (a blank one is a straight edge); an undefined one is named by its QRG field
+    EXPECT_TRUE(mentions(read_error(cube("CHEXA,11,2,1,2,3,4,5,6\n,7,8,,99\n")), {"CHEXA 11, G10: references grid 99, which is not defined"}));
+    EXPECT_TRUE(mentions(read_error(cube("CHEXA,11,2,1,2,3,4,5,6\n,7,8,,3\n")), {"CHEXA 11", "G10", "grid 3 repeats G3"}));
   }
   EXPECT_TRUE(mentions(read_error(cube("CTETRA,11,2,1,2,3,3\n")), {"CTETRA 11", "G4", "repeats G3"}));
   EXPECT_TRUE(mentions(read_error(cube("", "PSOLID,2,1,,,,,FFLUID\n")), {"PSOLID 2", "FCTN", "expected SMECH, PFLUID (a fluid, listed as unsupported) or blank"}));

@@ -1,6 +1,6 @@
 #pragma once
 // Model cards of solid elements and face pressure loads (part of model.hpp, kept apart to keep that
-// header short): PSOLID, CHEXA/CPENTA/CTETRA, PLOAD4. Field layouts: MSC Nastran Quick Reference
+// header short): PSOLID, MAT9, CHEXA/CPENTA/CTETRA, PLOAD4. Field layouts: MSC Nastran Quick Reference
 // Guide (docs/nastran-support.md). No parsing and no numerics here.
 #include <Eigen/Core>
 #include <array>
@@ -11,8 +11,9 @@
 
 namespace seflex::fem {
 
-/// PSOLID PID MID CORDM IN STRESS ISOP FCTN. Only isotropic MAT1 materials are modelled, so CORDM
-/// (the material axes) does not change results; IN/ISOP select the integration (element_solid.hpp);
+/// PSOLID PID MID CORDM IN STRESS ISOP FCTN. MID: a MAT1 (isotropic: CORDM does not change results)
+/// or a MAT9 (anisotropic, in the material axes CORDM: 0 basic or a rectangular system); IN/ISOP
+/// select the integration (element_solid.hpp);
 /// STRESS (stress output system) is read and ignored; FCTN other than SMECH is refused by the reader.
 struct SolidProperty {
   enum class Integration : std::uint8_t { Default, Bubble, Two, Three };
@@ -26,16 +27,45 @@ struct SolidProperty {
   CardRef ref;
 };
 
-/// CHEXA (8 or 20 grids), CPENTA (6 or 15), CTETRA (4 or 10), grids in Nastran's order: corners,
-/// then the mid-edge grids (QRG CHEXA/CPENTA/CTETRA figures). nnode tells which.
+/// MAT9: anisotropic solid material, G = the symmetric 6 x 6 matrix of G11 ... G66 (upper triangle,
+/// row by row) relating stress and strain in Voigt order xx yy zz xy yz zx (engineering shear
+/// strains), in the PSOLID CORDM axes; A1-A6 thermal expansion (same order), TREF, GE (QRG MAT9).
+/// PSOLID only: a shell or line element property on a MAT9 is an error of fem::finalize.
+struct Mat9 {
+  int id = 0;
+  std::array<double, 21> g{};        ///< G11 G12 G13 G14 G15 G16 G22 ... G66, as on the card
+  double rho = 0;
+  std::array<double, 6> a{};
+  double tref = 0, ge = 0;
+  CardRef ref;
+};
+
+/// CHEXA (8 to 20 grids), CPENTA (6 to 15), CTETRA (4 to 10): the corners, then the mid-edge grids
+/// present, in Nastran's order (QRG CHEXA/CPENTA/CTETRA figures). A blank mid-edge grid makes that
+/// edge straight (QRG): bit k of missing_mid is set when mid-edge grid k (QRG grid corners + 1 + k)
+/// is blank, and g[] holds only the grids present (nnode of them), so that g[0..nnode) is always the
+/// element's grid list. nnode = corners: the linear element (missing_mid ignored); all mid-edge
+/// grids present: the full quadratic one (missing_mid = 0).
 struct Solid {
   enum class Shape : std::uint8_t { Tetra, Penta, Hexa };
   int id = 0, pid = 0;
   Shape shape = Shape::Hexa;
   std::uint8_t nnode = 8;
+  std::uint16_t missing_mid = 0;
   std::array<int, 20> g{};
   CardRef ref;
   const char* card() const { return shape == Shape::Hexa ? "CHEXA" : shape == Shape::Penta ? "CPENTA" : "CTETRA"; }
+  int corners() const { return shape == Shape::Hexa ? 8 : shape == Shape::Penta ? 6 : 4; }
+  int edges() const { return shape == Shape::Hexa ? 12 : shape == Shape::Penta ? 9 : 6; }
+  bool quadratic() const { return nnode > corners(); }
+  /// The QRG grid number (1-based: G1, G2, ...) of g[k], for messages.
+  int grid_number(int k) const {
+    if (k < corners() || !quadratic()) return k + 1;
+    int present = corners();
+    for (int e = 0; e < edges(); ++e)
+      if (!(missing_mid >> e & 1u) && present++ == k) return corners() + e + 1;
+    return k + 1;
+  }
 };
 
 /// PLOAD4 SID EID P1 P2 P3 P4 G1 G3/G4 / CID N1 N2 N3 SORL LDIR, or SID EID1 P1..P4 THRU EID2 (shells).

@@ -24,6 +24,9 @@ struct NastranReadOptions {
   /// Run fem::finalize on the model (ids, references, coordinate systems). Off only to inspect the
   /// raw cards.
   bool finalize = true;
+  /// If set, receives the main file's text (tabs expanded) after reading, so that a caller who also
+  /// scans it (io::read_model: `$seflex` directives) need not load it again.
+  std::string* main_text = nullptr;
 };
 
 /// Read the deck at `path` (and the files it includes, relative to the including file).

@@ -80,6 +80,7 @@ void parse_pload4(const Card&, ReaderState&);
 void parse_mat1(const Card&, ReaderState&);
 void parse_mat2(const Card&, ReaderState&);
 void parse_mat8(const Card&, ReaderState&);
+void parse_mat9(const Card&, ReaderState&);
 void parse_pbar(const Card&, ReaderState&);
 void parse_pbarl(const Card&, ReaderState&);
 void parse_pbeam(const Card&, ReaderState&);
