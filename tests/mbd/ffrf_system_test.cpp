@@ -129,8 +129,9 @@ TEST(FfrfSystem, ScalingKeepsTheConditionBoundedAsTheStepShrinks) {
 TEST(FfrfSystem, InvariantInertiaEqualsTheNodalSums) {
   const Model model = test::pendulum_chain(chain());
   FfrfOptions fi, fn, fg;
-  fn.nodal_inertia = fg.nodal_inertia = true;
-  fn.elastic_gyro = false;
+  fi.inertia = FfrfOptions::Inertia::Invariants;
+  fn.inertia = fg.inertia = FfrfOptions::Inertia::Nodal;
+  fg.elastic_gyro = true;
   const FfrfSystem si = make_ffrf_system(model, fi), sn = make_ffrf_system(model, fn), sg = make_ffrf_system(model, fg);
   ASSERT_EQ(si.num_coords, sn.num_coords);
   ASSERT_GT(si.num_z, 0);

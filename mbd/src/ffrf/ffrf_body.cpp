@@ -10,7 +10,8 @@
 //   M_w = [[E^T M E, E^T M P V], [V^T P^T M E, V^T Mpp V]],  f_w = M_w ab + [E^T y; V^T P^T y],
 // y = M c + gyro, the projections of detail::inertia_projections: a cost set by n, never the mesh
 // (the gyroscopic moment quadratic in the elastic rotation rates is the one term left out, as in
-// AIC). FfrfOptions::nodal_inertia sums over the FE nodes instead (the reference of the tests).
+// AIC). FfrfOptions::inertia chooses per body: the FE node sums are cheaper for small meshes and are the
+// reference of the tests.
 // Then rotated to world (frame rows) and the modal stiffness diag(omega^2) z (+ beta diag(omega^2)
 // dz/dt) added, with the stress stiffening V^T K_G(lambda, xi) xi when the body has it
 // (docs/geometric-stiffening.md; lambda = [a_o - g; alpha; Om~ Om~] of the frame, which FFRF-LM has
@@ -99,7 +100,7 @@ void flexible(const FfrfSystem& sys, const FfrfBody& b, const AicElement& e, con
   VectorXd fw;
   MatrixXd Mw;
   const VectorXd xi = b.V * z;
-  if (sys.options.nodal_inertia)
+  if (b.nodal)
     flexible_nodal(b, e, z, v, ab, want, sys.options.elastic_gyro, fw, Mw, out.kinetic);
   else
     flexible_invariants(b, e, xi, v, ab, want, fw, Mw, out.kinetic, out.ws);

@@ -32,13 +32,16 @@ struct FfrfOptions {
   int modes = -1;                  ///< frame-clamped modes kept per flexible body (-1: all n - 6 that carry mass)
   bool scale_constraints = true;   ///< beta h^2 scaling of the equations of motion and multipliers
   bool condition_estimate = false; ///< 2-norm condition number of each iteration matrix (dense SVD: small models)
-  /// Flexible bodies' inertia from the FE-node sums (the reference of the tests; needs the
-  /// superelement's FE data) instead of the inertia invariants (the default: the same terms at a
-  /// cost set by the reduced size, docs/ffrf.md).
-  bool nodal_inertia = false;
-  /// Nodal inertia only: keep the gyroscopic moment quadratic in the elastic rotation rates, the one
-  /// term the invariants leave out (docs/inertia-invariants.md); false: the invariants' terms exactly.
-  bool elastic_gyro = true;
+  /// How a flexible body's inertia is evaluated: the same terms either way (docs/ffrf.md). Invariants:
+  /// a cost O(n^2) per evaluation, never the mesh; nodal: sums over the FE nodes, O(n_fe k), cheaper for
+  /// small meshes and the reference of the tests. Auto takes per body whichever costs less (the
+  /// nodal sums only when the file carries the FE data).
+  enum class Inertia { Auto, Invariants, Nodal };
+  Inertia inertia = Inertia::Auto;
+  /// Nodal sums only: keep the gyroscopic moment quadratic in the elastic rotation rates, the one
+  /// term the invariants leave out (docs/inertia-invariants.md). Off by default, so that Auto's choice
+  /// does not change the model.
+  bool elastic_gyro = false;
 };
 
 /// What an FFRF run reports beyond RunStats.
@@ -58,7 +61,7 @@ struct FfrfStats {
 /// `observer` as with `simulate` (flexible bodies report xi = V z in the superelement's order).
 /// Throws InputError when the model cannot be expressed (a Free node that no body carries; a
 /// flexible body whose superelement has neither inertia invariants nor FE recovery/mass data, or no
-/// FE data with options.nodal_inertia; unless options.rigid), and
+/// FE data with Inertia::Nodal; unless options.rigid), and
 /// ConvergenceError (after delivering the last accepted state) when Newton fails at h_min.
 FfrfStats simulate_ffrf(const Model& model, const IntegratorSettings& settings, const FfrfOptions& options = {},
                         Observer* observer = nullptr);
@@ -82,6 +85,7 @@ struct FfrfBody {
   Eigen::MatrixXd MppV;             ///< n x k: Mpp V (the invariants' P^T M P times the modes)
   Eigen::MatrixXd VMppV;            ///< k x k: V^T Mpp V
   Eigen::VectorXd omega2;           ///< k squared frequencies: V^T K V = diag(omega2)
+  bool nodal = false;               ///< inertia from the FE node sums (FfrfOptions::inertia), else the invariants
   bool stiffening = false;          ///< geometric stiffening from the superelement's invariants (docs/geometric-stiffening.md)
   double stiffness_damping = 0.0;   ///< beta of D = beta K
   std::vector<NodeIndex> nodes;     ///< one per interface
