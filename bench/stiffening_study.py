@@ -23,20 +23,14 @@ doc) and the chart OUT/stiffening-vs-superelements.png (copied to --img). bench/
 import argparse, csv, json, os, shutil, subprocess, sys, time
 import numpy as np
 
+from study import sh  # bench/study.py: run a command, (exit code, output), None on --timeout
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 L = 10.0
 ELEMENTS = 40          # CBARs of the whole beam, split evenly between the superelements
 MODES = 6              # fixed-interface modes per superelement
 THRESHOLDS = (1.0, 3.0, 10.0)  # tip error [% of the reference's peak] of the summary table
 REFERENCES = {6.0: "spinup_beam_reference.csv", 12.0: "spinup_beam_12rads_reference.csv"}
-
-
-def sh(cmd, timeout=None):
-    try:
-        r = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
-    except subprocess.TimeoutExpired:
-        return None, f"killed after {timeout:g} s (--timeout)"
-    return r.returncode, r.stdout + r.stderr
 
 
 def piece_deck(n_el):

@@ -7,6 +7,7 @@
 #include <array>
 #include <functional>
 #include <map>
+#include <set>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -136,6 +137,28 @@ inline Eigen::VectorXd solve_translations(const Model& m, const GlobalMatrices& 
 inline Eigen::Vector3d translation(const Model& m, const GlobalMatrices& g, const Eigen::VectorXd& u, int grid) {
   const Eigen::Index gi = m.grid_index.at(grid);
   return {u[g.dofs.grid_dof(gi, 1)], u[g.dofs.grid_dof(gi, 2)], u[g.dofs.grid_dof(gi, 3)]};
+}
+
+/// Patch test: the boundary grids (all but `interior`) moved by the linear field u = A x + c, no
+/// load; returns the largest distance of an interior grid from that field (0 to round-off for an
+/// element that passes).
+inline double patch_test_error(Model& m, const std::set<int>& interior, const Eigen::Matrix3d& A, const Eigen::Vector3d& c) {
+  finalize_for_test(m);
+  const GlobalMatrices g = assemble(m, assembly_options(m));
+  std::map<Eigen::Index, double> fixed;
+  for (std::size_t gi = 0; gi < m.grids.size(); ++gi) {
+    if (interior.count(m.grids[gi].id)) continue;
+    const Eigen::Vector3d u = A * m.grids[gi].x_basic + c;
+    for (int cc = 1; cc <= 3; ++cc) fixed[g.dofs.grid_dof(static_cast<Eigen::Index>(gi), cc)] = u[cc - 1];
+  }
+  EXPECT_FALSE(interior.empty());
+  const Eigen::VectorXd u = solve_translations(m, g, Eigen::VectorXd::Zero(g.dofs.size()), fixed);
+  double worst = 0;
+  for (const int id : interior) {
+    const Eigen::Vector3d exact = A * m.grids[m.grid_index.at(id)].x_basic + c;
+    worst = std::max(worst, (translation(m, g, u, id) - exact).norm());
+  }
+  return worst;
 }
 
 }  // namespace seflex::fem::test

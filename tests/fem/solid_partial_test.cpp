@@ -82,21 +82,7 @@ TEST(SolidPartial, PatchTestWithSomeMidEdgeGridsMissing) {
         g.x += 0.03 * Eigen::Vector3d(std::sin(1.7 * k), std::cos(2.3 * k), std::sin(3.1 * k + 0.4));
       }
     }
-    finalize_for_test(m);
-    const GlobalMatrices g = assemble(m, assembly_options(m));
-    std::map<Eigen::Index, double> fixed;
-    for (std::size_t gi = 0; gi < m.grids.size(); ++gi) {
-      if (interior.count(m.grids[gi].id)) continue;
-      const Eigen::Vector3d u = A * m.grids[gi].x_basic + c;
-      for (int cc = 1; cc <= 3; ++cc) fixed[g.dofs.grid_dof(static_cast<Eigen::Index>(gi), cc)] = u[cc - 1];
-    }
-    ASSERT_FALSE(interior.empty());
-    const Eigen::VectorXd u = solve_translations(m, g, Eigen::VectorXd::Zero(g.dofs.size()), fixed);
-    double worst = 0;
-    for (const int id : interior) {
-      const Eigen::Vector3d exact = A * m.grids[m.grid_index.at(id)].x_basic + c;
-      worst = std::max(worst, (translation(m, g, u, id) - exact).norm());
-    }
+    const double worst = patch_test_error(m, interior, A, c);
     EXPECT_LT(worst, 1e-12) << name(type) << " (" << partial << " partial, " << full << " full elements): interior grids off "
                             << "the linear field by " << worst;
   }
