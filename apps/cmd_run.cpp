@@ -95,10 +95,12 @@ int run_run(seflex::app::Args& args) {
   }
   const auto t0 = std::chrono::steady_clock::now();
   const std::clock_t c0 = std::clock();
-  // The mesh part of the superelement files serves the animation and the floating-frame baseline
-  // only; without them a run reads the dynamics (reduced matrices, inertia invariants).
+  // The mesh part of the superelement files serves the animation only; without it a run reads the
+  // dynamics (reduced matrices, inertia and stiffening invariants). The floating-frame baseline takes
+  // its inertia from the invariants too (and may sum over the FE nodes of a small mesh that is read).
   io::SceneBuildOptions bo;
-  bo.keep_mesh = (!no_animation && d.output.animation_interval) || formulation == io::Formulation::FfrfLm;
+  bo.keep_mesh = !no_animation && d.output.animation_interval;
+  bo.full_inertia_everywhere = formulation == io::Formulation::FfrfLm;
   const io::Scene scene = io::build_scene(d, bo);
   std::uint64_t se_bytes = 0;
   bool meshless = false, with_mesh = false;

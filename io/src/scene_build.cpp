@@ -109,7 +109,7 @@ struct Builder {
   void load_bodies() {
     std::map<std::string, const SceneBody*> full_inertia;  // file -> first body that needs its full inertia
     for (const SceneBody& b : d.bodies)
-      if (b.fidelity == Fidelity::Flexible && b.inertia == mbd::InertiaModel::Full)
+      if (b.fidelity == Fidelity::Flexible && (b.inertia == mbd::InertiaModel::Full || options.full_inertia_everywhere))
         full_inertia.emplace(b.superelement.string(), &b);
     std::map<std::string, se::Superelement> files;
     for (const SceneBody& b : d.bodies) {

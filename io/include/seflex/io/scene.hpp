@@ -137,11 +137,13 @@ SceneDescription parse_scene(const std::string& text, const std::filesystem::pat
 
 /// What build_scene keeps of the superelement files.
 struct SceneBuildOptions {
-  /// Keep each file's mesh part (FE nodes, recovery, FE mass, cells): needed for the animation and
-  /// the floating-frame baseline. Without it a file is read without its mesh datasets
-  /// (SuperelementParts::Dynamics) unless a full-inertia body needs the mesh because the file
-  /// carries no inertia invariants.
+  /// Keep each file's mesh part (FE nodes, recovery, FE mass, cells): needed for the animation.
+  /// Without it a file is read without its mesh datasets (SuperelementParts::Dynamics) unless a
+  /// full-inertia body needs the mesh because the file carries no inertia invariants.
   bool keep_mesh = true;
+  /// Every flexible body needs the inertia invariants (or the mesh to compute them), whatever its
+  /// scene inertia: the floating-frame baseline's inertia is always the full one (docs/ffrf.md).
+  bool full_inertia_everywhere = false;
 };
 
 /// Load the superelement files and build the multibody model. A body with full inertia whose file
