@@ -96,8 +96,10 @@ bool LineCursor::next(Line& line) {
       std::memcpy(&w, begin + i, 8);
       constexpr std::uint64_t ones = 0x0101010101010101ull, highs = 0x8080808080808080ull;
       auto has_zero = [&](std::uint64_t v) { return ((v - ones) & ~v & highs) != 0; };
+      // Once a comma was seen (a free-field line), further commas change nothing: only '$' and
+      // control characters stop the fast path.
       const bool special = ((w - 0x20 * ones) & ~w & highs) != 0 || has_zero(w ^ (0x7f * ones)) ||
-                           has_zero(w ^ (0x24 * ones)) || has_zero(w ^ (0x2c * ones));
+                           has_zero(w ^ (0x24 * ones)) || (!comma && has_zero(w ^ (0x2c * ones)));
       if (special) break;
       i += 8;
     }
