@@ -45,7 +45,8 @@ void assemble_flexible(const Model& model, const State& s, Data& data, const Ass
     }
   }
   recover_frame(e, sc.R_WI, sc.p_WI, eta, body.options.recovery, s.frames[static_cast<std::size_t>(bi)], fd.kin, sc.aic);
-  if (body.options.geometric_stiffening && e.has_stiffening()) {
+  const bool stiffened = body.options.geometric_stiffening && e.has_stiffening();
+  if (stiffened) {
     stiffening_load_factors(e, fd.kin, sc.v, sc.a, sc.stiffening_loads, sc.aic);
     elastic_force_stiffened(e, fd.kin, body.options.tangent, sc.stiffening_loads, fd.f_el, opt.matrices ? &sc.Kl : nullptr,
                             sc.aic, &fd.elastic);
@@ -61,7 +62,7 @@ void assemble_flexible(const Model& model, const State& s, Data& data, const Ass
                                    : opt.inertia_velocity_tangent ? InertiaMatrices::All
                                                                   : InertiaMatrices::NoVelocityTangent;
     inertia_force(e, fd.kin, body.options.inertia, sc.v, sc.a, wanted, in, sc.aic);
-    if (opt.matrices && opt.dynamics && body.options.geometric_stiffening && e.has_stiffening())
+    if (opt.matrices && opt.dynamics && stiffened)
       add_stiffening_mass_tangent(e, fd.kin, sc.aic, in.Mt);  // the load factors are the frame's accelerations
     fd.f_in = in.f;
     fd.kinetic = opt.dynamics ? in.kinetic : 0.0;
