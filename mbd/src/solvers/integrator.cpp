@@ -146,6 +146,18 @@ StepResult newton_step(const Model& model, const State& s0, double h, const Coef
     hDq += d;
     // Keep the frames as warm start.
     for (std::size_t b = 0; b < model.flexible_bodies.size(); ++b) s1.frames[b] = data.flex[b].kin.frame;
+    if (rate_converged) {
+      // Converged on the contraction of the corrections: the corrected iterate is the solution; no
+      // evaluation there (it would change nothing but `data`, SUNDIALS IDA does the same). The node
+      // and hinge kinematics are brought to it (node poses and hinge rates of the accepted state);
+      // the bodies and force elements are evaluated when a sample needs them (AicStepper::sample).
+      configure(model, s0, c, h, hDq, s1);
+      update_kinematics(model, s1, data, true);
+      out.iterations = it + 1;
+      out.converged = true;
+      out.evaluated = false;
+      return out;
+    }
   }
   out.why = "no convergence in " + std::to_string(st.newton_max_iterations) + " Newton iterations";
   return out;
@@ -176,7 +188,9 @@ class AicStepper final : public detail::Stepper {
       vdot_predicted_ = state_.vdot + std::min(h / h_prev_, 2.0) * (state_.vdot - vdot_prev_);  // same size: no allocation
     else
       vdot_predicted_ = state_.vdot;
-    return newton_step(model_, state_, h, c_, st_, data_, trial_, rate_, vdot_predicted_, newton_);
+    StepResult r = newton_step(model_, state_, h, c_, st_, data_, trial_, rate_, vdot_predicted_, newton_);
+    last_evaluated_ = r.evaluated;
+    return r;
   }
   double error_estimate(double h) const override {
     dvdot_ = trial_.vdot - state_.vdot;
@@ -192,9 +206,19 @@ class AicStepper final : public detail::Stepper {
     vdot_prev_ = state_.vdot;
     h_prev_ = trial_.t - state_.t;
     state_ = trial_;
+    evaluated_ = last_evaluated_;
     store_derived(model_, data_, state_);
   }
-  void sample(Sample& out) override { make_sample(model_, state_, data_, out); }
+  void sample(Sample& out) override {
+    evaluate_current();
+    make_sample(model_, state_, data_, out);
+  }
+  /// `data` evaluated at the accepted state (the last Newton iterate may have skipped it).
+  void evaluate_current() {
+    if (evaluated_) return;
+    assemble(model_, state_, data_, AssemblyOptions{false, true, 1.0});
+    evaluated_ = true;
+  }
   void prepare_failure_sample() override { assemble(model_, state_, data_, AssemblyOptions{false, true, 1.0}); }
   std::string describe_residual() const override { return detail::describe_residual(model_, data_); }
 
@@ -212,6 +236,8 @@ class AicStepper final : public detail::Stepper {
   mutable VectorXd dvdot_;
   NewtonScratch newton_;
   double h_prev_ = 0.0;      // the last accepted step (0: none yet)
+  bool evaluated_ = true;    // data_ holds the evaluation at state_ (bodies and force elements)
+  bool last_evaluated_ = true;  // the same for trial_ after the last attempt
 };
 
 }  // namespace
@@ -240,7 +266,9 @@ RunStats simulate(const Model& model, State& state, Data& data, const Integrator
   detail::validate_settings(st, state.t);
   initial_accelerations(model, state, data);
   AicStepper stepper(model, state, data, st);
-  return detail::drive_steps(model, st, stepper, observer);
+  const RunStats stats = detail::drive_steps(model, st, stepper, observer);
+  stepper.evaluate_current();  // the caller's `data` belongs to the final state
+  return stats;
 }
 
 }  // namespace seflex::mbd

@@ -29,6 +29,9 @@ struct StepResult {
   int factorizations = 0;
   double residual = 0.0, scale = 0.0;
   std::string why;
+  /// The formulation's data hold the evaluation at the result (false: Newton stopped on the
+  /// contraction of its corrections without evaluating the corrected iterate).
+  bool evaluated = true;
 };
 
 /// What the driver needs from a formulation. `current` is the last accepted state, `trial` the
