@@ -76,6 +76,7 @@ struct ChainOptions {
   Eigen::Vector3d gravity{0, -9.81, 0};
   Eigen::Vector3d axis{0, 0, 1};  ///< hinge axes (world)
   int frame_node = -1;          ///< FE node of the floating frame (-1: middle)
+  int modes = 0;                ///< fixed-interface modes per body
   /// Called before build() with the hinges H1..Hn (e.g. to add force elements).
   std::function<void(mbd::ModelBuilder&, const std::vector<mbd::HingeIndex>&)> extra;
 };
@@ -86,7 +87,7 @@ inline mbd::Model pendulum_chain(const ChainOptions& o) {
   using namespace mbd;
   auto fe = straight_beam(o.length, o.elements, o.section);
   const int f = o.frame_node >= 0 ? o.frame_node : o.elements / 2;
-  const se::Superelement s = craig_bampton(fe, {0, o.elements}, f, 0, "link");
+  const se::Superelement s = craig_bampton(fe, {0, o.elements}, f, o.modes, "link");
   ModelBuilder mb;
   const auto sei = mb.add_superelement(s);
   NodeIndex base = mb.add_ground("ground", Pose{});

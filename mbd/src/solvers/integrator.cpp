@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "solvers/condensed_lu.hpp"
 #include "solvers/diagnosis.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/common/so3.hpp"
@@ -45,6 +46,8 @@ struct NewtonScratch {
   VectorXd a1, hDq, d;
   std::vector<Eigen::Matrix3d> Jl;
   Eigen::SparseMatrix<double> S;
+  detail::CondensedLu lu;  // modal dofs condensed (used while the retained dofs fit a dense LU)
+  bool condensed = false;
 };
 
 StepResult newton_step(const Model& model, const State& s0, double h, const Coefficients& c,
@@ -128,7 +131,8 @@ StepResult newton_step(const Model& model, const State& s0, double h, const Coef
     if (opt.matrices) {
       for (std::size_t r = 0; r < Jl.size(); ++r) Jl[r] = so3::jl(hDq.segment<3>(model.rotation_dof_starts[r]));
       combine_matrices(model, data, 1.0, gp, bp, &Jl, S);
-      if (!data.factorize(S)) {
+      ws.condensed = ws.lu.applicable(model, S, Data::kDenseDofs);
+      if (!(ws.condensed ? ws.lu.factorize(model, S) : data.factorize(S))) {
         out.why = "the iteration matrix is singular (" + detail::describe_singular(model, S) + ")";
         return out;
       }
@@ -136,7 +140,10 @@ StepResult newton_step(const Model& model, const State& s0, double h, const Coef
       ++out.factorizations;
     }
     VectorXd& d = ws.d;
-    data.solve_negated(data.residual, d);
+    if (ws.condensed)
+      ws.lu.solve_negated(data.residual, d);
+    else
+      data.solve_negated(data.residual, d);
     inc = detail::weighted_norm(d, model.dof_weight);
     rate_converged = rate_bound > 0.0 && rate.converged(inc, rate_bound);
     if (!std::isfinite(inc)) {
