@@ -371,17 +371,33 @@ VectorXd to_world(const AicElement& e, const Matrix3d& R_WB, const Eigen::Ref<co
 }
 
 void rotate_to_world(const AicElement& e, const Matrix3d& R_WB, MatrixXd& B) {
+  // B <- R B R^T on the 2N interface 3-blocks of rows and columns, in place (no temporaries): columns
+  // first (rows are contiguous in column-major storage: unit-stride loops), then the row blocks of
+  // every column.
   const int nr = 2 * e.N;
-  for (int i = 0; i < nr; ++i)  // fixed-size 3-vector temporaries: no allocation
-    for (Eigen::Index c = 0; c < B.cols(); ++c) {
-      const Vector3d t = R_WB * B.block<3, 1>(3 * i, c);
-      B.block<3, 1>(3 * i, c) = t;
+  const Eigen::Index rows = B.rows(), cols = B.cols();
+  const Matrix3d& R = R_WB;
+  for (int i = 0; i < nr && 3 * i + 2 < cols; ++i) {
+    double* c0 = B.col(3 * i).data();
+    double* c1 = B.col(3 * i + 1).data();
+    double* c2 = B.col(3 * i + 2).data();
+    for (Eigen::Index r = 0; r < rows; ++r) {  // [c0 c1 c2](r) <- [c0 c1 c2](r) R^T
+      const double a = c0[r], b = c1[r], c = c2[r];
+      c0[r] = a * R(0, 0) + b * R(0, 1) + c * R(0, 2);
+      c1[r] = a * R(1, 0) + b * R(1, 1) + c * R(1, 2);
+      c2[r] = a * R(2, 0) + b * R(2, 1) + c * R(2, 2);
     }
-  for (int i = 0; i < nr; ++i)
-    for (Eigen::Index r = 0; r < B.rows(); ++r) {
-      const Eigen::RowVector3d t = B.block<1, 3>(r, 3 * i) * R_WB.transpose();
-      B.block<1, 3>(r, 3 * i) = t;
+  }
+  for (Eigen::Index c = 0; c < cols; ++c) {
+    double* col = B.col(c).data();
+    for (int i = 0; i < nr && 3 * i + 2 < rows; ++i) {  // rows 3i..3i+2 <- R rows
+      double* x = col + 3 * i;
+      const double a = x[0], b = x[1], d = x[2];
+      x[0] = R(0, 0) * a + R(0, 1) * b + R(0, 2) * d;
+      x[1] = R(1, 0) * a + R(1, 1) * b + R(1, 2) * d;
+      x[2] = R(2, 0) * a + R(2, 1) * b + R(2, 2) * d;
     }
+  }
 }
 
 MatrixXd to_world_matrix(const AicElement& e, const Matrix3d& R_WB, const MatrixXd& A) {
