@@ -110,6 +110,7 @@ void print_card_usage(const seflex::fem::Model& m) {
   const std::pair<red::CardUse::Kind, const char*> groups[] = {
       {red::CardUse::Kind::Refused, "refused (the solution stops with an error)"},
       {red::CardUse::Kind::Approximated, "read with an approximation (warning)"},
+      {red::CardUse::Kind::Caution, "computed as written, with a consequence to check (warning)"},
       {red::CardUse::Kind::Unused, "not used (warning)"}};
   for (const auto& [kind, title] : groups) {
     if (usage.count(kind) == 0) continue;

@@ -6,7 +6,8 @@
 //   reduction::require_usable(model, usage);       // InputError (exit 3) if a needed card is unsupported
 //
 // One line per card and reason: "warning: CARD: N cards, first at file:line: reason". Approximated
-// entries say "warning (approximation)". Refused entries are not printed here: require_usable
+// entries say "warning (approximation)"; Caution entries (the deck is computed as written, with a
+// consequence to check: J = 0, thick plates, RFORCE's unit) "warning". Refused entries are not printed here: require_usable
 // turns the first into the command's error message (seflex info lists them all).
 #include <cstdio>
 #include <string>

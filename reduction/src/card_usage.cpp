@@ -11,6 +11,7 @@
 
 #include "card_usage_table.hpp"
 #include "drilling_inertia.hpp"
+#include "modelling_cautions.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/fem/components.hpp"
 #include "seflex/fem/constraints.hpp"
@@ -102,6 +103,7 @@ class Classifier {
     if (!runs(s_)) {  // info without a SOL seflex runs, convert: what seflex does not model
       unsupported();
       notes();
+      cautions();
       return report_.take();
     }
     collect_sets();
@@ -116,6 +118,7 @@ class Classifier {
     params();
     unsupported();
     notes();
+    cautions();
     return report_.take();
   }
 
@@ -634,6 +637,19 @@ class Classifier {
         report_.add(k, "RBAR ALPHA", r.ref,
                     "thermal expansion coefficient of the element: read, not used (rigid elements do not expand)");
     drilling();
+  }
+
+  /// What the deck asks for and seflex computes as written, with a consequence to be told
+  /// (modelling_cautions.hpp): in every solution that builds the structure (and seflex info), bars
+  /// without torsional stiffness and thick plates; in statics and buckling, the RFORCE cards of
+  /// the load sets the subcases select.
+  void cautions() {
+    if (!runs(s_) && s_ != Solution::Info) return;
+    std::vector<detail::Caution> found = detail::torsionless_bars(m_, s_ == Solution::Buckling);
+    for (auto& c : detail::thick_shells(m_)) found.push_back(std::move(c));
+    if (uses_loads())
+      for (auto& c : detail::rforce_units(m_, used_load_)) found.push_back(std::move(c));
+    for (const auto& c : found) report_.add(Kind::Caution, c.card, c.first, c.reason, c.count);
   }
 
   /// CONM2 rotary inertia about a flat shell's normal that only the drilling penalty holds: spurious

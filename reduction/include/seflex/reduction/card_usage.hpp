@@ -6,7 +6,10 @@
 //     solution must not run: require_usable throws InputError naming the card, file:line and why),
 //   - not used by this solution (Unused: an unselected LOAD/SPC/MPC/EIGR set, output, optimisation
 //     or aero cards, loads in normal modes ...: a warning, as Nastran runs such decks), or
-//   - used with an approximation seflex states (Approximated: a warning).
+//   - used with an approximation seflex states (Approximated: a warning), or
+//   - used as written, with a consequence a careful user wants to be told (Caution: a warning):
+//     a bar without torsional stiffness (J = 0), a plate thick for its mesh, RFORCE's unit
+//     (reduction/src/modelling_cautions.hpp).
 //
 //   auto cases = reduction::select_cases(model, subcase);
 //   auto usage = reduction::check_card_usage(model, reduction::Solution::Statics, cases);
@@ -56,7 +59,7 @@ Solution solution_of_deck(const fem::Model& model);
 const char* solution_name(Solution s);
 
 struct CardUse {
-  enum class Kind : unsigned char { Unused, Approximated, Refused };
+  enum class Kind : unsigned char { Unused, Caution, Approximated, Refused };
   Kind kind = Kind::Unused;
   std::string card;       ///< card name ("PLOAD4"), "case control TEMPERATURE(LOAD)", "PARAM"
   std::size_t count = 0;  ///< cards concerned
@@ -70,7 +73,7 @@ enum InterfaceFrom : unsigned { kInterfaceNone = 0, kInterfaceAset = 1, kInterfa
 struct CardUsage {
   Solution solution = Solution::Info;
   std::vector<CaseSelection> cases;  ///< the subcases the solution runs
-  std::vector<CardUse> uses;         ///< Refused first, then Approximated, then Unused; in deck order within each
+  std::vector<CardUse> uses;         ///< Refused, Approximated, Caution, then Unused; in deck order within each
   bool refused() const;
   std::size_t count(CardUse::Kind kind) const;
 };
