@@ -4,6 +4,9 @@
 // lives in the body's scratch (FlexibleBodyData::scratch): no allocation after the first call.
 #include <limits>
 
+#include "seflex/common/error.hpp"
+#include "seflex/common/so3.hpp"
+
 #include "assembly/assembly_detail.hpp"
 #include "bodies/aic_inertia_detail.hpp"
 
@@ -44,7 +47,23 @@ void assemble_flexible(const Model& model, const State& s, Data& data, const Ass
       sc.a.tail(m).setZero();
     }
   }
-  recover_frame(e, sc.R_WI, sc.p_WI, eta, body.options.recovery, s.frames[static_cast<std::size_t>(bi)], fd.kin, sc.aic);
+  // Starting frame: the one that gives interface 1 the local pose of the last evaluation (the body
+  // moved rigidly since, to first order): one Newton iteration of the recovery fewer than from the
+  // state's frame. That evaluation may have been a diverging Newton iterate: then the state's frame.
+  const FloatingFrame& state_frame = s.frames[static_cast<std::size_t>(bi)];
+  const auto theta_1 = fd.kin.xi.segment<3>(3);
+  if (fd.kin.xi.size() == n && fd.kin.xi.allFinite() && theta_1.norm() < 0.5) {
+    FloatingFrame start;
+    start.R_WB = sc.R_WI[0] * e.C[0].transpose() * so3::exp(-theta_1);
+    start.p_WBo = sc.p_WI[0] - start.R_WB * (e.x[0] + fd.kin.xi.head<3>());
+    try {
+      recover_frame(e, sc.R_WI, sc.p_WI, eta, body.options.recovery, start, fd.kin, sc.aic);
+    } catch (const ConvergenceError&) {
+      recover_frame(e, sc.R_WI, sc.p_WI, eta, body.options.recovery, state_frame, fd.kin, sc.aic);
+    }
+  } else {
+    recover_frame(e, sc.R_WI, sc.p_WI, eta, body.options.recovery, state_frame, fd.kin, sc.aic);
+  }
   const bool stiffened = body.options.geometric_stiffening && e.has_stiffening();
   if (stiffened) {
     stiffening_load_factors(e, fd.kin, sc.v, sc.a, sc.stiffening_loads, sc.aic);
