@@ -45,11 +45,11 @@ TEST(FfrfPendulum, RigidLmDoublePendulumMatchesReference) {
 // Rigid-LM on pendulum chains of rigid rods released horizontally, against AIC's rigid bodies (hinge
 // angles as the only unknowns: an independent formulation of the same mechanism). The FFRF-LM
 // iteration matrix is factorised densely up to 150 unknowns and by the sparse LU above
-// (ffrf_iteration_matrix.hpp): 5 rods (5 x 6 + 5 = 35 coordinates, 30 multipliers) take the dense
-// path, 16 rods (112 + 96) the sparse one; both must agree with AIC to the integration error.
+// (ffrf_iteration_matrix.hpp): 5 rods (5 x 7 = 35 coordinates, 30 multipliers) take the dense path,
+// 12 rods (84 + 72 = 156) the sparse one; both must agree with AIC to the integration error.
 // Measured, max hinge-angle difference over 0.4 s at local error tolerance 1e-8 / 1e-9 / 1e-10 / 1e-11:
-// 4.4e-6 / 8.9e-7 / 1.8e-7 / 3.4e-8 rad (5 rods), 1.1e-5 / 2.4e-6 / 5.2e-7 / 1.1e-7 rad (16 rods):
-// the integration error of the two formulations, shrinking with the tolerance. Checked at 1e-10.
+// 4.4e-6 / 8.9e-7 / 1.8e-7 / 3.4e-8 rad (5 rods), 1.1e-5 / 2.3e-6 / 5.3e-7 / 1.1e-7 rad (12 rods):
+// the integration error of the two formulations, shrinking with the tolerance. Checked at 1e-9.
 class FfrfRigidChain : public ::testing::TestWithParam<int> {};
 
 TEST_P(FfrfRigidChain, RigidLmMatchesAicRigidBodies) {
@@ -62,7 +62,7 @@ TEST_P(FfrfRigidChain, RigidLmMatchesAicRigidBodies) {
   st.t_end = 0.4;
   st.output_interval = 0.02;
   st.h_initial = 1e-4;
-  st.tol_angle = st.tol_position = 1e-10;
+  st.tol_angle = st.tol_position = 1e-9;
   st.rho_inf = 0.9;
   test::Recorder lm, aic;
   const FfrfStats stats = simulate_ffrf(model, st, FfrfOptions{}, &lm);
@@ -82,7 +82,7 @@ TEST_P(FfrfRigidChain, RigidLmMatchesAicRigidBodies) {
   std::printf("rigid-LM chain of %d rods (%d unknowns): max hinge-angle difference to AIC %.2e rad (largest angle %.2f rad)\n",
               o.bodies, unknowns, err, swing);
   EXPECT_GT(swing, 0.1);  // the chain has swung
-  EXPECT_LT(err, 2e-6);
+  EXPECT_LT(err, 5e-6);
 }
 
-INSTANTIATE_TEST_SUITE_P(DenseAndSparse, FfrfRigidChain, ::testing::Values(5, 16));
+INSTANTIATE_TEST_SUITE_P(DenseAndSparse, FfrfRigidChain, ::testing::Values(5, 12));
