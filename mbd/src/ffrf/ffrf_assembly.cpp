@@ -15,29 +15,40 @@ using Eigen::VectorXd;
 namespace {
 
 using Triplets = std::vector<Eigen::Triplet<double>>;
+using Scratch = FfrfEval::Scratch;
 
-/// Central differences of f (a local vector over `rows`) w.r.t. the coordinates `cols` (>= 0
-/// only), added to T as rows x cols triplets.
+/// v.head(n), v grown (never shrunk) to hold it.
+Eigen::VectorBlock<VectorXd> head(VectorXd& v, Eigen::Index n) {
+  if (v.size() < n) v.resize(n);
+  return v.head(n);
+}
+
+/// Central differences of f (f(out) writes a local vector over `rows` into out) w.r.t. the
+/// coordinates `cols` (>= 0 only), added to T as rows x cols triplets.
 template <class F>
 void fd_configuration(const FfrfSystem& sys, FfrfState& s, const std::vector<int>& rows, const std::vector<int>& cols, F&& f,
-                      Triplets& T) {
+                      Scratch& w, Triplets& T) {
+  const auto n = static_cast<Eigen::Index>(rows.size());
+  auto fp = head(w.fp, n), fm = head(w.fm, n), d = head(w.d, n);
   for (int col : cols) {
     if (col < 0) continue;
     const double eps = fd_step(sys, col);
     Saved sv = perturb(sys, s, col, eps);
-    const VectorXd fp = f();
+    f(fp);
     restore(sys, s, col, sv);
     sv = perturb(sys, s, col, -eps);
-    const VectorXd fm = f();
+    f(fm);
     restore(sys, s, col, sv);
-    const VectorXd d = (fp - fm) / (2.0 * eps);
+    d = (fp - fm) / (2.0 * eps);
     for (std::size_t r = 0; r < rows.size(); ++r)
       if (rows[r] >= 0 && d[static_cast<Eigen::Index>(r)] != 0.0) T.emplace_back(rows[r], col, d[static_cast<Eigen::Index>(r)]);
   }
 }
 
 void bodies(const FfrfSystem& sys, FfrfState& s, bool matrices, FfrfEval& ev) {
+  Scratch& w = ev.scratch;
   ev.bodies.resize(sys.bodies.size());
+  if (matrices) w.fd_bodies.resize(sys.bodies.size());
   for (std::size_t bi = 0; bi < sys.bodies.size(); ++bi) {
     const FfrfBody& b = sys.bodies[bi];
     const int nb = 6 + b.k, b0 = b.coord;
@@ -46,25 +57,30 @@ void bodies(const FfrfSystem& sys, FfrfState& s, bool matrices, FfrfEval& ev) {
     ev.r.segment(b0, nb) += bf.f;
     ev.scale.segment(b0, nb) += bf.f.cwiseAbs();
     if (!matrices) continue;
+    const auto nb2 = static_cast<std::size_t>(nb * nb);
+    w.max_M += nb2;
+    w.max_K += nb2;
+    w.max_C += nb2;
     for (int i = 0; i < nb; ++i)
       for (int j = 0; j < nb; ++j)
         if (bf.M(i, j) != 0.0) ev.M.emplace_back(b0 + i, b0 + j, bf.M(i, j));
-    std::vector<int> idx(static_cast<std::size_t>(nb));
-    for (int i = 0; i < nb; ++i) idx[static_cast<std::size_t>(i)] = b0 + i;
-    BodyForce tmp;
-    auto f = [&] {
+    w.idx.resize(static_cast<std::size_t>(nb));
+    for (int i = 0; i < nb; ++i) w.idx[static_cast<std::size_t>(i)] = b0 + i;
+    BodyForce& tmp = w.fd_bodies[bi];
+    auto f = [&](Eigen::VectorBlock<VectorXd> out) {
       body_force(sys, s, static_cast<int>(bi), false, tmp);
-      return tmp.f;
+      out = tmp.f;
     };
-    fd_configuration(sys, s, idx, idx, f, ev.K);
+    fd_configuration(sys, s, w.idx, w.idx, f, w, ev.K);
+    auto fp = head(w.fp, nb), fm = head(w.fm, nb), d = head(w.d, nb);
     for (int i = 0; i < nb; ++i) {  // the force is quadratic in the velocities: central differences are exact
       const double eps = fd_step(sys, b0 + i), v0 = s.v[b0 + i];
       s.v[b0 + i] = v0 + eps;
-      const VectorXd fp = f();
+      f(fp);
       s.v[b0 + i] = v0 - eps;
-      const VectorXd fm = f();
+      f(fm);
       s.v[b0 + i] = v0;
-      const VectorXd d = (fp - fm) / (2.0 * eps);
+      d = (fp - fm) / (2.0 * eps);
       for (int r = 0; r < nb; ++r)
         if (d[r] != 0.0) ev.C.emplace_back(b0 + r, b0 + i, d[r]);
     }
@@ -72,37 +88,48 @@ void bodies(const FfrfSystem& sys, FfrfState& s, bool matrices, FfrfEval& ev) {
 }
 
 void loads(const FfrfSystem& sys, FfrfState& s, bool matrices, FfrfEval& ev) {
+  Scratch& w = ev.scratch;
+  PoseJ& P = w.pose;
   for (const NodeLoad& load : sys.model->loads) {
-    auto f = [&] {
-      const PoseJ P = node_pose(sys, s, load.node.value, false);
+    auto f = [&](Eigen::VectorBlock<VectorXd> out) {
+      node_pose(sys, s, load.node.value, false, P);
       const double factor = load.scale ? load.scale(s.t) : 1.0;
       Vector6d F;
       F.head<3>() = factor * (load.follower ? Eigen::Vector3d(P.R * load.force) : load.force);
       F.tail<3>() = factor * (load.follower ? Eigen::Vector3d(P.R * load.moment) : load.moment);
-      return VectorXd(-(P.J.transpose() * F));
+      out.noalias() = -(P.jacobian().transpose() * F);
     };
-    const PoseJ P = node_pose(sys, s, load.node.value, false);
-    const VectorXd q = f();
+    node_pose(sys, s, load.node.value, false, P);
+    const Eigen::Index n = P.size();
+    auto q = head(w.q, n);
+    f(q);
     for (std::size_t c = 0; c < P.cols.size(); ++c) {
       if (P.cols[c] < 0) continue;
       ev.r[P.cols[c]] += q[static_cast<Eigen::Index>(c)];
       ev.scale[P.cols[c]] += std::abs(q[static_cast<Eigen::Index>(c)]);
     }
-    if (matrices) fd_configuration(sys, s, P.cols, P.cols, f, ev.K);
+    if (!matrices) continue;
+    w.max_K += P.cols.size() * P.cols.size();
+    w.idx = P.cols;  // P is overwritten by the perturbed evaluations
+    fd_configuration(sys, s, w.idx, w.idx, f, w, ev.K);
   }
 }
 
 void force_elements(const FfrfSystem& sys, const FfrfState& s, bool matrices, FfrfEval& ev) {
   const Model& model = *sys.model;
-  VectorXd phi, phidot;
-  hinge_values(sys, s, phi, phidot);
-  const HingeValues hv{phi, phidot};
+  Scratch& w = ev.scratch;
+  hinge_values(sys, s, w.phi, w.phidot);
+  const HingeValues hv{w.phi, w.phidot};
   ev.forces.resize(model.force_elements.size());
   for (std::size_t i = 0; i < model.force_elements.size(); ++i) {
     const bool latched = i < s.locks.size() && s.locks[i].latched;
     HingeForceResult& r = ev.forces[i];
-    r = evaluate(model.force_elements[i].element, hv, latched);
+    evaluate(model.force_elements[i].element, hv, latched, r);
     const int nh = static_cast<int>(r.hinges.size());
+    if (matrices) {
+      w.max_K += static_cast<std::size_t>(nh * nh);
+      w.max_C += static_cast<std::size_t>(nh * nh);
+    }
     for (int a = 0; a < nh; ++a) {
       const int h = r.hinges[static_cast<std::size_t>(a)].value;
       ev.joint_torque[h] -= r.tau[a];
@@ -128,12 +155,18 @@ int hinge_of(const FfrfSystem& sys, int col) {
 }
 
 void constraints(const FfrfSystem& sys, FfrfState& s, bool matrices, FfrfEval& ev) {
-  ConstraintEval ce;
+  Scratch& w = ev.scratch;
+  ConstraintEval& ce = w.ce;
   for (std::size_t c = 0; c < sys.constraints.size(); ++c) {
     eval_constraint(sys, s, static_cast<int>(c), ce);
     const Vector6d lam = s.lambda.segment<6>(6 * static_cast<Eigen::Index>(c));
     ev.g.segment<6>(6 * static_cast<Eigen::Index>(c)) = ce.g;
-    const VectorXd q = ce.G.transpose() * lam;
+    if (matrices) {
+      w.max_G += 6 * ce.cols.size();
+      w.max_K += ce.cols.size() * ce.cols.size();
+    }
+    auto q = head(w.q, ce.size());
+    q.noalias() = ce.jacobian().transpose() * lam;
     for (std::size_t i = 0; i < ce.cols.size(); ++i) {
       const int col = ce.cols[i];
       const double qi = q[static_cast<Eigen::Index>(i)];
@@ -148,12 +181,12 @@ void constraints(const FfrfSystem& sys, FfrfState& s, bool matrices, FfrfEval& e
           ev.G.emplace_back(6 * static_cast<int>(c) + k, col, ce.G(k, static_cast<Eigen::Index>(i)));
     }
     if (!matrices || lam.isZero(0.0)) continue;
-    ConstraintEval cp;
-    auto f = [&] {
+    ConstraintEval& cp = w.cp;
+    auto f = [&](Eigen::VectorBlock<VectorXd> out) {
       eval_constraint(sys, s, static_cast<int>(c), cp);
-      return VectorXd(cp.G.transpose() * lam);
+      out.noalias() = cp.jacobian().transpose() * lam;
     };
-    fd_configuration(sys, s, ce.cols, ce.cols, f, ev.K);
+    fd_configuration(sys, s, ce.cols, ce.cols, f, w, ev.K);
   }
 }
 
@@ -169,10 +202,17 @@ void ffrf_assemble(const FfrfSystem& sys, FfrfState& s, bool matrices, FfrfEval&
   ev.C.clear();
   ev.M.clear();
   ev.G.clear();
+  Scratch& w = ev.scratch;
+  w.max_K = w.max_C = w.max_M = w.max_G = 0;
   bodies(sys, s, matrices, ev);
   loads(sys, s, matrices, ev);
   force_elements(sys, s, matrices, ev);
   constraints(sys, s, matrices, ev);
+  if (!matrices) return;
+  ev.K.reserve(w.max_K);  // no-ops once reserved
+  ev.C.reserve(w.max_C);
+  ev.M.reserve(w.max_M);
+  ev.G.reserve(w.max_G);
 }
 
 }  // namespace seflex::mbd::detail

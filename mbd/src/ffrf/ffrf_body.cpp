@@ -35,16 +35,24 @@ namespace {
 
 using Vector6d = Eigen::Matrix<double, 6, 1>;
 
-/// Body-axis inertia force fw and mass Mw (if want) from the FE node sums.
-void flexible_nodal(const FfrfBody& b, const AicElement& e, const VectorXd& z, const VectorXd& v, const VectorXd& ab, bool want,
-                    bool elastic_gyro, VectorXd& fw, MatrixXd& Mw, double& kinetic) {
+using Scratch = BodyForce::Scratch;
+
+/// Body-axis inertia force w.fw and mass w.Mw (if want) from the FE node sums.
+void flexible_nodal(const FfrfBody& b, const AicElement& e, bool want, bool elastic_gyro, Scratch& w, double& kinetic) {
   const int k = b.k, nb = 6 + k;
   const auto nfe = static_cast<int>(e.X.cols());
+  const VectorXd& z = w.z;
+  const VectorXd& v = w.v;
   const Vector3d Om = v.segment<3>(3);
-  const VectorXd zd = v.tail(k);
-  const VectorXd U = b.PV * z, Ud = b.PV * zd;
-  MatrixXd N = MatrixXd::Zero(6 * nfe, nb);
-  VectorXd cfe(6 * nfe), gyro = VectorXd::Zero(6 * nfe);
+  const auto zd = v.tail(k);
+  w.U.noalias() = b.PV * z;
+  w.Ud.noalias() = b.PV * zd;
+  const VectorXd &U = w.U, &Ud = w.Ud;
+  MatrixXd& N = w.N;
+  N.setZero(6 * nfe, nb);
+  w.cfe.resize(6 * nfe);
+  w.gyro.setZero(6 * nfe);
+  VectorXd &cfe = w.cfe, &gyro = w.gyro;
   for (int i = 0; i < nfe; ++i) {
     const Vector3d pi = e.X.col(i) + U.segment<3>(6 * i);
     N.block<3, 3>(6 * i, 0).setIdentity();
@@ -58,21 +66,29 @@ void flexible_nodal(const FfrfBody& b, const AicElement& e, const VectorXd& z, c
     if (!elastic_gyro) gyro.segment<3>(6 * i + 3) -= ud.cross(J * ud);
   }
   if (k > 0) N.rightCols(k) = b.PV;
-  const VectorXd Xd = N * v;
-  const VectorXd Xdd = N * ab + cfe;
-  fw = N.transpose() * (e.M_fe * Xdd + gyro);
-  kinetic = 0.5 * Xd.dot(e.M_fe * Xd);
-  if (want) Mw = N.transpose() * (e.M_fe * N);
+  w.Xd.noalias() = N * v;
+  w.Xdd.noalias() = N * w.ab;
+  w.Xdd += cfe;
+  w.MXdd.noalias() = e.M_fe * w.Xdd;  // M_fe Xdd + gyro
+  w.MXdd += gyro;
+  w.fw.noalias() = N.transpose() * w.MXdd;
+  w.MXd.noalias() = e.M_fe * w.Xd;
+  kinetic = 0.5 * w.Xd.dot(w.MXd);
+  if (!want) return;
+  w.MN.noalias() = e.M_fe * N;
+  w.Mw.noalias() = N.transpose() * w.MN;
 }
 
 /// The same from the inertia invariants.
-void flexible_invariants(const FfrfBody& b, const AicElement& e, const VectorXd& xi, const VectorXd& v, const VectorXd& ab,
-                         bool want, VectorXd& fw, MatrixXd& Mw, double& kinetic, AicWorkspace& ws) {
+void flexible_invariants(const FfrfBody& b, const AicElement& e, bool want, Scratch& w, double& kinetic, AicWorkspace& ws) {
   const int k = b.k;
+  const VectorXd& v = w.v;
+  const VectorXd& ab = w.ab;
+  VectorXd& fw = w.fw;
   const Vector3d Om = v.segment<3>(3);
   ws.xid.noalias() = b.V * v.tail(k);
   detail::InertiaProjections pr;
-  detail::inertia_projections(e, xi, ws.xid, Om, ws, pr);
+  detail::inertia_projections(e, w.xi, ws.xid, Om, ws, pr);
   ws.sixn.noalias() = ws.PmE.transpose() * b.V;  // E^T M P V (6 x k)
   const auto& EmPV = ws.sixn;
   const Vector6d af = ab.head<6>(), vf = v.head<6>();
@@ -83,9 +99,12 @@ void flexible_invariants(const FfrfBody& b, const AicElement& e, const VectorXd&
   fw.tail(k).noalias() = EmPV.transpose() * af;
   fw.tail(k).noalias() += b.VMppV * ab.tail(k);
   fw.tail(k).noalias() += b.V.transpose() * ws.pm;
-  const VectorXd zd = v.tail(k);
-  kinetic = 0.5 * vf.dot(pr.EmE * vf) + vf.dot(EmPV * zd) + 0.5 * zd.dot(b.VMppV * zd);
+  const auto zd = v.tail(k);
+  w.t6.noalias() = EmPV * zd;
+  w.tk.noalias() = b.VMppV * zd;
+  kinetic = 0.5 * vf.dot(pr.EmE * vf) + vf.dot(w.t6) + 0.5 * zd.dot(w.tk);
   if (!want) return;
+  MatrixXd& Mw = w.Mw;
   Mw.resize(6 + k, 6 + k);
   Mw.topLeftCorner<6, 6>() = pr.EmE;
   Mw.topRightCorner(6, k) = EmPV;
@@ -93,17 +112,20 @@ void flexible_invariants(const FfrfBody& b, const AicElement& e, const VectorXd&
   Mw.bottomRightCorner(k, k) = b.VMppV;
 }
 
-void flexible(const FfrfSystem& sys, const FfrfBody& b, const AicElement& e, const Matrix3d& R, const VectorXd& z, const VectorXd& v,
-              const VectorXd& ab, bool want, BodyForce& out) {
+/// The body's force and (if want) mass from its body-axis velocities out.scratch.v, accelerations
+/// out.scratch.ab and modal coordinates out.scratch.z.
+void flexible(const FfrfSystem& sys, const FfrfBody& b, const AicElement& e, const Matrix3d& R, bool want, BodyForce& out) {
   const int k = b.k, nb = 6 + k;
-  const VectorXd zd = v.tail(k);
-  VectorXd fw;
-  MatrixXd Mw;
-  const VectorXd xi = b.V * z;
+  Scratch& w = out.scratch;
+  const VectorXd& z = w.z;
+  const auto zd = w.v.tail(k);
+  w.xi.noalias() = b.V * z;
   if (b.nodal)
-    flexible_nodal(b, e, z, v, ab, want, sys.options.elastic_gyro, fw, Mw, out.kinetic);
+    flexible_nodal(b, e, want, sys.options.elastic_gyro, w, out.kinetic);
   else
-    flexible_invariants(b, e, xi, v, ab, want, fw, Mw, out.kinetic, out.ws);
+    flexible_invariants(b, e, want, w, out.kinetic, out.ws);
+  const VectorXd& fw = w.fw;
+  MatrixXd& Mw = w.Mw;
   out.f.resize(nb);
   out.f.head<3>() = R * fw.head<3>();
   out.f.segment<3>(3) = R * fw.segment<3>(3);
@@ -111,19 +133,21 @@ void flexible(const FfrfSystem& sys, const FfrfBody& b, const AicElement& e, con
   out.elastic = 0.5 * z.dot(b.omega2.cwiseProduct(z));
   if (b.stiffening) {  // + V^T K_G xi, K_G from the frame's accelerations and spin and the interface deformation
     StiffeningLoads lambda;
-    lambda.head<6>() = ab.head<6>();
-    detail::centrifugal_load_factors(v.segment<3>(3), lambda);
-    VectorXd g = VectorXd::Zero(e.n);
-    out.elastic += detail::add_stress_stiffening(e, xi, lambda, g, out.ws);
-    out.f.tail(k).noalias() += b.V.transpose() * g;
+    lambda.head<6>() = w.ab.head<6>();
+    detail::centrifugal_load_factors(w.v.segment<3>(3), lambda);
+    w.g.setZero(e.n);
+    out.elastic += detail::add_stress_stiffening(e, w.xi, lambda, w.g, out.ws);
+    out.f.tail(k).noalias() += b.V.transpose() * w.g;
     // The first six load factors are the frame's body-axis accelerations: d f_z / d ab_frame = V^T [G_c xi]_{c<6}.
     if (want) Mw.bottomLeftCorner(k, 6).noalias() += b.V.transpose() * Eigen::Map<const MatrixXd>(out.ws.Gxi.data(), e.n, 6);
   }
   if (!want) return;
-  MatrixXd Rh = MatrixXd::Identity(nb, nb);
+  MatrixXd& Rh = w.Rh;
+  Rh.setIdentity(nb, nb);
   Rh.block<3, 3>(0, 0) = R;
   Rh.block<3, 3>(3, 3) = R;
-  out.M = Rh * Mw * Rh.transpose();
+  w.RhMw.noalias() = Rh * Mw;
+  out.M.noalias() = w.RhMw * Rh.transpose();
 }
 
 }  // namespace
@@ -133,7 +157,8 @@ void body_force(const FfrfSystem& sys, const FfrfState& s, int bi, bool want_mas
   const Model& model = *sys.model;
   const Matrix3d& R = s.R_WB[static_cast<std::size_t>(bi)];
   const int nb = 6 + b.k;
-  const VectorXd vW = s.v.segment(b.coord, nb), aW = s.vdot.segment(b.coord, nb);
+  const auto vW = s.v.segment(b.coord, nb);
+  const auto aW = s.vdot.segment(b.coord, nb);
   if (!b.flexible) {
     const Vector3d c = R * b.p_BoCm_B;
     const Matrix3d I = R * b.I_Cm_B * R.transpose();
@@ -145,10 +170,13 @@ void body_force(const FfrfSystem& sys, const FfrfState& s, int bi, bool want_mas
     return;
   }
   const AicElement& e = model.superelement(model.flexible_bodies[static_cast<std::size_t>(b.model_index)].se);
-  VectorXd v(nb), ab(nb);
-  v << R.transpose() * vW.head<3>(), R.transpose() * vW.segment<3>(3), vW.tail(b.k);
-  ab << R.transpose() * (aW.head<3>() - model.gravity), R.transpose() * aW.segment<3>(3), aW.tail(b.k);
-  flexible(sys, b, e, R, s.z.segment(b.z_offset, b.k), v, ab, want_mass, out);
+  Scratch& w = out.scratch;
+  w.v.resize(nb);
+  w.ab.resize(nb);
+  w.v << R.transpose() * vW.head<3>(), R.transpose() * vW.segment<3>(3), vW.tail(b.k);
+  w.ab << R.transpose() * (aW.head<3>() - model.gravity), R.transpose() * aW.segment<3>(3), aW.tail(b.k);
+  w.z = s.z.segment(b.z_offset, b.k);
+  flexible(sys, b, e, R, want_mass, out);
 }
 
 }  // namespace seflex::mbd::detail

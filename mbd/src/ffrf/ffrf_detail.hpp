@@ -14,27 +14,43 @@ namespace seflex::mbd::detail {
 using Vector6d = Eigen::Matrix<double, 6, 1>;
 using Matrix6Xd = Eigen::Matrix<double, 6, Eigen::Dynamic>;
 
-/// A pose and its Jacobian: column c = [dp; dpi] (world, spatial rotation) per unit of coordinate
-/// cols[c]; a driven hinge h appears as column -(h + 1) (for time derivatives only).
+/// A pose and its Jacobian: column c < size() = [dp; dpi] (world, spatial rotation) per unit of
+/// coordinate cols[c]; a driven hinge h appears as column -(h + 1) (for time derivatives only).
+/// Scratch: J holds at least size() columns (only the first size() are meaningful) and grows, never
+/// shrinks, so that a PoseJ reused for poses of different widths stops allocating once warm.
 struct PoseJ {
   Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
   Eigen::Vector3d p = Eigen::Vector3d::Zero();
   std::vector<int> cols;
   Matrix6Xd J;
+  Eigen::Index size() const { return static_cast<Eigen::Index>(cols.size()); }
+  /// The columns in use: 6 x size().
+  auto jacobian() const { return J.leftCols(size()); }
+  /// n columns in use, set to zero (cols resized, entries left to the caller).
+  void reset(Eigen::Index n);
+  /// One more column (coordinate col), set to zero.
+  void push_column(int col);
 };
 
-/// Pose of the node on interface j of body b, as that body's coordinates give it.
-PoseJ interface_pose(const FfrfSystem& sys, const FfrfState& s, int b, int j);
+/// Pose of the node on interface j of body b, as that body's coordinates give it, into out.
+void interface_pose(const FfrfSystem& sys, const FfrfState& s, int b, int j, PoseJ& out);
 /// Pose of node k from its source (chain: through its parent and hinge even if a body carries it).
-PoseJ node_pose(const FfrfSystem& sys, const FfrfState& s, int k, bool chain);
+void node_pose(const FfrfSystem& sys, const FfrfState& s, int k, bool chain, PoseJ& out);
 
-/// g = [p_A - p_B; log(R_B^T R_A)] of constraint c, its Jacobian over cols (union of both sides).
+/// g = [p_A - p_B; log(R_B^T R_A)] of constraint c, its Jacobian G (6 x cols.size(), the first
+/// columns of G) over cols (union of both sides); A and B are the scratch of the two poses.
 struct ConstraintEval {
   Vector6d g = Vector6d::Zero();
   std::vector<int> cols;
   Matrix6Xd G;
+  PoseJ A, B;
+  Eigen::Index size() const { return static_cast<Eigen::Index>(cols.size()); }
+  auto jacobian() const { return G.leftCols(size()); }
 };
 void eval_constraint(const FfrfSystem& sys, const FfrfState& s, int c, ConstraintEval& out);
+/// g and dg/dt of every constraint at s (ffrf_constraints with its scratch: phi, phidot, ce).
+void constraint_rates(const FfrfSystem& sys, const FfrfState& s, Eigen::VectorXd& phi, Eigen::VectorXd& phidot, ConstraintEval& ce,
+                      Eigen::VectorXd& g, Eigen::VectorXd& gdot);
 
 /// Body force (world: force and moment about the frame origin; modal forces), gravity included:
 /// inertia + elastic + damping - gravity, as a function of the body's coordinates, velocities and
@@ -44,6 +60,13 @@ struct BodyForce {
   Eigen::MatrixXd M;
   double kinetic = 0.0, elastic = 0.0;
   AicWorkspace ws;  ///< scratch of the invariant evaluation
+  /// Scratch of one body's evaluation, sized at its first use (a BodyForce serves one body).
+  struct Scratch {
+    Eigen::VectorXd v, ab, z, fw, xi, g, t6, tk;  ///< body-axis velocities/accelerations, z, body-axis force, xi = V z, ...
+    Eigen::MatrixXd Mw, Rh, RhMw;                 ///< body-axis mass, blkdiag(R, R, I), Rh Mw
+    Eigen::MatrixXd N, MN;                        ///< nodal sums: N(z) (6 n_fe x nb), M_fe N
+    Eigen::VectorXd U, Ud, cfe, gyro, Xd, Xdd, MXd, MXdd;
+  } scratch;
 };
 void body_force(const FfrfSystem& sys, const FfrfState& s, int b, bool want_mass, BodyForce& out);
 
@@ -66,11 +89,32 @@ struct FfrfEval {
   std::vector<BodyForce> bodies;
   std::vector<HingeForceResult> forces;
   Eigen::VectorXd joint_torque;  ///< per hinge: a . constraint moment - sum tau (driven: drive torque)
+  /// Scratch of the assembly, sized at the first evaluation with matrices (no allocation after it).
+  struct Scratch {
+    std::vector<BodyForce> fd_bodies;  ///< per body: its perturbed evaluations
+    Eigen::VectorXd fp, fm, d, q;      ///< finite differences (at least as long as the element), G^T lambda
+    std::vector<int> idx;
+    ConstraintEval ce, cp;             ///< a constraint and its perturbed evaluations
+    PoseJ pose;                        ///< node loads
+    Eigen::VectorXd phi, phidot;       ///< hinge values
+    /// Upper bounds of the triplet counts (structural: the same at every evaluation with matrices),
+    /// reserved after the first, so that the lists never grow after it.
+    std::size_t max_K = 0, max_C = 0, max_M = 0, max_G = 0;
+  } scratch;
 };
 /// Evaluate at s (s is perturbed and restored for the finite differences when `matrices`).
 void ffrf_assemble(const FfrfSystem& sys, FfrfState& s, bool matrices, FfrfEval& ev);
 
 /// Drive values or state values of every hinge angle and rate at s.
 void hinge_values(const FfrfSystem& sys, const FfrfState& s, Eigen::VectorXd& phi, Eigen::VectorXd& phidot);
+
+/// The sample of `state` into `out`, its storage reused (as make_sample); s and ev are scratch.
+struct SampleScratch {
+  FfrfState s;
+  FfrfEval ev;
+  PoseJ pose;
+  Eigen::VectorXd phi, phidot;
+};
+void ffrf_sample(const FfrfSystem& sys, const FfrfState& state, SampleScratch& w, Sample& out);
 
 }  // namespace seflex::mbd::detail

@@ -12,6 +12,7 @@
 
 #include "solvers/diagnosis.hpp"
 #include "ffrf/ffrf_detail.hpp"
+#include "ffrf/ffrf_iteration_matrix.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/common/so3.hpp"
 #include "seflex/mbd/assembly/assembly.hpp"
@@ -74,27 +75,35 @@ void add_tangent(const FfrfSystem& sys, const VectorXd& hDq, const Triplets& in,
   }
 }
 
+/// Scratch of step_system.
+struct StepScratch {
+  VectorXd hDq;
+  Triplets T;
+};
+
+/// Residual R and (if matrices) the iteration matrix as triplets w.T.
 void step_system(const FfrfSystem& sys, const FfrfState& s0, double h, const AlphaCoefficients& c, const VectorXd& x,
-                 FfrfState& s1, FfrfEval& ev, VectorXd& R, SparseMatrix<double>* S) {
+                 FfrfState& s1, FfrfEval& ev, VectorXd& R, bool matrices, StepScratch& w) {
   configure(sys, s0, c, h, x, s1);
-  detail::ffrf_assemble(sys, s1, S != nullptr, ev);
+  detail::ffrf_assemble(sys, s1, matrices, ev);
   const int nq = sys.num_coords, nm = sys.num_multipliers();
   const double sc = equation_scale(sys, c, h);
   R.resize(nq + nm);
   R.head(nq) = sc * ev.r;
   R.tail(nm) = ev.g;
-  if (!S) return;
+  if (!matrices) return;
   const double bp = (1.0 - c.am) / ((1.0 - c.af) * c.beta * h * h), gp = c.gamma / (c.beta * h);
-  const VectorXd hDq = x.head(nq);
-  Triplets T;
-  T.reserve(ev.K.size() + ev.C.size() + ev.M.size() + 2 * ev.G.size());
+  const VectorXd& hDq = w.hDq = x.head(nq);
+  Triplets& T = w.T;
+  T.clear();
+  // Capacity for the largest lists (a rotation column of K and G becomes three): constant once the
+  // lists' capacities are (detail::ffrf_assemble), so T never grows after the first step.
+  T.reserve(3 * ev.K.capacity() + ev.C.capacity() + ev.M.capacity() + 4 * ev.G.capacity());
   add_tangent(sys, hDq, ev.K, sc, 0, T);
   for (const auto& t : ev.C) T.emplace_back(t.row(), t.col(), sc * gp * t.value());
   for (const auto& t : ev.M) T.emplace_back(t.row(), t.col(), sc * bp * t.value());
   add_tangent(sys, hDq, ev.G, 1.0, nq, T);
   for (const auto& t : ev.G) T.emplace_back(t.col(), nq + t.row(), t.value());
-  S->resize(nq + nm, nq + nm);
-  S->setFromTriplets(T.begin(), T.end());
 }
 
 SparseMatrix<double> to_sparse(const Triplets& T, int rows, int cols) {
@@ -179,27 +188,19 @@ VectorXd body_velocity_guess(const FfrfSystem& sys, const Model& model, const Da
 void ffrf_step_system(const FfrfSystem& sys, const FfrfState& s0, double h, double rho_inf, const VectorXd& x, FfrfState& s1,
                       VectorXd& R, SparseMatrix<double>* S) {
   FfrfEval ev;
+  StepScratch w;
   s1 = s0;
-  step_system(sys, s0, h, AlphaCoefficients(rho_inf), x, s1, ev, R, S);
+  step_system(sys, s0, h, AlphaCoefficients(rho_inf), x, s1, ev, R, S != nullptr, w);
+  if (!S) return;
+  const int n = sys.num_coords + sys.num_multipliers();
+  S->resize(n, n);
+  S->setFromTriplets(w.T.begin(), w.T.end());
 }
 
 void ffrf_constraints(const FfrfSystem& sys, const FfrfState& s, VectorXd& g, VectorXd& gdot) {
   VectorXd phi, phidot;
-  detail::hinge_values(sys, s, phi, phidot);
-  const auto nc = static_cast<int>(sys.constraints.size());
-  g.resize(6 * nc);
-  gdot.resize(6 * nc);
   detail::ConstraintEval ce;
-  for (int c = 0; c < nc; ++c) {
-    detail::eval_constraint(sys, s, c, ce);
-    g.segment<6>(6 * c) = ce.g;
-    detail::Vector6d gd = detail::Vector6d::Zero();
-    for (std::size_t i = 0; i < ce.cols.size(); ++i) {
-      const int col = ce.cols[i];
-      gd += ce.G.col(static_cast<Eigen::Index>(i)) * (col >= 0 ? s.v[col] : phidot[-col - 1]);
-    }
-    gdot.segment<6>(6 * c) = gd;
-  }
+  detail::constraint_rates(sys, s, phi, phidot, ce, g, gdot);
 }
 
 FfrfState ffrf_initial_state(const FfrfSystem& sys) {
@@ -271,7 +272,10 @@ class FfrfStepper final : public detail::Stepper {
   }
   double time() const override { return state_.t; }
   detail::StepResult attempt(double h) override;
-  double error_estimate(double h) const override { return detail::wrms_error(trial_.vdot - state_.vdot, w_tol_, h, c_); }
+  double error_estimate(double h) const override {
+    dvdot_ = trial_.vdot - state_.vdot;
+    return detail::wrms_error(dvdot_, w_tol_, h, c_);
+  }
   double hinge_angle(int hinge, bool trial) const override { return (trial ? trial_ : state_).phi[hinge]; }
   double hinge_rate(int hinge, bool trial) const override {
     const FfrfState& s = trial ? trial_ : state_;
@@ -280,18 +284,18 @@ class FfrfStepper final : public detail::Stepper {
   }
   std::vector<LockState>& locks() override { return state_.locks; }
   void accept() override {
-    const auto locks = state_.locks;
+    locks_ = state_.locks;
     state_ = trial_;
-    state_.locks = locks;
+    state_.locks = locks_;
     record_drift();
   }
-  void sample(Sample& out) override { out = ffrf_sample(sys_, state_); }
+  void sample(Sample& out) override { detail::ffrf_sample(sys_, state_, sample_, out); }
   std::string describe_residual() const override;
 
  private:
   void record_drift() {
-    VectorXd g, gd;
-    ffrf_constraints(sys_, state_, g, gd);
+    VectorXd &g = g_, &gd = gd_;
+    detail::constraint_rates(sys_, state_, phi_, phidot_, ce_, g, gd);
     for (Eigen::Index c = 0; c < g.size() / 6; ++c) {
       stats_.drift_position = std::max(stats_.drift_position, g.segment<3>(6 * c).norm());
       stats_.drift_rotation = std::max(stats_.drift_rotation, g.segment<3>(6 * c + 3).norm());
@@ -307,8 +311,14 @@ class FfrfStepper final : public detail::Stepper {
   VectorXd w_tol_;
   FfrfState trial_;
   FfrfEval ev_;
-  Eigen::SparseLU<SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu_;
-  bool analyzed_ = false;
+  // Scratch, sized at the first step (no allocation after it).
+  StepScratch step_;
+  VectorXd x_, a1_, R_, d_, dq_, g_, gd_, phi_, phidot_;
+  mutable VectorXd dvdot_;
+  std::vector<LockState> locks_;
+  detail::ConstraintEval ce_;
+  detail::SampleScratch sample_;
+  detail::FfrfIterationMatrix iteration_;
 };
 
 detail::StepResult FfrfStepper::attempt(double h) {
@@ -317,17 +327,18 @@ detail::StepResult FfrfStepper::attempt(double h) {
   trial_ = s0;
   const int nq = sys_.num_coords, nm = sys_.num_multipliers();
   const double L = sys_.model->length_scale;
-  VectorXd x(nq + nm);
-  const VectorXd a1 = (s0.vdot - c_.am * s0.a) / (1.0 - c_.am);
+  VectorXd& x = x_;
+  x.resize(nq + nm);
+  VectorXd& a1 = a1_;
+  a1 = (s0.vdot - c_.am * s0.a) / (1.0 - c_.am);
   x.head(nq) = h * s0.v + h * h * (0.5 - c_.beta) * s0.a + h * h * c_.beta * a1;
   x.tail(nm) = equation_scale(sys_, c_, h) * s0.lambda;
-  VectorXd R;
-  SparseMatrix<double> S;
+  VectorXd& R = R_;
   double inc = std::numeric_limits<double>::infinity(), r_prev = inc;
   bool fresh = false;
   for (int it = 0; it <= st_.newton_max_iterations; ++it) {
     bool matrices = !fresh || !st_.reuse_iteration_matrix;
-    step_system(sys_, s0, h, c_, x, trial_, ev_, R, matrices ? &S : nullptr);
+    step_system(sys_, s0, h, c_, x, trial_, ev_, R, matrices, step_);
     out.iterations = it;
     out.residual = ev_.r.norm();
     out.scale = ev_.scale.norm();
@@ -350,25 +361,16 @@ detail::StepResult FfrfStepper::attempt(double h) {
     if (it == st_.newton_max_iterations) break;
     if (!matrices && out.residual > 0.1 * r_prev) {
       matrices = true;
-      step_system(sys_, s0, h, c_, x, trial_, ev_, R, &S);
+      step_system(sys_, s0, h, c_, x, trial_, ev_, R, true, step_);
     }
     r_prev = out.residual;
     if (matrices) {
-      if (!analyzed_) {
-        lu_.analyzePattern(S);
-        analyzed_ = true;
-      }
-      lu_.factorize(S);
-      if (lu_.info() != Eigen::Success) {
-        lu_.analyzePattern(S);  // the pattern may have changed (a multiplier became zero)
-        lu_.factorize(S);
-      }
-      if (lu_.info() != Eigen::Success) {
+      if (!iteration_.factorize(step_.T, nq + nm)) {
         out.why = "the iteration matrix is singular (redundant joints or a coordinate without mass)";
         return out;
       }
       if (sys_.options.condition_estimate) {
-        const Eigen::JacobiSVD<Eigen::MatrixXd> svd{Eigen::MatrixXd(S)};
+        const Eigen::JacobiSVD<Eigen::MatrixXd> svd{iteration_.matrix()};
         const auto& sv = svd.singularValues();
         const double cond = sv[0] / sv[sv.size() - 1];
         stats_.condition_max = std::max(stats_.condition_max, cond);
@@ -377,8 +379,10 @@ detail::StepResult FfrfStepper::attempt(double h) {
       fresh = true;
       ++out.factorizations;
     }
-    const VectorXd d = lu_.solve(-R);
-    inc = detail::weighted_norm(d.head(nq), sys_.weight);
+    VectorXd& d = d_;
+    iteration_.solve_negated(R, d);
+    dq_ = d.head(nq);
+    inc = detail::weighted_norm(dq_, sys_.weight);
     if (!std::isfinite(inc)) {
       out.why = "the Newton increment is not finite";
       return out;

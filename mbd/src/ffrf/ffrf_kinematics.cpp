@@ -13,15 +13,26 @@ using Eigen::Matrix3d;
 using Eigen::Vector3d;
 using so3::skew;
 
-PoseJ interface_pose(const FfrfSystem& sys, const FfrfState& s, int bi, int j) {
+void PoseJ::reset(Eigen::Index n) {
+  cols.resize(static_cast<std::size_t>(n));
+  if (J.cols() < n) J.resize(6, n);
+  J.leftCols(n).setZero();
+}
+
+void PoseJ::push_column(int col) {
+  const Eigen::Index n = size();
+  if (J.cols() < n + 1) J.conservativeResize(Eigen::NoChange, n + 1);
+  cols.push_back(col);
+  J.col(n).setZero();
+}
+
+void interface_pose(const FfrfSystem& sys, const FfrfState& s, int bi, int j, PoseJ& out) {
   const FfrfBody& b = sys.bodies[static_cast<std::size_t>(bi)];
   const Matrix3d& R = s.R_WB[static_cast<std::size_t>(bi)];
   const Pose& X_BN = b.X_BN[static_cast<std::size_t>(j)];
-  PoseJ out;
   const int nb = 6 + b.k;
-  out.cols.resize(static_cast<std::size_t>(nb));
+  out.reset(nb);
   for (int c = 0; c < nb; ++c) out.cols[static_cast<std::size_t>(c)] = b.coord + c;
-  out.J = Matrix6Xd::Zero(6, nb);
   Vector3d s_j = X_BN.p;
   Matrix3d R_BN = X_BN.R;
   if (b.flexible && b.k > 0) {
@@ -29,60 +40,63 @@ PoseJ interface_pose(const FfrfSystem& sys, const FfrfState& s, int bi, int j) {
     const Eigen::Matrix<double, 6, 1> xi = Vj * s.z.segment(b.z_offset, b.k);
     s_j += xi.head<3>();
     R_BN = so3::exp(xi.tail<3>()) * X_BN.R;
-    out.J.block(0, 6, 3, b.k) = R * Vj.topRows<3>();
-    out.J.block(3, 6, 3, b.k) = R * so3::jl(xi.tail<3>()) * Vj.bottomRows<3>();
+    out.J.block(0, 6, 3, b.k).noalias() = R * Vj.topRows<3>();
+    out.J.block(3, 6, 3, b.k).noalias() = R * so3::jl(xi.tail<3>()) * Vj.bottomRows<3>();
   }
   out.p = s.p_WB[static_cast<std::size_t>(bi)] + R * s_j;
   out.R = R * R_BN;
   out.J.block<3, 3>(0, 0).setIdentity();
   out.J.block<3, 3>(0, 3) = -skew(R * s_j);
   out.J.block<3, 3>(3, 3).setIdentity();
-  return out;
 }
 
-PoseJ node_pose(const FfrfSystem& sys, const FfrfState& s, int k, bool chain) {
+void node_pose(const FfrfSystem& sys, const FfrfState& s, int k, bool chain, PoseJ& out) {
   const Model& model = *sys.model;
   const Node& n = model.nodes[static_cast<std::size_t>(k)];
   const FfrfNodeSource& src = sys.node_source[static_cast<std::size_t>(k)];
   if (n.kind == NodeKind::Fixed) {
-    PoseJ out;
     out.R = n.X_WN0.R;
     out.p = n.X_WN0.p;
-    out.J = Matrix6Xd::Zero(6, 0);
-    return out;
+    out.reset(0);
+    return;
   }
-  if (!chain && src.kind == FfrfNodeSource::Kind::Body) return interface_pose(sys, s, src.body, src.interface);
+  if (!chain && src.kind == FfrfNodeSource::Kind::Body) {
+    interface_pose(sys, s, src.body, src.interface, out);
+    return;
+  }
   SEFLEX_DEMAND(n.kind == NodeKind::Attached, "node pose through a parent of a node that has none");
-  PoseJ out = node_pose(sys, s, n.parent.value, false);
+  node_pose(sys, s, n.parent.value, false, out);
   const Matrix3d R_P = out.R;
   const Vector3d d = R_P * n.p_PN_P;
   out.p += d;
-  for (Eigen::Index c = 0; c < out.J.cols(); ++c) out.J.col(c).head<3>() += out.J.col(c).tail<3>().cross(d);
+  for (Eigen::Index c = 0; c < out.size(); ++c) out.J.col(c).head<3>() += out.J.col(c).tail<3>().cross(d);
   if (n.hinge.valid()) {
     const int h = n.hinge.value;
     const Vector3d& a = model.hinges[static_cast<std::size_t>(h)].axis_P;
     out.R = R_P * so3::exp(s.phi[h] * a) * n.R_PN;
     const int col = sys.hinge_coord[static_cast<std::size_t>(h)];
-    out.cols.push_back(col >= 0 ? col : -(h + 1));
-    out.J.conservativeResize(Eigen::NoChange, out.J.cols() + 1);
-    out.J.col(out.J.cols() - 1) << Vector3d::Zero(), R_P * a;
+    out.push_column(col >= 0 ? col : -(h + 1));
+    out.J.col(out.size() - 1) << Vector3d::Zero(), R_P * a;
   } else {
     out.R = R_P * n.R_PN;
   }
-  return out;
 }
 
 void eval_constraint(const FfrfSystem& sys, const FfrfState& s, int c, ConstraintEval& out) {
   const FfrfConstraint& con = sys.constraints[static_cast<std::size_t>(c)];
-  const PoseJ A = interface_pose(sys, s, con.body, con.interface);
-  const PoseJ B = node_pose(sys, s, con.node.value, con.chain);
+  PoseJ& A = out.A;
+  PoseJ& B = out.B;
+  interface_pose(sys, s, con.body, con.interface, A);
+  node_pose(sys, s, con.node.value, con.chain, B);
   out.g.head<3>() = A.p - B.p;
   out.g.tail<3>() = so3::log(B.R.transpose() * A.R);
   const Matrix3d L = so3::jl_inv(out.g.tail<3>()) * B.R.transpose();
   out.cols = A.cols;
   for (int col : B.cols)
     if (std::find(A.cols.begin(), A.cols.end(), col) == A.cols.end()) out.cols.push_back(col);
-  out.G = Matrix6Xd::Zero(6, static_cast<Eigen::Index>(out.cols.size()));
+  const Eigen::Index n = out.size();
+  if (out.G.cols() < n) out.G.resize(6, n);
+  out.G.leftCols(n).setZero();
   for (std::size_t i = 0; i < A.cols.size(); ++i) {
     const auto ci = static_cast<Eigen::Index>(i);
     out.G.col(ci).head<3>() += A.J.col(ci).head<3>();
@@ -93,6 +107,24 @@ void eval_constraint(const FfrfSystem& sys, const FfrfState& s, int c, Constrain
     const auto ci = static_cast<Eigen::Index>(i);
     out.G.col(at).head<3>() -= B.J.col(ci).head<3>();
     out.G.col(at).tail<3>() -= L * B.J.col(ci).tail<3>();
+  }
+}
+
+void constraint_rates(const FfrfSystem& sys, const FfrfState& s, Eigen::VectorXd& phi, Eigen::VectorXd& phidot, ConstraintEval& ce,
+                      Eigen::VectorXd& g, Eigen::VectorXd& gdot) {
+  hinge_values(sys, s, phi, phidot);
+  const auto nc = static_cast<int>(sys.constraints.size());
+  g.resize(6 * nc);
+  gdot.resize(6 * nc);
+  for (int c = 0; c < nc; ++c) {
+    eval_constraint(sys, s, c, ce);
+    g.segment<6>(6 * c) = ce.g;
+    Vector6d gd = Vector6d::Zero();
+    for (std::size_t i = 0; i < ce.cols.size(); ++i) {
+      const int col = ce.cols[i];
+      gd += ce.G.col(static_cast<Eigen::Index>(i)) * (col >= 0 ? s.v[col] : phidot[-col - 1]);
+    }
+    gdot.segment<6>(6 * c) = gd;
   }
 }
 
