@@ -44,8 +44,13 @@ namespace detail {
 
 double add_stress_stiffening(const AicElement& e, const VectorXd& xi, const StiffeningLoads& lambda, VectorXd& g, AicWorkspace& ws) {
   const Eigen::Index n = e.n, nb = 6 * e.N, k = 12 + nb;
-  // G_c xi for every case (the G_c are symmetric): one product with the stacked invariants.
-  ws.Gxi.noalias() = e.G_stack.transpose() * xi;
+  // G_c xi for every case (the G_c are symmetric): one product with the stacked invariants, kept
+  // while xi and the element stay the same.
+  if (ws.Gxi_of != e.G_stack.data() || ws.Gxi_at.size() != xi.size() || ws.Gxi_at != xi) {
+    ws.Gxi.noalias() = e.G_stack.transpose() * xi;
+    ws.Gxi_at = xi;
+    ws.Gxi_of = e.G_stack.data();
+  }
   const Eigen::Map<const MatrixXd> Gx(ws.Gxi.data(), n, k);  // column c: G_c xi
   ws.fb.noalias() = 0.5 * Gx.rightCols(nb).transpose() * xi;  // b_j = 1/2 xi^T G_j xi
   ws.fs.noalias() = e.Kbb_pinv * ws.fb;                       // s = Kbb^+ b

@@ -64,7 +64,7 @@ void assemble_flexible(const Model& model, const State& s, Data& data, const Ass
   } else {
     recover_frame(e, sc.R_WI, sc.p_WI, eta, body.options.recovery, state_frame, fd.kin, sc.aic);
   }
-  const bool stiffened = body.options.geometric_stiffening && e.has_stiffening();
+  const bool stiffened = model.stiffened(body);
   if (stiffened) {
     stiffening_load_factors(e, fd.kin, sc.v, sc.a, sc.stiffening_loads, sc.aic);
     elastic_force_stiffened(e, fd.kin, body.options.tangent, sc.stiffening_loads, fd.f_el, opt.matrices ? &sc.Kl : nullptr,

@@ -109,7 +109,7 @@ FfrfSystem make_ffrf_system(const Model& model, const FfrfOptions& options) {
       b.nodal = options.inertia == Inertia::Nodal ||
                 (options.inertia == Inertia::Auto && e.has_fe_data && 24.0 * n_fe * (6.0 + k_est) < 51.0 * e.n * e.n);
       frame_clamped_modes(e, options.modes, b.nodal, b);
-      b.stiffening = fb.options.geometric_stiffening && e.has_stiffening();
+      b.stiffening = model.stiffened(fb);
     }
     sys.bodies.push_back(std::move(b));
   }

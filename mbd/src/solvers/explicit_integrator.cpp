@@ -20,7 +20,7 @@ namespace {
 /// geometric stiffening's load factors are the frame's accelerations (docs/geometric-stiffening.md).
 bool acceleration_dependent_stiffness(const Model& model) {
   for (const FlexibleBody& b : model.flexible_bodies)
-    if (b.options.geometric_stiffening && model.superelement(b.se).has_stiffening()) return true;
+    if (model.stiffened(b)) return true;
   return false;
 }
 

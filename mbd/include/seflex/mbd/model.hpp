@@ -137,6 +137,8 @@ struct Model {
   const Node& node(NodeIndex i) const { return nodes.at(static_cast<std::size_t>(i.value)); }
   const Hinge& hinge(HingeIndex i) const { return hinges.at(static_cast<std::size_t>(i.value)); }
   const AicElement& superelement(SuperelementIndex i) const { return superelements.at(static_cast<std::size_t>(i.value)); }
+  /// Whether body b is stress-stiffened: asked for, and its superelement carries the invariants.
+  bool stiffened(const FlexibleBody& b) const { return b.options.geometric_stiffening && superelement(b.se).has_stiffening(); }
 };
 
 /// Pose of interface j of a superelement placed with its floating frame at X_WB (undeformed).

@@ -32,6 +32,8 @@ struct AicWorkspace {
   // Geometric stiffening (aic_stiffening.cpp).
   Eigen::VectorXd sw, sab, sc, sxid;  ///< n: body-axis velocities, accelerations, c, xi_dot
   Eigen::VectorXd Gxi;                ///< k n: G_c xi for every case c, stacked
+  Eigen::VectorXd Gxi_at;             ///< the xi of Gxi: reused while xi and the element are unchanged
+  const double* Gxi_of = nullptr;     ///< (FFRF-LM's differences in the frame coordinates keep xi)
   Eigen::VectorXd mu;                 ///< k: [lambda; xi_b + s]
   Eigen::VectorXd fb, fs;             ///< 6N: foreshortening loads b and their interface displacements s
   Eigen::MatrixXd GK;                 ///< n x 6N: [G_j xi] Kbb^+
