@@ -258,8 +258,7 @@ BarElement make_bar_element(const Model& model, const Bar& bar) {
                  "references " + std::string(bar.is_beam ? "PBEAM" : "PBAR") + " " + std::to_string(bar.pid) +
                      ", which is not defined");
   const BarProperty& p = model.bar_props[pit->second];
-  static const char* kSourceName[] = {"PBAR", "PBARL", "PBEAM", "PBEAML"};
-  const std::string pcard = kSourceName[static_cast<int>(p.source)];
+  const std::string pcard = card_name(p.source);
   e.section = {p.A, p.I1, p.I2, p.I12, p.J, p.K1, p.K2, p.nsm};
   e.material = detail::material(model, p.mid, p.ref, pcard, p.id, "3 (MID)");
   e.is_beam = bar.is_beam;

@@ -15,7 +15,6 @@
 namespace seflex::fem {
 namespace {
 
-using detail::bar_property_card;
 
 /// One id space shared by several card types; a duplicate is reported on the card read later.
 struct IdSpace {
@@ -177,7 +176,7 @@ class Finalizer {
       seen.add(id, ref, card, "field 2 (PID)", "property",
                "expected unique property ids across PBAR, PBARL, PBEAM, PBEAML, PROD, PSHELL, PCOMP, PCOMPG, PELAS, PBUSH, PMASS, PSOLID");
     };
-    for (const auto& p : m_.bar_props) add(p.id, p.ref, bar_property_card(p));
+    for (const auto& p : m_.bar_props) add(p.id, p.ref, card_name(p.source));
     for (const auto& p : m_.rod_props) add(p.id, p.ref, "PROD");
     for (const auto& p : m_.shell_props) add(p.id, p.ref, "PSHELL");
     for (const auto& p : m_.composite_props) add(p.id, p.ref, p.global ? "PCOMPG" : "PCOMP");
@@ -186,7 +185,7 @@ class Finalizer {
     for (const auto& p : m_.mass_props) add(p.id, p.ref, "PMASS");
     for (const auto& p : m_.solid_props) add(p.id, p.ref, "PSOLID");
     index_unchecked(m_.composite_props, m_.composite_prop_index);
-    for (const auto& p : m_.bar_props) need_material(p.mid, p.ref, bar_property_card(p), p.id, "field 3 (MID)");
+    for (const auto& p : m_.bar_props) need_material(p.mid, p.ref, card_name(p.source), p.id, "field 3 (MID)");
     for (const auto& p : m_.rod_props) need_material(p.mid, p.ref, "PROD", p.id, "field 3 (MID)");
     for (const auto& p : m_.solid_props)
       if (!m_.mat9_index.count(p.mid)) need_material(p.mid, p.ref, "PSOLID", p.id, "field 3 (MID)", true);
@@ -361,7 +360,7 @@ class Finalizer {
       const BarProperty& p = m_.bar_props[it->second];
       const bool beam_prop = p.source == BarProperty::Source::PBEAM || p.source == BarProperty::Source::PBEAML;
       if (beam_prop != b.is_beam)
-        fail(b.ref, card, b.id, "field 3 (PID)", "references " + std::string(bar_property_card(p)) + " " + std::to_string(p.id) +
+        fail(b.ref, card, b.id, "field 3 (PID)", "references " + std::string(card_name(p.source)) + " " + std::to_string(p.id) +
                                                      "; expected a " + (b.is_beam ? "PBEAM or PBEAML" : "PBAR or PBARL"));
     }
     for (const auto& r : m_.rods) {

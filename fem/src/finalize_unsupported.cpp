@@ -8,16 +8,6 @@
 
 namespace seflex::fem::detail {
 
-const char* bar_property_card(const BarProperty& p) {
-  switch (p.source) {
-    case BarProperty::Source::PBAR: return "PBAR";
-    case BarProperty::Source::PBARL: return "PBARL";
-    case BarProperty::Source::PBEAM: return "PBEAM";
-    case BarProperty::Source::PBEAML: return "PBEAML";
-  }
-  return "PBAR";
-}
-
 namespace {
 
 class LeaveOut {
@@ -71,7 +61,7 @@ class LeaveOut {
   void properties() {
     drop_properties(m_.bar_props, "bar", [&](const BarProperty& p) {
       const std::string mat = isotropic_problem(p.mid);
-      return mat.empty() ? mat : std::string(bar_property_card(p)) + " on " + mat;
+      return mat.empty() ? mat : std::string(card_name(p.source)) + " on " + mat;
     });
     drop_properties(m_.rod_props, "rod", [&](const RodProperty& p) {
       const std::string mat = isotropic_problem(p.mid);

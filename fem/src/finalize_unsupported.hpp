@@ -16,7 +16,4 @@ namespace seflex::fem::detail {
 /// References to ids that no card defines are left alone: finalize reports them as errors.
 void leave_out_unsupported(Model& model);
 
-/// The card a bar property came from: "PBAR", "PBARL", "PBEAM" or "PBEAML".
-const char* bar_property_card(const BarProperty& p);
-
 }  // namespace seflex::fem::detail

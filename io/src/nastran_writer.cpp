@@ -82,16 +82,6 @@ const char* coord_name(const fem::CoordSys& c) {
   return names[c.by_grids ? 1 : 0][static_cast<int>(c.type)];
 }
 
-const char* bar_prop_card(fem::BarProperty::Source s) {
-  switch (s) {
-    case fem::BarProperty::Source::PBAR: return "PBAR";
-    case fem::BarProperty::Source::PBARL: return "PBARL";
-    case fem::BarProperty::Source::PBEAM: return "PBEAM";
-    case fem::BarProperty::Source::PBEAML: return "PBEAML";
-  }
-  return "PBAR";
-}
-
 /// Name or quoted name for a `$seflex set` line.
 std::string set_name(const std::string& s) {
   return s.find_first_of(" \t") == std::string::npos && !s.empty() ? s : "\"" + s + "\"";
@@ -161,7 +151,7 @@ void write_composite(CardWriter& w, const fem::CompositeProperty& p) {
 
 void write_bar_property(CardWriter& w, const fem::BarProperty& p) {
   using Source = fem::BarProperty::Source;
-  w.start(bar_prop_card(p.source)).i(p.id).i(p.mid);
+  w.start(fem::card_name(p.source)).i(p.id).i(p.mid);
   switch (p.source) {
     case Source::PBAR:
       w.r(p.A).r(p.I1).r(p.I2).r(p.J).r(p.nsm).next_line().blank(8).r(p.K1).r(p.K2).r(p.I12);

@@ -35,16 +35,6 @@ std::string ids_text(const std::vector<int>& ids) {
 
 bool before(const fem::CardRef& a, const fem::CardRef& b) { return std::tie(a.file, a.line) < std::tie(b.file, b.line); }
 
-const char* source_name(fem::BarProperty::Source s) {
-  switch (s) {
-    case fem::BarProperty::Source::PBAR: return "PBAR";
-    case fem::BarProperty::Source::PBARL: return "PBARL";
-    case fem::BarProperty::Source::PBEAM: return "PBEAM";
-    case fem::BarProperty::Source::PBEAML: return "PBEAML";
-  }
-  return "PBAR";
-}
-
 }  // namespace
 
 std::vector<Caution> torsionless_bars(const fem::Model& m, bool buckling) {
@@ -72,7 +62,7 @@ std::vector<Caution> torsionless_bars(const fem::Model& m, bool buckling) {
     const auto nc = beams_of.find(p.id);
     const std::size_t n_bar = bars_of.at(p.id), n_beam = nc == beams_of.end() ? 0 : nc->second;
     if (n_bar + n_beam == 0) continue;  // no element of the model uses it
-    Group& g = groups[source_name(p.source)];
+    Group& g = groups[fem::card_name(p.source)];
     g.ids.push_back(p.id);
     g.elements += n_bar + n_beam;
     g.cbar = g.cbar || n_bar > 0;

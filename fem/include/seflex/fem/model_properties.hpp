@@ -78,6 +78,17 @@ struct BarProperty {
   CardRef ref;
 };
 
+/// The bulk-data card a bar property came from ("PBAR", "PBARL", "PBEAM", "PBEAML").
+inline const char* card_name(BarProperty::Source s) {
+  switch (s) {
+    case BarProperty::Source::PBAR: return "PBAR";
+    case BarProperty::Source::PBARL: return "PBARL";
+    case BarProperty::Source::PBEAM: return "PBEAM";
+    case BarProperty::Source::PBEAML: return "PBEAML";
+  }
+  return "PBAR";
+}
+
 struct RodProperty {  ///< PROD (CONROD stores its own inline copy, id = 0)
   int id = 0, mid = 0;
   double A = 0, J = 0, C = 0, nsm = 0;
