@@ -51,8 +51,8 @@ void assemble_flexible(const Model& model, const State& s, Data& data, const Ass
   // moved rigidly since, to first order): one Newton iteration of the recovery fewer than from the
   // state's frame. That evaluation may have been a diverging Newton iterate: then the state's frame.
   const FloatingFrame& state_frame = s.frames[static_cast<std::size_t>(bi)];
-  const auto theta_1 = fd.kin.xi.segment<3>(3);
-  if (fd.kin.xi.size() == n && fd.kin.xi.allFinite() && theta_1.norm() < 0.5) {
+  if (fd.kin.xi.size() == n && fd.kin.xi.allFinite() && fd.kin.xi.segment<3>(3).norm() < 0.5) {
+    const auto theta_1 = fd.kin.xi.segment<3>(3);
     FloatingFrame start;
     start.R_WB = sc.R_WI[0] * e.C[0].transpose() * so3::exp(-theta_1);
     start.p_WBo = sc.p_WI[0] - start.R_WB * (e.x[0] + fd.kin.xi.head<3>());
