@@ -51,17 +51,17 @@ void assemble_flexible(const Model& model, const State& s, Data& data, const Ass
   // moved rigidly since, to first order): one Newton iteration of the recovery fewer than from the
   // state's frame. That evaluation may have been a diverging Newton iterate: then the state's frame.
   const FloatingFrame& state_frame = s.frames[static_cast<std::size_t>(bi)];
+  const FloatingFrame* start = &state_frame;
+  FloatingFrame guess;
   if (fd.kin.xi.size() == n && fd.kin.xi.allFinite() && fd.kin.xi.segment<3>(3).norm() < 0.5) {
-    const auto theta_1 = fd.kin.xi.segment<3>(3);
-    FloatingFrame start;
-    start.R_WB = sc.R_WI[0] * e.C[0].transpose() * so3::exp(-theta_1);
-    start.p_WBo = sc.p_WI[0] - start.R_WB * (e.x[0] + fd.kin.xi.head<3>());
-    try {
-      recover_frame(e, sc.R_WI, sc.p_WI, eta, body.options.recovery, start, fd.kin, sc.aic);
-    } catch (const ConvergenceError&) {
-      recover_frame(e, sc.R_WI, sc.p_WI, eta, body.options.recovery, state_frame, fd.kin, sc.aic);
-    }
-  } else {
+    guess.R_WB = sc.R_WI[0] * e.C[0].transpose() * so3::exp(-fd.kin.xi.segment<3>(3));
+    guess.p_WBo = sc.p_WI[0] - guess.R_WB * (e.x[0] + fd.kin.xi.head<3>());
+    start = &guess;
+  }
+  try {
+    recover_frame(e, sc.R_WI, sc.p_WI, eta, body.options.recovery, *start, fd.kin, sc.aic);
+  } catch (const ConvergenceError&) {
+    if (start == &state_frame) throw;
     recover_frame(e, sc.R_WI, sc.p_WI, eta, body.options.recovery, state_frame, fd.kin, sc.aic);
   }
   const bool stiffened = model.stiffened(body);
