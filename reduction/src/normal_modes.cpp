@@ -43,15 +43,17 @@ void normalise(const fem::Model& model, const fem::GlobalMatrices& g, const fem:
     double largest = 0;
     for (Eigen::Index d : c.f_to_g)
       if (std::abs(phi_g(d, j)) > std::abs(largest)) largest = phi_g(d, j);
-    double scale = 1.0;
+    // Divided, not multiplied by the reciprocal: the normalising component becomes exactly 1 (x / x),
+    // as Nastran prints it (x * (1 / x) can be 1 - 1 ulp).
+    double divisor = 1.0;
     if (norm == ModeNormalization::Mass) {
-      scale = largest < 0 ? -1.0 : 1.0;  // modes arrive mass-normalised
+      divisor = largest < 0 ? -1.0 : 1.0;  // modes arrive mass-normalised
     } else if (norm == ModeNormalization::Point && point_dof && std::abs(phi_g(*point_dof, j)) > 1e-10 * std::abs(largest)) {
-      scale = 1.0 / phi_g(*point_dof, j);
+      divisor = phi_g(*point_dof, j);
     } else if (largest != 0) {
-      scale = 1.0 / largest;
+      divisor = largest;
     }
-    phi_g.col(j) *= scale;
+    phi_g.col(j) /= divisor;
   }
 }
 
