@@ -226,7 +226,10 @@ class AicStepper final : public detail::Stepper {
     assemble(model_, state_, data_, AssemblyOptions{false, true, 1.0});
     evaluated_ = true;
   }
-  void prepare_failure_sample() override { assemble(model_, state_, data_, AssemblyOptions{false, true, 1.0}); }
+  void prepare_failure_sample() override {
+    evaluated_ = false;  // the failed attempts left data_ at a trial state
+    evaluate_current();
+  }
   std::string describe_residual() const override { return detail::describe_residual(model_, data_); }
 
  private:
