@@ -15,11 +15,6 @@
 #include "seflex/io/results_csv.hpp"
 #include "seflex/io/vtk_modes.hpp"
 #include "seflex/reduction/normal_modes.hpp"
-#ifdef SEFLEX_HAVE_MPI
-#include "seflex/parallel/partitioned_modes.hpp"
-#include "seflex/parallel/partitioned_system.hpp"
-#include "seflex/parallel/slepc_eigensolver.hpp"
-#endif
 
 namespace {
 
@@ -69,7 +64,7 @@ int modes(seflex::app::Args& args, seflex::parallel::Session* session) {
         throw UsageError(std::string("option --") + serial_only + " selects a serial solver; --backend slepc uses "
                          "SLEPc's Krylov-Schur on a MUMPS factorisation");
 #ifdef SEFLEX_HAVE_MPI
-    o.external = seflex::parallel::slepc_eigenproblem;
+    o.external = seflex::app::parallel_backend().slepc_eigenproblem;
 #endif
   }
   if (const int count = args.integer("count", kAbsent); count != kAbsent) {
@@ -112,10 +107,11 @@ int modes(seflex::app::Args& args, seflex::parallel::Session* session) {
 #ifdef SEFLEX_HAVE_MPI
   if (session != nullptr) {
     // Elements partitioned by METIS, each rank assembling its own, unless constraints need the whole model.
-    const auto refusal = seflex::parallel::partition_refusal(model, seflex::reduction::select_case(model, o.subcase).mpc);
+    const seflex::parallel::Backend& plugin = seflex::app::parallel_backend();
+    const auto refusal = plugin.partition_refusal(model, seflex::reduction::select_case(model, o.subcase).mpc);
     if (!refusal) {
       seflex::parallel::PartitionStats p;
-      r = seflex::parallel::solve_normal_modes_partitioned(model, o, &p);
+      r = plugin.solve_normal_modes_partitioned(model, o, &p);
       assembly = "partitioned by METIS over " + std::to_string(session->size()) + " ranks (rank 0: " +
                  std::to_string(p.local_elements) + " of " + std::to_string(p.total_elements) + " elements, " +
                  std::to_string(p.local_rows) + " of " + std::to_string(p.total_rows) + " rows), " +

@@ -27,10 +27,6 @@
 #include "seflex/reduction/craig_bampton_superelement.hpp"
 
 #ifdef SEFLEX_HAVE_MPI
-#include "seflex/parallel/mumps_factorization.hpp"
-#include "seflex/parallel/partitioned_craig_bampton.hpp"
-#include "seflex/parallel/partitioned_system.hpp"
-#include "seflex/parallel/slepc_eigensolver.hpp"
 #endif
 
 namespace {
@@ -216,25 +212,26 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
   o.modes.backend = *backend;
   std::string assembly;  // how a distributed run assembled (the summary line)
 #ifdef SEFLEX_HAVE_MPI
-  std::optional<seflex::parallel::PartitionedSystem> partitioned;
+  std::shared_ptr<seflex::parallel::PartitionedSystem> partitioned;
   if (session != nullptr) {
-    o.modes.factorization_maker = seflex::parallel::make_mumps_factorization;
-    o.modes.external = seflex::parallel::slepc_eigenproblem;
+    const seflex::parallel::Backend& plugin = seflex::app::parallel_backend();
+    o.modes.factorization_maker = plugin.make_mumps_factorization;
+    o.modes.external = plugin.slepc_eigenproblem;
     // Elements partitioned by METIS, each rank assembling its own, unless constraints need the whole model.
-    if (const auto refusal = seflex::parallel::partition_refusal(model, red::select_case(model).mpc)) {
+    if (const auto refusal = plugin.partition_refusal(model, red::select_case(model).mpc)) {
       assembly = "replicated on every rank (" + *refusal + ")";
     } else {
       assembly = "partitioned by METIS over " + std::to_string(session->size()) + " ranks";
       o.assemble = [&](const seflex::fem::ConstraintOptions& co) {
         seflex::fem::GlobalMatrices whole;
-        partitioned.emplace(seflex::parallel::assemble_partitioned(model, co, &whole));
+        partitioned = plugin.assemble_partitioned(model, co, &whole);
         assembly += " (rank 0: " + std::to_string(partitioned->local_elements) + " of " +
                     std::to_string(partitioned->total_elements) + " elements, " +
                     std::to_string(partitioned->row_begin[1]) + " of " + std::to_string(partitioned->n_free()) + " rows)";
         return whole;
       };
       o.basis = [&](const std::vector<Eigen::Index>& boundary, const red::CraigBamptonOptions& cbo) {
-        red::CraigBamptonBasis b = seflex::parallel::craig_bampton_partitioned(*partitioned, boundary, cbo);
+        red::CraigBamptonBasis b = plugin.craig_bampton_partitioned(*partitioned, boundary, cbo);
         partitioned.reset();  // the distributed K and M are not needed any more
         return b;
       };

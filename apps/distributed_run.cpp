@@ -36,9 +36,9 @@ void checkpoint(const parallel::Session& session) {
 }
 
 int run_distributed(const std::string& command, const std::function<int(parallel::Session&)>& body) {
-  std::optional<parallel::Session> session;
+  std::unique_ptr<parallel::Session> session;
   try {
-    session.emplace();
+    session = parallel_backend().open_session();
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
     return kFailure;

@@ -14,9 +14,14 @@
 #include <string>
 
 #ifdef SEFLEX_HAVE_MPI
+#include "seflex/parallel/backend.hpp"
 #include "seflex/parallel/session.hpp"
 
 namespace seflex::app {
+
+/// The distributed backend, its plugin loaded at the first call (apps/parallel_backend.cpp); throws
+/// std::runtime_error naming the file when the plugin is missing, does not load or is from another build.
+const parallel::Backend& parallel_backend();
 
 int run_distributed(const std::string& command, const std::function<int(parallel::Session&)>& body);
 

@@ -30,7 +30,9 @@ class Session {
  public:
   /// Initialises MPI (if not yet), PETSc and SLEPc. Throws InvariantError if that fails.
   Session();
-  ~Session();
+  /// Virtual, as agree(): the seflex command holds a session the plugin made (backend.hpp) and reaches
+  /// its out-of-line code through the vtable only.
+  virtual ~Session();
   Session(const Session&) = delete;
   Session& operator=(const Session&) = delete;
 
@@ -39,7 +41,7 @@ class Session {
 
   /// Collective. `local`: this rank's failure, if any. Returns the failure of the lowest-numbered
   /// failing rank (its code and message, sent to every rank), or nullopt when no rank failed.
-  std::optional<Failure> agree(const std::optional<Failure>& local) const;
+  virtual std::optional<Failure> agree(const std::optional<Failure>& local) const;
 
  private:
   int rank_ = 0, size_ = 1;
