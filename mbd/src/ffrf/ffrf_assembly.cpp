@@ -1,7 +1,9 @@
 // FFRF-LM assembly: body forces, node loads, force elements on hinge angles and the constraint
-// forces G^T lambda into the residual; mass matrices analytic, the configuration and velocity
-// derivatives of each element by central differences over that element's own coordinates (a body's
-// 6 + k, a constraint's two sides, a load's node), so the cost stays linear in the model size.
+// forces G^T lambda into the residual; mass matrices and the bodies' configuration and velocity
+// derivatives analytic (ffrf_body_tangents.cpp; FfrfOptions::fd_body_jacobians: central differences
+// over the body's 6 + k coordinates, the reference of the tests), those of loads and constraints
+// (d G^T lambda / dq) by central differences over the element's own coordinates (a constraint's two
+// sides, a load's node), so the cost stays linear in the model size.
 #include <Eigen/Dense>
 #include <cmath>
 
@@ -53,7 +55,8 @@ void bodies(const FfrfSystem& sys, FfrfState& s, bool matrices, FfrfEval& ev) {
     const FfrfBody& b = sys.bodies[bi];
     const int nb = 6 + b.k, b0 = b.coord;
     BodyForce& bf = ev.bodies[bi];
-    body_force(sys, s, static_cast<int>(bi), matrices, bf);
+    const bool analytic = matrices && !sys.options.fd_body_jacobians;
+    body_force(sys, s, static_cast<int>(bi), matrices, bf, analytic);
     ev.r.segment(b0, nb) += bf.f;
     ev.scale.segment(b0, nb) += bf.f.cwiseAbs();
     if (!matrices) continue;
@@ -64,6 +67,14 @@ void bodies(const FfrfSystem& sys, FfrfState& s, bool matrices, FfrfEval& ev) {
     for (int i = 0; i < nb; ++i)
       for (int j = 0; j < nb; ++j)
         if (bf.M(i, j) != 0.0) ev.M.emplace_back(b0 + i, b0 + j, bf.M(i, j));
+    if (analytic) {
+      for (int j = 0; j < nb; ++j)
+        for (int i = 0; i < nb; ++i) {
+          if (bf.K(i, j) != 0.0) ev.K.emplace_back(b0 + i, b0 + j, bf.K(i, j));
+          if (bf.C(i, j) != 0.0) ev.C.emplace_back(b0 + i, b0 + j, bf.C(i, j));
+        }
+      continue;
+    }
     w.idx.resize(static_cast<std::size_t>(nb));
     for (int i = 0; i < nb; ++i) w.idx[static_cast<std::size_t>(i)] = b0 + i;
     BodyForce& tmp = w.fd_bodies[bi];
