@@ -30,6 +30,8 @@ struct PoseJ {
   void reset(Eigen::Index n);
   /// One more column (coordinate col), set to zero.
   void push_column(int col);
+  /// This pose becomes a copy of `from` (the used columns only: no allocation once the storage is large enough).
+  void assign(const PoseJ& from);
 };
 
 /// Pose of the node on interface j of body b, as that body's coordinates give it, into out.
@@ -48,6 +50,8 @@ struct ConstraintEval {
   auto jacobian() const { return G.leftCols(size()); }
 };
 void eval_constraint(const FfrfSystem& sys, const FfrfState& s, int c, ConstraintEval& out);
+/// The rest of out (g, cols, G) from its two poses out.A and out.B (eval_constraint = both poses and this).
+void combine_constraint(ConstraintEval& out);
 /// g and dg/dt of every constraint at s (ffrf_constraints with its scratch: phi, phidot, ce).
 void constraint_rates(const FfrfSystem& sys, const FfrfState& s, Eigen::VectorXd& phi, Eigen::VectorXd& phidot, ConstraintEval& ce,
                       Eigen::VectorXd& g, Eigen::VectorXd& gdot);

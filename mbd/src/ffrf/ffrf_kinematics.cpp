@@ -25,6 +25,15 @@ void PoseJ::push_column(int col) {
   J.col(n).setZero();
 }
 
+void PoseJ::assign(const PoseJ& from) {
+  R = from.R;
+  p = from.p;
+  const Eigen::Index n = from.size();
+  if (J.cols() < n) J.resize(6, n);
+  cols.assign(from.cols.begin(), from.cols.end());
+  J.leftCols(n) = from.J.leftCols(n);
+}
+
 void interface_pose(const FfrfSystem& sys, const FfrfState& s, int bi, int j, PoseJ& out) {
   const FfrfBody& b = sys.bodies[static_cast<std::size_t>(bi)];
   const Matrix3d& R = s.R_WB[static_cast<std::size_t>(bi)];
@@ -83,10 +92,14 @@ void node_pose(const FfrfSystem& sys, const FfrfState& s, int k, bool chain, Pos
 
 void eval_constraint(const FfrfSystem& sys, const FfrfState& s, int c, ConstraintEval& out) {
   const FfrfConstraint& con = sys.constraints[static_cast<std::size_t>(c)];
-  PoseJ& A = out.A;
-  PoseJ& B = out.B;
-  interface_pose(sys, s, con.body, con.interface, A);
-  node_pose(sys, s, con.node.value, con.chain, B);
+  interface_pose(sys, s, con.body, con.interface, out.A);
+  node_pose(sys, s, con.node.value, con.chain, out.B);
+  combine_constraint(out);
+}
+
+void combine_constraint(ConstraintEval& out) {
+  const PoseJ& A = out.A;
+  const PoseJ& B = out.B;
   out.g.head<3>() = A.p - B.p;
   out.g.tail<3>() = so3::log(B.R.transpose() * A.R);
   const Matrix3d L = so3::jl_inv(out.g.tail<3>()) * B.R.transpose();
