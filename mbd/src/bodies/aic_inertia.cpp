@@ -103,6 +103,47 @@ void inertia_projections(const AicElement& e, const VectorXd& xi, const VectorXd
 
 }
 
+void velocity_load_tangents(const AicElement& e, const Vector3d& Om, AicWorkspace& ws, const InertiaProjections& pr,
+                            Eigen::Matrix<double, 6, 3>& DOe) {
+  const se::InertiaInvariants& I = e.inv;
+  const Eigen::Index n = e.n;
+  const MatrixXd& CLp = ws.CLp;
+  const Matrix6d& CLe = pr.CLe;
+  const Matrix36d& CLh = pr.CLh;
+  const MatrixXd& GPp = ws.GPp;
+  const MatrixXd& GVp = ws.GVp;
+  const Eigen::Matrix<double, 6, 3>& GPe = pr.GPe;
+  const Matrix3d& GVe = pr.GVe;
+  const Matrix3d& GPh = pr.GPh;
+  // d/dOm_a of the velocity-dependent loads (n x 3 and 6 x 3), then d/dxi_dot (n x n and 6 x n).
+  MatrixXd& DOp = ws.DOp;
+  DOp.resize(n, 3);
+  for (int a = 0; a < 3; ++a) {
+    const Matrix3d Ea = skew(Vector3d::Unit(a));
+    const Vector6d sWa = sym_components(Ea * skew(Om) + skew(Om) * Ea);
+    Vector9d dOO = Vector9d::Zero();
+    for (int b = 0; b < 3; ++b) {
+      dOO[a + 3 * b] += Om[b];
+      dOO[b + 3 * a] += Om[b];
+    }
+    DOp.col(a).noalias() = CLp * sWa;
+    DOp.col(a) += GPp.col(a) + GVp.col(a);
+    DOp.col(a).noalias() += I.PgOO * dOO;
+    DOe.col(a).noalias() = CLe * sWa;
+    DOe.col(a) += GPe.col(a);
+    DOe.col(a).tail<3>().noalias() += CLh * sWa;
+    DOe.col(a).tail<3>().noalias() += I.EgOO * dOO;
+    DOe.col(a).tail<3>() += GPh.col(a) + GVe.col(a);
+  }
+  MatrixXd& Ap = ws.Ap;
+  Ap = Om[0] * e.inv_GPV[0];
+  for (int a = 1; a < 3; ++a) Ap += Om[a] * e.inv_GPV[a];
+  MatrixXd& Ae = ws.Ae;
+  Ae = Om[0] * I.E0mGP[0];
+  for (int a = 1; a < 3; ++a) Ae += Om[a] * I.E0mGP[a];
+  for (int a = 0; a < 3; ++a) Ae.bottomRows<3>() += Om[a] * (ws.HGPxi[a] + I.EgOV[a]);
+}
+
 }  // namespace detail
 
 namespace {
@@ -132,7 +173,6 @@ void simplified(const AicElement& e, const AicKinematics& kin, const VectorXd& w
 void full(const AicElement& e, const AicKinematics& kin, const VectorXd& w, const VectorXd& ab, InertiaMatrices want,
           MatrixXd& Mw, MatrixXd& Cw, MatrixXd& Kw, VectorXd& fw, double& kinetic, AicWorkspace& ws) {
   const se::InertiaInvariants& I = e.inv;
-  const Eigen::Index n = e.n;
   const MatrixXd& Z = kin.Zx;
   const VectorXd& xi = kin.xi;
   const auto nb = 6 * e.N;
@@ -149,14 +189,6 @@ void full(const AicElement& e, const AicKinematics& kin, const VectorXd& w, cons
   detail::inertia_projections(e, xi, xid, Om, ws, pr);
   const MatrixXd& PmE = ws.PmE;
   const Matrix6d& EmE = pr.EmE;
-  const MatrixXd& CLp = ws.CLp;
-  const Matrix6d& CLe = pr.CLe;
-  const Matrix36d& CLh = pr.CLh;
-  const MatrixXd& GPp = ws.GPp;
-  const MatrixXd& GVp = ws.GVp;
-  const Eigen::Matrix<double, 6, 3>& GPe = pr.GPe;
-  const Matrix3d& GVe = pr.GVe;
-  const Matrix3d& GPh = pr.GPh;
   const VectorXd& pm = ws.pm;
   const Vector6d& em = pr.em;
 
@@ -204,34 +236,11 @@ void full(const AicElement& e, const AicKinematics& kin, const VectorXd& w, cons
     configuration_tangent(e, kin, Mw, ab, fw, ws, Kw);
     return;
   }
-  // d/dOm_a of the velocity-dependent loads (n x 3 and 6 x 3), then d/dxi_dot (n x n and 6 x n).
-  MatrixXd& DOp = ws.DOp;
-  DOp.resize(n, 3);
   Eigen::Matrix<double, 6, 3> DOe;
-  for (int a = 0; a < 3; ++a) {
-    const Matrix3d Ea = skew(Vector3d::Unit(a));
-    const Vector6d sWa = sym_components(Ea * skew(Om) + skew(Om) * Ea);
-    Vector9d dOO = Vector9d::Zero();
-    for (int b = 0; b < 3; ++b) {
-      dOO[a + 3 * b] += Om[b];
-      dOO[b + 3 * a] += Om[b];
-    }
-    DOp.col(a).noalias() = CLp * sWa;
-    DOp.col(a) += GPp.col(a) + GVp.col(a);
-    DOp.col(a).noalias() += I.PgOO * dOO;
-    DOe.col(a).noalias() = CLe * sWa;
-    DOe.col(a) += GPe.col(a);
-    DOe.col(a).tail<3>().noalias() += CLh * sWa;
-    DOe.col(a).tail<3>().noalias() += I.EgOO * dOO;
-    DOe.col(a).tail<3>() += GPh.col(a) + GVe.col(a);
-  }
-  MatrixXd& Ap = ws.Ap;
-  Ap = Om[0] * e.inv_GPV[0];
-  for (int a = 1; a < 3; ++a) Ap += Om[a] * e.inv_GPV[a];
-  MatrixXd& Ae = ws.Ae;
-  Ae = Om[0] * I.E0mGP[0];
-  for (int a = 1; a < 3; ++a) Ae += Om[a] * I.E0mGP[a];
-  for (int a = 0; a < 3; ++a) Ae.bottomRows<3>() += Om[a] * (ws.HGPxi[a] + I.EgOV[a]);
+  detail::velocity_load_tangents(e, Om, ws, pr, DOe);
+  const MatrixXd& DOp = ws.DOp;
+  const MatrixXd& Ap = ws.Ap;
+  const MatrixXd& Ae = ws.Ae;
   // Xp = dpm/dw = DOp Zr + Ap T, Xe = dem/dw; C_w = Xp + Z^T (Xe - R6^T Xp) - M_w dc/dw.
   const auto Zr = Z.middleRows<3>(3);
   MatrixXd& Xp = ws.Xp;

@@ -42,6 +42,11 @@ struct InertiaProjections {
 };
 void inertia_projections(const AicElement& e, const Eigen::VectorXd& xi, const Eigen::VectorXd& xid,
                          const Eigen::Vector3d& Om, AicWorkspace& ws, InertiaProjections& pr);
+/// The derivatives of the velocity-dependent projections pm = P^T y, em = E^T y w.r.t. Om (ws.DOp, n x 3;
+/// DOe, 6 x 3) and w.r.t. xi_dot (ws.Ap, n x n; ws.Ae, 6 x n), at fixed xi, after inertia_projections at the
+/// same state (reads its pr and ws.CLp, GPp, GVp, HGPxi). Used by the AIC full inertia's C_w and by FFRF-LM.
+void velocity_load_tangents(const AicElement& e, const Eigen::Vector3d& Om, AicWorkspace& ws, const InertiaProjections& pr,
+                            Eigen::Matrix<double, 6, 3>& DOe);
 
 /// g += the stress-stiffening force of the 12 inertia load cases scaled by lambda and of the interface
 /// deformation xi_b with its foreshortening (aic_stiffening.cpp, docs/geometric-stiffening.md); returns
@@ -49,6 +54,9 @@ void inertia_projections(const AicElement& e, const Eigen::VectorXd& xi, const E
 /// ws.mu, b and s in ws.fb, ws.fs. Used by the AIC body and by FFRF-LM.
 double add_stress_stiffening(const AicElement& e, const Eigen::VectorXd& xi, const StiffeningLoads& lambda, Eigen::VectorXd& g,
                            AicWorkspace& ws);
+/// H (n x n) += the Hessian of V_G in xi at fixed lambda (sum_c mu_c G_c + Gb E^T + E Gb^T + Gb Kbb^+ Gb^T),
+/// after add_stress_stiffening at the same state (reads ws.Gxi, ws.mu). Used by the AIC body and by FFRF-LM.
+void add_stress_stiffening_hessian(const AicElement& e, AicWorkspace& ws, Eigen::MatrixXd& H);
 /// Mt (world) += d f / d a of the stiffening force through its first six load factors, the frame's
 /// accelerations (a rank-6, unsymmetric term; after add_stress_stiffening at the same state, whose
 /// ws.Gxi it reads). The load factors' velocity dependence (Om, c) stays out of C.

@@ -65,6 +65,19 @@ double add_stress_stiffening(const AicElement& e, const VectorXd& xi, const Stif
   return 0.5 * lambda.dot(xGx) + xi.head(nb).dot(ws.fb) + 0.5 * ws.fb.dot(ws.fs);
 }
 
+void add_stress_stiffening_hessian(const AicElement& e, AicWorkspace& ws, MatrixXd& H) {
+  const Eigen::Index n = e.n, nb = 6 * e.N, k = 12 + nb;
+  const Eigen::Map<const MatrixXd> Gx(ws.Gxi.data(), n, k);  // column c: G_c xi
+  // H += sum_c mu_c G_c + Gb E^T + E Gb^T + Gb Kbb^+ Gb^T, Gb = [G_j xi]_j (n x 6N), E the interface
+  // rows. vec(sum mu_c G_c) = [vec G_0 ... vec G_k-1] mu: the blocks of G_stack are contiguous, one product.
+  Eigen::Map<VectorXd>(H.data(), n * n).noalias() += Eigen::Map<const MatrixXd>(e.G_stack.data(), n * n, k) * ws.mu;
+  const auto Gb = Gx.rightCols(nb);
+  H.leftCols(nb) += Gb;
+  H.topRows(nb) += Gb.transpose();
+  ws.GK.noalias() = Gb * e.Kbb_pinv;
+  H.noalias() += ws.GK * Gb.transpose();
+}
+
 void add_stiffening_mass_tangent(const AicElement& e, const AicKinematics& kin, AicWorkspace& ws, MatrixXd& Mt) {
   const Eigen::Index n = e.n, nb = 6 * e.N;
   const Eigen::Map<const MatrixXd> Gx(ws.Gxi.data(), n, 12 + nb);
@@ -87,27 +100,19 @@ void centrifugal_load_factors(const Vector3d& Om, StiffeningLoads& lambda) {
 void elastic_force_stiffened(const AicElement& e, const AicKinematics& kin, TangentModel tangent,
                              const StiffeningLoads& lambda, VectorXd& f, MatrixXd* Kt, AicWorkspace& ws, double* energy) {
   SEFLEX_DEMAND(e.has_stiffening(), "superelement " + e.name + " has no geometric-stiffness invariants");
-  const Eigen::Index n = e.n, nb = 6 * e.N, k = 12 + nb;
   const VectorXd& xi = kin.xi;
   ws.g.noalias() = e.K * xi;
   const double eK = 0.5 * xi.dot(ws.g);
   const double eG = detail::add_stress_stiffening(e, xi, lambda, ws.g, ws);
-  const Eigen::Map<const MatrixXd> Gx(ws.Gxi.data(), n, k);  // column c: G_c xi
   if (energy != nullptr) *energy = eK + eG;
   if (Kt == nullptr) {
     detail::elastic_force_of_local(e, kin, tangent, e.K, f, nullptr, ws);
     return;
   }
-  // H = K + sum_c mu_c G_c + Gb E^T + E Gb^T + Gb Kbb^+ Gb^T, Gb = [G_j xi]_j (n x 6N), E the interface
-  // rows. vec(sum mu_c G_c) = [vec G_0 ... vec G_k-1] mu: the blocks of G_stack are contiguous, one product.
+  // H = K + the Hessian of V_G.
   MatrixXd& H = ws.Keff;
   H = e.K;
-  Eigen::Map<VectorXd>(H.data(), n * n).noalias() += Eigen::Map<const MatrixXd>(e.G_stack.data(), n * n, k) * ws.mu;
-  const auto Gb = Gx.rightCols(nb);
-  H.leftCols(nb) += Gb;
-  H.topRows(nb) += Gb.transpose();
-  ws.GK.noalias() = Gb * e.Kbb_pinv;
-  H.noalias() += ws.GK * Gb.transpose();
+  detail::add_stress_stiffening_hessian(e, ws, H);
   detail::elastic_force_of_local(e, kin, tangent, H, f, Kt, ws);
 }
 

@@ -1,8 +1,11 @@
 // FFRF-LM assembly: body forces, node loads, force elements on hinge angles and the constraint
-// forces G^T lambda into the residual; mass matrices analytic, the configuration and velocity
-// derivatives of each element by central differences over that element's own coordinates (a body's
-// 6 + k, a constraint's two sides, a load's node), so the cost stays linear in the model size.
+// forces G^T lambda into the residual; mass matrices and the bodies' configuration and velocity
+// derivatives analytic (ffrf_body_tangents.cpp; FfrfOptions::fd_body_jacobians: central differences
+// over the body's 6 + k coordinates, the reference of the tests), those of loads and constraints
+// (d G^T lambda / dq) by central differences over the element's own coordinates (a constraint's two
+// sides, a load's node), so the cost stays linear in the model size.
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 
 #include "ffrf/ffrf_detail.hpp"
@@ -23,8 +26,8 @@ Eigen::VectorBlock<VectorXd> head(VectorXd& v, Eigen::Index n) {
   return v.head(n);
 }
 
-/// Central differences of f (f(out) writes a local vector over `rows` into out) w.r.t. the
-/// coordinates `cols` (>= 0 only), added to T as rows x cols triplets.
+/// Central differences of f (f(col, out) writes a local vector over `rows` into out, coordinate col
+/// perturbed) w.r.t. the coordinates `cols` (>= 0 only), added to T as rows x cols triplets.
 template <class F>
 void fd_configuration(const FfrfSystem& sys, FfrfState& s, const std::vector<int>& rows, const std::vector<int>& cols, F&& f,
                       Scratch& w, Triplets& T) {
@@ -34,10 +37,10 @@ void fd_configuration(const FfrfSystem& sys, FfrfState& s, const std::vector<int
     if (col < 0) continue;
     const double eps = fd_step(sys, col);
     Saved sv = perturb(sys, s, col, eps);
-    f(fp);
+    f(col, fp);
     restore(sys, s, col, sv);
     sv = perturb(sys, s, col, -eps);
-    f(fm);
+    f(col, fm);
     restore(sys, s, col, sv);
     d = (fp - fm) / (2.0 * eps);
     for (std::size_t r = 0; r < rows.size(); ++r)
@@ -53,7 +56,8 @@ void bodies(const FfrfSystem& sys, FfrfState& s, bool matrices, FfrfEval& ev) {
     const FfrfBody& b = sys.bodies[bi];
     const int nb = 6 + b.k, b0 = b.coord;
     BodyForce& bf = ev.bodies[bi];
-    body_force(sys, s, static_cast<int>(bi), matrices, bf);
+    const bool analytic = matrices && !sys.options.fd_body_jacobians;
+    body_force(sys, s, static_cast<int>(bi), matrices, bf, analytic);
     ev.r.segment(b0, nb) += bf.f;
     ev.scale.segment(b0, nb) += bf.f.cwiseAbs();
     if (!matrices) continue;
@@ -64,10 +68,18 @@ void bodies(const FfrfSystem& sys, FfrfState& s, bool matrices, FfrfEval& ev) {
     for (int i = 0; i < nb; ++i)
       for (int j = 0; j < nb; ++j)
         if (bf.M(i, j) != 0.0) ev.M.emplace_back(b0 + i, b0 + j, bf.M(i, j));
+    if (analytic) {
+      for (int j = 0; j < nb; ++j)
+        for (int i = 0; i < nb; ++i) {
+          if (bf.K(i, j) != 0.0) ev.K.emplace_back(b0 + i, b0 + j, bf.K(i, j));
+          if (bf.C(i, j) != 0.0) ev.C.emplace_back(b0 + i, b0 + j, bf.C(i, j));
+        }
+      continue;
+    }
     w.idx.resize(static_cast<std::size_t>(nb));
     for (int i = 0; i < nb; ++i) w.idx[static_cast<std::size_t>(i)] = b0 + i;
     BodyForce& tmp = w.fd_bodies[bi];
-    auto f = [&](Eigen::VectorBlock<VectorXd> out) {
+    auto f = [&](int, Eigen::VectorBlock<VectorXd> out) {
       body_force(sys, s, static_cast<int>(bi), false, tmp);
       out = tmp.f;
     };
@@ -76,9 +88,9 @@ void bodies(const FfrfSystem& sys, FfrfState& s, bool matrices, FfrfEval& ev) {
     for (int i = 0; i < nb; ++i) {  // the force is quadratic in the velocities: central differences are exact
       const double eps = fd_step(sys, b0 + i), v0 = s.v[b0 + i];
       s.v[b0 + i] = v0 + eps;
-      f(fp);
+      f(-1, fp);
       s.v[b0 + i] = v0 - eps;
-      f(fm);
+      f(-1, fm);
       s.v[b0 + i] = v0;
       d = (fp - fm) / (2.0 * eps);
       for (int r = 0; r < nb; ++r)
@@ -91,7 +103,7 @@ void loads(const FfrfSystem& sys, FfrfState& s, bool matrices, FfrfEval& ev) {
   Scratch& w = ev.scratch;
   PoseJ& P = w.pose;
   for (const NodeLoad& load : sys.model->loads) {
-    auto f = [&](Eigen::VectorBlock<VectorXd> out) {
+    auto f = [&](int, Eigen::VectorBlock<VectorXd> out) {
       node_pose(sys, s, load.node.value, false, P);
       const double factor = load.scale ? load.scale(s.t) : 1.0;
       Vector6d F;
@@ -102,7 +114,7 @@ void loads(const FfrfSystem& sys, FfrfState& s, bool matrices, FfrfEval& ev) {
     node_pose(sys, s, load.node.value, false, P);
     const Eigen::Index n = P.size();
     auto q = head(w.q, n);
-    f(q);
+    f(-1, q);
     for (std::size_t c = 0; c < P.cols.size(); ++c) {
       if (P.cols[c] < 0) continue;
       ev.r[P.cols[c]] += q[static_cast<Eigen::Index>(c)];
@@ -181,9 +193,22 @@ void constraints(const FfrfSystem& sys, FfrfState& s, bool matrices, FfrfEval& e
           ev.G.emplace_back(6 * static_cast<int>(c) + k, col, ce.G(k, static_cast<Eigen::Index>(i)));
     }
     if (!matrices || lam.isZero(0.0)) continue;
+    // A perturbed coordinate of one side only leaves the other side's pose as it is: only the
+    // perturbed side is evaluated again (the same arithmetic as eval_constraint).
     ConstraintEval& cp = w.cp;
-    auto f = [&](Eigen::VectorBlock<VectorXd> out) {
-      eval_constraint(sys, s, static_cast<int>(c), cp);
+    const FfrfConstraint& con = sys.constraints[c];
+    auto f = [&](int col, Eigen::VectorBlock<VectorXd> out) {
+      const bool in_a = std::find(ce.A.cols.begin(), ce.A.cols.end(), col) != ce.A.cols.end();
+      const bool in_b = std::find(ce.B.cols.begin(), ce.B.cols.end(), col) != ce.B.cols.end();
+      if (in_a)
+        interface_pose(sys, s, con.body, con.interface, cp.A);
+      else
+        cp.A.assign(ce.A);
+      if (in_b)
+        node_pose(sys, s, con.node.value, con.chain, cp.B);
+      else
+        cp.B.assign(ce.B);
+      combine_constraint(cp);
       out.noalias() = cp.jacobian().transpose() * lam;
     };
     fd_configuration(sys, s, ce.cols, ce.cols, f, w, ev.K);

@@ -16,12 +16,15 @@
 // dz/dt) added, with the stress stiffening V^T K_G(lambda, xi) xi when the body has it
 // (docs/geometric-stiffening.md; lambda = [a_o - g; alpha; Om~ Om~] of the frame, which FFRF-LM has
 // as coordinates). Rigid: the rigid-body wrench about the frame origin (rigid_inertia.hpp).
+// The tangents K and C (want_tangents): ffrf_body_tangents.cpp.
 #include <Eigen/Dense>
 
+#include "ffrf/ffrf_body_tangents.hpp"
 #include "ffrf/ffrf_detail.hpp"
 #include "bodies/aic_inertia_detail.hpp"
 #include "bodies/rigid_inertia.hpp"
 #include "seflex/common/so3.hpp"
+#include "seflex/superelement/symmetric_basis.hpp"
 
 namespace seflex::mbd::detail {
 
@@ -35,10 +38,8 @@ namespace {
 
 using Vector6d = Eigen::Matrix<double, 6, 1>;
 
-using Scratch = BodyForce::Scratch;
-
 /// Body-axis inertia force w.fw and mass w.Mw (if want) from the FE node sums.
-void flexible_nodal(const FfrfBody& b, const AicElement& e, bool want, bool elastic_gyro, Scratch& w, double& kinetic) {
+void flexible_nodal(const FfrfBody& b, const AicElement& e, bool want, bool tangents, bool elastic_gyro, Scratch& w, double& kinetic) {
   const int k = b.k, nb = 6 + k;
   const auto nfe = static_cast<int>(e.X.cols());
   const VectorXd& z = w.z;
@@ -77,10 +78,12 @@ void flexible_nodal(const FfrfBody& b, const AicElement& e, bool want, bool elas
   if (!want) return;
   w.MN.noalias() = e.M_fe * N;
   w.Mw.noalias() = N.transpose() * w.MN;
+  if (tangents) nodal_inertia_tangents(b, e, elastic_gyro, w);
 }
 
 /// The same from the inertia invariants.
-void flexible_invariants(const FfrfBody& b, const AicElement& e, bool want, Scratch& w, double& kinetic, AicWorkspace& ws) {
+void flexible_invariants(const FfrfBody& b, const AicElement& e, bool want, bool tangents, Scratch& w, double& kinetic,
+                         AicWorkspace& ws) {
   const int k = b.k;
   const VectorXd& v = w.v;
   const VectorXd& ab = w.ab;
@@ -110,20 +113,22 @@ void flexible_invariants(const FfrfBody& b, const AicElement& e, bool want, Scra
   Mw.topRightCorner(6, k) = EmPV;
   Mw.bottomLeftCorner(k, 6) = EmPV.transpose();
   Mw.bottomRightCorner(k, k) = b.VMppV;
+  if (tangents) invariant_inertia_tangents(b, e, pr, w, ws);
 }
 
 /// The body's force and (if want) mass from its body-axis velocities out.scratch.v, accelerations
 /// out.scratch.ab and modal coordinates out.scratch.z.
-void flexible(const FfrfSystem& sys, const FfrfBody& b, const AicElement& e, const Matrix3d& R, bool want, BodyForce& out) {
+void flexible(const FfrfSystem& sys, const FfrfBody& b, const AicElement& e, const Matrix3d& R, bool want, bool tangents,
+              BodyForce& out) {
   const int k = b.k, nb = 6 + k;
   Scratch& w = out.scratch;
   const VectorXd& z = w.z;
   const auto zd = w.v.tail(k);
   w.xi.noalias() = b.V * z;
   if (b.nodal)
-    flexible_nodal(b, e, want, sys.options.elastic_gyro, w, out.kinetic);
+    flexible_nodal(b, e, want, tangents, sys.options.elastic_gyro, w, out.kinetic);
   else
-    flexible_invariants(b, e, want, w, out.kinetic, out.ws);
+    flexible_invariants(b, e, want, tangents, w, out.kinetic, out.ws);
   const VectorXd& fw = w.fw;
   MatrixXd& Mw = w.Mw;
   out.f.resize(nb);
@@ -139,7 +144,28 @@ void flexible(const FfrfSystem& sys, const FfrfBody& b, const AicElement& e, con
     out.elastic += detail::add_stress_stiffening(e, w.xi, lambda, w.g, out.ws);
     out.f.tail(k).noalias() += b.V.transpose() * w.g;
     // The first six load factors are the frame's body-axis accelerations: d f_z / d ab_frame = V^T [G_c xi]_{c<6}.
-    if (want) Mw.bottomLeftCorner(k, 6).noalias() += b.V.transpose() * Eigen::Map<const MatrixXd>(out.ws.Gxi.data(), e.n, 6);
+    const Eigen::Map<const MatrixXd> Gx(out.ws.Gxi.data(), e.n, 12 + 6 * e.N);
+    if (want) Mw.bottomLeftCorner(k, 6).noalias() += b.V.transpose() * Gx.leftCols<6>();
+    if (tangents) {
+      // d f_z / d Om through the centrifugal load factors lambda_6.. = sym(Om~ Om~); d f_z / d z: the
+      // Hessian of the stiffening potential at fixed lambda.
+      const Matrix3d W = skew(w.v.segment<3>(3));
+      Eigen::Matrix<double, 6, 3> dsW;
+      for (int a = 0; a < 3; ++a) {
+        const Matrix3d Ea = skew(Vector3d::Unit(a));
+        dsW.col(a) = se::sym_components(Matrix3d(Ea * W + W * Ea));
+      }
+      w.n3.noalias() = Gx.middleCols<6>(6) * dsW;
+      w.Cw.block(6, 3, k, 3).noalias() += b.V.transpose() * w.n3;
+      w.nn.setZero(e.n, e.n);
+      add_stress_stiffening_hessian(e, out.ws, w.nn);
+      w.nk.noalias() = w.nn * b.V;
+      w.Kz.bottomRows(k).noalias() += b.V.transpose() * w.nk;
+    }
+  }
+  if (tangents) {  // modal stiffness and damping
+    w.Kz.bottomRows(k).diagonal() += b.omega2;
+    w.Cw.bottomRightCorner(k, k).diagonal() += b.stiffness_damping * b.omega2;
   }
   if (!want) return;
   MatrixXd& Rh = w.Rh;
@@ -148,11 +174,12 @@ void flexible(const FfrfSystem& sys, const FfrfBody& b, const AicElement& e, con
   Rh.block<3, 3>(3, 3) = R;
   w.RhMw.noalias() = Rh * Mw;
   out.M.noalias() = w.RhMw * Rh.transpose();
+  if (tangents) tangents_to_world(R, k, w, out);
 }
 
 }  // namespace
 
-void body_force(const FfrfSystem& sys, const FfrfState& s, int bi, bool want_mass, BodyForce& out) {
+void body_force(const FfrfSystem& sys, const FfrfState& s, int bi, bool want_mass, BodyForce& out, bool want_tangents) {
   const FfrfBody& b = sys.bodies[static_cast<std::size_t>(bi)];
   const Model& model = *sys.model;
   const Matrix3d& R = s.R_WB[static_cast<std::size_t>(bi)];
@@ -167,6 +194,18 @@ void body_force(const FfrfSystem& sys, const FfrfState& s, int bi, bool want_mas
     out.kinetic = rw.kinetic;
     out.elastic = 0.0;
     if (want_mass) out.M = rw.M6;
+    if (!want_tangents) return;
+    // Tangents from the wrench in body axes (the same wrench rotated: rigid_wrench is frame-covariant).
+    Scratch& w = out.scratch;
+    w.v.resize(6);
+    w.ab.resize(6);
+    w.v << R.transpose() * vW.head<3>(), R.transpose() * vW.segment<3>(3);
+    w.ab << R.transpose() * (aW.head<3>() - model.gravity), R.transpose() * aW.segment<3>(3);
+    const RigidWrench rb = rigid_wrench(b.mass, b.p_BoCm_B, b.I_Cm_B, w.v.head<3>(), w.v.tail<3>(), w.ab.head<3>(), w.ab.tail<3>());
+    w.fw = rb.F;
+    w.Mw = rb.M6;
+    rigid_tangents(b.mass, b.p_BoCm_B, b.I_Cm_B, w.v.tail<3>(), w);
+    tangents_to_world(R, 0, w, out);
     return;
   }
   const AicElement& e = model.superelement(model.flexible_bodies[static_cast<std::size_t>(b.model_index)].se);
@@ -176,7 +215,7 @@ void body_force(const FfrfSystem& sys, const FfrfState& s, int bi, bool want_mas
   w.v << R.transpose() * vW.head<3>(), R.transpose() * vW.segment<3>(3), vW.tail(b.k);
   w.ab << R.transpose() * (aW.head<3>() - model.gravity), R.transpose() * aW.segment<3>(3), aW.tail(b.k);
   w.z = s.z.segment(b.z_offset, b.k);
-  flexible(sys, b, e, R, want_mass, out);
+  flexible(sys, b, e, R, want_mass || want_tangents, want_tangents, out);
 }
 
 }  // namespace seflex::mbd::detail

@@ -30,6 +30,8 @@ struct PoseJ {
   void reset(Eigen::Index n);
   /// One more column (coordinate col), set to zero.
   void push_column(int col);
+  /// This pose becomes a copy of `from` (the used columns only: no allocation once the storage is large enough).
+  void assign(const PoseJ& from);
 };
 
 /// Pose of the node on interface j of body b, as that body's coordinates give it, into out.
@@ -48,16 +50,20 @@ struct ConstraintEval {
   auto jacobian() const { return G.leftCols(size()); }
 };
 void eval_constraint(const FfrfSystem& sys, const FfrfState& s, int c, ConstraintEval& out);
+/// The rest of out (g, cols, G) from its two poses out.A and out.B (eval_constraint = both poses and this).
+void combine_constraint(ConstraintEval& out);
 /// g and dg/dt of every constraint at s (ffrf_constraints with its scratch: phi, phidot, ce).
 void constraint_rates(const FfrfSystem& sys, const FfrfState& s, Eigen::VectorXd& phi, Eigen::VectorXd& phidot, ConstraintEval& ce,
                       Eigen::VectorXd& g, Eigen::VectorXd& gdot);
 
 /// Body force (world: force and moment about the frame origin; modal forces), gravity included:
 /// inertia + elastic + damping - gravity, as a function of the body's coordinates, velocities and
-/// accelerations in s. M: the mass matrix (if want_mass).
+/// accelerations in s. M: the mass matrix (if want_mass); K, C: its derivatives w.r.t. the body's
+/// coordinates (rotation: R <- exp(dpi~) R, as perturb) and velocities (if want_tangents), analytic
+/// (ffrf_body_tangents.cpp).
 struct BodyForce {
   Eigen::VectorXd f;
-  Eigen::MatrixXd M;
+  Eigen::MatrixXd M, K, C;
   double kinetic = 0.0, elastic = 0.0;
   AicWorkspace ws;  ///< scratch of the invariant evaluation
   /// Scratch of one body's evaluation, sized at its first use (a BodyForce serves one body).
@@ -66,9 +72,12 @@ struct BodyForce {
     Eigen::MatrixXd Mw, Rh, RhMw;                 ///< body-axis mass, blkdiag(R, R, I), Rh Mw
     Eigen::MatrixXd N, MN;                        ///< nodal sums: N(z) (6 n_fe x nb), M_fe N
     Eigen::VectorXd U, Ud, cfe, gyro, Xd, Xdd, MXd, MXdd;
+    // Tangents (body axes): Cw = d fw / d w, Kz = d f_w / d z (nb x k), and their scratch.
+    Eigen::MatrixXd Cw, Kz, D, MD, Dz, MDz, nk, nk2, nn, n3, Snb, RhC;
+    Eigen::VectorXd Va;
   } scratch;
 };
-void body_force(const FfrfSystem& sys, const FfrfState& s, int b, bool want_mass, BodyForce& out);
+void body_force(const FfrfSystem& sys, const FfrfState& s, int b, bool want_mass, BodyForce& out, bool want_tangents = false);
 
 /// Perturb coordinate i of s by eps (rotation: R <- exp(eps e) R), returning what restores it.
 struct Saved {

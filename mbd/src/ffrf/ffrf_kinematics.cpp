@@ -1,7 +1,6 @@
 // FFRF-LM kinematics: interface and node poses with Jacobians, constraint residuals, coordinate
 // perturbations for the finite-difference derivatives.
 #include <Eigen/Dense>
-#include <algorithm>
 
 #include "ffrf/ffrf_detail.hpp"
 #include "seflex/common/error.hpp"
@@ -24,6 +23,15 @@ void PoseJ::push_column(int col) {
   if (J.cols() < n + 1) J.conservativeResize(Eigen::NoChange, n + 1);
   cols.push_back(col);
   J.col(n).setZero();
+}
+
+void PoseJ::assign(const PoseJ& from) {
+  R = from.R;
+  p = from.p;
+  const Eigen::Index n = from.size();
+  if (J.cols() < n) J.resize(6, n);
+  cols.assign(from.cols.begin(), from.cols.end());
+  J.leftCols(n) = from.J.leftCols(n);
 }
 
 void interface_pose(const FfrfSystem& sys, const FfrfState& s, int bi, int j, PoseJ& out) {
@@ -84,16 +92,26 @@ void node_pose(const FfrfSystem& sys, const FfrfState& s, int k, bool chain, Pos
 
 void eval_constraint(const FfrfSystem& sys, const FfrfState& s, int c, ConstraintEval& out) {
   const FfrfConstraint& con = sys.constraints[static_cast<std::size_t>(c)];
-  PoseJ& A = out.A;
-  PoseJ& B = out.B;
-  interface_pose(sys, s, con.body, con.interface, A);
-  node_pose(sys, s, con.node.value, con.chain, B);
+  interface_pose(sys, s, con.body, con.interface, out.A);
+  node_pose(sys, s, con.node.value, con.chain, out.B);
+  combine_constraint(out);
+}
+
+void combine_constraint(ConstraintEval& out) {
+  const PoseJ& A = out.A;
+  const PoseJ& B = out.B;
   out.g.head<3>() = A.p - B.p;
   out.g.tail<3>() = so3::log(B.R.transpose() * A.R);
   const Matrix3d L = so3::jl_inv(out.g.tail<3>()) * B.R.transpose();
+  // A's columns are its body's coordinates, consecutive (interface_pose), so a column of B is one of
+  // them iff it lies in that range, at its offset from the first (a linear search here was 12 % of an
+  // FFRF-LM run: the joints' finite differences call this 2 (|A| + |B|) times per iteration matrix).
+  const int a0 = A.cols.empty() ? 0 : A.cols.front();
+  const auto na = static_cast<int>(A.size());
+  auto in_A = [a0, na](int col) { return col >= a0 && col < a0 + na; };
   out.cols = A.cols;
-  for (int col : B.cols)
-    if (std::find(A.cols.begin(), A.cols.end(), col) == A.cols.end()) out.cols.push_back(col);
+  for (int col : B.cols)  // B's columns are distinct (one per coordinate or driven hinge on its chain)
+    if (!in_A(col)) out.cols.push_back(col);
   const Eigen::Index n = out.size();
   if (out.G.cols() < n) out.G.resize(6, n);
   out.G.leftCols(n).setZero();
@@ -102,8 +120,9 @@ void eval_constraint(const FfrfSystem& sys, const FfrfState& s, int c, Constrain
     out.G.col(ci).head<3>() += A.J.col(ci).head<3>();
     out.G.col(ci).tail<3>() += L * A.J.col(ci).tail<3>();
   }
+  Eigen::Index next = na;  // B's columns outside A follow A's in out.cols, in B's order
   for (std::size_t i = 0; i < B.cols.size(); ++i) {
-    const auto at = std::find(out.cols.begin(), out.cols.end(), B.cols[i]) - out.cols.begin();
+    const Eigen::Index at = in_A(B.cols[i]) ? B.cols[i] - a0 : next++;
     const auto ci = static_cast<Eigen::Index>(i);
     out.G.col(at).head<3>() -= B.J.col(ci).head<3>();
     out.G.col(at).tail<3>() -= L * B.J.col(ci).tail<3>();

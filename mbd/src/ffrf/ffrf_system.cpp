@@ -63,6 +63,7 @@ void frame_clamped_modes(const AicElement& e, int modes, bool nodal, FfrfBody& b
   if (!nodal) {
     b.MppV = e.inv.Mpp * b.V;
     b.VMppV = b.V.transpose() * b.MppV;
+    b.AV = e.inv_by_xi * b.V;
   }
 }
 

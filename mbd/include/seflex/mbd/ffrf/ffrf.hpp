@@ -42,6 +42,10 @@ struct FfrfOptions {
   /// term the invariants leave out (docs/inertia-invariants.md). Off by default, so that Auto's choice
   /// does not change the model.
   bool elastic_gyro = false;
+  /// The configuration and velocity derivatives (K, C) of the body forces by central differences over
+  /// the body's 6 + k coordinates (4 (6 + k) extra evaluations per body and iteration matrix) instead of
+  /// analytically: the previous path, kept as the reference of the tests (docs/ffrf.md).
+  bool fd_body_jacobians = false;
 };
 
 /// What an FFRF run reports beyond RunStats.
@@ -84,6 +88,7 @@ struct FfrfBody {
   Eigen::VectorXd amplitude;        ///< k: largest translation per unit modal coordinate [m] (its natural scale)
   Eigen::MatrixXd MppV;             ///< n x k: Mpp V (the invariants' P^T M P times the modes)
   Eigen::MatrixXd VMppV;            ///< k x k: V^T Mpp V
+  Eigen::MatrixXd AV;               ///< (45 n + 72) x k: the stacked invariants AicElement::inv_by_xi times V (d/dz of the inertia)
   Eigen::VectorXd omega2;           ///< k squared frequencies: V^T K V = diag(omega2)
   bool nodal = false;               ///< inertia from the FE node sums (FfrfOptions::inertia), else the invariants
   bool stiffening = false;          ///< geometric stiffening from the superelement's invariants (docs/geometric-stiffening.md)
