@@ -364,7 +364,8 @@ class Reader {
   void list_table(const YAML::Node& table) {
     for (const auto& kv : table) {
       DatasetEntry e;
-      e.name = kv.first.as<std::string>();
+      if (!kv.first.IsScalar()) fail("datasets: every key must be a dataset name, got " + node_kind(kv.first));
+      e.name = kv.first.Scalar();
       const YAML::Node d = kv.second;
       if (!d.IsMap()) fail("dataset '" + e.name + "': its table entry must be an object");
       e.dtype = get<std::string>(d, "dtype");

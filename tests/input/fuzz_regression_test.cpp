@@ -103,6 +103,14 @@ TEST(FuzzRegression, SuperelementHeaderValueOfTheWrongKindIsAnInputError) {
                        {"source_warning_object.se", "header: 'source_warnings' must be an array of strings, got an object"}));
 }
 
+// A dataset table key that is not a name (`&K": {...}`: a YAML anchor where the quote was, found by
+// fuzz_superelement in CI's 20 s run on 2026-11-27) made yaml-cpp throw "bad conversion" from the
+// key's conversion to a string: exit 1, no file name.
+TEST(FuzzRegression, SuperelementDatasetKeyThatIsNotANameIsAnInputError) {
+  EXPECT_TRUE(mentions(se_error("dataset_key_anchor.se"),
+                       {"dataset_key_anchor.se", "datasets: every key must be a dataset name, got an object"}));
+}
+
 // M_fe's column pointers were checked one column at a time, after the rows of the previous column had
 // been read: a pointer beyond the number of values read past the end of M_fe.rowind (ASan:
 // heap-buffer-overflow; found by fuzz_superelement in its first 8,000 executions).
