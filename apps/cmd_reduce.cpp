@@ -26,9 +26,6 @@
 #include "seflex/io/superelement_file.hpp"
 #include "seflex/reduction/craig_bampton_superelement.hpp"
 
-#ifdef SEFLEX_HAVE_MPI
-#endif
-
 namespace {
 
 using seflex::app::UsageError;

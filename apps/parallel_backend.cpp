@@ -2,7 +2,6 @@
 // run that asks for `--backend slepc` loads libseflex_parallel.so; no other command does.
 #ifdef SEFLEX_HAVE_MPI
 #include <dlfcn.h>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
