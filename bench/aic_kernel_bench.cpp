@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
   mbd::AicKinematics kin;
   mbd::AicWorkspace ws;
   mbd::FloatingFrame warm = mbd::frame_guess(e, R_WI[0], p_WI[0]);
-  mbd::recover_frame(e, R_WI, p_WI, eta, mbd::FrameRecovery::Newton6, warm, kin, ws);
+  mbd::recover_frame(e, R_WI, p_WI, eta, mbd::FrameRecovery::Newton6, warm, kin);
   warm = kin.frame;
   VectorXd f(e.n);
   Eigen::MatrixXd Kt;
@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
     fn();  // size the scratch
     std::printf("%-34s %10.2f\n", what, best_us(repeats, fn));
   };
-  line("recover_frame", [&] { mbd::recover_frame(e, R_WI, p_WI, eta, mbd::FrameRecovery::Newton6, warm, kin, ws); });
+  line("recover_frame", [&] { mbd::recover_frame(e, R_WI, p_WI, eta, mbd::FrameRecovery::Newton6, warm, kin); });
   line("elastic_force (force)", [&] { mbd::elastic_force(e, kin, mbd::TangentModel::Exact, f, nullptr, ws); });
   line("elastic_force (force + tangent)", [&] { mbd::elastic_force(e, kin, mbd::TangentModel::Exact, f, &Kt, ws); });
   line("inertia full (force)", [&] { mbd::inertia_force(e, kin, mbd::InertiaModel::Full, v, a, false, in, ws); });

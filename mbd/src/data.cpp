@@ -132,9 +132,9 @@ bool Data::factorize(const Eigen::SparseMatrix<double>& S) {
     dense_lu_.compute(dense_);
     // PartialPivLU does not report singularity: a zero or non-finite pivot (relative to the largest
     // entry) marks it.
-    const double scale = dense_.cwiseAbs().maxCoeff();
+    const double largest = dense_.cwiseAbs().maxCoeff();
     const auto pivots = dense_lu_.matrixLU().diagonal().cwiseAbs();
-    return std::isfinite(pivots.sum()) && pivots.minCoeff() > 1e-14 * scale;
+    return std::isfinite(pivots.sum()) && pivots.minCoeff() > 1e-14 * largest;
   }
   if (!analyzed_) {
     lu_.analyzePattern(S);

@@ -212,13 +212,6 @@ void local_coordinates(const AicElement& e, const std::vector<Matrix3d>& R_WI, c
 void recover_frame(const AicElement& e, const std::vector<Matrix3d>& R_WI, const std::vector<Vector3d>& p_WI,
                    const Eigen::Ref<const VectorXd>& eta, FrameRecovery method, const FloatingFrame& warm_start,
                    AicKinematics& kin) {
-  AicWorkspace ws;
-  recover_frame(e, R_WI, p_WI, eta, method, warm_start, kin, ws);
-}
-
-void recover_frame(const AicElement& e, const std::vector<Matrix3d>& R_WI, const std::vector<Vector3d>& p_WI,
-                   const Eigen::Ref<const VectorXd>& eta, FrameRecovery method, const FloatingFrame& warm_start,
-                   AicKinematics& kin, AicWorkspace& ws) {
   SEFLEX_DEMAND(static_cast<int>(R_WI.size()) == e.N && static_cast<int>(p_WI.size()) == e.N, "interface count");
   SEFLEX_DEMAND(eta.size() == e.m, "modal coordinate count");
   const int N = e.N, nb = 6 * N;

@@ -59,10 +59,10 @@ void assemble_flexible(const Model& model, const State& s, Data& data, const Ass
     start = &guess;
   }
   try {
-    recover_frame(e, sc.R_WI, sc.p_WI, eta, body.options.recovery, *start, fd.kin, sc.aic);
+    recover_frame(e, sc.R_WI, sc.p_WI, eta, body.options.recovery, *start, fd.kin);
   } catch (const ConvergenceError&) {
     if (start == &state_frame) throw;
-    recover_frame(e, sc.R_WI, sc.p_WI, eta, body.options.recovery, state_frame, fd.kin, sc.aic);
+    recover_frame(e, sc.R_WI, sc.p_WI, eta, body.options.recovery, state_frame, fd.kin);
   }
   const bool stiffened = model.stiffened(body);
   if (stiffened) {

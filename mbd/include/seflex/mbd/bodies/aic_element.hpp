@@ -123,14 +123,11 @@ struct AicKinematics {
 /// Recover the floating frame from the interface poses (R_WI[j], p_WI[j]) and the modal
 /// coordinates eta (size m), starting from `frame` (warm start), and fill `kin`.
 /// Throws ConvergenceError naming the body when the recovery does not converge in 30 iterations
-/// (deformation far outside the small-strain range).
+/// (deformation far outside the small-strain range). Allocates nothing once `kin` is sized (the
+/// time loop keeps one per body).
 void recover_frame(const AicElement& e, const std::vector<Eigen::Matrix3d>& R_WI,
                    const std::vector<Eigen::Vector3d>& p_WI, const Eigen::Ref<const Eigen::VectorXd>& eta,
                    FrameRecovery method, const FloatingFrame& warm_start, AicKinematics& kin);
-/// Same, with the scratch of `ws` (no allocation once sized).
-void recover_frame(const AicElement& e, const std::vector<Eigen::Matrix3d>& R_WI,
-                   const std::vector<Eigen::Vector3d>& p_WI, const Eigen::Ref<const Eigen::VectorXd>& eta,
-                   FrameRecovery method, const FloatingFrame& warm_start, AicKinematics& kin, AicWorkspace& ws);
 
 /// y = Tx x and y = Tx^T x in O(6n), Tx = I - [Phi_rig; 0] Zx (formulation 1.6).
 void apply_transfer(const AicElement& e, const AicKinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& x,
