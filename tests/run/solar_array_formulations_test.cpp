@@ -47,7 +47,7 @@ std::string scene(int modes, const std::string& h) {
   replace_once(s, "t_end: 30.0", "t_end: 2.3");
   replace_once(s, "adaptive: true", "adaptive: false");
   replace_once(s, "step: 1.0e-3", "step: " + h);
-  replace_once(s, "max_step: 5.0e-3", "max_step: " + h);
+  replace_once(s, "max_step: 2.5e-3", "max_step: " + h);
   replace_once(s, "  stop: {after_all_locked: 5.0}\n", "");
   erase_line(s, "  animation: {interval: ");  // the VTK series is not needed here
   replace_once(s, "  interval: 0.005", "  interval: 0.02");
