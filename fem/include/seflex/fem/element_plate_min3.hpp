@@ -14,7 +14,7 @@
 //   exact);
 // - shear relaxation: K = K_b + phi^2 K_s, phi^2 = c psi / (1 + c psi), psi = (sum of K_b's rotation
 //   diagonal) / (sum of K_s's rotation diagonal) (ibid.; MYSTRAN CALC_PHI_SQ), c = PARAM CBMIN3
-//   (2.0) for a CTRIA3; MIN4T's sub-triangles use the same factor (element_plate_min4t.hpp). phi^2
+//   (2.0) for a CTRIA3, CBMIN4T (3.6) for MIN4T's sub-triangles (element_plate_min4t.hpp). phi^2
 //   -> 1 for thick and -> c psi for thin elements, which removes shear locking.
 // Pressure: the work-equivalent load int q w dA of the same deflection field: q A / 3 on each w and
 // corner MOMENTS from the edge terms (q A / 3 per edge times d c_ij / d theta).

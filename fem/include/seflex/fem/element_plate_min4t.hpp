@@ -7,8 +7,12 @@
 // K = K_aa - K_ac K_cc^-1 K_ca and f = f_a - K_ac K_cc^-1 f_c for the pressure load (A. Tessler et
 // al., "A four-node, shear-deformable shell element developed via explicit Kirchhoff constraints",
 // IJNME 49 (2000); MYSTRAN QPLT3 with PARAM MIN4TRED = 'STC', its default). Each sub-triangle has its
-// own shear factor phi^2 from its own bending/shear diagonals with the factor cb (MYSTRAN: CBMIN3 for
-// the sub-triangles of a MIN4T quad, see assembly.hpp).
+// own shear factor phi^2 from its own bending/shear diagonals with the factor cb (PARAM CBMIN4T,
+// 3.6: with it MYSTRAN 12.0's published AQ3U2S004 eigenvalues are reproduced to 7 digits, although
+// MYSTRAN's present TPLT2 sets CBMIN4T = CBMIN3 for these sub-triangles; see assembly.hpp). The
+// sub-triangles are formed in the quadrilateral's own axes (MIN3 is invariant under a rotation of
+// the plane for an isotropic section; for an anisotropic one the section is the quad's, which is
+// what MYSTRAN's rotation of the material by the sub-triangle angle achieves).
 #include <Eigen/Core>
 #include <array>
 
