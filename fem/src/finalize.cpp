@@ -478,17 +478,22 @@ class Finalizer {
   /// The parameters seflex reads (param_number and the AUTOSPC / INREL lookups).
   static const std::set<std::string>& used_params() {
     static const std::set<std::string> names = {"WTMASS", "COUPMASS", "K6ROT", "GRDPNT", "AUTOSPC", "CK2", "CM2", "INREL",
-                                                   "QUAD4TYP", "CBMIN3", "CBMIN4T"};
+                                                   "QUAD4TYP"};
     return names;
   }
 
   void check_params() {
+    // MYSTRAN's plate elements: QUAD4TYP MIN4T (other values refused here) and then its shear factors
+    const bool mystran = mystran_plate_elements(m_);
+    auto used = [&](const std::string& name) {
+      return used_params().count(name) || (mystran && (name == "CBMIN3" || name == "CBMIN4T"));
+    };
     std::unordered_map<std::string, const Param*> first;
     for (const auto& p : m_.params) {
       const auto [it, inserted] = first.emplace(p.name, &p);
       // Two values of a parameter seflex does not use are Nastran's business (subcase-level PARAMs
       // in the case control, e.g.); of one it uses, ambiguous.
-      if (!inserted && it->second->values != p.values && used_params().count(p.name))
+      if (!inserted && it->second->values != p.values && used(p.name))
         throw InputError(where(m_, p.ref), "PARAM " + p.name + ": a second value (the first, at " + at(it->second->ref) +
                                                ", differs); expected one value per parameter");
     }
@@ -507,9 +512,8 @@ class Finalizer {
     if (first.count("WTMASS") && !(number("WTMASS", 1.0, false) > 0.0)) bad("WTMASS", "a mass factor > 0");
     if (first.count("K6ROT") && !(number("K6ROT", 0.0, false) >= 0.0)) bad("K6ROT", "a stiffness factor >= 0");
     if (first.count("COUPMASS")) number("COUPMASS", -1.0, true);
-    mystran_plate_elements(m_);
-    if (first.count("CBMIN3") && !(number("CBMIN3", 2.0, false) > 0.0)) bad("CBMIN3", "a shear factor > 0");
-    if (first.count("CBMIN4T") && !(number("CBMIN4T", 3.6, false) > 0.0)) bad("CBMIN4T", "a shear factor > 0");
+    if (mystran && first.count("CBMIN3") && !(number("CBMIN3", 2.0, false) > 0.0)) bad("CBMIN3", "a shear factor > 0");
+    if (mystran && first.count("CBMIN4T") && !(number("CBMIN4T", 3.6, false) > 0.0)) bad("CBMIN4T", "a shear factor > 0");
   }
 
   Model& m_;

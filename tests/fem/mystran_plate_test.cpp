@@ -346,8 +346,24 @@ TEST(MystranPlate, ParamErrors) {
   }
   {
     Model m = q.model;
+    add_param(m, "QUAD4TYP", "MIN4T", 3);
     add_param(m, "CBMIN3", "two", 5);
     EXPECT_EQ(finalize_error(m), "test.bdf:5: PARAM CBMIN3, field 3 (V1): got 'two'; expected a number");
+  }
+  {
+    Model m = q.model;
+    add_param(m, "QUAD4TYP", "MIN4T", 3);
+    add_param(m, "CBMIN3", "2.", 5);
+    add_param(m, "CBMIN3", "3.", 6);
+    EXPECT_EQ(finalize_error(m),
+              "test.bdf:6: PARAM CBMIN3: a second value (the first, at test.bdf:5, differs); expected one value per parameter");
+  }
+  {  // without QUAD4TYP MIN4T the shear factors are not used (and not checked): as before the option
+    Model m = q.model;
+    add_param(m, "CBMIN3", "two", 5);
+    add_param(m, "CBMIN4T", "1", 6);
+    add_param(m, "CBMIN4T", "2", 7);
+    EXPECT_EQ(finalize_error(m), "");
   }
   {
     Model m = q.model;
