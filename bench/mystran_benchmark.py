@@ -32,6 +32,12 @@ Status of a deck:
   refused               seflex exited non-zero (its one-line reason is shown)
   not compared          a solution seflex does not offer, or no MYSTRAN answer in the file
 Totals follow the table. Exit status 0 whatever the results (it is a measurement, not a gate).
+
+--mystran-elements: each deck is copied to the temporary folder with `PARAM,QUAD4TYP,MIN4T` added
+after BEGIN BULK, i.e. MYSTRAN 12.0's own default plate elements stated explicitly (CQUAD4 = MIN4T,
+CTRIA3 = MIN3: PARAMS.f90 has QUAD4TYP = 'MIN4T' from MYSTRAN's first public commit ac37198 until
+f593988 of April 2025 made MIN4 the default, after 12.0), and that copy is run. Without the flag
+the decks run as published (seflex's default Nastran-like MITC4/MITC3 plates).
 """
 import argparse
 import csv
@@ -228,11 +234,30 @@ def has_command(seflex, name):
     return re.search(r"^\s+" + name + r"\b", p.stdout + p.stderr, re.M) is not None
 
 
+def with_mystran_elements(deck, tmp):
+    """A copy of deck in tmp with PARAM,QUAD4TYP,MIN4T after BEGIN BULK (the decks have no INCLUDE)."""
+    out_dir = os.path.join(tmp, "mystran-elements")
+    os.makedirs(out_dir, exist_ok=True)
+    out = os.path.join(out_dir, os.path.basename(deck))
+    lines = open(deck, errors="replace").read().splitlines(True)
+    for i, line in enumerate(lines):
+        if re.match(r"\s*BEGIN\s*,?\s*BULK", line.upper()):
+            lines.insert(i + 1, "PARAM,QUAD4TYP,MIN4T\n")
+            break
+    else:
+        raise SystemExit("%s: no BEGIN BULK" % deck)
+    with open(out, "w") as f:
+        f.writelines(lines)
+    return out
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--decks", action="append", required=True, help="folder searched recursively for *.DAT")
     ap.add_argument("--seflex", default="build/apps/seflex")
     ap.add_argument("--markdown", action="store_true", help="print the table as Markdown")
+    ap.add_argument("--mystran-elements", action="store_true",
+                    help="add PARAM,QUAD4TYP,MIN4T to each deck (MYSTRAN 12.0's plate elements, see above)")
     args = ap.parse_args()
     seflex = os.path.abspath(args.seflex)
     buckling = has_command(seflex, "buckling")
@@ -255,6 +280,8 @@ def main():
                 rows.append((name, sol, "not compared", "no MYSTRAN answer file found", [], None))
                 continue
             answer = open(answer_path, errors="replace").read()
+            if args.mystran_elements:
+                deck = with_mystran_elements(deck, tmp)
             if kind == "statics":
                 status, note, warns, err = compare_statics(seflex, deck, answer, tmp)
             elif kind == "modes":

@@ -24,6 +24,12 @@ AssemblyOptions assembly_options(const Model& model) {
   o.mass = param_number(model, "COUPMASS", -1.0) > 0.0 ? MassKind::Coupled : MassKind::Lumped;
   o.wtmass = param_number(model, "WTMASS", 1.0);
   o.k6rot = param_number(model, "K6ROT", 100.0);
+  if (mystran_plate_elements(model)) {
+    MystranPlate m;
+    m.cb_tria = param_number(model, "CBMIN3", 2.0);
+    m.cb_quad = param_number(model, "CBMIN4T", 3.6);
+    o.mystran_plate = m;
+  }
   for (const Param& p : model.params) {
     if (p.name == "WTMASS" && !(o.wtmass > 0.0))
       throw InputError(where(model, p.ref), "PARAM WTMASS: expected a positive number");
@@ -183,6 +189,7 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
 
   // Stiffness.
   {
+    const MystranPlate* mystran = options.mystran_plate ? &*options.mystran_plate : nullptr;
     const detail::BlockPattern pattern(g.dofs, conn, false);
     pattern.make_matrix(g.K);
     for (std::size_t i = 0; i < bars.size(); ++i) {
@@ -196,12 +203,12 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
       pattern.scatter<2>(&rod_nodes[2 * i], K, g.K);
     }
     for (std::size_t i = 0; i < quads.size(); ++i) {
-      NodeMatrix<4> K = quad4_stiffness(quads[i], options.k6rot);
+      NodeMatrix<4> K = quad4_stiffness(quads[i], options.k6rot, mystran);
       to_cd<4>(&quad_nodes[4 * i], axes, K);
       pattern.scatter<4>(&quad_nodes[4 * i], K, g.K);
     }
     for (std::size_t i = 0; i < trias.size(); ++i) {
-      NodeMatrix<3> K = tria3_stiffness(trias[i], options.k6rot);
+      NodeMatrix<3> K = tria3_stiffness(trias[i], options.k6rot, mystran);
       to_cd<3>(&tria_nodes[3 * i], axes, K);
       pattern.scatter<3>(&tria_nodes[3 * i], K, g.K);
     }

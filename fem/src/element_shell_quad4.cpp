@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "model_lookup.hpp"
+#include "seflex/fem/element_plate_min4t.hpp"
 #include "seflex/common/error.hpp"
 
 namespace seflex::fem {
@@ -114,7 +115,7 @@ const double kGauss = 1.0 / std::sqrt(3.0);
 
 }  // namespace
 
-NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot) {
+NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot, const MystranPlate* mystran) {
   const Geometry g = geometry(e);
   const ShellSection& sec = e.section;
   const Eigen::Matrix3d& Am = sec.A;
@@ -177,8 +178,10 @@ NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot) {
         Bb(2, 3 * i + pRy) = dN(1, i);
         Bb(2, 3 * i + pRx) = -dN(0, i);
       }
-      const Eigen::Matrix<double, 12, 3> BtD = w * Bb.transpose() * Db;
-      Kp.noalias() += BtD.lazyProduct(Bb);
+      if (!mystran) {
+        const Eigen::Matrix<double, 12, 3> BtD = w * Bb.transpose() * Db;
+        Kp.noalias() += BtD.lazyProduct(Bb);
+      }
       if (coupled) {  // N = B kappa, M = B^T-side: membrane (incl. incompatible modes) x bending
         const Eigen::Matrix<double, 3, 12> BcBb = w * Bc * Bb;
         Kmp.noalias() += Bm.transpose().lazyProduct(BcBb);
@@ -186,11 +189,13 @@ NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot) {
       }
 
       // MITC4 transverse shear: assumed covariant strains, then Cartesian (gxz, gyz) = J^-1 (g_xi, g_eta).
-      Eigen::Matrix<double, 2, 12> Gcov;
-      Gcov.row(0) = 0.5 * (1 - eta) * gA + 0.5 * (1 + eta) * gC;
-      Gcov.row(1) = 0.5 * (1 - xi) * gD + 0.5 * (1 + xi) * gB;
-      const Eigen::Matrix<double, 2, 12> Bs = Jinv * Gcov;
-      Kp.noalias() += (w * Bs.transpose() * Ss).lazyProduct(Bs);
+      if (!mystran) {
+        Eigen::Matrix<double, 2, 12> Gcov;
+        Gcov.row(0) = 0.5 * (1 - eta) * gA + 0.5 * (1 + eta) * gC;
+        Gcov.row(1) = 0.5 * (1 - xi) * gD + 0.5 * (1 + xi) * gB;
+        const Eigen::Matrix<double, 2, 12> Bs = Jinv * Gcov;
+        Kp.noalias() += (w * Bs.transpose() * Ss).lazyProduct(Bs);
+      }
 
       // Drilling penalty on theta_z - omega, omega = (v,x - u,y)/2 of the membrane field including
       // its incompatible modes (so that the exact in-plane bending of QM6 is not penalised).
@@ -202,6 +207,8 @@ NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot) {
         Kaa.noalias() += ((w * kd) * da.transpose()).lazyProduct(da);
       }
     }
+  // MYSTRAN's MIN4T bending + transverse shear instead of MITC4's (the coupling B above is kept).
+  if (mystran) Kp.noalias() += min4t_stiffness(g.p, Db, sec.S, mystran->cb_quad);
   // Drilling coupling at the centre (Hughes & Brezzi): G t A (theta_z - omega)^2 at xi = eta = 0,
   // where the incompatible modes do not rotate.
   if (sec.has_membrane) {
@@ -238,6 +245,17 @@ NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot) {
   apply_node_offsets<4>(d, K);
   rotate_local_to_basic<4>(g.R_BL, K);
   return K;
+}
+
+Eigen::Matrix<double, 24, 1> quad4_mystran_pressure_load(const Quad4Element& e, double q, const MystranPlate& mystran) {
+  const Geometry g = geometry(e);
+  const PlateVector4 f = min4t_pressure_load(g.p, e.section.D, e.section.S, mystran.cb_quad, q);
+  Eigen::Matrix<double, 24, 1> r;
+  for (int i = 0; i < 4; ++i) {
+    r.segment<3>(6 * i) = f[3 * i + pW] * g.R_BL.col(2);
+    r.segment<3>(6 * i + 3) = g.R_BL.leftCols<2>() * Eigen::Vector2d(f[3 * i + pRx], f[3 * i + pRy]);
+  }
+  return r;
 }
 
 std::array<double, 4> quad4_lumped_masses(const Quad4Element& e) {

@@ -52,18 +52,18 @@ Eigen::Matrix<double, 6, 1> shell_free_thermal_strains(const ShellSection& s, do
   return cod.solve(r);
 }
 
-Eigen::Matrix<double, 24, 1> quad4_thermal_load(const Quad4Element& e, double dT, double k6rot) {
+Eigen::Matrix<double, 24, 1> quad4_thermal_load(const Quad4Element& e, double dT, double k6rot, const MystranPlate* mystran) {
   const auto& x = e.x;
   const Eigen::Matrix<double, 24, 1> u =
       free_deformation<4>(x, (x[2] - x[0]).cross(x[3] - x[1]), shell_free_thermal_strains(e.section, dT));
-  return quad4_stiffness(e, k6rot) * u;
+  return quad4_stiffness(e, k6rot, mystran) * u;
 }
 
-Eigen::Matrix<double, 18, 1> tria3_thermal_load(const Tria3Element& e, double dT, double k6rot) {
+Eigen::Matrix<double, 18, 1> tria3_thermal_load(const Tria3Element& e, double dT, double k6rot, const MystranPlate* mystran) {
   const auto& x = e.x;
   const Eigen::Matrix<double, 18, 1> u =
       free_deformation<3>(x, (x[1] - x[0]).cross(x[2] - x[0]), shell_free_thermal_strains(e.section, dT));
-  return tria3_stiffness(e, k6rot) * u;
+  return tria3_stiffness(e, k6rot, mystran) * u;
 }
 
 }  // namespace seflex::fem

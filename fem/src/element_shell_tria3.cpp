@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "model_lookup.hpp"
+#include "seflex/fem/element_plate_min3.hpp"
 #include "seflex/common/error.hpp"
 
 namespace seflex::fem {
@@ -42,7 +43,7 @@ Geometry geometry(const Tria3Element& e) {
 
 }  // namespace
 
-NodeMatrix<3> tria3_stiffness(const Tria3Element& e, double k6rot) {
+NodeMatrix<3> tria3_stiffness(const Tria3Element& e, double k6rot, const MystranPlate* mystran) {
   const Geometry g = geometry(e);
   const ShellSection& sec = e.section;
   const double A = g.area;
@@ -61,7 +62,7 @@ NodeMatrix<3> tria3_stiffness(const Tria3Element& e, double k6rot) {
     Bb(2, 6 * i + kRx) = -g.b[i];
   }
   K.noalias() += A * Bm.transpose() * sec.A * Bm;
-  K.noalias() += A * Bb.transpose() * sec.D * Bb;
+  if (!mystran) K.noalias() += A * Bb.transpose() * sec.D * Bb;
   if (!sec.B.isZero(0.0)) {  // membrane-bending coupling
     const Eigen::Matrix<double, 18, 18> Kmb = A * Bm.transpose() * sec.B * Bb;
     K.noalias() += Kmb + Kmb.transpose();
@@ -99,7 +100,7 @@ NodeMatrix<3> tria3_stiffness(const Tria3Element& e, double k6rot) {
     Eigen::Matrix<double, 2, 3> P;
     P << 1, 0, -x.y(), 0, 1, x.x();
     const Eigen::Matrix<double, 2, 18> Bs = P * C;
-    K.noalias() += (A / 3.0) * Bs.transpose() * Ss * Bs;
+    if (!mystran) K.noalias() += (A / 3.0) * Bs.transpose() * Ss * Bs;
     if (kd > 0.0) {
       // Linear shape functions at the midpoint of edge (q, q+1): 1/2, 1/2, 0.
       Row18 d = Row18::Zero();
@@ -122,9 +123,28 @@ NodeMatrix<3> tria3_stiffness(const Tria3Element& e, double k6rot) {
     }
     K.noalias() += (A * sec.drill_Gt) * d.transpose() * d;
   }
+  if (mystran) {  // MYSTRAN's MIN3 bending + transverse shear instead of MITC3's
+    const PlateMatrix3 Kp = min3_stiffness(g.p, sec.D, sec.S, mystran->cb_tria);
+    constexpr int dof[3] = {kW, kRx, kRy};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        for (int a = 0; a < 3; ++a)
+          for (int b = 0; b < 3; ++b) K(6 * i + dof[a], 6 * j + dof[b]) += Kp(3 * i + a, 3 * j + b);
+  }
   K = 0.5 * (K + K.transpose()).eval();
   rotate_local_to_basic<3>(g.R_BL, K);
   return K;
+}
+
+Eigen::Matrix<double, 18, 1> tria3_mystran_pressure_load(const Tria3Element& e, double q, const MystranPlate&) {
+  const Geometry g = geometry(e);
+  const PlateVector3 f = min3_pressure_load(g.p, q);
+  Eigen::Matrix<double, 18, 1> r;
+  for (int i = 0; i < 3; ++i) {
+    r.segment<3>(6 * i) = f[3 * i] * g.R_BL.col(2);
+    r.segment<3>(6 * i + 3) = g.R_BL.leftCols<2>() * Eigen::Vector2d(f[3 * i + 1], f[3 * i + 2]);
+  }
+  return r;
 }
 
 NodeMatrix<3> tria3_mass(const Tria3Element& e, MassKind kind) {

@@ -5,6 +5,7 @@
 #include "finalize_unsupported.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <set>
 #include <string>
@@ -476,17 +477,23 @@ class Finalizer {
 
   /// The parameters seflex reads (param_number and the AUTOSPC / INREL lookups).
   static const std::set<std::string>& used_params() {
-    static const std::set<std::string> names = {"WTMASS", "COUPMASS", "K6ROT", "GRDPNT", "AUTOSPC", "CK2", "CM2", "INREL"};
+    static const std::set<std::string> names = {"WTMASS", "COUPMASS", "K6ROT", "GRDPNT", "AUTOSPC", "CK2", "CM2", "INREL",
+                                                   "QUAD4TYP"};
     return names;
   }
 
   void check_params() {
+    // MYSTRAN's plate elements: QUAD4TYP MIN4T (other values refused here) and then its shear factors
+    const bool mystran = mystran_plate_elements(m_);
+    auto used = [&](const std::string& name) {
+      return used_params().count(name) || (mystran && (name == "CBMIN3" || name == "CBMIN4T"));
+    };
     std::unordered_map<std::string, const Param*> first;
     for (const auto& p : m_.params) {
       const auto [it, inserted] = first.emplace(p.name, &p);
       // Two values of a parameter seflex does not use are Nastran's business (subcase-level PARAMs
       // in the case control, e.g.); of one it uses, ambiguous.
-      if (!inserted && it->second->values != p.values && used_params().count(p.name))
+      if (!inserted && it->second->values != p.values && used(p.name))
         throw InputError(where(m_, p.ref), "PARAM " + p.name + ": a second value (the first, at " + at(it->second->ref) +
                                                ", differs); expected one value per parameter");
     }
@@ -505,11 +512,8 @@ class Finalizer {
     if (first.count("WTMASS") && !(number("WTMASS", 1.0, false) > 0.0)) bad("WTMASS", "a mass factor > 0");
     if (first.count("K6ROT") && !(number("K6ROT", 0.0, false) >= 0.0)) bad("K6ROT", "a stiffness factor >= 0");
     if (first.count("COUPMASS")) number("COUPMASS", -1.0, true);
-    if (first.count("GRDPNT")) {
-      const int g = static_cast<int>(number("GRDPNT", -1.0, true));
-      if (g < -1) bad("GRDPNT", "-1 (off), 0 (basic origin) or a grid id");
-      // a GRDPNT naming no grid means the basic origin, as in Nastran (reduction::check_card_usage warns)
-    }
+    if (mystran && first.count("CBMIN3") && !(number("CBMIN3", 2.0, false) > 0.0)) bad("CBMIN3", "a shear factor > 0");
+    if (mystran && first.count("CBMIN4T") && !(number("CBMIN4T", 3.6, false) > 0.0)) bad("CBMIN4T", "a shear factor > 0");
   }
 
   Model& m_;
@@ -560,6 +564,23 @@ double param_number(const Model& model, const std::string& name, double fallback
     return x;
   }
   return fallback;
+}
+
+bool mystran_plate_elements(const Model& model) {
+  for (const auto& p : model.params) {
+    if (p.name != "QUAD4TYP") continue;
+    std::string v = p.values.empty() ? std::string() : p.values[0];
+    for (char& c : v) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (v == "MIN4T") return true;
+    if (v == "MIN4")
+      throw InputError(where(model, p.ref), "PARAM QUAD4TYP, field 3 (V1): MIN4 (Tessler's MIN4 quadrilateral) is not "
+                                            "available in seflex; expected MIN4T (MYSTRAN's default: CQUAD4 = 4 MIN3 "
+                                            "triangles, CTRIA3 = MIN3)");
+    throw InputError(where(model, p.ref), "PARAM QUAD4TYP, field 3 (V1): got '" + v +
+                                              "'; expected MIN4T (MYSTRAN's plate elements; without the PARAM seflex "
+                                              "uses MITC4/MITC3)");
+  }
+  return false;
 }
 
 void finalize(Model& model) { Finalizer(model).run(); }

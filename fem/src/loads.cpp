@@ -10,6 +10,8 @@
 #include "seflex/common/error.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/bar_line_load.hpp"
+#include "seflex/fem/element_shell_quad4.hpp"
+#include "seflex/fem/element_shell_tria3.hpp"
 #include "seflex/fem/enforced_motion.hpp"
 #include "seflex/fem/finalize.hpp"
 
@@ -127,6 +129,8 @@ class LoadBuilder {
   }
 
   void shell_pressure(const Shell& s, const PressureLoad& l, double scale) {
+    if (!mystran_) mystran_ = assembly_options(m_).mystran_plate;
+    if (*mystran_) return mystran_pressure(s, l, scale, **mystran_);
     const char* card = s.nnode == 4 ? "CQUAD4" : "CTRIA3";
     std::array<std::uint32_t, 4> gi{};
     std::array<Eigen::Vector3d, 4> x;
@@ -158,6 +162,23 @@ class LoadBuilder {
         }
     }
     for (int k = 0; k < s.nnode; ++k) add_grid(gi[k], 1, f[k], scale, p_);
+  }
+
+  /// PARAM QUAD4TYP MIN4T: the work-equivalent load of MIN4T / MIN3 (forces and corner moments).
+  void mystran_pressure(const Shell& s, const PressureLoad& l, double scale, const MystranPlate& mystran) {
+    const char* card = s.nnode == 4 ? "CQUAD4" : "CTRIA3";
+    std::array<std::uint32_t, 4> gi{};
+    for (int k = 0; k < s.nnode; ++k)
+      gi[k] = detail::grid_index(m_, s.g[k], s.ref, card, s.id, std::to_string(k + 4) + " (G" + std::to_string(k + 1) + ")");
+    Eigen::Matrix<double, 24, 1> f;
+    if (s.nnode == 4)
+      f = quad4_mystran_pressure_load(make_quad4_element(m_, s), l.p, mystran);
+    else
+      f.head<18>() = tria3_mystran_pressure_load(make_tria3_element(m_, s), l.p, mystran);
+    for (int k = 0; k < s.nnode; ++k) {
+      add_grid(gi[k], 1, f.segment<3>(6 * k), scale, p_);
+      add_grid(gi[k], 4, f.segment<3>(6 * k + 3), scale, p_);
+    }
   }
 
   // -------------------------------------------------------------------------------------------
@@ -238,6 +259,7 @@ class LoadBuilder {
   std::vector<std::optional<Eigen::Matrix3d>> cd_;
   std::optional<std::unordered_map<int, std::size_t>> shell_index_, solid_index_;
   std::optional<Eigen::VectorXd> acc_;
+  std::optional<std::optional<MystranPlate>> mystran_;  ///< PARAM QUAD4TYP MIN4T, read at the first PLOAD2
 };
 
 }  // namespace

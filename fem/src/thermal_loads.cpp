@@ -90,8 +90,8 @@ class ThermalLoads {
       if (!used.count(eid))
         detail::fail(m_, t->ref, "TEMPRB", t->sid, "EID",
                      "element " + std::to_string(eid) + " is not a CBAR, CBEAM, CROD or CONROD; expected one of them");
-    const double k6rot = assembly_options(m_).k6rot;
-    for (const Shell& s : m_.shells) shell(s, k6rot);
+    const AssemblyOptions options = assembly_options(m_);
+    for (const Shell& s : m_.shells) shell(s, options.k6rot, options.mystran_plate ? &*options.mystran_plate : nullptr);
     for (const Solid& s : m_.solids) solid(s);
     return p_;
   }
@@ -114,7 +114,7 @@ class ThermalLoads {
 
   /// A CQUAD4/CTRIA3: the mean of its grids' temperatures (QRG TEMP: the element temperature of a
   /// shell without TEMPPi), uniform through the thickness, from the section's TREF.
-  void shell(const Shell& s, double k6rot) {
+  void shell(const Shell& s, double k6rot, const MystranPlate* mystran) {
     const ShellSection section = make_shell_section(m_, s);
     const char* card = s.nnode == 4 ? "CQUAD4" : "CTRIA3";
     const bool mid4_expands = pshell_mid4_expands(s);
@@ -129,9 +129,9 @@ class ThermalLoads {
                        " has a MID4 (membrane-bending coupling) material with thermal expansion, whose thermal moment "
                        "seflex does not compute; expected ALPHA blank on MID4's material");
     if (s.nnode == 4)
-      scatter(s.g.data(), 4, quad4_thermal_load(make_quad4_element(m_, s, &section), dT, k6rot));
+      scatter(s.g.data(), 4, quad4_thermal_load(make_quad4_element(m_, s, &section), dT, k6rot, mystran));
     else
-      scatter(s.g.data(), 3, tria3_thermal_load(make_tria3_element(m_, s, &section), dT, k6rot));
+      scatter(s.g.data(), 3, tria3_thermal_load(make_tria3_element(m_, s, &section), dT, k6rot, mystran));
   }
 
   /// A PSHELL's MID4 (membrane-bending coupling) with thermal expansion: its thermal moment is not

@@ -503,7 +503,9 @@ class Classifier {
           !m_.grid_index.count(std::atoi(p.values[0].c_str())))
         report_.add(Kind::Unused, "PARAM GRDPNT", p.ref,
                     "grid " + p.values[0] + " is not defined; the mass properties (seflex info) use the basic origin, as Nastran does");
-      if (kUsed.count(p.name)) continue;
+      if (kUsed.count(p.name) || p.name == "QUAD4TYP") continue;
+      // the shear factors of MYSTRAN's plate elements, used with QUAD4TYP MIN4T only
+      if ((p.name == "CBMIN3" || p.name == "CBMIN4T") && fem::mystran_plate_elements(m_)) continue;
       ++count;
       if (std::tie(p.ref.file, p.ref.line) < std::tie(first.file, first.line)) first = p.ref;
       if (seen.insert(p.name).second && seen.size() <= 12) names += (seen.size() > 1 ? ", " : "") + p.name;

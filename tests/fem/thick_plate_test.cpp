@@ -174,7 +174,7 @@ TEST(ThickPlate, QuadModesConvergeToMindlin) {
   const double ref[4] = {mindlin_hz(1, 1), mindlin_hz(1, 3), mindlin_hz(3, 1), mindlin_hz(3, 3)};
   // Largest error of the four (mode (3,3), 1.5 half-waves on the quarter), falling as h^2:
   // -12.7 %, -3.3 %, -0.85 % (the lumped mass lowers it; the coupled mass gives +21 % at 4 x 4).
-  // f11 at the 4 x 4 mesh of AQ3U2S004: -1.33 % (MYSTRAN's MIN4 -0.0 %).
+  // f11 at the 4 x 4 mesh of AQ3U2S004: -1.33 % (MYSTRAN's MIN4T -0.0 %, mystran_plate_test.cpp).
   const double tol[3] = {0.135, 0.036, 0.0095};
   double prev = 1.0;
   for (int k = 0; k < 3; ++k) {

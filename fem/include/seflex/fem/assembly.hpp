@@ -16,6 +16,7 @@
 // constraints (constraints.hpp). Cards in Model::unsupported are ignored here. DMIG matrices the
 // case control selects (K2GG, M2GG) are added afterwards (dmig.hpp).
 #include <Eigen/SparseCore>
+#include <optional>
 
 #include "seflex/fem/dof_map.hpp"
 #include "seflex/fem/element_common.hpp"
@@ -28,10 +29,16 @@ struct AssemblyOptions {
   double wtmass = 1.0;               ///< PARAM WTMASS: multiplies every mass term
   double k6rot = 100.0;              ///< PARAM K6ROT: drilling stiffness factor of CQUAD4/CTRIA3
   bool prune_zeros = true;           ///< drop exact zeros from K and M after assembly
+  /// PARAM QUAD4TYP MIN4T (MYSTRAN's parameter; absent: seflex's MITC4/MITC3, Nastran-like): CQUAD4
+  /// bending + transverse shear by MIN4T, CTRIA3's by MIN3, PLOAD2 their work-equivalent load
+  /// (forces and corner moments). Shear factors (MYSTRAN's PARAMs and defaults): CTRIA3 PARAM CBMIN3
+  /// (2.0), the four MIN3 sub-triangles of a CQUAD4 PARAM CBMIN4T (3.6; with it MYSTRAN 12.0's
+  /// AQ3U2S004 eigenvalues are reproduced to 7 digits, with 2.0 they are 0.6-4 % off).
+  std::optional<MystranPlate> mystran_plate;
 };
 
-/// Options from the model's PARAMs (COUPMASS, WTMASS, K6ROT); defaults as above when absent.
-/// Throws InputError for a non-numeric or non-positive WTMASS, or a negative K6ROT.
+/// Options from the model's PARAMs (COUPMASS, WTMASS, K6ROT, QUAD4TYP, CBMIN3, CBMIN4T); defaults as above
+/// when absent. Throws InputError for a non-numeric or non-positive WTMASS, or a negative K6ROT.
 AssemblyOptions assembly_options(const Model& model);
 
 struct GlobalMatrices {

@@ -15,6 +15,14 @@ namespace seflex::fem {
 /// Nastran's default lumped mass or, with PARAM COUPMASS > 0, the coupled (consistent) mass.
 enum class MassKind : unsigned char { Lumped, Coupled };
 
+/// PARAM QUAD4TYP MIN4T: MYSTRAN's plate bending + transverse shear elements instead of MITC4/MITC3
+/// (CQUAD4: MIN4T, element_plate_min4t.hpp; CTRIA3: MIN3, element_plate_min3.hpp), with their shear
+/// factors (assembly.hpp: mystran_plate).
+struct MystranPlate {
+  double cb_tria = 2.0;  ///< CTRIA3 (MIN3): PARAM CBMIN3
+  double cb_quad = 3.6;  ///< the four MIN3 sub-triangles of CQUAD4 (MIN4T): PARAM CBMIN4T
+};
+
 using Matrix6 = Eigen::Matrix<double, 6, 6>;
 template <int N>
 using NodeMatrix = Eigen::Matrix<double, 6 * N, 6 * N>;  ///< element matrix on N nodes x 6 dofs

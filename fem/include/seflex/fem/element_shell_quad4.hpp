@@ -54,8 +54,12 @@ struct Quad4Element {
   ShellSection section;                ///< in element axes (e1 along the projected G1-G2 edge)
 };
 
-/// Stiffness (24 x 24, basic). k6rot: PARAM K6ROT.
-NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot);
+/// Stiffness (24 x 24, basic). k6rot: PARAM K6ROT. mystran (PARAM QUAD4TYP MIN4T): MIN4T bending
+/// and transverse shear (element_plate_min4t.hpp) instead of MITC4's; the rest unchanged.
+NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot, const MystranPlate* mystran = nullptr);
+/// Work-equivalent load (24, basic) of a uniform pressure q along the normal e3 of MIN4T
+/// (PARAM QUAD4TYP MIN4T): forces along e3 and moments about the corners (element_plate_min4t.hpp).
+Eigen::Matrix<double, 24, 1> quad4_mystran_pressure_load(const Quad4Element& e, double q, const MystranPlate& mystran);
 /// Mass (24 x 24, basic), before WTMASS.
 NodeMatrix<4> quad4_mass(const Quad4Element& e, MassKind kind);
 /// Lumped translational mass of each corner (int N_i dA (rho t + NSM)), before WTMASS.

@@ -24,10 +24,13 @@
 namespace seflex::fem {
 
 /// Equivalent grid loads (24, basic, 6 per grid) of a uniform temperature rise dT (T - section tref)
-/// of a CQUAD4. k6rot: PARAM K6ROT (the drilling terms vanish on the free deformation).
-Eigen::Matrix<double, 24, 1> quad4_thermal_load(const Quad4Element& e, double dT, double k6rot);
+/// of a CQUAD4. k6rot: PARAM K6ROT (the drilling terms vanish on the free deformation); mystran: the
+/// element of PARAM QUAD4TYP MIN4T (quad4_stiffness).
+Eigen::Matrix<double, 24, 1> quad4_thermal_load(const Quad4Element& e, double dT, double k6rot,
+                                                const MystranPlate* mystran = nullptr);
 /// The same for a CTRIA3 (18, basic).
-Eigen::Matrix<double, 18, 1> tria3_thermal_load(const Tria3Element& e, double dT, double k6rot);
+Eigen::Matrix<double, 18, 1> tria3_thermal_load(const Tria3Element& e, double dT, double k6rot,
+                                                const MystranPlate* mystran = nullptr);
 
 /// Section strains (eps0 xx yy xy, kappa xx yy xy; element axes) of the free thermal deformation of
 /// a section under dT (least-squares solution when the section has no bending stiffness).

@@ -31,7 +31,12 @@ struct Tria3Element {
   ShellSection section;
 };
 
-NodeMatrix<3> tria3_stiffness(const Tria3Element& e, double k6rot);  ///< 18 x 18, basic
+/// Stiffness (18 x 18, basic). mystran (PARAM QUAD4TYP MIN4T): MIN3 bending and transverse shear
+/// (element_plate_min3.hpp) instead of MITC3's; the rest unchanged.
+NodeMatrix<3> tria3_stiffness(const Tria3Element& e, double k6rot, const MystranPlate* mystran = nullptr);
+/// Work-equivalent load (18, basic) of a uniform pressure q along the normal of MIN3 (PARAM
+/// QUAD4TYP MIN4T): forces along the normal and corner moments (element_plate_min3.hpp).
+Eigen::Matrix<double, 18, 1> tria3_mystran_pressure_load(const Tria3Element& e, double q, const MystranPlate& mystran);
 NodeMatrix<3> tria3_mass(const Tria3Element& e, MassKind kind);      ///< before WTMASS
 
 /// Resolve a CTRIA3 of a finalized model; throws InputError for undefined references, repeated

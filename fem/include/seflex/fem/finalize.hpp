@@ -45,4 +45,9 @@ Eigen::Vector3d to_basic(const Model& model, int cid, const Eigen::Vector3d& x);
 /// name counts (finalize rejects two with different values). Throws InputError if not a number.
 double param_number(const Model& model, const std::string& name, double fallback);
 
+/// Whether PARAM QUAD4TYP MIN4T asks for MYSTRAN's plate elements (assembly.hpp: mystran_plate).
+/// Throws InputError naming the card for QUAD4TYP MIN4 (Tessler's MIN4 quad, not available) or any
+/// other value than MIN4T.
+bool mystran_plate_elements(const Model& model);
+
 }  // namespace seflex::fem

@@ -17,6 +17,11 @@
 //                               the CQUAD4's total force "is distributed to corner grid points using
 //                               the geometric shape of the element"), and it is the consistent load
 //                               of MITC4/MITC3, whose deflection comes from the corner deflections.
+//                               With PARAM QUAD4TYP MIN4T (MYSTRAN's plate elements, assembly.hpp)
+//                               the work-equivalent load of MIN4T/MIN3 instead: forces along the
+//                               normal AND corner moments (their deflection depends on the corner
+//                               rotations; element_plate_min3.hpp, element_plate_min4t.hpp), on the
+//                               quad's mean plane.
 // GRAV   SID CID A N1 N2 N3:    acceleration g = A (N1, N2, N3) (magnitude A |N|, MSC QRG GRAV) in
 //                               rectangular system CID, applied to every mass:  p = M a_g.
 // RFORCE SID G CID A R1 R2 R3 METHOD / RACC: steady rotation w = 2 pi A R and angular acceleration
