@@ -249,13 +249,7 @@ NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot, const Mystran
 
 Eigen::Matrix<double, 24, 1> quad4_mystran_pressure_load(const Quad4Element& e, double q, const MystranPlate& mystran) {
   const Geometry g = geometry(e);
-  const PlateVector4 f = min4t_pressure_load(g.p, e.section.D, e.section.S, mystran.cb_quad, q);
-  Eigen::Matrix<double, 24, 1> r;
-  for (int i = 0; i < 4; ++i) {
-    r.segment<3>(6 * i) = f[3 * i + pW] * g.R_BL.col(2);
-    r.segment<3>(6 * i + 3) = g.R_BL.leftCols<2>() * Eigen::Vector2d(f[3 * i + pRx], f[3 * i + pRy]);
-  }
-  return r;
+  return plate_load_to_basic<4>(g.R_BL, min4t_pressure_load(g.p, e.section.D, e.section.S, mystran.cb_quad, q));
 }
 
 std::array<double, 4> quad4_lumped_masses(const Quad4Element& e) {

@@ -136,15 +136,9 @@ NodeMatrix<3> tria3_stiffness(const Tria3Element& e, double k6rot, const Mystran
   return K;
 }
 
-Eigen::Matrix<double, 18, 1> tria3_mystran_pressure_load(const Tria3Element& e, double q, const MystranPlate&) {
+Eigen::Matrix<double, 18, 1> tria3_mystran_pressure_load(const Tria3Element& e, double q) {
   const Geometry g = geometry(e);
-  const PlateVector3 f = min3_pressure_load(g.p, q);
-  Eigen::Matrix<double, 18, 1> r;
-  for (int i = 0; i < 3; ++i) {
-    r.segment<3>(6 * i) = f[3 * i] * g.R_BL.col(2);
-    r.segment<3>(6 * i + 3) = g.R_BL.leftCols<2>() * Eigen::Vector2d(f[3 * i + 1], f[3 * i + 2]);
-  }
-  return r;
+  return plate_load_to_basic<3>(g.R_BL, min3_pressure_load(g.p, q));
 }
 
 NodeMatrix<3> tria3_mass(const Tria3Element& e, MassKind kind) {

@@ -174,7 +174,7 @@ class LoadBuilder {
     if (s.nnode == 4)
       f = quad4_mystran_pressure_load(make_quad4_element(m_, s), l.p, mystran);
     else
-      f.head<18>() = tria3_mystran_pressure_load(make_tria3_element(m_, s), l.p, mystran);
+      f.head<18>() = tria3_mystran_pressure_load(make_tria3_element(m_, s), l.p);
     for (int k = 0; k < s.nnode; ++k) {
       add_grid(gi[k], 1, f.segment<3>(6 * k), scale, p_);
       add_grid(gi[k], 4, f.segment<3>(6 * k + 3), scale, p_);

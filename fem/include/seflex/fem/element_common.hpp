@@ -27,6 +27,18 @@ using Matrix6 = Eigen::Matrix<double, 6, 6>;
 template <int N>
 using NodeMatrix = Eigen::Matrix<double, 6 * N, 6 * N>;  ///< element matrix on N nodes x 6 dofs
 
+/// A plate load (w, theta_x, theta_y per corner, element axes) as grid loads (6 per corner, basic):
+/// w along e3, the moments in the e1-e2 plane; R_BL has the element axes e1 e2 e3 as columns.
+template <int N>
+Eigen::Matrix<double, 6 * N, 1> plate_load_to_basic(const Eigen::Matrix3d& R_BL, const Eigen::Matrix<double, 3 * N, 1>& f) {
+  Eigen::Matrix<double, 6 * N, 1> r;
+  for (int i = 0; i < N; ++i) {
+    r.template segment<3>(6 * i) = f[3 * i] * R_BL.col(2);
+    r.template segment<3>(6 * i + 3) = R_BL.template leftCols<2>() * Eigen::Vector2d(f[3 * i + 1], f[3 * i + 2]);
+  }
+  return r;
+}
+
 /// Rigid link: dofs of a point P from the dofs of node O with d = p_P - p_O (any common frame):
 /// u_P = u_O + theta_O x d, theta_P = theta_O, i.e. q_P = rigid_link(d) q_O.
 inline Matrix6 rigid_link(const Eigen::Vector3d& d) {

@@ -35,8 +35,9 @@ struct Tria3Element {
 /// (element_plate_min3.hpp) instead of MITC3's; the rest unchanged.
 NodeMatrix<3> tria3_stiffness(const Tria3Element& e, double k6rot, const MystranPlate* mystran = nullptr);
 /// Work-equivalent load (18, basic) of a uniform pressure q along the normal of MIN3 (PARAM
-/// QUAD4TYP MIN4T): forces along the normal and corner moments (element_plate_min3.hpp).
-Eigen::Matrix<double, 18, 1> tria3_mystran_pressure_load(const Tria3Element& e, double q, const MystranPlate& mystran);
+/// QUAD4TYP MIN4T): forces along the normal and corner moments (element_plate_min3.hpp; MIN3's
+/// load does not depend on the shear factor).
+Eigen::Matrix<double, 18, 1> tria3_mystran_pressure_load(const Tria3Element& e, double q);
 NodeMatrix<3> tria3_mass(const Tria3Element& e, MassKind kind);      ///< before WTMASS
 
 /// Resolve a CTRIA3 of a finalized model; throws InputError for undefined references, repeated
