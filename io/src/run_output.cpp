@@ -17,6 +17,14 @@ std::string num(double x) {
   return std::string(buf, r.ptr);
 }
 
+/// row += "," + num(x), without a temporary.
+void append_field(std::string& row, double x) {
+  char buf[32];
+  buf[0] = ',';
+  const auto r = std::to_chars(buf + 1, buf + sizeof buf, x);
+  row.append(buf, r.ptr);
+}
+
 std::string csv_field(const std::string& s) {
   if (s.find_first_of(",\"\n") == std::string::npos) return s;
   std::string q = "\"";
@@ -126,7 +134,7 @@ RunOutput::RunOutput(const Scene& scene, const RunOutputOptions& o) : scene_(sce
   }
 }
 
-RunOutput::~RunOutput() = default;
+RunOutput::~RunOutput() = default;  // the streams flush as they close
 
 void RunOutput::on_sample(const mbd::Model& model, const mbd::Sample& s) {
   ++samples_;
@@ -137,6 +145,7 @@ void RunOutput::on_sample(const mbd::Model& model, const mbd::Sample& s) {
   write_history(model, s);
   write_poses(s);
   write_animation(s);
+  flush_if_due();
 }
 
 void RunOutput::track_locks(const mbd::Model& model, const mbd::Sample& s) {
@@ -165,48 +174,64 @@ void RunOutput::track_locks(const mbd::Model& model, const mbd::Sample& s) {
 }
 
 void RunOutput::write_history(const mbd::Model& m, const mbd::Sample& s) {
-  std::string row = num(s.t);
+  std::string& row = row_;  // reused: no allocation once it has grown to a row's length
+  row = num(s.t);
   for (std::size_t i = 0; i < s.hinges.size(); ++i) {
     const mbd::HingeSample& h = s.hinges[i];
-    row += "," + num(h.phi * kRad2Deg) + "," + num(h.phidot * kRad2Deg);
-    if (m.hinges[i].drive) row += "," + num(h.drive_torque);
+    append_field(row, h.phi * kRad2Deg);
+    append_field(row, h.phidot * kRad2Deg);
+    if (m.hinges[i].drive) append_field(row, h.drive_torque);
   }
   for (std::size_t i = 0; i < m.force_elements.size(); ++i) {
     const mbd::ElementSample& e = s.elements[i];
-    row += "," + num(e.value);
+    append_field(row, e.value);
     if (const auto* c = as_cable(m.force_elements[i].element)) {
       const auto [T1, T2] = tensions(*c, s);
-      row += "," + num(T1) + "," + num(T2);
-      for (double tau : e.hinge_torques) row += "," + num(tau);
+      append_field(row, T1);
+      append_field(row, T2);
+      for (double tau : e.hinge_torques) append_field(row, tau);
     }
     if (std::holds_alternative<mbd::HingeLock>(m.force_elements[i].element)) row += e.latched ? ",1" : ",0";
   }
   const mbd::Energies& E = s.energy;
-  row += "," + num(E.kinetic) + "," + num(E.elastic) + "," + num(E.spring) + "," + num(E.gravity) + "," + num(E.total());
-  row += "," + std::to_string(s.newton_iterations) + "," + num(s.step_size) + "\n";
+  for (double x : {E.kinetic, E.elastic, E.spring, E.gravity, E.total()}) append_field(row, x);
+  row += ',';
+  row += std::to_string(s.newton_iterations);
+  append_field(row, s.step_size);
+  row += '\n';
   history_ << row;
-  history_.flush();
 }
 
 void RunOutput::write_poses(const mbd::Sample& s) {
   const auto& d = scene_.description;
+  std::string& row = row_;
   for (std::size_t b = 0; b < d.bodies.size(); ++b) {
     const SceneBodyRef& r = scene_.bodies[b];
     const mbd::Pose& X = r.rigid ? s.rigid[static_cast<std::size_t>(r.index)].frame : s.flexible[static_cast<std::size_t>(r.index)].frame;
-    std::string row = num(s.t) + "," + csv_field(d.bodies[b].name);
+    row = num(s.t);
+    row += ',';
+    row += csv_field(d.bodies[b].name);
     for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) row += "," + num(X.R(i, j));
-    for (int i = 0; i < 3; ++i) row += "," + num(X.p(i));
+      for (int j = 0; j < 3; ++j) append_field(row, X.R(i, j));
+    for (int i = 0; i < 3; ++i) append_field(row, X.p(i));
     int nq = 0;
     if (!r.rigid) {
       const Eigen::VectorXd& xi = s.flexible[static_cast<std::size_t>(r.index)].xi;
-      for (Eigen::Index k = 0; k < xi.size(); ++k) row += "," + num(xi(k));
+      for (Eigen::Index k = 0; k < xi.size(); ++k) append_field(row, xi(k));
       nq = static_cast<int>(xi.size());
     }
-    for (int k = nq; k < max_q_; ++k) row += ",";
-    poses_ << row << "\n";
+    for (int k = nq; k < max_q_; ++k) row += ',';
+    row += '\n';
+    poses_ << row;
   }
+}
+
+void RunOutput::flush_if_due() {
+  const auto now = std::chrono::steady_clock::now();
+  if (now - last_flush_ < kFlushInterval) return;
+  history_.flush();
   poses_.flush();
+  last_flush_ = now;
 }
 
 void RunOutput::write_animation(const mbd::Sample& s) {
@@ -244,6 +269,8 @@ void RunOutput::event(double t, const std::string& kind, const std::string& name
 }
 
 void RunOutput::finish(const RunEnd& end) {
+  history_.flush();
+  poses_.flush();
   const mbd::Model& m = scene_.model;
   const long steps = end.stats ? end.stats->steps : steps_;
   const long newton = end.stats ? end.stats->newton_iterations : newton_;
