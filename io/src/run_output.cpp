@@ -134,7 +134,7 @@ RunOutput::RunOutput(const Scene& scene, const RunOutputOptions& o) : scene_(sce
   }
 }
 
-RunOutput::~RunOutput() = default;  // the streams flush as they close
+RunOutput::~RunOutput() { write_out(); }  // a run that ends by an exception keeps its rows
 
 void RunOutput::on_sample(const mbd::Model& model, const mbd::Sample& s) {
   ++samples_;
@@ -199,7 +199,7 @@ void RunOutput::write_history(const mbd::Model& m, const mbd::Sample& s) {
   row += std::to_string(s.newton_iterations);
   append_field(row, s.step_size);
   row += '\n';
-  history_ << row;
+  history_buf_ += row;
 }
 
 void RunOutput::write_poses(const mbd::Sample& s) {
@@ -222,16 +222,24 @@ void RunOutput::write_poses(const mbd::Sample& s) {
     }
     for (int k = nq; k < max_q_; ++k) row += ',';
     row += '\n';
-    poses_ << row;
+    poses_buf_ += row;
   }
 }
 
 void RunOutput::flush_if_due() {
   const auto now = std::chrono::steady_clock::now();
-  if (now - last_flush_ < kFlushInterval) return;
+  if (now - last_flush_ < kFlushInterval && history_buf_.size() + poses_buf_.size() < kBufferBytes) return;
+  write_out();
+  last_flush_ = now;
+}
+
+void RunOutput::write_out() {
+  history_ << history_buf_;
+  poses_ << poses_buf_;
+  history_buf_.clear();  // keeps its capacity
+  poses_buf_.clear();
   history_.flush();
   poses_.flush();
-  last_flush_ = now;
 }
 
 void RunOutput::write_animation(const mbd::Sample& s) {
@@ -269,8 +277,7 @@ void RunOutput::event(double t, const std::string& kind, const std::string& name
 }
 
 void RunOutput::finish(const RunEnd& end) {
-  history_.flush();
-  poses_.flush();
+  write_out();
   const mbd::Model& m = scene_.model;
   const long steps = end.stats ? end.stats->steps : steps_;
   const long newton = end.stats ? end.stats->newton_iterations : newton_;
