@@ -7,13 +7,17 @@
 // derivative on both sides of the series/closed-form switch), nonzero multipliers. Then the whole
 // assembled K with the analytic tangents against the one with fd_joint_jacobians.
 //
-// Error of the reference: step eps = 1e-6 of each coordinate's natural scale; the functions are smooth,
-// so truncation eps^2 f''' / 6 ~ 1e-12 of the largest entry and round-off ~1e-16 |f| / eps ~ 1e-10 of
-// |f| per unit scale. The two agree to ~1e-9 of the largest entry when the analytic tangent is exact
-// (measured: at most 2e-8, printed: the reference differentiates so3::jl, whose closed form loses ~1e-13
-// to cancellation at small elastic rotations, divided by the step); a missing term (J_l^-1's or J_l's
-// derivative, the moment transport along a chain, the follower's rotation) is O(|theta|) ~ 1e-2..1 of
-// it. Asserted: 1e-7.
+// Error of the reference: step eps = 1e-4 of each coordinate's scale (below). Round-off, ~1e-16 |q| / eps
+// with |q| the element's generalized force, dominates at smaller steps: on the flexible chain with
+// consistent joints the largest difference is 3e-6, 3e-7, 4e-8, 3.5e-9 of the largest entry at eps =
+// 1e-7, 1e-6, 1e-5, 1e-4 (falling as 1/eps; the twist modes' rows carry the largest |q|); truncation,
+// eps^2 f''' / 6, is ~1e-9 at 1e-4 (the rigid chains, whose round-off is smaller). Measured at 1e-4:
+// at most 1.8e-9 (rigid), 3.9e-9 (flexible chain), 9.5e-9 (joint model; loads 1.7e-9), printed. A
+// missing term (J_l^-1's or J_l's derivative, the moment transport along a chain, the follower's
+// rotation) is 0.1..1 of the largest entry (J_l^-1's derivative but its constant part dropped: 0.13-0.2
+// on the rigid chains; J_l's: ~1 on the flexible ones). Asserted: 1e-7. The assembled K against the
+// assembly's own differences (fd_joint_jacobians, step 1e-6 of FfrfSystem::weight's scale) is compared
+// relative to the largest entry of the elements' tangents, without the columns of the twist modes.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -51,7 +55,8 @@ double coordinate_scale(const FfrfSystem& sys, int col) {
 }
 
 /// A state off the initial one (trial-dependent, deterministic): frames moved by 0.1 m and turned by
-/// up to `turn` rad per axis, modes at `deform` of their natural scale, velocities, multipliers of 50.
+/// up to `turn` rad per axis, hinge angles by up to `turn` rad, modes at `deform` of their natural
+/// scale, velocities, multipliers of 50.
 FfrfState random_state(const FfrfSystem& sys, int trial, double turn, double deform) {
   FfrfState s = ffrf_initial_state(sys);
   int c = 0;
@@ -63,14 +68,14 @@ FfrfState random_state(const FfrfSystem& sys, int trial, double turn, double def
   }
   for (const FfrfBody& b : sys.bodies)
     for (int i = 0; i < b.k; ++i) s.z[b.z_offset + i] = deform * r() * coordinate_scale(sys, b.coord + 6 + i);
-  for (Eigen::Index i = 0; i < s.phi.size(); ++i) s.phi[i] += r();
+  for (Eigen::Index i = 0; i < s.phi.size(); ++i) s.phi[i] += turn * r();
   for (Eigen::Index i = 0; i < s.v.size(); ++i) s.v[i] = r() / sys.weight[i];
   for (Eigen::Index i = 0; i < s.lambda.size(); ++i) s.lambda[i] = 50.0 * r();
   return s;
 }
 
 /// Central differences of q(s) (over `cols`) w.r.t. the coordinates cols (>= 0), as a dense matrix: step
-/// 1e-6 of the coordinate's scale.
+/// 1e-4 of the coordinate's scale.
 template <class Q>
 MatrixXd central_differences(const FfrfSystem& sys, FfrfState& s, const std::vector<int>& cols, Q&& q) {
   const auto n = static_cast<Eigen::Index>(cols.size());
@@ -78,7 +83,7 @@ MatrixXd central_differences(const FfrfSystem& sys, FfrfState& s, const std::vec
   for (Eigen::Index j = 0; j < n; ++j) {
     const int col = cols[static_cast<std::size_t>(j)];
     if (col < 0) continue;
-    const double eps = 1e-6 * coordinate_scale(sys, col);
+    const double eps = 1e-4 * coordinate_scale(sys, col);
     detail::Saved sv = detail::perturb(sys, s, col, eps);
     const VectorXd qp = q();
     detail::restore(sys, s, col, sv);
