@@ -18,6 +18,8 @@
 // on the rigid chains; J_l's: ~1 on the flexible ones). Asserted: 1e-7. The assembled K against the
 // assembly's own differences (fd_joint_jacobians, step 1e-6 of FfrfSystem::weight's scale) is compared
 // relative to the largest entry of the elements' tangents, without the columns of the twist modes.
+#include "ffrf/ffrf_joint_tangents.hpp"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -27,7 +29,6 @@
 
 #include "beam_superelement.hpp"
 #include "ffrf/ffrf_detail.hpp"
-#include "ffrf/ffrf_joint_tangents.hpp"
 #include "mbd_models.hpp"
 #include "pendulum_reference.hpp"
 #include "seflex/common/so3.hpp"
@@ -51,7 +52,8 @@ double coordinate_scale(const FfrfSystem& sys, int col) {
   if (sys.kind[static_cast<std::size_t>(col)] != 'e') return 1.0 / sys.weight[col];
   const FfrfBody& b = sys.bodies[static_cast<std::size_t>(sys.owner[static_cast<std::size_t>(col)])];
   const Eigen::Index i = col - b.coord - 6;
-  return 1.0 / std::max(sys.weight[col], b.V.col(i).head(6 * static_cast<Eigen::Index>(b.nodes.size())).cwiseAbs().maxCoeff());
+  return 1.0 / std::max(sys.weight[col],
+                        b.V.col(i).head(6 * static_cast<Eigen::Index>(b.nodes.size())).cwiseAbs().maxCoeff());
 }
 
 /// A state off the initial one (trial-dependent, deterministic): frames moved by 0.1 m and turned by
@@ -106,7 +108,9 @@ MatrixXd configuration_part(const MatrixXd& K, const std::vector<int>& cols) {
   return A;
 }
 
-double relative(const MatrixXd& A, const MatrixXd& F) { return (A - F).cwiseAbs().maxCoeff() / F.cwiseAbs().maxCoeff(); }
+double relative(const MatrixXd& A, const MatrixXd& F) {
+  return (A - F).cwiseAbs().maxCoeff() / F.cwiseAbs().maxCoeff();
+}
 
 /// The load's world wrench at s (as the assembly's).
 Vector6d load_wrench(const NodeLoad& load, const detail::PoseJ& P, double t) {
@@ -189,8 +193,8 @@ void check(const char* what, const Model& model) {
   for (int trial = 0; trial < 3; ++trial)
     for (const auto& [turn, deform] : {std::pair{0.3, 0.05}, std::pair{0.6, 0.5}, std::pair{1e-3, 0.05}}) {
       const Worst e = compare(model, trial, turn, deform);
-      std::printf("%s, trial %d, turn %.0e, deformation %.0e: %d chain and %d welded constraints: max rel. error %.2e; %d loads: %.2e; "
-                  "assembled K: %.2e (%d twist columns left out)\n",
+      std::printf("%s, trial %d, turn %.0e, deformation %.0e: %d chain and %d welded constraints: max rel. error "
+                  "%.2e; %d loads: %.2e; assembled K: %.2e (%d twist columns left out)\n",
                   what, trial, turn, deform, e.chains, e.welds, e.constraint, e.loads, e.load, e.assembled, e.skipped);
       EXPECT_LT(e.constraint, 1e-7) << what;
       EXPECT_LT(e.load, 1e-7) << what;
@@ -231,7 +235,8 @@ Model joint_model() {
   const auto r4 = mb.add_rigid_body("link4", sei, mb.hinge_child(h3), 0, Pose{I, Vector3d(3.5, 0.1, 0)});
   const auto tip = mb.rigid_body(r4).nodes[1];
   mb.add_load(NodeLoad{"follower at n3", n3, Vector3d(3, -20, 7), Vector3d(-2, 5, 4), true, {}});
-  mb.add_load(NodeLoad{"follower at a1", a1, Vector3d(-8, 4, 15), Vector3d(6, 1, -3), true, [](double t) { return 0.7 + t; }});
+  mb.add_load(
+      NodeLoad{"follower at a1", a1, Vector3d(-8, 4, 15), Vector3d(6, 1, -3), true, [](double t) { return 0.7 + t; }});
   mb.add_load(NodeLoad{"fixed at the tip", tip, Vector3d(5, 9, -4), Vector3d(1, -2, 3), false, {}});
   mb.add_load(NodeLoad{"follower at the tip", tip, Vector3d(-1, 2, 12), Vector3d(0.5, 3, -1), true, {}});
   mb.set_gravity(Vector3d(0, -9.81, 0));

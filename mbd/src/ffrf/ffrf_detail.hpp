@@ -37,10 +37,10 @@ struct PoseJ {
 /// Scratch of the joints' and node loads' analytic tangents (ffrf_joint_tangents.hpp), grown (never
 /// shrunk) to the widest element, so that it stops allocating.
 struct JointTangentScratch {
-  Eigen::MatrixXd HA, HB, K;   ///< the two sides' H and the element's tangent (leading blocks used)
-  Eigen::Matrix3Xd Dr, JBr;    ///< constraint: J_A,r - J_B,r and J_B,r over its columns
-  std::vector<int> at;         ///< constraint: B's column positions among the constraint's
-  PoseJ P;                     ///< a pose evaluated again on the way down a chain
+  Eigen::MatrixXd HA, HB, K;  ///< the two sides' H and the element's tangent (leading blocks used)
+  Eigen::Matrix3Xd Dr, JBr;   ///< constraint: J_A,r - J_B,r and J_B,r over its columns
+  std::vector<int> at;        ///< constraint: B's column positions among the constraint's
+  PoseJ P;                    ///< a pose evaluated again on the way down a chain
 };
 
 /// Pose of the node on interface j of body b, as that body's coordinates give it, into out.

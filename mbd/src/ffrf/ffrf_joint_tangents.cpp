@@ -47,8 +47,10 @@ void jl_coefficients(double t2, double& a, double& b, double& da, double& db) {
   if (t2 < kSeries) {
     static constexpr double ca[] = {1.0 / 2, -1.0 / 24, 1.0 / 720, -1.0 / 40320, 1.0 / 3628800, -1.0 / 479001600};
     static constexpr double cb[] = {1.0 / 6, -1.0 / 120, 1.0 / 5040, -1.0 / 362880, 1.0 / 39916800, -1.0 / 6227020800};
-    static constexpr double cda[] = {-1.0 / 12, 1.0 / 180, -1.0 / 6720, 1.0 / 453600, -1.0 / 47900160, 1.0 / 7264857600};
-    static constexpr double cdb[] = {-1.0 / 60, 1.0 / 1260, -1.0 / 60480, 1.0 / 4989600, -1.0 / 622702080, 1.0 / 108972864000};
+    static constexpr double cda[] = {-1.0 / 12,    1.0 / 180,       -1.0 / 6720,
+                                     1.0 / 453600, -1.0 / 47900160, 1.0 / 7264857600};
+    static constexpr double cdb[] = {-1.0 / 60,     1.0 / 1260,       -1.0 / 60480,
+                                     1.0 / 4989600, -1.0 / 622702080, 1.0 / 108972864000};
     a = poly(ca, t2);
     b = poly(cb, t2);
     da = poly(cda, t2);
@@ -66,8 +68,10 @@ void jl_coefficients(double t2, double& a, double& b, double& da, double& db) {
 /// c = 1/t^2 - (1 + cos t)/(2 t sin t) (J_l^-1 = I - S/2 + c S^2) and c'(t)/t.
 void jl_inv_coefficients(double t2, double& c, double& dc) {
   if (t2 < kSeries) {
-    static constexpr double cc[] = {1.0 / 12, 1.0 / 720, 1.0 / 30240, 1.0 / 1209600, 1.0 / 47900160, 691.0 / 1307674368000};
-    static constexpr double cdc[] = {1.0 / 360, 1.0 / 7560, 1.0 / 201600, 1.0 / 5987520, 691.0 / 130767436800, 1.0 / 6227020800};
+    static constexpr double cc[] = {1.0 / 12,      1.0 / 720,      1.0 / 30240,
+                                    1.0 / 1209600, 1.0 / 47900160, 691.0 / 1307674368000};
+    static constexpr double cdc[] = {1.0 / 360,     1.0 / 7560,           1.0 / 201600,
+                                     1.0 / 5987520, 691.0 / 130767436800, 1.0 / 6227020800};
     c = poly(cc, t2);
     dc = poly(cdc, t2);
     return;
@@ -106,7 +110,8 @@ Matrix3d jl_inv_transpose_tangent(const Vector3d& th, const Vector3d& u) {
   return -0.5 * skew(u) + c * double_cross_tangent(th, u) + dc * y2 * th.transpose();
 }
 
-void interface_tangent(const FfrfSystem& sys, const FfrfState& s, int bi, int j, const Vector6d& w, PoseJ& P, MatrixXd& H) {
+void interface_tangent(const FfrfSystem& sys, const FfrfState& s, int bi, int j, const Vector6d& w, PoseJ& P,
+                       MatrixXd& H) {
   interface_pose(sys, s, bi, j, P);
   const FfrfBody& b = sys.bodies[static_cast<std::size_t>(bi)];
   const Matrix3d& R = s.R_WB[static_cast<std::size_t>(bi)];
@@ -135,7 +140,8 @@ void interface_tangent(const FfrfSystem& sys, const FfrfState& s, int bi, int j,
   }
 }
 
-void node_tangent(const FfrfSystem& sys, const FfrfState& s, int k, bool chain, const Vector6d& w, PoseJ& P, MatrixXd& H) {
+void node_tangent(const FfrfSystem& sys, const FfrfState& s, int k, bool chain, const Vector6d& w, PoseJ& P,
+                  MatrixXd& H) {
   const Node& n = sys.model->nodes[static_cast<std::size_t>(k)];
   const FfrfNodeSource& src = sys.node_source[static_cast<std::size_t>(k)];
   if (n.kind == NodeKind::Fixed) {
@@ -163,7 +169,8 @@ void node_tangent(const FfrfSystem& sys, const FfrfState& s, int k, bool chain, 
     H.col(c).head(np).noalias() += P.J.leftCols(np).bottomRows<3>().transpose() * t;
   }
   if (n.hinge.valid()) {
-    if (H.rows() < np + 1 || H.cols() < np + 1) H.conservativeResize(std::max(np + 1, H.rows()), std::max(np + 1, H.cols()));
+    if (H.rows() < np + 1 || H.cols() < np + 1)
+      H.conservativeResize(std::max(np + 1, H.rows()), std::max(np + 1, H.cols()));
     const Vector3d a = R_P * sys.model->hinges[static_cast<std::size_t>(n.hinge.value)].axis_P;
     H.row(np).head(np).noalias() = a.cross(M).transpose() * P.J.leftCols(np).bottomRows<3>();
     H.col(np).head(np + 1).setZero();

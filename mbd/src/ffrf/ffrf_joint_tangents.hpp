@@ -17,9 +17,11 @@ Eigen::Matrix3d jl_inv_transpose_tangent(const Eigen::Vector3d& theta, const Eig
 
 /// The pose of interface j of body b (as interface_pose, into P) and H(w) over its columns into
 /// H.topLeftCorner(P.size(), P.size()).
-void interface_tangent(const FfrfSystem& sys, const FfrfState& s, int b, int j, const Vector6d& w, PoseJ& P, Eigen::MatrixXd& H);
+void interface_tangent(const FfrfSystem& sys, const FfrfState& s, int b, int j, const Vector6d& w, PoseJ& P,
+                       Eigen::MatrixXd& H);
 /// The same for node k as node_pose(sys, s, k, chain) gives it (through its parents and hinges).
-void node_tangent(const FfrfSystem& sys, const FfrfState& s, int k, bool chain, const Vector6d& w, PoseJ& P, Eigen::MatrixXd& H);
+void node_tangent(const FfrfSystem& sys, const FfrfState& s, int k, bool chain, const Vector6d& w, PoseJ& P,
+                  Eigen::MatrixXd& H);
 
 /// d(G^T lambda)/dq of constraint con (6 multipliers lam) at ce = eval_constraint(...) into
 /// w.K.topLeftCorner(ce.size(), ce.size()), over ce.cols.
