@@ -1,11 +1,12 @@
 // FFRF-LM on the demo's superelements (examples/solar_array/sync-3d.yaml: the 3D yoke and panel
 // reductions of meshes/*.bdf, 10 modes, geometric stiffening on by default): the Newton iteration
-// matrix of one step with the analytic body tangents (mbd/src/ffrf/ffrf_body_tangents.cpp) against
-// the one with the bodies' central-difference Jacobians (FfrfOptions::fd_body_jacobians, the previous
-// path), at states off the predictor with velocities, elastic deformation and nonzero multipliers;
-// the inertia from the invariants and from the FE node sums. The residuals are the same; the matrices
-// differ by the finite differences' error only (step 1e-6 of each coordinate's scale: ~1e-9 of the
-// largest entry; tests/mbd/ffrf_body_tangents_test.cpp compares K and C themselves).
+// matrix of one step with the analytic tangents of the bodies (mbd/src/ffrf/ffrf_body_tangents.cpp),
+// joints and node loads (ffrf_joint_tangents.cpp) against the one with all of them by central
+// differences (FfrfOptions::fd_body_jacobians and fd_joint_jacobians, the previous paths), at states off
+// the predictor with velocities, elastic deformation and nonzero multipliers; the inertia from the
+// invariants and from the FE node sums. The residuals are the same; the matrices differ by the finite
+// differences' error only (step 1e-6 of each coordinate's scale: ~1e-9 of the largest entry;
+// tests/mbd/ffrf_body_tangents_test.cpp and ffrf_joint_tangents_test.cpp compare the tangents themselves).
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -22,7 +23,7 @@ void replace_all(std::string& s, const std::string& from, const std::string& to)
   for (auto at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size())) s.replace(at, from.size(), to);
 }
 
-TEST(FfrfDemoTangents, IterationMatrixWithAnalyticBodyTangentsMatchesFiniteDifferences) {
+TEST(FfrfDemoTangents, IterationMatrixWithAnalyticTangentsMatchesFiniteDifferences) {
   TempDir dir;
   for (const auto& [body, set] : {std::pair{"yoke", "1,3,4"}, std::pair{"panel", "1,2,3,4"}}) {
     const auto r = run_seflex("reduce " + q(source_dir() / "meshes" / (std::string(body) + ".bdf")) + " --interface " + set +
@@ -39,6 +40,7 @@ TEST(FfrfDemoTangents, IterationMatrixWithAnalyticBodyTangentsMatchesFiniteDiffe
     fa.inertia = inertia;
     mbd::FfrfOptions ff = fa;
     ff.fd_body_jacobians = true;
+    ff.fd_joint_jacobians = true;
     const mbd::FfrfSystem sa = mbd::make_ffrf_system(model, fa), sf = mbd::make_ffrf_system(model, ff);
     ASSERT_GT(sa.num_z, 50);
     ASSERT_TRUE(sa.bodies[0].stiffening);

@@ -1,14 +1,16 @@
 // FFRF-LM assembly: body forces, node loads, force elements on hinge angles and the constraint
 // forces G^T lambda into the residual; mass matrices and the bodies' configuration and velocity
 // derivatives analytic (ffrf_body_tangents.cpp; FfrfOptions::fd_body_jacobians: central differences
-// over the body's 6 + k coordinates, the reference of the tests), those of loads and constraints
-// (d G^T lambda / dq) by central differences over the element's own coordinates (a constraint's two
-// sides, a load's node), so the cost stays linear in the model size.
+// over the body's 6 + k coordinates, the reference of the tests), and so are those of loads and
+// constraints (d G^T lambda / dq, ffrf_joint_tangents.cpp; FfrfOptions::fd_joint_jacobians: central
+// differences over the element's own coordinates, a constraint's two sides, a load's node), so the
+// cost stays linear in the model size.
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 
 #include "ffrf/ffrf_detail.hpp"
+#include "ffrf/ffrf_joint_tangents.hpp"
 #include "seflex/mbd/forces/force_element.hpp"
 
 namespace seflex::mbd::detail {
@@ -24,6 +26,19 @@ using Scratch = FfrfEval::Scratch;
 Eigen::VectorBlock<VectorXd> head(VectorXd& v, Eigen::Index n) {
   if (v.size() < n) v.resize(n);
   return v.head(n);
+}
+
+/// The leading n x n block of K over the coordinates `cols` (>= 0 only) added to T, column by column.
+void add_tangent(const std::vector<int>& cols, const Eigen::MatrixXd& K, Triplets& T) {
+  const auto n = static_cast<Eigen::Index>(cols.size());
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const int cj = cols[static_cast<std::size_t>(j)];
+    if (cj < 0) continue;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const int ci = cols[static_cast<std::size_t>(i)];
+      if (ci >= 0 && K(i, j) != 0.0) T.emplace_back(ci, cj, K(i, j));
+    }
+  }
 }
 
 /// Central differences of f (f(col, out) writes a local vector over `rows` into out, coordinate col
@@ -103,10 +118,10 @@ void loads(const FfrfSystem& sys, FfrfState& s, bool matrices, FfrfEval& ev) {
   Scratch& w = ev.scratch;
   PoseJ& P = w.pose;
   for (const NodeLoad& load : sys.model->loads) {
+    Vector6d F;
     auto f = [&](int, Eigen::VectorBlock<VectorXd> out) {
       node_pose(sys, s, load.node.value, false, P);
       const double factor = load.scale ? load.scale(s.t) : 1.0;
-      Vector6d F;
       F.head<3>() = factor * (load.follower ? Eigen::Vector3d(P.R * load.force) : load.force);
       F.tail<3>() = factor * (load.follower ? Eigen::Vector3d(P.R * load.moment) : load.moment);
       out.noalias() = -(P.jacobian().transpose() * F);
@@ -114,7 +129,7 @@ void loads(const FfrfSystem& sys, FfrfState& s, bool matrices, FfrfEval& ev) {
     node_pose(sys, s, load.node.value, false, P);
     const Eigen::Index n = P.size();
     auto q = head(w.q, n);
-    f(-1, q);
+    f(-1, q);  // F: the load's world wrench at s
     for (std::size_t c = 0; c < P.cols.size(); ++c) {
       if (P.cols[c] < 0) continue;
       ev.r[P.cols[c]] += q[static_cast<Eigen::Index>(c)];
@@ -122,6 +137,11 @@ void loads(const FfrfSystem& sys, FfrfState& s, bool matrices, FfrfEval& ev) {
     }
     if (!matrices) continue;
     w.max_K += P.cols.size() * P.cols.size();
+    if (!sys.options.fd_joint_jacobians) {
+      load_tangent(sys, s, load, P, F, w.jt);
+      add_tangent(P.cols, w.jt.K, ev.K);
+      continue;
+    }
     w.idx = P.cols;  // P is overwritten by the perturbed evaluations
     fd_configuration(sys, s, w.idx, w.idx, f, w, ev.K);
   }
@@ -193,6 +213,11 @@ void constraints(const FfrfSystem& sys, FfrfState& s, bool matrices, FfrfEval& e
           ev.G.emplace_back(6 * static_cast<int>(c) + k, col, ce.G(k, static_cast<Eigen::Index>(i)));
     }
     if (!matrices || lam.isZero(0.0)) continue;
+    if (!sys.options.fd_joint_jacobians) {
+      constraint_tangent(sys, s, sys.constraints[c], ce, lam, w.jt);
+      add_tangent(ce.cols, w.jt.K, ev.K);
+      continue;
+    }
     // A perturbed coordinate of one side only leaves the other side's pose as it is: only the
     // perturbed side is evaluated again (the same arithmetic as eval_constraint).
     ConstraintEval& cp = w.cp;

@@ -34,10 +34,21 @@ struct PoseJ {
   void assign(const PoseJ& from);
 };
 
+/// Scratch of the joints' and node loads' analytic tangents (ffrf_joint_tangents.hpp), grown (never
+/// shrunk) to the widest element, so that it stops allocating.
+struct JointTangentScratch {
+  Eigen::MatrixXd HA, HB, K;  ///< the two sides' H and the element's tangent (leading blocks used)
+  Eigen::Matrix3Xd Dr, JBr;   ///< constraint: J_A,r - J_B,r and J_B,r over its columns
+  std::vector<int> at;        ///< constraint: B's column positions among the constraint's
+  PoseJ P;                    ///< a pose evaluated again on the way down a chain
+};
+
 /// Pose of the node on interface j of body b, as that body's coordinates give it, into out.
 void interface_pose(const FfrfSystem& sys, const FfrfState& s, int b, int j, PoseJ& out);
 /// Pose of node k from its source (chain: through its parent and hinge even if a body carries it).
 void node_pose(const FfrfSystem& sys, const FfrfState& s, int k, bool chain, PoseJ& out);
+/// out: the pose of node k's parent in, node k's (through its offset and hinge) out.
+void attach_to_parent(const FfrfSystem& sys, const FfrfState& s, int k, PoseJ& out);
 
 /// g = [p_A - p_B; log(R_B^T R_A)] of constraint c, its Jacobian G (6 x cols.size(), the first
 /// columns of G) over cols (union of both sides); A and B are the scratch of the two poses.
@@ -105,6 +116,7 @@ struct FfrfEval {
     std::vector<int> idx;
     ConstraintEval ce, cp;             ///< a constraint and its perturbed evaluations
     PoseJ pose;                        ///< node loads
+    JointTangentScratch jt;            ///< analytic joint and load tangents
     Eigen::VectorXd phi, phidot;       ///< hinge values
     /// Upper bounds of the triplet counts (structural: the same at every evaluation with matrices),
     /// reserved after the first, so that the lists never grow after it.

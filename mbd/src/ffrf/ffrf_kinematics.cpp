@@ -74,6 +74,12 @@ void node_pose(const FfrfSystem& sys, const FfrfState& s, int k, bool chain, Pos
   }
   SEFLEX_DEMAND(n.kind == NodeKind::Attached, "node pose through a parent of a node that has none");
   node_pose(sys, s, n.parent.value, false, out);
+  attach_to_parent(sys, s, k, out);
+}
+
+void attach_to_parent(const FfrfSystem& sys, const FfrfState& s, int k, PoseJ& out) {
+  const Model& model = *sys.model;
+  const Node& n = model.nodes[static_cast<std::size_t>(k)];
   const Matrix3d R_P = out.R;
   const Vector3d d = R_P * n.p_PN_P;
   out.p += d;

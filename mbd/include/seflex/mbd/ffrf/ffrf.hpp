@@ -46,6 +46,10 @@ struct FfrfOptions {
   /// the body's 6 + k coordinates (4 (6 + k) extra evaluations per body and iteration matrix) instead of
   /// analytically: the previous path, kept as the reference of the tests (docs/ffrf.md).
   bool fd_body_jacobians = false;
+  /// The configuration derivatives of the joints (d(G^T lambda)/dq) and of the node loads (d(-J^T F)/dq)
+  /// by central differences over each element's coordinates (2 evaluations of the perturbed side's pose
+  /// per coordinate) instead of analytically: the previous path, kept as the reference of the tests.
+  bool fd_joint_jacobians = false;
 };
 
 /// What an FFRF run reports beyond RunStats.
