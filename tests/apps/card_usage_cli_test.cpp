@@ -11,8 +11,6 @@
 namespace seflex {
 namespace {
 
-std::string q(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
-
 /// A frame: two cantilevers along x (grids 1-4 and 11-14, clamped at 1 and 11 by SPC set 1) joined
 /// by a cross bar 4-14, carrying a mass (CONM2 on grid 100) through an RBE3 on grids 3, 5, 13, 14
 /// (5 hangs on 4 by an RBAR), with an MPC (set 3) tying the T3 of grids 12 and 2; a PLOADX1 in an unselected load set, a DESVAR, an

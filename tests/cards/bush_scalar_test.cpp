@@ -19,8 +19,6 @@
 namespace seflex {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 Eigen::MatrixXd dense_K(const fem::Model& m) { return Eigen::MatrixXd(fem::assemble(m, fem::assembly_options(m)).K); }
 Eigen::MatrixXd dense_M(const fem::Model& m) { return Eigen::MatrixXd(fem::assemble(m, fem::assembly_options(m)).M); }
 

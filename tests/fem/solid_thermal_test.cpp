@@ -150,8 +150,9 @@ TEST(SolidThermalLoad, AxiallyHeldBarCarriesMinusEAlphaDeltaT) {
       const Eigen::Index gi = m.grid_index.at(id);
       if (l[0] == 0) left += r[g.dofs.grid_dof(gi, 1)];
       if (l[0] == 2 * box.nx) right += r[g.dofs.grid_dof(gi, 1)];
-      if (l[1] == 2 * box.ny && l[0] == box.nx)
+      if (l[1] == 2 * box.ny && l[0] == box.nx) {
         EXPECT_NEAR(translation(m, g, u, id).y() / ((1 + nu) * alpha * 60.0), 1.0, 1e-9) << static_cast<int>(scheme);
+      }
     }
     const double N = E * alpha * 60.0 * 1.0;
     EXPECT_NEAR(left / N, 1.0, 1e-9) << static_cast<int>(scheme);    // the bar pushes the supports apart:

@@ -267,10 +267,10 @@ TEST(CardUsage, ConmInertiaAboutAFlatShellNormalIsAWarning) {
   EXPECT_EQ(e->kind, CardUse::Kind::Approximated);
   EXPECT_EQ(e->first.line, 21u);
   EXPECT_TRUE(mentions(e->reason, {"normal of the flat shells at grid 5 (0.0002)", "PARAM K6ROT = 100", "spurious"}));
-  for (const CardUse& u : usage(m, Solution::Statics).uses) EXPECT_NE(u.card, "CONM2") << u.reason;
+  for (const CardUse& use : usage(m, Solution::Statics).uses) EXPECT_NE(use.card, "CONM2") << use.reason;
   auto none = [](const fem::Model& q) {
-    for (const CardUse& u : usage(q, Solution::NormalModes).uses)
-      if (u.card == "CONM2") return false;
+    for (const CardUse& use : usage(q, Solution::NormalModes).uses)
+      if (use.card == "CONM2") return false;
     return true;
   };
   EXPECT_TRUE(none(plate_with_conm2("1.e-4,0.,1.e-4,0.,0.,2.e-4", "PARAM,K6ROT,1.e5\n")));

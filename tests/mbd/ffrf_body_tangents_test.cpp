@@ -58,9 +58,9 @@ FfrfState random_state(const FfrfSystem& sys, int trial) {
   VectorXd scale = sys.weight.cwiseInverse();
   for (const FfrfBody& b : sys.bodies)
     for (int i = 0; i < b.k; ++i) {
-      const int c = b.coord + 6 + i;
-      scale[c] = 1.0 / std::max(sys.weight[c], b.V.col(i).head(6 * static_cast<Eigen::Index>(b.nodes.size())).cwiseAbs().maxCoeff());
-      s.z[b.z_offset + i] = 0.05 * r() * scale[c];  // deformations of 5 % of that
+      const int col = b.coord + 6 + i;
+      scale[col] = 1.0 / std::max(sys.weight[col], b.V.col(i).head(6 * static_cast<Eigen::Index>(b.nodes.size())).cwiseAbs().maxCoeff());
+      s.z[b.z_offset + i] = 0.05 * r() * scale[col];  // deformations of 5 % of that
     }
   for (Eigen::Index i = 0; i < s.v.size(); ++i) {
     s.v[i] = 2.0 * scale[i] * r();

@@ -167,7 +167,9 @@ TEST(Stiffening, MassMatrixIncludesTheLoadFactorsAccelerationDependence) {
     const double err = (M - Mfd).norm() / Mfd.norm(), asym = (M - M.transpose()).norm() / M.norm();
     std::printf("%s: mass matrix against differences of the residual %.2e, its asymmetry %.2e\n", on ? "stiffened" : "linear", err, asym);
     EXPECT_LT(err, 1e-9);
-    if (on) EXPECT_GT(asym, 1e-6);  // the load factors' term is there
+    if (on) {
+      EXPECT_GT(asym, 1e-6);  // the load factors' term is there
+    }
   }
 }
 

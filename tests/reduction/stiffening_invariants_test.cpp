@@ -87,7 +87,7 @@ Reduced reduce_cantilever(int elements, int modes) {
 /// (the frame origin's centripetal acceleration about the hub at the basic origin).
 std::vector<double> flapwise(const Reduced& r, double gamma) {
   const se::Superelement& s = r.s;
-  const Eigen::Index nb = 6, m = s.num_modes;
+  const Eigen::Index m = s.num_modes;
   const double Omega = gamma / r.scale;
   const Eigen::Vector3d Om(0, 0, Omega);
   const Eigen::Matrix3d W = so3::skew(Om) * so3::skew(Om);
