@@ -10,19 +10,23 @@ namespace {
 
 constexpr double kRad2Deg = 180.0 / M_PI;
 
-/// Shortest text that reads back as the same double.
-std::string num(double x) {
+/// out += the shortest text that reads back as the same double.
+void append_number(std::string& out, double x) {
   char buf[32];
   const auto r = std::to_chars(buf, buf + sizeof buf, x);
-  return std::string(buf, r.ptr);
+  out.append(buf, r.ptr);
 }
 
-/// row += "," + num(x), without a temporary.
-void append_field(std::string& row, double x) {
-  char buf[32];
-  buf[0] = ',';
-  const auto r = std::to_chars(buf + 1, buf + sizeof buf, x);
-  row.append(buf, r.ptr);
+std::string num(double x) {
+  std::string s;
+  append_number(s, x);
+  return s;
+}
+
+/// out += "," + num(x), without a temporary.
+void append_field(std::string& out, double x) {
+  out += ',';
+  append_number(out, x);
 }
 
 std::string csv_field(const std::string& s) {
@@ -174,8 +178,8 @@ void RunOutput::track_locks(const mbd::Model& model, const mbd::Sample& s) {
 }
 
 void RunOutput::write_history(const mbd::Model& m, const mbd::Sample& s) {
-  std::string& row = row_;  // reused: no allocation once it has grown to a row's length
-  row = num(s.t);
+  std::string& row = history_buf_;  // rows are appended to the buffer that write_out empties
+  append_number(row, s.t);
   for (std::size_t i = 0; i < s.hinges.size(); ++i) {
     const mbd::HingeSample& h = s.hinges[i];
     append_field(row, h.phi * kRad2Deg);
@@ -199,16 +203,15 @@ void RunOutput::write_history(const mbd::Model& m, const mbd::Sample& s) {
   row += std::to_string(s.newton_iterations);
   append_field(row, s.step_size);
   row += '\n';
-  history_buf_ += row;
 }
 
 void RunOutput::write_poses(const mbd::Sample& s) {
   const auto& d = scene_.description;
-  std::string& row = row_;
+  std::string& row = poses_buf_;
   for (std::size_t b = 0; b < d.bodies.size(); ++b) {
     const SceneBodyRef& r = scene_.bodies[b];
     const mbd::Pose& X = r.rigid ? s.rigid[static_cast<std::size_t>(r.index)].frame : s.flexible[static_cast<std::size_t>(r.index)].frame;
-    row = num(s.t);
+    append_number(row, s.t);
     row += ',';
     row += csv_field(d.bodies[b].name);
     for (int i = 0; i < 3; ++i)
@@ -222,7 +225,6 @@ void RunOutput::write_poses(const mbd::Sample& s) {
     }
     for (int k = nq; k < max_q_; ++k) row += ',';
     row += '\n';
-    poses_buf_ += row;
   }
 }
 

@@ -87,8 +87,7 @@ class RunOutput : public mbd::Observer {
   const Scene& scene_;
   std::filesystem::path folder_;
   std::ofstream history_, events_, poses_;
-  std::string row_;                        ///< one CSV row, reused
-  std::string history_buf_, poses_buf_;    ///< rows not yet written (write_out)
+  std::string history_buf_, poses_buf_;  ///< rows not yet written (write_out)
   std::chrono::steady_clock::time_point last_flush_ = std::chrono::steady_clock::now();
   std::unique_ptr<PvdSeries> animation_;
   double next_animation_ = 0.0;
