@@ -39,7 +39,6 @@ struct PoseJ {
 struct JointTangentScratch {
   Eigen::MatrixXd HA, HB, K;  ///< the two sides' H and the element's tangent (leading blocks used)
   Eigen::Matrix3Xd Dr, JBr;   ///< constraint: J_A,r - J_B,r and J_B,r over its columns
-  std::vector<int> at;        ///< constraint: B's column positions among the constraint's
   PoseJ P;                    ///< a pose evaluated again on the way down a chain
 };
 
@@ -55,6 +54,7 @@ void attach_to_parent(const FfrfSystem& sys, const FfrfState& s, int k, PoseJ& o
 struct ConstraintEval {
   Vector6d g = Vector6d::Zero();
   std::vector<int> cols;
+  std::vector<int> b_at;  ///< per column of B: its position in cols (combine_constraint)
   Matrix6Xd G;
   PoseJ A, B;
   Eigen::Index size() const { return static_cast<Eigen::Index>(cols.size()); }

@@ -189,14 +189,6 @@ void constraint_tangent(const FfrfSystem& sys, const FfrfState& s, const FfrfCon
   wc << lam.head<3>(), m;
   interface_tangent(sys, s, con.body, con.interface, wc, w.P, w.HA);
   node_tangent(sys, s, con.node.value, con.chain, wc, w.P, w.HB);
-  // B's columns among the constraint's (combine_constraint: A's first, then B's outside A in order).
-  const int a0 = A.cols.empty() ? 0 : A.cols.front();
-  w.at.resize(static_cast<std::size_t>(nB));
-  Eigen::Index next = na;
-  for (std::size_t i = 0; i < B.cols.size(); ++i) {
-    const int col = B.cols[i];
-    w.at[i] = (col >= a0 && col < a0 + na) ? col - a0 : static_cast<int>(next++);
-  }
   zero_leading(w.K, n);
   auto K = w.K.topLeftCorner(n, n);
   K.topLeftCorner(na, na) = w.HA.topLeftCorner(na, na);
@@ -208,8 +200,8 @@ void constraint_tangent(const FfrfSystem& sys, const FfrfState& s, const FfrfCon
   T.setZero();
   Dr.leftCols(na) = A.J.leftCols(na).bottomRows<3>();
   for (Eigen::Index i = 0; i < nB; ++i) {
-    const Eigen::Index ai = w.at[static_cast<std::size_t>(i)];
-    for (Eigen::Index j = 0; j < nB; ++j) K(ai, w.at[static_cast<std::size_t>(j)]) -= w.HB(i, j);
+    const Eigen::Index ai = ce.b_at[static_cast<std::size_t>(i)];
+    for (Eigen::Index j = 0; j < nB; ++j) K(ai, ce.b_at[static_cast<std::size_t>(j)]) -= w.HB(i, j);
     Dr.col(ai) -= B.J.col(i).tail<3>();
     T.col(ai) = B.J.col(i).tail<3>();
   }

@@ -127,8 +127,10 @@ void combine_constraint(ConstraintEval& out) {
     out.G.col(ci).tail<3>() += L * A.J.col(ci).tail<3>();
   }
   Eigen::Index next = na;  // B's columns outside A follow A's in out.cols, in B's order
+  out.b_at.resize(B.cols.size());
   for (std::size_t i = 0; i < B.cols.size(); ++i) {
     const Eigen::Index at = in_A(B.cols[i]) ? B.cols[i] - a0 : next++;
+    out.b_at[i] = static_cast<int>(at);
     const auto ci = static_cast<Eigen::Index>(i);
     out.G.col(at).head<3>() -= B.J.col(ci).head<3>();
     out.G.col(at).tail<3>() -= L * B.J.col(ci).tail<3>();
