@@ -66,6 +66,15 @@ void stack_invariants(AicElement& e) {
     B.middleRows(r.EgOV + 3 * a, 3) = I.EgOV[a];
     e.inv_GPV[a] = I.PmGP[a] + I.PgOV[a];
   }
+  A = A * e.V_f;  // (n - 6) columns: the contractions see xi = V_f (V_f^T xi) only
+  B = B * e.V_f;
+}
+
+/// Orthonormal basis of the null space of the 6 x n frame-node rows (rank 6: Phi_fb Phi_rig0 = I).
+MatrixXd frame_condition_null_space(const MatrixXd& Phi_f) {
+  const Eigen::HouseholderQR<MatrixXd> qr(Phi_f.transpose());
+  const MatrixXd Q = qr.householderQ();
+  return Q.rightCols(Phi_f.cols() - 6);
 }
 
 }  // namespace
@@ -108,6 +117,8 @@ AicElement make_aic_element(const se::Superelement& s) {
           "model and a frame node that is not an interface node";
     throw InputError(os.str());
   }
+
+  e.V_f = frame_condition_null_space(e.Phi_f);
 
   // Mass properties implied by M (exactly those of the FE model for a consistent reduction).
   const MatrixXd Mr = P0.transpose() * e.M.topLeftCorner(6 * e.N, 6 * e.N) * P0;
@@ -157,6 +168,7 @@ AicElement make_aic_element(const se::Superelement& s) {
                          std::to_string(G.cols()) + ", expected " + std::to_string(e.n) + " square");
       e.G_stack.middleCols(static_cast<Eigen::Index>(c) * e.n, e.n) = 0.5 * (G + G.transpose());
     }
+    e.G_stack_t_V = e.G_stack.transpose() * e.V_f;
     // Pseudo-inverse of K_bb: its 6 rigid-motion eigenvalues are round-off against the largest.
     const auto nbi = static_cast<Eigen::Index>(nb);
     const MatrixXd Kbb = 0.5 * (e.K.topLeftCorner(nbi, nbi) + e.K.topLeftCorner(nbi, nbi).transpose());

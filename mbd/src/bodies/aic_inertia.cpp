@@ -41,8 +41,11 @@ void inertia_projections(const AicElement& e, const VectorXd& xi, const VectorXd
   // Every contraction with xi and with xi_dot: two products with the stacked invariants
   // (StackedInvariantRows), read in place below.
   const StackedInvariantRows r(n);
-  ws.t.noalias() = e.inv_by_xi * xi;
-  ws.q.noalias() = e.inv_by_xid * xid;
+  // (n - 6 columns: xi and xid satisfy the frame condition, AicElement::V_f.)
+  ws.eta_f.noalias() = e.V_f.transpose() * xi;
+  ws.t.noalias() = e.inv_by_xi * ws.eta_f;
+  ws.eta_f.noalias() = e.V_f.transpose() * xid;
+  ws.q.noalias() = e.inv_by_xid * ws.eta_f;
   const double* X = ws.t.data();
   const double* Y = ws.q.data();
   using Map3n = Eigen::Map<const Eigen::Matrix<double, 3, Eigen::Dynamic>>;

@@ -47,7 +47,8 @@ double add_stress_stiffening(const AicElement& e, const VectorXd& xi, const Stif
   // G_c xi for every case (the G_c are symmetric): one product with the stacked invariants, kept
   // while xi and the element stay the same.
   if (ws.Gxi_of != e.G_stack.data() || ws.Gxi_at.size() != xi.size() || ws.Gxi_at != xi) {
-    ws.Gxi.noalias() = e.G_stack.transpose() * xi;
+    ws.eta_f.noalias() = e.V_f.transpose() * xi;  // xi = V_f V_f^T xi (the frame condition)
+    ws.Gxi.noalias() = e.G_stack_t_V * ws.eta_f;
     ws.Gxi_at = xi;
     ws.Gxi_of = e.G_stack.data();
   }

@@ -63,7 +63,7 @@ void frame_clamped_modes(const AicElement& e, int modes, bool nodal, FfrfBody& b
   if (!nodal) {
     b.MppV = e.inv.Mpp * b.V;
     b.VMppV = b.V.transpose() * b.MppV;
-    b.AV = e.inv_by_xi * b.V;
+    b.AV = e.inv_by_xi * (e.V_f.transpose() * b.V);  // the columns of V satisfy the frame condition
   }
 }
 

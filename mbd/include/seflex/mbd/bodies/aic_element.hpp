@@ -60,14 +60,21 @@ struct AicElement {
   // The same invariants stacked for the time loop (made by make_aic_element): one product with xi
   // and one with xi_dot = Tx w give every contraction of an evaluation; row layout in
   // StackedInvariantRows (aic_inertia.cpp reads them in place).
-  Eigen::MatrixXd inv_by_xi;                 ///< (45 n + 72) x n
-  Eigen::MatrixXd inv_by_xid;                ///< (6 n + 27) x n
+  //
+  // xi and xi_dot = Tx w always satisfy the frame condition Phi_f xi = 0 (Phi_f Tx = 0, formulation
+  // 1.3-1.4), so they live in the (n - 6)-dimensional null space of Phi_f: xi = V_f (V_f^T xi). The
+  // stacked invariants are kept multiplied by V_f, and every contraction reads (n - 6) columns
+  // instead of n (docs/inertia-invariants.md, "The frame condition").
+  Eigen::MatrixXd V_f;                       ///< n x (n - 6): orthonormal basis of null(Phi_f)
+  Eigen::MatrixXd inv_by_xi;                 ///< (45 n + 72) x (n - 6): the xi-stack times V_f
+  Eigen::MatrixXd inv_by_xid;                ///< (6 n + 27) x (n - 6): the xi_dot-stack times V_f
   std::array<Eigen::MatrixXd, 3> inv_GPV;    ///< n x n: PmGP[a] + PgOV[a]
 
   // Geometric-stiffness invariants (se::StiffeningInvariants, docs/geometric-stiffening.md) side by side,
   // G_stack = [G_0 ... G_{k-1}] (n x k n), k = 12 + 6N: the 12 inertia load cases, then the 6N
   // constraint modes. Empty when the superelement carries none.
   Eigen::MatrixXd G_stack;
+  Eigen::MatrixXd G_stack_t_V;  ///< k n x (n - 6): G_stack^T V_f, so that [G_c xi]_c = G_stack_t_V (V_f^T xi)
   /// 6N x 6N pseudo-inverse of K's interface block (its null space: the rigid motions): the compliance
   /// through which the bending's foreshortening loads the interface (the quartic energy term).
   Eigen::MatrixXd Kbb_pinv;

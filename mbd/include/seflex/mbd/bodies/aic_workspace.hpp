@@ -24,6 +24,7 @@ struct AicWorkspace {
   Eigen::MatrixXd PmE, MR, Q;        ///< n x 6
   Eigen::MatrixXd sixn;              ///< 6 x n
   Eigen::VectorXd t, q, pm, v1, v2;  ///< n, 9n (q), scratch
+  Eigen::VectorXd eta_f;             ///< n - 6: V_f^T xi or V_f^T xi_dot (AicElement::V_f)
   Eigen::MatrixXd CLp, GPp, GVp, DOp, n3;  ///< n x 6, n x 3 (GPp, GVp, DOp, n3)
   std::array<Eigen::MatrixXd, 3> HGPxi;    ///< 3 x n
   Eigen::MatrixXd Ap, Ae, Xp, Xe;    ///< n x n, 6 x n, n x n, 6 x n
