@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <optional>
+#include <set>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
@@ -104,8 +105,10 @@ int run_run(seflex::app::Args& args) {
   const io::Scene scene = io::build_scene(d, bo);
   std::uint64_t se_bytes = 0;
   bool meshless = false, with_mesh = false;
-  for (const auto& s : scene.superelements) {
-    se_bytes += io::superelement_memory_bytes(s);
+  std::set<const seflex::se::Superelement*> counted;  // bodies that share a file share its copy
+  for (const auto& p : scene.superelements) {
+    const auto& s = *p;
+    if (counted.insert(&s).second) se_bytes += io::superelement_memory_bytes(s);
     meshless = meshless || s.fe_node_ids.empty();
     with_mesh = with_mesh || !s.fe_node_ids.empty() || s.recovery.size() != 0;
   }

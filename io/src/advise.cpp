@@ -130,7 +130,7 @@ SceneDescription without_stiffening(SceneDescription d) {
 bool stiffened(const Scene& s) {
   for (std::size_t b = 0; b < s.description.bodies.size(); ++b)
     if (s.description.bodies[b].fidelity == Fidelity::Flexible && s.description.bodies[b].geometric_stiffening.value_or(true) &&
-        s.superelements[b].stiffening.present())
+        s.superelements[b]->stiffening.present())
       return true;
   return false;
 }
@@ -179,7 +179,7 @@ std::string alternative_prefix(const std::vector<SceneDescription>& alts, std::s
 
 std::vector<int> modes_in_files(const Scene& s) {
   std::vector<int> m;
-  for (std::size_t b = 0; b < s.superelements.size(); ++b) m.push_back(s.superelements[b].num_modes);
+  for (std::size_t b = 0; b < s.superelements.size(); ++b) m.push_back(s.superelements[b]->num_modes);
   return m;
 }
 

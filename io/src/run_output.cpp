@@ -124,7 +124,7 @@ RunOutput::RunOutput(const Scene& scene, const RunOutputOptions& o) : scene_(sce
     event(0.0, "warning", "after_all_locked", "the scene has no locks; the stop rule never applies");
   events_.flush();
 
-  for (const auto& s : scene.superelements) max_q_ = std::max(max_q_, s.size());
+  for (const auto& s : scene.superelements) max_q_ = std::max(max_q_, s->size());
   poses_ = open(folder_ / "poses.csv");
   poses_ << "t,body,R00,R01,R02,R10,R11,R12,R20,R21,R22,px,py,pz";
   for (int k = 0; k < max_q_; ++k) poses_ << ",q" << k;
@@ -133,7 +133,7 @@ RunOutput::RunOutput(const Scene& scene, const RunOutputOptions& o) : scene_(sce
 
   if (o.animation && scene.description.output.animation_interval) {
     std::vector<const se::Superelement*> bodies;
-    for (const auto& s : scene.superelements) bodies.push_back(&s);
+    for (const auto& s : scene.superelements) bodies.push_back(s.get());
     animation_ = std::make_unique<PvdSeries>(folder_, "animation", bodies, true);
   }
 }

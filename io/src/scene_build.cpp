@@ -55,7 +55,7 @@ struct Builder {
   Builder(const SceneDescription& desc, const SceneBuildOptions& o) : d(desc), options(o) { scene.description = desc; }
 
   int find(int s) { return uf[static_cast<std::size_t>(s)] == s ? s : uf[static_cast<std::size_t>(s)] = find(uf[static_cast<std::size_t>(s)]); }
-  const se::Superelement& se_of(int b) const { return scene.superelements[static_cast<std::size_t>(b)]; }
+  const se::Superelement& se_of(int b) const { return *scene.superelements[static_cast<std::size_t>(b)]; }
   int body_of(const std::string& name) const {
     for (std::size_t b = 0; b < d.bodies.size(); ++b)
       if (d.bodies[b].name == name) return static_cast<int>(b);
@@ -111,14 +111,17 @@ struct Builder {
     for (const SceneBody& b : d.bodies)
       if (b.fidelity == Fidelity::Flexible && (b.inertia == mbd::InertiaModel::Full || options.full_inertia_everywhere))
         full_inertia.emplace(b.superelement.string(), &b);
-    std::map<std::string, se::Superelement> files;
+    // One copy per file, shared by the bodies that use it with all its modes; one per file and number
+    // of modes for bodies that keep fewer.
+    std::map<std::string, std::shared_ptr<const se::Superelement>> files;
+    std::map<std::pair<std::string, int>, std::shared_ptr<const se::Superelement>> truncated;
     for (const SceneBody& b : d.bodies) {
       const std::string key = b.superelement.string();
       if (!files.count(key)) {
         const auto it = full_inertia.find(key);
-        files[key] = load_file(b, it == full_inertia.end() ? nullptr : it->second);
+        files[key] = std::make_shared<const se::Superelement>(load_file(b, it == full_inertia.end() ? nullptr : it->second));
       }
-      const se::Superelement& full = files[key];
+      const se::Superelement& full = *files[key];
       int m = full.num_modes;
       if (b.internal_modes >= 0 && b.fidelity == Fidelity::Flexible) {
         if (b.internal_modes > full.num_modes)
@@ -126,8 +129,14 @@ struct Builder {
                        std::to_string(full.num_modes) + " fixed-interface modes");
         m = b.internal_modes;
       }
-      scene.superelements.push_back(m == full.num_modes ? full : keep_internal_modes(full, m));
-      const se::Superelement& s = scene.superelements.back();
+      if (m == full.num_modes) {
+        scene.superelements.push_back(files[key]);
+      } else {
+        auto& kept = truncated[{key, m}];
+        if (!kept) kept = std::make_shared<const se::Superelement>(keep_internal_modes(full, m));
+        scene.superelements.push_back(kept);
+      }
+      const se::Superelement& s = *scene.superelements.back();
       X_WB.push_back(mbd::Pose{b.X_WF.R, b.X_WF.p + b.X_WF.R * s.p_OBo});
       first.push_back(static_cast<int>(slot_of.size()));
       for (int j = 0; j < s.num_interfaces(); ++j) slot_of.emplace_back(static_cast<int>(X_WB.size()) - 1, j);
@@ -281,7 +290,7 @@ struct Builder {
   mbd::SuperelementIndex se_index(std::size_t b) {
     const auto key = std::make_pair(d.bodies[b].superelement.string(), se_of(static_cast<int>(b)).num_modes);
     auto it = se_ids.find(key);
-    if (it == se_ids.end()) it = se_ids.emplace(key, mb.add_superelement(se_of(static_cast<int>(b)))).first;
+    if (it == se_ids.end()) it = se_ids.emplace(key, mb.add_superelement(scene.superelements[b])).first;
     return it->second;
   }
 

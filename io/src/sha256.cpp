@@ -1,8 +1,14 @@
-// SHA-256 as specified in FIPS 180-4, section 6.2.
+// SHA-256 as specified in FIPS 180-4, section 6.2: portable code, and the x86 SHA extensions where the
+// CPU has them (chosen at run time).
 #include "seflex/io/sha256.hpp"
 
 #include <cstring>
 #include <fstream>
+
+#if defined(__x86_64__)
+#include <cpuid.h>
+#include <immintrin.h>
+#endif
 
 #include "seflex/common/error.hpp"
 
@@ -19,12 +25,9 @@ constexpr std::array<std::uint32_t, 64> kRound = {
     0x748f82ee, 0x78a5636f, 0x84c87814, 0x8cc70208, 0x90befffa, 0xa4506ceb, 0xbef9a3f7, 0xc67178f2};
 
 inline std::uint32_t rotr(std::uint32_t x, int n) { return (x >> n) | (x << (32 - n)); }
-}  // namespace
 
-Sha256::Sha256()
-    : h_{0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a, 0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19} {}
-
-void Sha256::block(const std::uint8_t* p) {
+/// One block, FIPS 180-4 section 6.2.2, in portable C++.
+void block_portable(std::array<std::uint32_t, 8>& h_, const std::uint8_t* p) {
   std::array<std::uint32_t, 64> w;
   for (int t = 0; t < 16; ++t)
     w[t] = (std::uint32_t(p[4 * t]) << 24) | (std::uint32_t(p[4 * t + 1]) << 16) | (std::uint32_t(p[4 * t + 2]) << 8) |
@@ -55,6 +58,78 @@ void Sha256::block(const std::uint8_t* p) {
   h_[4] += e; h_[5] += f; h_[6] += g; h_[7] += h;
 }
 
+#if defined(__x86_64__)
+bool cpu_has_sha_extensions() {
+  unsigned a = 0, b = 0, c = 0, d = 0;
+  if (!__get_cpuid(1, &a, &b, &c, &d)) return false;
+  const bool ssse3 = (c >> 9) & 1u, sse41 = (c >> 19) & 1u;
+  if (!__get_cpuid_count(7, 0, &a, &b, &c, &d)) return false;
+  return ssse3 && sse41 && ((b >> 29) & 1u);  // CPUID.(EAX=7,ECX=0):EBX bit 29: SHA
+}
+
+/// count blocks with the x86 SHA extensions (Intel's SHA-NI; Gulley et al., "Intel SHA Extensions",
+/// 2013). The state is kept as the register pair ABEF / CDGH that SHA256RNDS2 works on: each
+/// SHA256RNDS2 does two rounds (the low two words of its message operand, w_t + K_t) and returns the
+/// new ABEF, the old ABEF becoming CDGH. The schedule: SHA256MSG1 adds sigma0 of the next word to each
+/// of four words, the words t-7..t-4 are added in between, SHA256MSG2 adds sigma1.
+__attribute__((target("sha,sse4.1,ssse3"))) void blocks_sha_ni(std::uint32_t* h, const std::uint8_t* p, std::size_t count) {
+  const __m128i bswap = _mm_set_epi64x(0x0c0d0e0f08090a0bLL, 0x0405060700010203LL);  // big-endian words
+  __m128i tmp = _mm_loadu_si128(reinterpret_cast<const __m128i*>(h));           // D C B A (high to low)
+  __m128i st1 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(h + 4));       // H G F E
+  tmp = _mm_shuffle_epi32(tmp, 0xB1);                                            // C D A B
+  st1 = _mm_shuffle_epi32(st1, 0x1B);                                            // E F G H
+  __m128i st0 = _mm_alignr_epi8(tmp, st1, 8);                                    // A B E F
+  st1 = _mm_blend_epi16(st1, tmp, 0xF0);                                         // C D G H
+  for (; count > 0; --count, p += 64) {
+    const __m128i abef = st0, cdgh = st1;
+    __m128i w[4];
+    for (int g = 0; g < 16; ++g) {
+      if (g < 4) {
+        w[g] = _mm_shuffle_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p + 16 * g)), bswap);
+      } else {
+        __m128i x = _mm_sha256msg1_epu32(w[g & 3], w[(g + 1) & 3]);            // w_{t-16} + sigma0(w_{t-15})
+        x = _mm_add_epi32(x, _mm_alignr_epi8(w[(g + 3) & 3], w[(g + 2) & 3], 4));  // + w_{t-7}
+        w[g & 3] = _mm_sha256msg2_epu32(x, w[(g + 3) & 3]);                     // + sigma1(w_{t-2})
+      }
+      __m128i msg = _mm_add_epi32(w[g & 3], _mm_loadu_si128(reinterpret_cast<const __m128i*>(kRound.data() + 4 * g)));
+      st1 = _mm_sha256rnds2_epu32(st1, st0, msg);
+      msg = _mm_shuffle_epi32(msg, 0x0E);
+      st0 = _mm_sha256rnds2_epu32(st0, st1, msg);
+    }
+    st0 = _mm_add_epi32(st0, abef);
+    st1 = _mm_add_epi32(st1, cdgh);
+  }
+  tmp = _mm_shuffle_epi32(st0, 0x1B);        // F E B A
+  st1 = _mm_shuffle_epi32(st1, 0xB1);        // D C H G
+  st0 = _mm_blend_epi16(tmp, st1, 0xF0);     // D C B A
+  st1 = _mm_alignr_epi8(st1, tmp, 8);        // H G F E
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(h), st0);
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(h + 4), st1);
+}
+#else
+bool cpu_has_sha_extensions() { return false; }
+void blocks_sha_ni(std::uint32_t*, const std::uint8_t*, std::size_t) {}
+#endif
+
+}  // namespace
+
+bool Sha256::hardware_available() {
+  static const bool has = cpu_has_sha_extensions();
+  return has;
+}
+
+Sha256::Sha256(Implementation impl)
+    : h_{0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a, 0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19},
+      hardware_(impl == Implementation::Hardware && hardware_available()) {}
+
+void Sha256::blocks(const std::uint8_t* p, std::size_t count) {
+  if (hardware_) {
+    blocks_sha_ni(h_.data(), p, count);
+    return;
+  }
+  for (; count > 0; --count, p += 64) block_portable(h_, p);
+}
+
 void Sha256::update(const void* data, std::size_t size) {
   const auto* p = static_cast<const std::uint8_t*>(data);
   total_ += size;
@@ -65,14 +140,15 @@ void Sha256::update(const void* data, std::size_t size) {
     p += take;
     size -= take;
     if (buf_len_ == 64) {
-      block(buf_.data());
+      blocks(buf_.data(), 1);
       buf_len_ = 0;
     }
   }
-  while (size >= 64) {
-    block(p);
-    p += 64;
-    size -= 64;
+  if (size >= 64) {
+    const std::size_t count = size / 64;
+    blocks(p, count);
+    p += 64 * count;
+    size -= 64 * count;
   }
   if (size > 0) {
     std::memcpy(buf_.data(), p, size);

@@ -126,10 +126,15 @@ void ModelBuilder::set_initial_velocity(NodeIndex n, const Vector3d& v_W, const 
 }
 
 SuperelementIndex ModelBuilder::add_superelement(const se::Superelement& s) {
-  sources_.push_back(s);
-  prepared_.push_back(false);
+  return add_superelement(std::make_shared<const se::Superelement>(s));
+}
+
+SuperelementIndex ModelBuilder::add_superelement(std::shared_ptr<const se::Superelement> s) {
+  SEFLEX_DEMAND(s != nullptr, "add_superelement: no superelement");
   AicElement placeholder;
-  placeholder.name = s.name;
+  placeholder.name = s->name;
+  sources_.push_back(std::move(s));
+  prepared_.push_back(false);
   model_.superelements.push_back(std::move(placeholder));
   return SuperelementIndex(static_cast<int>(sources_.size()) - 1);
 }
@@ -143,11 +148,11 @@ FlexibleBodyIndex ModelBuilder::add_flexible_body(const std::string& name, Super
   check_pose(X_WB, who + " placement");
   const auto k = static_cast<std::size_t>(sei.value);
   if (!prepared_[k]) {
-    model_.superelements[k] = make_aic_element(sources_[k]);
+    model_.superelements[k] = make_aic_element(*sources_[k]);
     prepared_[k] = true;
   }
   const AicElement& e = model_.superelements[k];
-  const se::Superelement& s = sources_[k];
+  const se::Superelement& s = *sources_[k];
   if (static_cast<int>(nodes.size()) != e.N)
     throw InputError(who + ": superelement '" + e.name + "' has " + std::to_string(e.N) + " interface nodes, " +
                      std::to_string(nodes.size()) + " nodes were given");
@@ -195,7 +200,7 @@ RigidBodyIndex ModelBuilder::add_rigid_body(const std::string& name, Superelemen
     throw InputError(who + ": refers to a superelement that was not added");
   check_node(anchor, who);
   check_pose(X_WB, who + " placement");
-  const se::Superelement& s = sources_[static_cast<std::size_t>(sei.value)];
+  const se::Superelement& s = *sources_[static_cast<std::size_t>(sei.value)];
   if (!(s.mass > 0.0) || !std::isfinite(s.mass)) throw InputError(who + ": superelement '" + s.name + "' has no mass");
   if (!s.I_Cm_B.allFinite() || !s.p_BoCm_B.allFinite()) throw InputError(who + ": mass properties are not finite");
   if (anchor_interface < -1 || anchor_interface >= s.num_interfaces())

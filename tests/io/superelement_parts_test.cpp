@@ -372,19 +372,19 @@ TEST(SuperelementParts, SceneLoadsTheDynamicsOnlyWhenTheMeshIsNotNeeded) {
   io::save_superelement(s, tmp / "link.se");
   const auto simple = tmp.write("simple.yaml", scene_text("simplified"));
   const io::Scene a = io::build_scene(io::read_scene(simple), {.keep_mesh = false});
-  EXPECT_TRUE(a.superelements[0].fe_node_ids.empty());
-  EXPECT_EQ(a.superelements[0].recovery.size(), 0);
+  EXPECT_TRUE(a.superelements[0]->fe_node_ids.empty());
+  EXPECT_EQ(a.superelements[0]->recovery.size(), 0);
   const io::Scene b = io::build_scene(io::read_scene(simple));
-  EXPECT_EQ(b.superelements[0].fe_node_ids, s.fe_node_ids);
+  EXPECT_EQ(b.superelements[0]->fe_node_ids, s.fe_node_ids);
 
   const auto full = tmp.write("full.yaml", scene_text("full"));
   const io::Scene c = io::build_scene(io::read_scene(full), {.keep_mesh = false});
   const se::InertiaInvariants expected = reduction::compute_inertia_invariants(s);
-  EXPECT_EQ(first_difference(c.superelements[0].invariants, expected), "");
+  EXPECT_EQ(first_difference(c.superelements[0]->invariants, expected), "");
   if (expected.present()) {
-    EXPECT_TRUE(c.superelements[0].fe_node_ids.empty());  // invariants computed: the mesh is not kept
+    EXPECT_TRUE(c.superelements[0]->fe_node_ids.empty());  // invariants computed: the mesh is not kept
   } else {
-    EXPECT_EQ(c.superelements[0].recovery.size(), s.recovery.size());  // until they exist: the mesh serves
+    EXPECT_EQ(c.superelements[0]->recovery.size(), s.recovery.size());  // until they exist: the mesh serves
   }
 }
 

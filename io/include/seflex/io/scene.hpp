@@ -9,6 +9,7 @@
 // Every InputError names "scene.yaml:LINE: key.path: what was expected".
 #include <Eigen/Core>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -125,7 +126,9 @@ struct SceneBodyRef {
 
 struct Scene {
   SceneDescription description;
-  std::vector<se::Superelement> superelements;  ///< per scene body, as used (internal modes kept)
+  /// Per scene body, as used (internal modes kept); bodies that use the same file with the same modes
+  /// share one copy.
+  std::vector<std::shared_ptr<const se::Superelement>> superelements;
   std::vector<SceneBodyRef> bodies;             ///< per scene body
   mbd::Model model;
 };

@@ -15,6 +15,7 @@
 // Unknowns (dofs): 6 per Free node, 1 per undriven hinge, m per flexible body with internal modes.
 #include <Eigen/Core>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -160,7 +161,8 @@ class ModelBuilder {
   NodeIndex hinge_child(HingeIndex h) const { return model_.hinges.at(static_cast<std::size_t>(h.value)).child; }
   void set_initial_velocity(NodeIndex free_node, const Eigen::Vector3d& v_W, const Eigen::Vector3d& w_W);
 
-  SuperelementIndex add_superelement(const se::Superelement& s);
+  SuperelementIndex add_superelement(const se::Superelement& s);  ///< keeps a copy
+  SuperelementIndex add_superelement(std::shared_ptr<const se::Superelement> s);  ///< shares it
   /// A flexible body on existing nodes (one per interface). Its interface nodes must lie where
   /// X_WB places the superelement's interfaces (within options.placement_tolerance x body size).
   FlexibleBodyIndex add_flexible_body(const std::string& name, SuperelementIndex se, const std::vector<NodeIndex>& nodes,
@@ -177,7 +179,7 @@ class ModelBuilder {
   void set_gravity(const Eigen::Vector3d& g_W) { model_.gravity = g_W; }
 
   const Model& model() const { return model_; }
-  const se::Superelement& source(SuperelementIndex i) const { return sources_.at(static_cast<std::size_t>(i.value)); }
+  const se::Superelement& source(SuperelementIndex i) const { return *sources_.at(static_cast<std::size_t>(i.value)); }
   /// Number the dofs, derive the per-node dependencies, and hand the model over.
   Model build();
 
@@ -187,7 +189,7 @@ class ModelBuilder {
   NodeIndex push_attached(const std::string& name, NodeIndex parent, const Pose& X_WN, HingeIndex hinge, double phi0,
                           const Eigen::Vector3d& axis_P);
   Model model_;
-  std::vector<se::Superelement> sources_;
+  std::vector<std::shared_ptr<const se::Superelement>> sources_;
   std::vector<bool> prepared_;  ///< AIC data computed (the superelement is used by a flexible body)
 };
 
