@@ -277,8 +277,7 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
     std::printf("  geometric-stiffness invariants: stored (%d inertia load cases, %zu constraint modes; %.2f s)\n",
                 seflex::se::StiffeningInvariants::kInertiaCases, s.stiffening.interface.size(), info.seconds_stiffening);
   else
-    std::printf("  geometric-stiffness invariants: not computed (%s: no stress stiffening in the run)\n",
-                no_stiffening ? "--no-stiffening" : "not with the distributed backend");
+    std::printf("  geometric-stiffness invariants: not computed (--no-stiffening: no stress stiffening in the run)\n");
   if (no_mesh)
     std::printf("  mesh part: left out (--no-mesh; %zu FE nodes, %zu cells not written: no animation or recovery)\n",
                 mesh_nodes, mesh_cells);

@@ -58,7 +58,8 @@ struct SuperelementOptions {
   CraigBamptonOptions modes;       ///< fixed-interface modes (count or frequency limit)
   std::string name;                ///< body name
   bool full_mesh = true;           ///< keep recovery, M_fe and cells (animation, recovery); the invariants are always computed
-  /// Compute the geometric-stiffness invariants (stiffening.hpp; not with the partitioned backend below).
+  /// Compute the geometric-stiffness invariants (stiffening.hpp; with either backend: the partitioned
+  /// `basis` below solves the inertia load cases on its factor, CraigBamptonOptions::interior_loads).
   bool stiffening = true;
   /// The distributed backend's partitioned assembly (parallel/, `reduce --backend slepc`): when both
   /// are set, step 1 takes the g-set matrices from `assemble` (M whole; K only as far as
