@@ -214,6 +214,10 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
     const seflex::parallel::Backend& plugin = seflex::app::parallel_backend();
     o.modes.factorization_maker = plugin.make_mumps_factorization;
     o.modes.external = plugin.slepc_eigenproblem;
+    // The geometric-stiffness projections shared out over the ranks, then summed on every rank.
+    o.stiffening_rank = session->rank();
+    o.stiffening_ranks = session->size();
+    o.sum_stiffening = plugin.sum_over_ranks;
     // Elements partitioned by METIS, each rank assembling its own, unless constraints need the whole model.
     if (const auto refusal = plugin.partition_refusal(model, red::select_case(model).mpc)) {
       assembly = "replicated on every rank (" + *refusal + ")";
@@ -277,8 +281,7 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
     std::printf("  geometric-stiffness invariants: stored (%d inertia load cases, %zu constraint modes; %.2f s)\n",
                 seflex::se::StiffeningInvariants::kInertiaCases, s.stiffening.interface.size(), info.seconds_stiffening);
   else
-    std::printf("  geometric-stiffness invariants: not computed (%s: no stress stiffening in the run)\n",
-                no_stiffening ? "--no-stiffening" : "not with the distributed backend");
+    std::printf("  geometric-stiffness invariants: not computed (--no-stiffening: no stress stiffening in the run)\n");
   if (no_mesh)
     std::printf("  mesh part: left out (--no-mesh; %zu FE nodes, %zu cells not written: no animation or recovery)\n",
                 mesh_nodes, mesh_cells);

@@ -76,6 +76,16 @@ void print_superelement_info(const std::string& path) {
     std::printf("present, %s (full inertia without the mesh)\n", size_text(info.invariant_bytes()).c_str());
   else
     std::printf("absent (full inertia needs the mesh part; `seflex reduce` of format 1.2 stores them)\n");
+  std::printf("stiffening invariants        ");  // datasets stiff.* (format 1.3)
+  if (s.stiffening.present()) {
+    std::uint64_t bytes = 0;
+    for (const auto& d : info.datasets)
+      if (d.name.rfind("stiff.", 0) == 0) bytes += d.bytes;
+    std::printf("present: %d inertia load cases, %zu constraint modes; %s (geometric stiffening in a run)\n",
+                se::StiffeningInvariants::kInertiaCases, s.stiffening.interface.size(), size_text(bytes).c_str());
+  } else {
+    std::printf("absent (reduced with --no-stiffening or before format 1.3: no geometric stiffening in a run)\n");
+  }
   std::printf("mesh part                    ");
   if (info.has_mesh())
     std::printf("present: %lld FE nodes, %lld cells, recovery %s, FE mass %s; %s\n",

@@ -321,8 +321,8 @@ struct Builder {
     const bool has_stiffening = se_of(static_cast<int>(b)).stiffening.present();
     if (body.geometric_stiffening.value_or(false) && !has_stiffening)
       body.where.fail("geometric_stiffening: on, but " + body.superelement.string() +
-                      " carries no geometric-stiffness invariants (reduced with --no-stiffening, with the distributed "
-                      "backend, or by a seflex before format 1.3); re-run `seflex reduce` without --no-stiffening, or "
+                      " carries no geometric-stiffness invariants (reduced with --no-stiffening, or by a seflex "
+                      "before format 1.3); re-run `seflex reduce` without --no-stiffening, or "
                       "set geometric_stiffening: off");
     o.geometric_stiffening = body.geometric_stiffening.value_or(true) && has_stiffening;
     const mbd::FlexibleBodyIndex fb = at(body.where, [&] {

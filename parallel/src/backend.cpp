@@ -3,6 +3,7 @@
 
 #include "seflex/parallel/mumps_factorization.hpp"
 #include "seflex/parallel/partitioned_craig_bampton.hpp"
+#include "seflex/parallel/session.hpp"
 #include "seflex/parallel/slepc_eigensolver.hpp"
 
 namespace seflex::parallel {
@@ -20,6 +21,7 @@ Backend make_table() {
     return std::make_shared<PartitionedSystem>(assemble_partitioned(model, options, whole));
   };
   b.craig_bampton_partitioned = &craig_bampton_partitioned;
+  b.sum_over_ranks = &sum_over_ranks;
   return b;
 }
 

@@ -91,6 +91,8 @@ reduction::CraigBamptonBasis craig_bampton_partitioned(const PartitionedSystem& 
   for (PetscInt p = lo; p < hi; ++p)
     if (!on_boundary[static_cast<std::size_t>(system.p_to_f[static_cast<std::size_t>(p)])]) interior_p.push_back(p);
   const auto local_i = static_cast<Eigen::Index>(interior_p.size());
+  const Eigen::Index nl = options.interior_loads.cols();  // load cases riding on the constraint-mode solve
+  SEFLEX_DEMAND(nl == 0 || options.interior_loads.rows() == n, "Craig-Bampton: interior_loads must have one row per f-dof");
 
   // K_ib columns: the interior rows of K e_b (one product per boundary dof).
   Eigen::MatrixXd E = Eigen::MatrixXd::Zero(local, nb);  // Psi's boundary part, this rank's rows
@@ -105,10 +107,12 @@ reduction::CraigBamptonBasis craig_bampton_partitioned(const PartitionedSystem& 
   OwnedIS is;
   SEFLEX_PETSC(ISCreateGeneral(PETSC_COMM_WORLD, static_cast<PetscInt>(local_i), interior_p.data(), PETSC_COPY_VALUES, is.out()));
   Eigen::MatrixXd Psi_local = E;  // this rank's rows of Psi (partition numbering)
+  Eigen::MatrixXd Y_local = Eigen::MatrixXd::Zero(local, nl);  // this rank's rows of K_ii^-1 F_i, 0 on b
   if (ni > 0) {
     SEFLEX_PETSC(MatCreateSubMatrix(K, is.get(), is.get(), MAT_INITIAL_MATRIX, K_ii.out()));
     SEFLEX_PETSC(MatCreateSubMatrix(M, is.get(), is.get(), MAT_INITIAL_MATRIX, M_ii.out()));
-    // Constraint modes: Psi_i = -K_ii^-1 K_ib, one factorisation, one multi-column solve.
+    // Constraint modes Psi_i = -K_ii^-1 K_ib and the static responses K_ii^-1 F_i of the interior
+    // loads: one factorisation, one multi-column solve (n_b + n_l right-hand sides).
     const auto t0 = Clock::now();
     SEFLEX_PETSC(MatSetOption(K_ii.get(), MAT_SPD, PETSC_TRUE));
     SEFLEX_PETSC(MatGetFactor(K_ii.get(), MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, F.out()));
@@ -121,13 +125,18 @@ reduction::CraigBamptonBasis craig_bampton_partitioned(const PartitionedSystem& 
     const auto t2 = Clock::now();
     detail::OwnedMat rhs, x;
     SEFLEX_PETSC(MatCreateDense(PETSC_COMM_WORLD, static_cast<PetscInt>(local_i), PETSC_DECIDE, static_cast<PetscInt>(ni),
-                                static_cast<PetscInt>(nb), nullptr, rhs.out()));
+                                static_cast<PetscInt>(nb + nl), nullptr, rhs.out()));
     PetscScalar* a = nullptr;
     PetscInt lda = 0;
     SEFLEX_PETSC(MatDenseGetLDA(rhs.get(), &lda));
     SEFLEX_PETSC(MatDenseGetArrayWrite(rhs.get(), &a));
     for (Eigen::Index k = 0; k < nb; ++k)
       for (Eigen::Index q = 0; q < local_i; ++q) a[k * lda + q] = -KE(interior_p[static_cast<std::size_t>(q)] - lo, k);
+    for (Eigen::Index k = 0; k < nl; ++k)
+      for (Eigen::Index q = 0; q < local_i; ++q) {
+        const PetscInt p = interior_p[static_cast<std::size_t>(q)];
+        a[(nb + k) * lda + q] = options.interior_loads(system.p_to_f[static_cast<std::size_t>(p)], k);
+      }
     SEFLEX_PETSC(MatDenseRestoreArrayWrite(rhs.get(), &a));
     SEFLEX_PETSC(MatDuplicate(rhs.get(), MAT_DO_NOT_COPY_VALUES, x.out()));
     SEFLEX_PETSC(MatMatSolve(F.get(), rhs.get(), x.get()));
@@ -137,12 +146,14 @@ reduction::CraigBamptonBasis craig_bampton_partitioned(const PartitionedSystem& 
     SEFLEX_PETSC(MatDenseGetArrayRead(x.get(), &xa));
     for (Eigen::Index k = 0; k < nb; ++k)
       for (Eigen::Index q = 0; q < local_i; ++q) Psi_local(interior_p[static_cast<std::size_t>(q)] - lo, k) = xa[k * xlda + q];
+    for (Eigen::Index k = 0; k < nl; ++k)
+      for (Eigen::Index q = 0; q < local_i; ++q) Y_local(interior_p[static_cast<std::size_t>(q)] - lo, k) = xa[(nb + k) * xlda + q];
     SEFLEX_PETSC(MatDenseRestoreArrayRead(x.get(), &xa));
     reduction::FactorizationStats& fs = cb.stats.interior_factorization;
     fs.rows = ni;
     fs.factor_nonzeros = detail::mumps_factor_nonzeros(F.get());
     fs.symbolic_analyses = fs.numeric_factorizations = fs.solve_calls = 1;
-    fs.solve_columns = nb;
+    fs.solve_columns = nb + nl;
     fs.seconds_symbolic = std::chrono::duration<double>(t1 - t0).count();
     fs.seconds_numeric = std::chrono::duration<double>(t2 - t1).count();
     fs.seconds_solve = std::chrono::duration<double>(Clock::now() - t2).count();
@@ -215,14 +226,17 @@ reduction::CraigBamptonBasis craig_bampton_partitioned(const PartitionedSystem& 
     cb.M.bottomRightCorner(m, m).setIdentity();
   }
 
-  // Psi and Phi gathered, rows in the f-set order.
+  // Psi, Phi and the static responses gathered, rows in the f-set order.
   const Eigen::MatrixXd Psi_p = gather_rows(Psi_local, n), Phi_p = gather_rows(Phi_local, n);
+  const Eigen::MatrixXd Y_p = nl > 0 ? gather_rows(Y_local, n) : Eigen::MatrixXd(n, 0);
   cb.Psi.resize(n, nb);
   cb.Phi.resize(n, m);
+  cb.static_responses.resize(nl > 0 ? n : 0, nl);
   for (Eigen::Index p = 0; p < n; ++p) {
     const Eigen::Index f = system.p_to_f[static_cast<std::size_t>(p)];
     cb.Psi.row(f) = Psi_p.row(p);
     if (m > 0) cb.Phi.row(f) = Phi_p.row(p);
+    if (nl > 0) cb.static_responses.row(f) = Y_p.row(p);
   }
   return cb;
 }

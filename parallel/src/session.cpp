@@ -3,6 +3,7 @@
 
 #include <slepcsys.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "petsc_support.hpp"
@@ -20,6 +21,19 @@ Session::Session() {
 }
 
 Session::~Session() { (void)SlepcFinalize(); }
+
+void sum_over_ranks(const std::vector<double*>& arrays, std::size_t count, bool failed_here) {
+  int mine = failed_here ? 1 : 0, any = 0;
+  SEFLEX_DEMAND(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD) == MPI_SUCCESS, "MPI_Allreduce failed");
+  if (failed_here) return;
+  if (any != 0) throw PeerFailure();
+  constexpr std::size_t kChunk = std::size_t{1} << 28;  // doubles per call: counts are ints
+  for (double* a : arrays)
+    for (std::size_t at = 0; at < count; at += kChunk)
+      SEFLEX_DEMAND(MPI_Allreduce(MPI_IN_PLACE, a + at, static_cast<int>(std::min(kChunk, count - at)), MPI_DOUBLE,
+                                  MPI_SUM, PETSC_COMM_WORLD) == MPI_SUCCESS,
+                    "MPI_Allreduce failed");
+}
 
 std::optional<Failure> Session::agree(const std::optional<Failure>& local) const {
   // The lowest failing rank (size_ if none) ...

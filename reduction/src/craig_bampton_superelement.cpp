@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <map>
 #include <string>
@@ -316,14 +317,14 @@ se::Superelement reduce_to_superelement(const fem::Model& model, const Superelem
   for (std::size_t gi : interface_index)
     for (int k = 0; k < 6; ++k) boundary.push_back(c.g_to_f[6 * gi + static_cast<std::size_t>(k)]);
   // With the geometric-stiffness invariants: the inertia load cases ride on the factor of K_ii.
-  const bool stiffening = options.stiffening && !partitioned;
+  const bool stiffening = options.stiffening;
   CraigBamptonOptions cbo = options.modes;
   const auto t_loads = std::chrono::steady_clock::now();
   if (stiffening) cbo.interior_loads = Eigen::MatrixXd(c.T.transpose() * inertia_load_cases(model, g.dofs, g.M, X_f));
   double seconds_stiffening = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_loads).count();
   CraigBamptonBasis cb;
   try {
-    cb = partitioned ? options.basis(boundary, options.modes) : craig_bampton(c.K_ff, c.M_ff, boundary, cbo);
+    cb = partitioned ? options.basis(boundary, cbo) : craig_bampton(c.K_ff, c.M_ff, boundary, cbo);
   } catch (const FactorizationError& e) {
     std::vector<char> is_b(static_cast<std::size_t>(c.n_free()), 0);
     for (Eigen::Index f : boundary) is_b[static_cast<std::size_t>(f)] = 1;
@@ -383,7 +384,24 @@ se::Superelement reduce_to_superelement(const fem::Model& model, const Superelem
     const auto t0 = std::chrono::steady_clock::now();
     Eigen::MatrixXd B_f(cb.Psi.rows(), n);
     B_f << cb.Psi, cb.Phi;
-    s.stiffening = compute_stiffening_invariants(model, g.dofs, c.T, B_f, nb, cb.static_responses);
+    if (!options.sum_stiffening) {
+      s.stiffening = compute_stiffening_invariants(model, g.dofs, c.T, B_f, nb, cb.static_responses);
+    } else {  // this rank's share of the cases, then the sum over the ranks (collective even on failure)
+      std::exception_ptr error;
+      try {
+        s.stiffening = compute_stiffening_invariants(model, g.dofs, c.T, B_f, nb, cb.static_responses,
+                                                     options.stiffening_rank, options.stiffening_ranks);
+      } catch (...) {
+        error = std::current_exception();
+      }
+      std::vector<double*> matrices;
+      if (!error) {
+        for (Eigen::MatrixXd& G : s.stiffening.inertia) matrices.push_back(G.data());
+        for (Eigen::MatrixXd& G : s.stiffening.interface) matrices.push_back(G.data());
+      }
+      options.sum_stiffening(matrices, static_cast<std::size_t>(n * n), error != nullptr);
+      if (error) std::rethrow_exception(error);
+    }
     seconds_stiffening += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     inf.seconds_stiffening = seconds_stiffening;
   }

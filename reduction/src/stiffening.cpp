@@ -32,16 +32,19 @@ Eigen::MatrixXd inertia_load_cases(const fem::Model& model, const fem::DofMap& d
 se::StiffeningInvariants compute_stiffening_invariants(const fem::Model& model, const fem::DofMap& dofs,
                                                        const Eigen::SparseMatrix<double>& T_gf,
                                                        const Eigen::MatrixXd& B_f, Eigen::Index n_b,
-                                                       const Eigen::MatrixXd& inertia_responses_f) {
+                                                       const Eigen::MatrixXd& inertia_responses_f, int part,
+                                                       int parts) {
   SEFLEX_DEMAND(B_f.rows() == T_gf.cols() && inertia_responses_f.rows() == T_gf.cols(),
                 "stiffening invariants: the basis and the responses need one row per f-dof");
   SEFLEX_DEMAND(inertia_responses_f.cols() == se::StiffeningInvariants::kInertiaCases,
                 "stiffening invariants: 12 inertia responses expected");
   SEFLEX_DEMAND(n_b >= 0 && n_b <= B_f.cols() && n_b % 6 == 0, "stiffening invariants: bad interface size");
+  SEFLEX_DEMAND(parts >= 1 && part >= 0 && part < parts, "stiffening invariants: bad share of the cases");
   const Eigen::MatrixXd B_g = T_gf * B_f;  // g x n
   se::StiffeningInvariants out;
   out.n = static_cast<int>(B_f.cols());
-  auto project = [&](const Eigen::VectorXd& u_f) {
+  auto project = [&](Eigen::Index k, const Eigen::VectorXd& u_f) {
+    if (k % parts != part) return Eigen::MatrixXd(Eigen::MatrixXd::Zero(out.n, out.n));  // another part's case
     const Eigen::VectorXd u_g = T_gf * u_f;
     const Eigen::SparseMatrix<double> Ks = fem::assemble_geometric_stiffness(model, dofs, u_g);
     const Eigen::MatrixXd KB = Ks * B_g;
@@ -49,9 +52,10 @@ se::StiffeningInvariants compute_stiffening_invariants(const fem::Model& model, 
     return Eigen::MatrixXd(0.5 * (G + G.transpose()));
   };
   for (int c = 0; c < se::StiffeningInvariants::kInertiaCases; ++c)
-    out.inertia[static_cast<std::size_t>(c)] = project(inertia_responses_f.col(c));
+    out.inertia[static_cast<std::size_t>(c)] = project(c, inertia_responses_f.col(c));
   out.interface.reserve(static_cast<std::size_t>(n_b));
-  for (Eigen::Index j = 0; j < n_b; ++j) out.interface.push_back(project(B_f.col(j)));
+  for (Eigen::Index j = 0; j < n_b; ++j)
+    out.interface.push_back(project(se::StiffeningInvariants::kInertiaCases + j, B_f.col(j)));
   return out;
 }
 

@@ -79,6 +79,10 @@ TEST(InfoSuperelementCli, DescribesAReducedYoke) {
     EXPECT_TRUE(has(o, "inertia invariants           present, ")) << o;
   else
     EXPECT_TRUE(has(o, "inertia invariants           absent")) << o;
+  // reduce computes the geometric-stiffness invariants by default: 12 inertia cases, one per interface dof.
+  ASSERT_TRUE(info.dynamics.stiffening.present());
+  EXPECT_TRUE(has(o, "stiffening invariants        present: 12 inertia load cases, " +
+                         std::to_string(6 * info.dynamics.num_interfaces()) + " constraint modes; ")) << o;
   EXPECT_TRUE(has(o, "mesh part                    present: " + std::to_string(m.grids.size()) + " FE nodes, 19 cells, "
                      "recovery yes, FE mass yes;")) << o;
   EXPECT_TRUE(has(o, "modal effective mass fraction")) << o;

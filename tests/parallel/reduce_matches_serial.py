@@ -1,12 +1,18 @@
 #!/usr/bin/python3
-"""`mpirun -n 2 seflex reduce ... --backend slepc` against the serial `seflex reduce` (issue 16): the
-superelement files' reduced K and M agree to 1e-9 relative to their largest entry, after the sign of
-each fixed-interface mode (arbitrary in any eigensolver) is matched through its mass coupling to the
-interface; the FE mass M_fe (gathered from the ranks' element shares), the constraint-mode columns
-of the recovery matrix and the mass properties too; and the distributed run says how it assembled.
-Decks: the yoke (CBAR + CONM2, 3 interface grids, 5 modes) and a 16 x 12 CQUAD4 plate with one
-short edge as the interface (10 modes), both assembled by partition; the plate with an RBE2, which
-the distributed run must assemble replicated (and say so).
+"""`mpirun -n 1` and `-n 2 seflex reduce ... --backend slepc` against the serial `seflex reduce` (issue
+16): the superelement files' reduced K and M agree to 1e-9 relative to their largest entry, after the
+sign of each fixed-interface mode (arbitrary in any eigensolver) is matched through its mass coupling
+to the interface; the FE mass M_fe (gathered from the ranks' element shares), the constraint-mode
+columns of the recovery matrix and the mass properties too; and the distributed run says how it
+assembled. The geometric-stiffness invariants (stiff.inertia.c, stiff.interface.j,
+docs/geometric-stiffening.md) are in both files, each matrix equal to 1e-9 of its largest entry with
+the same mode signs applied to its rows and columns (a matrix that is zero in the serial file - a flat
+plate's out-of-plane cases carry no membrane stress - to 1e-9 of the largest of its kind), and
+`seflex info` reports them present.
+Decks: the yoke (CBAR + CONM2, 3 interface grids, 5 modes; also on 3 ranks, which share out the 30
+stiffening projections unevenly; and with the interface given out of order, 4,1,3) and a 16 x 12 CQUAD4 plate with one short edge as the interface (10 modes; also with
+the edge's grids in reverse order), all assembled by partition; the plate with an RBE2, which the
+distributed run must assemble replicated (and say so).
 
 usage: reduce_matches_serial.py MPIRUN SEFLEX OUTDIR   (exit 0 when all agree)
 """
@@ -54,6 +60,40 @@ def close(a, b, tol=1e-9):
     return a.shape == b.shape and np.abs(a - b).max() <= tol * max(np.abs(a).max(), 1e-300)
 
 
+def stiffening_agrees(name, serial, dist, nb, signs):
+    """The stiff.* datasets of both files: the same set, each matrix to 1e-9 (see the docstring)."""
+    keys = sorted(k for k in serial if k.startswith("stiff."))
+    if len(keys) != 12 + nb or sorted(k for k in dist if k.startswith("stiff.")) != keys:
+        print("FAIL %s: stiffening datasets: serial %d, distributed %d (expected %d)" % (
+            name, len(keys), len([k for k in dist if k.startswith("stiff.")]), 12 + nb))
+        return False
+    kind_max = {}
+    for k in keys:
+        kind = k.split(".")[1]
+        kind_max[kind] = max(kind_max.get(kind, 0.0), np.abs(serial[k]).max())
+    worst, worst_key = 0.0, ""
+    S = np.outer(signs, signs)
+    for k in keys:
+        G1, G2 = serial[k], dist[k] * S
+        scale = np.abs(G1).max() or kind_max[k.split(".")[1]]
+        err = np.abs(G2 - G1).max() / scale
+        if err > worst:
+            worst, worst_key = err, k
+    ok = worst <= 1e-9
+    print("%s %s: %d stiffening invariants, max |dG|/max|G| = %.2e%s" % ("ok  " if ok else "FAIL", name, len(keys),
+                                                                       worst, " (" + worst_key + ")" if worst_key else ""))
+    return ok
+
+
+def info_reports_stiffening(name, seflex, path, nb):
+    p = subprocess.run([seflex, "info", path], capture_output=True, text=True)
+    want = "stiffening invariants        present: 12 inertia load cases, %d constraint modes" % nb
+    if p.returncode != 0 or want not in p.stdout:
+        print("FAIL %s: `seflex info %s` does not say '%s':\n%s%s" % (name, path, want, p.stdout, p.stderr))
+        return False
+    return True
+
+
 def compare(name, serial_run, dist_run, nb, assembly):
     (h1, serial, _), (h2, dist, out) = serial_run, dist_run
     if "assembly: " + assembly not in out:
@@ -69,16 +109,17 @@ def compare(name, serial_run, dist_run, nb, assembly):
     if K1.shape != K2.shape:
         print("FAIL %s: K is %s serial, %s distributed" % (name, K1.shape, K2.shape))
         return False
+    signs = np.ones(K1.shape[0])
     for k in range(nb, K1.shape[0]):  # a mode's sign: match the coupling row M[k, :nb]
         if np.dot(M1[k, :nb], M2[k, :nb]) < 0:
-            M2[k, :] *= -1
-            M2[:, k] *= -1
+            signs[k] = -1
+    M2 = M2 * np.outer(signs, signs)
     dk = np.abs(K2 - K1).max() / np.abs(K1).max()
     dm = np.abs(M2 - M1).max() / np.abs(M1).max()
     ok = dk <= 1e-9 and dm <= 1e-9
     print("%s %s: %d x %d, max |dK|/max|K| = %.2e, max |dM|/max|M| = %.2e" % ("ok  " if ok else "FAIL", name,
                                                                               K1.shape[0], K1.shape[1], dk, dm))
-    return ok
+    return stiffening_agrees(name, serial, dist, nb, signs) and ok
 
 
 def main():
@@ -88,18 +129,26 @@ def main():
     edge = plate_deck(plate)
     linked = os.path.join(out, "cb_plate_rbe2.bdf")
     plate_deck(linked, rbe2=True)
-    part, repl = "partitioned by METIS over 2 ranks", "replicated on every rank (the model has RBE2 cards"
-    cases = [("yoke", os.path.join(ROOT, "meshes", "yoke.bdf"), "1,3,4", 5, 18, part),
-             ("plate", plate, edge, 10, 6 * 13, part),
-             ("plate with RBE2", linked, edge, 10, 6 * 13, repl)]
+    part, repl = "partitioned by METIS over %d ranks", "replicated on every rank (the model has RBE2 cards"
+    yoke = os.path.join(ROOT, "meshes", "yoke.bdf")
+    reversed_edge = ",".join(reversed(edge.split(",")))
+    cases = [("yoke", yoke, "1,3,4", 5, 18, part, (1, 2, 3)),
+             ("yoke 4,1,3", yoke, "4,1,3", 5, 18, part, (1, 2)),
+             ("plate", plate, edge, 10, 6 * 13, part, (1, 2)),
+             ("plate reversed edge", plate, reversed_edge, 10, 6 * 13, part, (1, 2)),
+             ("plate with RBE2", linked, edge, 10, 6 * 13, repl, (1, 2))]
     ok = True
-    for name, deck, iface, modes, nb, assembly in cases:
-        tag = name.replace(" ", "_")
-        a, b = os.path.join(out, tag + "_serial.se"), os.path.join(out, tag + "_mpi.se")
+    for name, deck, iface, modes, nb, assembly, rank_counts in cases:
+        tag = name.replace(" ", "_").replace(",", "")
+        a = os.path.join(out, tag + "_serial.se")
         args = ["reduce", deck, "--interface", iface, "--modes", str(modes), "--force"]
         serial = reduce([seflex] + args + ["-o", a], a)
-        dist = reduce([mpirun, "-n", "2", seflex] + args + ["--backend", "slepc", "-o", b], b)
-        ok = compare(name, serial, dist, nb, assembly) and ok
+        for ranks in rank_counts:
+            b = os.path.join(out, "%s_mpi%d.se" % (tag, ranks))
+            dist = reduce([mpirun, "-n", str(ranks), seflex] + args + ["--backend", "slepc", "-o", b], b)
+            label = "%s, %d rank%s" % (name, ranks, "" if ranks == 1 else "s")
+            ok = compare(label, serial, dist, nb, assembly % ranks if "%d" in assembly else assembly) and ok
+            ok = info_reports_stiffening(label, seflex, b, nb) and ok
     sys.exit(0 if ok else 1)
 
 

@@ -19,6 +19,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "fem_models.hpp"
 #include "seflex/common/so3.hpp"
@@ -151,6 +152,49 @@ TEST(StiffeningInvariants, InvariantsAreSymmetricAndAHeldBodyHasNoInterfaceStres
   EXPECT_LT(st.inertia[6](eta1, eta1), 0.0);
   // A unit acceleration across the beam (y or z) loads it in bending, not axially: no first-order stiffening.
   EXPECT_LE(std::abs(st.inertia[2](eta1, eta1)), 1e-6 * std::abs(st.inertia[0](eta1, eta1)));
+}
+
+// The distributed reduce shares the 12 + 6N projections out over the ranks (case k on rank k mod P)
+// and sums them (SuperelementOptions::sum_stiffening, MPI_Allreduce there; here the parts are added
+// up by the test): each part computes its own cases only, and the parts add up to the whole.
+TEST(StiffeningInvariants, SharedOutCasesAddUpToTheWhole) {
+  const fem::Model m = cantilever(10);
+  SuperelementOptions o;
+  o.interface_ids = {1, 11};  // both ends held: the constraint modes stress the beam
+  o.modes.modes = 3;
+  o.name = "cantilever";
+  const se::Superelement whole = reduce_to_superelement(m, o);
+  const se::StiffeningInvariants& w = whole.stiffening;
+  const Eigen::Index n = whole.size();
+  ASSERT_EQ(w.interface.size(), 12u);
+  constexpr int kParts = 3;
+  const std::size_t cases = se::StiffeningInvariants::kInertiaCases + w.interface.size();
+  std::vector<Eigen::MatrixXd> sum(cases, Eigen::MatrixXd::Zero(n, n));
+  for (int part = 0; part < kParts; ++part) {
+    o.stiffening_rank = part;
+    o.stiffening_ranks = kParts;
+    int calls = 0;
+    o.sum_stiffening = [&](const std::vector<double*>& matrices, std::size_t count, bool failed_here) {
+      ++calls;
+      EXPECT_FALSE(failed_here);
+      ASSERT_EQ(matrices.size(), cases);
+      ASSERT_EQ(count, static_cast<std::size_t>(n * n));
+      for (std::size_t k = 0; k < cases; ++k) {
+        const Eigen::Map<const Eigen::MatrixXd> G(matrices[k], n, n);
+        if (static_cast<int>(k) % kParts != part) {
+          EXPECT_EQ(G.cwiseAbs().maxCoeff(), 0.0) << "case " << k;
+        }
+        sum[k] += G;
+      }
+    };
+    (void)reduce_to_superelement(m, o);
+    EXPECT_EQ(calls, 1);
+  }
+  for (std::size_t k = 0; k < cases; ++k) {
+    const Eigen::MatrixXd& G = k < 12 ? w.inertia[k] : w.interface[k - 12];
+    EXPECT_LE((sum[k] - G).cwiseAbs().maxCoeff(), 1e-12 * G.cwiseAbs().maxCoeff()) << "case " << k;
+  }
+  EXPECT_GT(w.interface[0].cwiseAbs().maxCoeff(), 0.0);  // axial constraint mode: tension, not nothing
 }
 
 }  // namespace

@@ -29,7 +29,7 @@
 
 namespace seflex::parallel {
 
-inline constexpr int kBackendAbi = 1;
+inline constexpr int kBackendAbi = 2;
 
 /// Name of the plugin's entry point: extern "C" const Backend* seflex_parallel_backend().
 inline constexpr const char* kBackendEntry = "seflex_parallel_backend";
@@ -51,6 +51,7 @@ struct Backend {
   reduction::CraigBamptonBasis (*craig_bampton_partitioned)(const PartitionedSystem& system,
                                                             const std::vector<Eigen::Index>& boundary,
                                                             const reduction::CraigBamptonOptions& options) = nullptr;
+  void (*sum_over_ranks)(const std::vector<double*>& arrays, std::size_t count, bool failed_here) = nullptr;
 };
 
 /// The sizes of the types that cross the table, combined: equal on both sides of one build.

@@ -9,6 +9,9 @@
 //   K_red = [Psi^T K Psi, 0; 0, diag(lambda)],  M_red = [Psi^T M Psi, Psi^T M Phi; Phi^T M Psi, I]
 // with the products Psi^T K Psi, Psi^T M Psi, Phi^T M Psi summed from each rank's rows.
 // Psi (n_f x n_b) and Phi (n_f x m) are gathered on every rank (f-set rows), as the replicated path.
+// options.interior_loads (n_f x k, on every rank): their static responses K_ii^-1 F_i ride on the
+// constraint modes' MatMatSolve (n_b + k right-hand sides, counted in the factorisation statistics)
+// and are gathered into static_responses (f-set rows, zero on the boundary) like Psi.
 // Modes: `modes` + extra_modes (or all up to fmax_hz, then extra_modes more), as the serial code.
 //
 // Collective on PETSC_COMM_WORLD; needs a parallel::Session. Throws InvariantError for bad options or

@@ -7,9 +7,11 @@
 //   PETSc's own error printing and signal handlers are switched off: a PETSc failure comes back as a
 //   seflex::InvariantError (or FactorizationError / ConvergenceError) from the call that failed.
 // - agree() is collective: every rank must call it the same number of times, in the same order.
+#include <cstddef>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace seflex::parallel {
 
@@ -46,5 +48,11 @@ class Session {
  private:
   int rank_ = 0, size_ = 1;
 };
+
+/// Collective: adds each array (`count` doubles, the same count and number of arrays on every rank)
+/// up over the ranks, in place (MPI_Allreduce): every rank gets the sums. `failed_here`: this rank's
+/// share of the work threw (its arrays may be missing); then nothing is summed and the ranks that did
+/// not fail throw PeerFailure, while this one returns (to rethrow its own error).
+void sum_over_ranks(const std::vector<double*>& arrays, std::size_t count, bool failed_here);
 
 }  // namespace seflex::parallel

@@ -26,6 +26,7 @@
 //  7. Truncation report with the rigid motions about f (craig_bampton.hpp, truncation_report).
 // Frame node: options.frame_node, or by default the grid with six free dofs, not an interface
 // node, nearest the centre of mass (ties: the lower id). The yoke uses 2 and the panel 112.
+#include <cstddef>
 #include <functional>
 #include <optional>
 #include <string>
@@ -58,7 +59,8 @@ struct SuperelementOptions {
   CraigBamptonOptions modes;       ///< fixed-interface modes (count or frequency limit)
   std::string name;                ///< body name
   bool full_mesh = true;           ///< keep recovery, M_fe and cells (animation, recovery); the invariants are always computed
-  /// Compute the geometric-stiffness invariants (stiffening.hpp; not with the partitioned backend below).
+  /// Compute the geometric-stiffness invariants (stiffening.hpp; with either backend: the partitioned
+  /// `basis` below solves the inertia load cases on its factor, CraigBamptonOptions::interior_loads).
   bool stiffening = true;
   /// The distributed backend's partitioned assembly (parallel/, `reduce --backend slepc`): when both
   /// are set, step 1 takes the g-set matrices from `assemble` (M whole; K only as far as
@@ -67,6 +69,13 @@ struct SuperelementOptions {
   /// fem::assemble and craig_bampton. Both are collective: every rank runs reduce_to_superelement.
   std::function<fem::GlobalMatrices(const fem::ConstraintOptions&)> assemble;
   std::function<CraigBamptonBasis(const std::vector<Eigen::Index>& boundary, const CraigBamptonOptions&)> basis;
+  /// Distributed reduce: the 12 + 6N projections of the geometric-stiffness invariants shared out
+  /// (case k on rank k mod ranks, stiffening.hpp), then `sum_stiffening` adds every rank's matrices
+  /// (each `count` doubles) up on every rank, in place. Collective: every rank calls it once, with
+  /// failed_here = its share threw; then it sums nothing and throws on the ranks that did not fail
+  /// (the failing rank rethrows its own error). Unset: every case on this process.
+  int stiffening_rank = 0, stiffening_ranks = 1;
+  std::function<void(const std::vector<double*>& matrices, std::size_t count, bool failed_here)> sum_stiffening;
 };
 
 /// What was done, for the summary of `seflex reduce` and the benchmark.

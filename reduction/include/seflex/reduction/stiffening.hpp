@@ -27,9 +27,13 @@ Eigen::MatrixXd inertia_load_cases(const fem::Model& model, const fem::DofMap& d
 /// order of q) mapped to the g-set by T_gf, and the f-set static responses of the 12 inertia load cases
 /// (n_f x 12, zero on the boundary). Throws InputError (naming the card) when an element's stress
 /// cannot be recovered (fem::assemble_geometric_stiffness).
+/// A share of the work (distributed reduce): with parts > 1 only the cases k with k % parts == part
+/// are computed (k = c for inertia[c], 12 + j for interface[j]); the others are left n x n zero, so
+/// that the sum over part = 0..parts-1 is the whole.
 se::StiffeningInvariants compute_stiffening_invariants(const fem::Model& model, const fem::DofMap& dofs,
                                                        const Eigen::SparseMatrix<double>& T_gf,
                                                        const Eigen::MatrixXd& B_f, Eigen::Index n_b,
-                                                       const Eigen::MatrixXd& inertia_responses_f);
+                                                       const Eigen::MatrixXd& inertia_responses_f, int part = 0,
+                                                       int parts = 1);
 
 }  // namespace seflex::reduction
