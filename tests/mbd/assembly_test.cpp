@@ -11,6 +11,7 @@
 #include "mbd_models.hpp"
 #include "seflex/common/so3.hpp"
 #include "seflex/mbd/assembly/assembly.hpp"
+#include "seflex/mbd/output.hpp"
 
 using namespace seflex;
 using namespace seflex::mbd;
@@ -246,4 +247,43 @@ TEST(Assembly, DynamicTangentMatchesFiniteDifferencesAtHighSpin) {
     EXPECT_LT(rho, 0.1) << "h = " << step;                                           // 4.1e-2 at 0.1 s
   }
   EXPECT_LT(err, 5e-4);  // measured 1.4e-4: the left-out terms are small at 9 rad/s
+}
+
+// A sample evaluated without the residual (AssemblyOptions::energies_only: the integrator's samples
+// of a scene without driven hinges) holds what the full evaluation's sample holds: frames, local
+// coordinates, energies (the kinetic energy from the invariants' mass pairing alone, kinetic_energy)
+// and the force elements; only the hinges' joint torques are left at zero.
+TEST(Assembly, EnergiesOnlyEvaluationGivesTheFullEvaluationsSample) {
+  for (const InertiaModel inertia : {InertiaModel::Full, InertiaModel::Simplified}) {
+    const Model model = mixed_model(inertia);
+    const State s = perturbed(model, 11, 1e-3);
+    Data full(model), light(model);
+    assemble(model, s, full, AssemblyOptions{false, true, 1.0});
+    AssemblyOptions o{false, true, 1.0};
+    o.energies_only = true;
+    assemble(model, s, light, o);
+    const Sample a = make_sample(model, s, full), b = make_sample(model, s, light);
+    ASSERT_GT(a.energy.kinetic, 0.0);
+    EXPECT_NEAR(b.energy.kinetic, a.energy.kinetic, 1e-13 * a.energy.kinetic);
+    EXPECT_EQ(b.energy.elastic, a.energy.elastic);
+    EXPECT_EQ(b.energy.spring, a.energy.spring);
+    EXPECT_EQ(b.energy.gravity, a.energy.gravity);
+    ASSERT_EQ(a.flexible.size(), b.flexible.size());
+    for (std::size_t k = 0; k < a.flexible.size(); ++k) {
+      EXPECT_EQ(b.flexible[k].frame.R, a.flexible[k].frame.R);
+      EXPECT_EQ(b.flexible[k].frame.p, a.flexible[k].frame.p);
+      EXPECT_EQ(b.flexible[k].xi, a.flexible[k].xi);
+      EXPECT_NEAR(b.flexible[k].kinetic, a.flexible[k].kinetic, 1e-13 * a.energy.kinetic);
+    }
+    ASSERT_EQ(a.elements.size(), b.elements.size());
+    for (std::size_t i = 0; i < a.elements.size(); ++i) {
+      EXPECT_EQ(b.elements[i].value, a.elements[i].value);
+      EXPECT_EQ(b.elements[i].hinge_torques, a.elements[i].hinge_torques);
+    }
+    for (std::size_t h = 0; h < a.hinges.size(); ++h) {
+      EXPECT_EQ(b.hinges[h].phi, a.hinges[h].phi);
+      EXPECT_EQ(b.hinges[h].phidot, a.hinges[h].phidot);
+      EXPECT_EQ(b.hinges[h].drive_torque, 0.0);
+    }
+  }
 }

@@ -156,6 +156,7 @@ void add_mapped_abs(Eigen::VectorXd& out, const ElementMap& map, const Eigen::Ve
 }  // namespace detail
 
 void assemble(const Model& model, const State& s, Data& data, const AssemblyOptions& opt) {
+  SEFLEX_DEMAND(!(opt.energies_only && opt.matrices), "assemble: energies_only evaluates no matrices");
   update_kinematics(model, s, data, opt.dynamics);
   for (auto& nk : data.nodes) nk.wrench.setZero();
   for (auto& hk : data.hinges) hk.joint_torque = 0.0;
@@ -169,6 +170,11 @@ void assemble(const Model& model, const State& s, Data& data, const AssemblyOpti
   }
   for (int b = 0; b < static_cast<int>(model.flexible_bodies.size()); ++b) detail::assemble_flexible(model, s, data, opt, b);
   for (int b = 0; b < static_cast<int>(model.rigid_bodies.size()); ++b) detail::assemble_rigid(model, data, opt, b);
+  if (opt.energies_only) {  // the force elements' values and energies; no joint torques
+    detail::assemble_force_elements(model, s, data, opt);
+    for (auto& hk : data.hinges) hk.joint_torque = 0.0;
+    return;
+  }
   detail::assemble_loads(model, s, data, opt);
   tree_pass(model, data, opt.matrices);
   detail::assemble_force_elements(model, s, data, opt);

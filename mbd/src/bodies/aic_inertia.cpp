@@ -34,6 +34,23 @@ using Vector9d = Eigen::Matrix<double, 9, 1>;
 
 namespace detail {
 
+void mass_pairing(const AicElement& e, const VectorXd& xi, const double* X, AicWorkspace& ws, Matrix6d& EmE) {
+  const se::InertiaInvariants& I = e.inv;
+  const Eigen::Index n = e.n;
+  const StackedInvariantRows r(n);
+  using Map3n = Eigen::Map<const Eigen::Matrix<double, 3, Eigen::Dynamic>>;
+  MatrixXd& PmE = ws.PmE;
+  PmE = I.PmE0;
+  PmE.rightCols<3>() += Map3n(X + r.HP, 3, n).transpose();
+  EmE = I.E0mE0;
+  const Eigen::Map<const Matrix36d> B(X + r.HE0);
+  EmE.bottomRows<3>() += B;
+  EmE.rightCols<3>() += B.transpose();
+  Vector9d q;
+  q.noalias() = Eigen::Map<const Eigen::Matrix<double, 9, Eigen::Dynamic>>(X + r.HE1, 9, n) * xi;
+  EmE.bottomRightCorner<3, 3>() += Eigen::Map<const Matrix3d>(q.data());
+}
+
 void inertia_projections(const AicElement& e, const VectorXd& xi, const VectorXd& xid, const Vector3d& Om, AicWorkspace& ws,
                          InertiaProjections& pr) {
   const se::InertiaInvariants& I = e.inv;
@@ -51,20 +68,7 @@ void inertia_projections(const AicElement& e, const VectorXd& xi, const VectorXd
   using Map3n = Eigen::Map<const Eigen::Matrix<double, 3, Eigen::Dynamic>>;
   using MapN = Eigen::Map<const MatrixXd>;
 
-  // Mass pairing at xi.
-  MatrixXd& PmE = ws.PmE;
-  PmE = I.PmE0;
-  PmE.rightCols<3>() += Map3n(X + r.HP, 3, n).transpose();
-  Matrix6d& EmE = pr.EmE;
-  EmE = I.E0mE0;
-  {
-    const Eigen::Map<const Matrix36d> B(X + r.HE0);
-    EmE.bottomRows<3>() += B;
-    EmE.rightCols<3>() += B.transpose();
-    Vector9d q;
-    q.noalias() = Eigen::Map<const Eigen::Matrix<double, 9, Eigen::Dynamic>>(X + r.HE1, 9, n) * xi;
-    EmE.bottomRightCorner<3, 3>() += Eigen::Map<const Matrix3d>(q.data());
-  }
+  mass_pairing(e, xi, X, ws, pr.EmE);
   // Centrifugal field: pm = CLp s(W), em = CLe s(W) + [0; CLh s(W)].
   MatrixXd& CLp = ws.CLp;
   CLp = I.PmLX;
@@ -147,6 +151,19 @@ void velocity_load_tangents(const AicElement& e, const Vector3d& Om, AicWorkspac
   for (int a = 0; a < 3; ++a) Ae.bottomRows<3>() += Om[a] * (ws.HGPxi[a] + I.EgOV[a]);
 }
 
+void mass_times(const AicElement& e, const AicKinematics& kin, const Matrix6d& S, const AicWorkspace& ws, const VectorXd& v,
+                VectorXd& out) {
+  const MatrixXd& Z = kin.Zx;
+  const MatrixXd& Q = ws.Q;
+  Vector6d z, y;
+  z.noalias() = Z * v;
+  y.noalias() = Q.transpose() * v;
+  y.noalias() += S * z;
+  out.noalias() = e.inv.Mpp * v;
+  out.noalias() += Q * z;
+  out.noalias() += Z.transpose() * y;
+}
+
 }  // namespace detail
 
 namespace {
@@ -173,6 +190,22 @@ void simplified(const AicElement& e, const AicKinematics& kin, const VectorXd& w
   configuration_tangent(e, kin, Mw, ab, fw, ws, Kw);
 }
 
+/// N = P T + E Z = P + D Z with D = E - P R6, R6 = [Phi_rig; 0] (T = I - R6 Z has rank-6 defect):
+/// N^T M N = Mpp + Q Z + Z^T Q^T + Z^T S Z, Q = P^T M D (ws.Q), S = D^T M D (returned), from the
+/// mass pairing (ws.PmE, EmE); ws.MR = Mpp R6.
+Matrix6d mass_operators(const AicElement& e, const AicKinematics& kin, const Matrix6d& EmE, AicWorkspace& ws) {
+  const auto nb = 6 * e.N;
+  const auto& Phi = kin.Phi_rig;
+  const MatrixXd& PmE = ws.PmE;
+  MatrixXd& MR = ws.MR;
+  MR.noalias() = e.inv.Mpp.leftCols(nb) * Phi;
+  ws.Q = PmE - MR;
+  Matrix6d PhiPmE, PhiMR;
+  PhiPmE.noalias() = Phi.transpose() * PmE.topRows(nb);
+  PhiMR.noalias() = Phi.transpose() * MR.topRows(nb);
+  return EmE - PhiPmE - PhiPmE.transpose() + PhiMR;
+}
+
 void full(const AicElement& e, const AicKinematics& kin, const VectorXd& w, const VectorXd& ab, InertiaMatrices want,
           MatrixXd& Mw, MatrixXd& Cw, MatrixXd& Kw, VectorXd& fw, double& kinetic, AicWorkspace& ws) {
   const se::InertiaInvariants& I = e.inv;
@@ -190,36 +223,19 @@ void full(const AicElement& e, const AicKinematics& kin, const VectorXd& w, cons
 
   detail::InertiaProjections pr;
   detail::inertia_projections(e, xi, xid, Om, ws, pr);
-  const MatrixXd& PmE = ws.PmE;
   const Matrix6d& EmE = pr.EmE;
   const VectorXd& pm = ws.pm;
   const Vector6d& em = pr.em;
 
-  // N = P T + E Z = P + D Z with D = E - P R6, R6 = [Phi_rig; 0] (T = I - R6 Z has rank-6 defect):
-  // N^T M N = Mpp + Q Z + Z^T Q^T + Z^T S Z, Q = P^T M D, S = D^T M D; N^T y = pm + Z^T (em - R6^T pm).
-  MatrixXd& MR = ws.MR;  // Mpp R6
-  MR.noalias() = I.Mpp.leftCols(nb) * Phi;
-  MatrixXd& Q = ws.Q;
-  Q = PmE - MR;
-  Matrix6d PhiPmE, PhiMR;
-  PhiPmE.noalias() = Phi.transpose() * PmE.topRows(nb);
-  PhiMR.noalias() = Phi.transpose() * MR.topRows(nb);
-  const Matrix6d S = EmE - PhiPmE - PhiPmE.transpose() + PhiMR;
+  const Matrix6d S = mass_operators(e, kin, EmE, ws);
+  const MatrixXd& Q = ws.Q;
   auto project = [&](const VectorXd& p, const Vector6d& q, VectorXd& out) {  // N^T y from P^T y, E^T y
     Vector6d r = q;
     r.noalias() -= Phi.transpose() * p.head(nb);
     out = p;
     out.noalias() += Z.transpose() * r;
   };
-  auto mass_times = [&](const VectorXd& v, VectorXd& out) {  // N^T M N v
-    Vector6d z, y;
-    z.noalias() = Z * v;
-    y.noalias() = Q.transpose() * v;
-    y.noalias() += S * z;
-    out.noalias() = I.Mpp * v;
-    out.noalias() += Q * z;
-    out.noalias() += Z.transpose() * y;
-  };
+  auto mass_times = [&](const VectorXd& v, VectorXd& out) { detail::mass_times(e, kin, S, ws, v, out); };
   VectorXd& c = ws.c;
   detail::interface_velocity_accelerations(e, xi, Om, xid, c);
   ws.v1 = ab - c;
@@ -265,6 +281,26 @@ void full(const AicElement& e, const AicKinematics& kin, const VectorXd& w, cons
 }
 
 }  // namespace
+
+double kinetic_energy(const AicElement& e, const AicKinematics& kin, InertiaModel model, const Eigen::Ref<const VectorXd>& v,
+                      AicWorkspace& ws) {
+  to_body(e, kin.frame.R_WB, v, ws.w);
+  if (model == InertiaModel::Simplified) {
+    ws.v2.noalias() = e.M * ws.w;
+    return 0.5 * ws.w.dot(ws.v2);
+  }
+  SEFLEX_DEMAND(e.inv.present(), "full inertia needs the inertia invariants of superelement " + e.name);
+  // Only the mass pairing's rows of the xi-stack (HP, HE0, HE1: the first 12 n + 18).
+  const StackedInvariantRows r(e.n);
+  ws.eta_f.noalias() = e.V_f.transpose() * kin.xi;
+  ws.t.resize(r.by_xi);
+  ws.t.head(r.LP).noalias() = e.inv_by_xi.topRows(r.LP) * ws.eta_f;
+  Matrix6d EmE;
+  detail::mass_pairing(e, kin.xi, ws.t.data(), ws, EmE);
+  const Matrix6d S = mass_operators(e, kin, EmE, ws);
+  detail::mass_times(e, kin, S, ws, ws.w, ws.v2);
+  return 0.5 * ws.w.dot(ws.v2);
+}
 
 void inertia_force(const AicElement& e, const AicKinematics& kin, InertiaModel model, const Eigen::Ref<const VectorXd>& v,
                    const Eigen::Ref<const VectorXd>& a, bool want_matrices, InertiaResult& out) {

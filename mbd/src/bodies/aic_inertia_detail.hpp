@@ -40,6 +40,13 @@ struct InertiaProjections {
   Eigen::Matrix<double, 9, 1> OO;
   Eigen::Matrix<double, 6, 1> em;
 };
+/// The mass pairing at xi from the contracted xi-stack X (StackedInvariantRows HP, HE0, HE1):
+/// ws.PmE = P^T M E (n x 6) and EmE = E^T M E.
+void mass_pairing(const AicElement& e, const Eigen::VectorXd& xi, const double* X, AicWorkspace& ws,
+                  Eigen::Matrix<double, 6, 6>& EmE);
+/// out = N^T M N v = Mpp v + Q Z v + Z^T (Q^T v + S Z v), with ws.Q and S of the mass operators.
+void mass_times(const AicElement& e, const AicKinematics& kin, const Eigen::Matrix<double, 6, 6>& S, const AicWorkspace& ws,
+                const Eigen::VectorXd& v, Eigen::VectorXd& out);
 void inertia_projections(const AicElement& e, const Eigen::VectorXd& xi, const Eigen::VectorXd& xid,
                          const Eigen::Vector3d& Om, AicWorkspace& ws, InertiaProjections& pr);
 /// The derivatives of the velocity-dependent projections pm = P^T y, em = E^T y w.r.t. Om (ws.DOp, n x 3;

@@ -73,6 +73,10 @@ void assemble_flexible(const Model& model, const State& s, Data& data, const Ass
     elastic_force(e, fd.kin, body.options.tangent, fd.f_el, opt.matrices ? &sc.Kl : nullptr, sc.aic);
     fd.elastic = 0.5 * fd.kin.xi.dot(sc.aic.g);  // g = K xi
   }
+  if (opt.energies_only) {  // an output sample: the energies, no forces
+    fd.kinetic = opt.dynamics ? kinetic_energy(e, fd.kin, body.options.inertia, sc.v, sc.aic) : 0.0;
+    return;
+  }
 
   InertiaResult& in = sc.inertia;
   const bool need_inertia = opt.dynamics || g.squaredNorm() > 0.0;

@@ -185,7 +185,9 @@ class AicStepper final : public detail::Stepper {
  public:
   AicStepper(const Model& model, State& state, Data& data, const IntegratorSettings& st)
       : model_(model), state_(state), data_(data), st_(st), c_(st.rho_inf), trial_(state),
-        error_weights_(mbd::error_weights(model, st)), vdot_prev_(state.vdot), vdot_predicted_(state.vdot) {}
+        error_weights_(mbd::error_weights(model, st)), vdot_prev_(state.vdot), vdot_predicted_(state.vdot) {
+    for (const Hinge& h : model.hinges) has_drives_ = has_drives_ || static_cast<bool>(h.drive);
+  }
   double time() const override { return state_.t; }
   StepResult attempt(double h) override {
     // Predicted vdot_{n+1}: extrapolated linearly from the last two accepted steps (the ratio of
@@ -195,6 +197,7 @@ class AicStepper final : public detail::Stepper {
       vdot_predicted_ = state_.vdot + std::min(h / h_prev_, 2.0) * (state_.vdot - vdot_prev_);  // same size: no allocation
     else
       vdot_predicted_ = state_.vdot;
+    light_evaluated_ = false;  // data_ now belongs to the trial
     StepResult r = newton_step(model_, state_, h, c_, st_, data_, trial_, rate_, vdot_predicted_, newton_);
     last_evaluated_ = r.evaluated;
     return r;
@@ -214,10 +217,19 @@ class AicStepper final : public detail::Stepper {
     h_prev_ = trial_.t - state_.t;
     state_ = trial_;
     evaluated_ = last_evaluated_;
+    light_evaluated_ = false;
     store_derived(model_, data_, state_);
   }
   void sample(Sample& out) override {
-    evaluate_current();
+    // A sample reads energies, frames and force elements, not the residual: the light evaluation
+    // (AssemblyOptions::energies_only) unless a driven hinge's sample needs its joint torque.
+    if (!evaluated_ && !light_evaluated_) {
+      AssemblyOptions opt{false, true, 1.0};
+      opt.energies_only = !has_drives_;
+      assemble(model_, state_, data_, opt);
+      evaluated_ = !opt.energies_only;
+      light_evaluated_ = opt.energies_only;
+    }
     make_sample(model_, state_, data_, out);
   }
   /// `data` evaluated at the accepted state (the last Newton iterate may have skipped it).
@@ -228,6 +240,7 @@ class AicStepper final : public detail::Stepper {
   }
   void prepare_failure_sample() override {
     evaluated_ = false;  // the failed attempts left data_ at a trial state
+    light_evaluated_ = false;
     evaluate_current();
   }
   std::string describe_residual() const override { return detail::describe_residual(model_, data_); }
@@ -248,6 +261,8 @@ class AicStepper final : public detail::Stepper {
   double h_prev_ = 0.0;      // the last accepted step (0: none yet)
   bool evaluated_ = true;    // data_ holds the evaluation at state_ (bodies and force elements)
   bool last_evaluated_ = true;  // the same for trial_ after the last attempt
+  bool light_evaluated_ = false;  // data_ holds the energies_only evaluation at state_ (a sample's)
+  bool has_drives_ = false;       // some hinge is driven: samples need the full evaluation (joint torques)
 };
 
 }  // namespace

@@ -15,7 +15,8 @@ namespace seflex::mbd {
 
 struct HingeSample {
   double phi = 0.0, phidot = 0.0, phiddot = 0.0;
-  double drive_torque = 0.0;  ///< driven hinge: torque the drive applies; free hinge: residual (~0)
+  double drive_torque = 0.0;  ///< driven hinge: torque the drive applies; free hinge: residual (~0), 0 when
+                              ///< the sample was evaluated without the residual (AssemblyOptions::energies_only)
 };
 
 struct ElementSample {

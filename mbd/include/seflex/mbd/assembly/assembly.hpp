@@ -18,6 +18,11 @@ struct AssemblyOptions {
   /// With matrices: the flexible bodies' inertia also contributes its velocity derivative
   /// (gyroscopic/Coriolis) to C; false leaves it out (the integrator's cheaper iteration matrix).
   bool inertia_velocity_tangent = true;
+  /// Only what an output sample reads (mbd::make_sample): node and hinge kinematics, the flexible
+  /// bodies' frames, xi and energies, the rigid bodies' energies, the force elements. No residual,
+  /// scale or matrices, and the hinges' joint torques are left at zero (the loads and the tree pass
+  /// that sum them are skipped). Needs matrices = false.
+  bool energies_only = false;
 };
 
 /// Poses, Jacobians, twists and accelerations of all nodes, and hinge quantities, at `state`

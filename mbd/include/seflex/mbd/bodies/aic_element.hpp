@@ -192,6 +192,12 @@ Eigen::MatrixXd rigid_modes(const AicElement& e, const Eigen::Ref<const Eigen::V
 /// the mass matrix Mt, the velocity derivative Ct (gyroscopic/Coriolis, full inertia only) and an
 /// approximate configuration derivative Kt (rotation of the inertia force with the frame), all
 /// n x n in world components. kinetic = 1/2 v^T M0 v.
+/// Kinetic energy 1/2 w^T M_w w of the inertia model at the world velocities v (as inertia_force
+/// takes them), without the force and matrices: with the full inertia only the mass pairing of the
+/// invariants is read (the output samples' energies, AssemblyOptions::energies_only).
+double kinetic_energy(const AicElement& e, const AicKinematics& kin, InertiaModel model,
+                      const Eigen::Ref<const Eigen::VectorXd>& v, AicWorkspace& ws);
+
 struct InertiaResult {
   Eigen::VectorXd f;
   Eigen::MatrixXd Mt, Ct, Kt;
