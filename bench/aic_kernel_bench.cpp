@@ -1,5 +1,6 @@
 // Cost of the AIC superelement's kernels per evaluation (issue 12): frame recovery, elastic force,
-// full inertia, each without and with its tangent matrices, on a superelement file, at a random
+// full inertia, and the elastic force with geometric stiffening when the file has its invariants, each
+// without and with its tangent matrices, on a superelement file, at a random
 // deformed and rotating state (the same state every repetition, so the figure is the arithmetic of
 // one Newton-iteration evaluation of one body).
 //
@@ -78,11 +79,24 @@ int main(int argc, char** argv) {
   auto line = [&](const char* what, const std::function<void()>& fn) {
     if (only && std::string(what).rfind(only, 0) != 0) return;
     fn();  // size the scratch
-    std::printf("%-34s %10.2f\n", what, best_us(repeats, fn));
+    std::printf("%-42s %10.2f\n", what, best_us(repeats, fn));
   };
   line("recover_frame", [&] { mbd::recover_frame(e, R_WI, p_WI, eta, mbd::FrameRecovery::Newton6, warm, kin); });
   line("elastic_force (force)", [&] { mbd::elastic_force(e, kin, mbd::TangentModel::Exact, f, nullptr, ws); });
   line("elastic_force (force + tangent)", [&] { mbd::elastic_force(e, kin, mbd::TangentModel::Exact, f, &Kt, ws); });
+  if (e.has_stiffening()) {
+    mbd::StiffeningLoads lambda;
+    mbd::stiffening_load_factors(e, kin, v, a, lambda, ws);
+    // ws.Uxi_of = nullptr: every call pays for G_c xi, as at a new Newton iterate.
+    line("elastic_force stiffened (force)", [&] {
+      ws.Uxi_of = nullptr;
+      mbd::elastic_force_stiffened(e, kin, mbd::TangentModel::Exact, lambda, f, nullptr, ws);
+    });
+    line("elastic_force stiffened (force + tangent)", [&] {
+      ws.Uxi_of = nullptr;
+      mbd::elastic_force_stiffened(e, kin, mbd::TangentModel::Exact, lambda, f, &Kt, ws);
+    });
+  }
   line("inertia full (force)", [&] { mbd::inertia_force(e, kin, mbd::InertiaModel::Full, v, a, false, in, ws); });
   line("inertia full (force + matrices)", [&] { mbd::inertia_force(e, kin, mbd::InertiaModel::Full, v, a, true, in, ws); });
   line("inertia full (force + M, K; no C)", [&] {

@@ -1,6 +1,9 @@
 // Geometric stiffening of the AIC superelement (mbd/src/bodies/aic_stiffening.cpp,
 // docs/geometric-stiffening.md): the stiffened elastic tangent against central finite differences of
 // the stiffened force, and the load factors of a rigidly spinning body against its kinematics.
+// The stiffened force and its Hessian from the element's basis of the invariants against the
+// formulas of docs/geometric-stiffening.md evaluated with the invariants as stored, for cases that
+// depend on each other, vanish, or differ by 1e14 in size.
 // The invariants here are random symmetric matrices: the tangent is that of the stiffened force
 // whatever the G's are (their physics is tested in tests/reduction/stiffening_invariants_test.cpp and
 // tests/mbd/spinup_stiffening_test.cpp).
@@ -10,6 +13,7 @@
 
 #include "aic_test_util.hpp"
 #include "beam_superelement.hpp"
+#include "bodies/aic_inertia_detail.hpp"
 #include "seflex/common/so3.hpp"
 #include "seflex/mbd/assembly/assembly.hpp"
 #include "seflex/mbd/bodies/aic_element.hpp"
@@ -171,6 +175,82 @@ TEST(Stiffening, MassMatrixIncludesTheLoadFactorsAccelerationDependence) {
       EXPECT_GT(asym, 1e-6);  // the load factors' term is there
     }
   }
+}
+
+// Invariants of rank 7 (AicElement::G_basis, docs/geometric-stiffening.md "The rank of the
+// invariants"): the 12 inertia cases combinations of 3 random matrices of size 1e-3 (one case zero),
+// the 18 interface cases combinations of 4 of size 1e11, as a unit acceleration and a unit interface
+// displacement differ. The element keeps 7 basis matrices, and the force, the potential and the
+// Hessian of the stiffening equal the formulas evaluated with the 30 stored matrices.
+TEST(Stiffening, RankDeficientInvariantsGiveTheFormulasOfTheStoredCases) {
+  se::Superelement s = stiffened_lframe();
+  const Eigen::Index n = s.size();
+  const int N = s.num_interfaces(), nb = 6 * N;
+  std::mt19937 rng(11);
+  std::normal_distribution<double> nd;
+  std::vector<MatrixXd> a, b;
+  for (int i = 0; i < 3; ++i) a.push_back(random_symmetric(n, 1e-3, rng));
+  for (int i = 0; i < 4; ++i) b.push_back(random_symmetric(n, 1e11, rng));
+  for (int c = 0; c < 12; ++c) {
+    s.stiffening.inertia[c] = MatrixXd::Zero(n, n);
+    if (c != 5)
+      for (const auto& A : a) s.stiffening.inertia[c] += nd(rng) * A;
+  }
+  for (int j = 0; j < nb; ++j) {
+    s.stiffening.interface[j] = MatrixXd::Zero(n, n);
+    for (const auto& B : b) s.stiffening.interface[j] += nd(rng) * B;
+  }
+  const AicElement e = make_aic_element(s);
+  ASSERT_TRUE(e.has_stiffening());
+  EXPECT_EQ(e.G_coef.rows(), 7);
+  EXPECT_EQ(e.G_basis.cols(), 7 * n);
+  std::vector<const MatrixXd*> G;
+  for (const auto& Gc : s.stiffening.inertia) G.push_back(&Gc);
+  for (const auto& Gj : s.stiffening.interface) G.push_back(&Gj);
+  // A state in the frame condition's null space (as every xi of a run) with interface deformations
+  // of 1e-5: the interface cases' terms are then of the order of the inertia cases'.
+  const VectorXd xi = e.V_f * (e.V_f.transpose() * test::random_xi(e, 1e-5, rng));
+  StiffeningLoads lambda;
+  for (int c = 0; c < 12; ++c) lambda[c] = 10.0 * nd(rng);
+
+  // The formulas with the stored matrices.
+  VectorXd bq(nb), mu(12 + nb);
+  for (int j = 0; j < nb; ++j) bq[j] = 0.5 * xi.dot(*G[static_cast<std::size_t>(12 + j)] * xi);
+  const VectorXd sq = e.Kbb_pinv * bq;
+  mu << lambda, xi.head(nb) + sq;
+  MatrixXd sum = MatrixXd::Zero(n, n), Gb(n, nb);
+  double V = xi.head(nb).dot(bq) + 0.5 * bq.dot(sq);
+  for (int c = 0; c < 12 + nb; ++c) {
+    sum += mu[c] * *G[static_cast<std::size_t>(c)];
+    if (c < 12)
+      V += 0.5 * lambda[c] * xi.dot(*G[static_cast<std::size_t>(c)] * xi);
+    else
+      Gb.col(c - 12) = *G[static_cast<std::size_t>(c)] * xi;
+  }
+  VectorXd g_ref = sum * xi;
+  g_ref.head(nb) += bq;
+  MatrixXd H_ref = sum + Gb * e.Kbb_pinv * Gb.transpose();
+  H_ref.leftCols(nb) += Gb;
+  H_ref.topRows(nb) += Gb.transpose();
+
+  AicWorkspace ws;
+  VectorXd g = VectorXd::Zero(n);
+  const double Vg = detail::add_stress_stiffening(e, xi, lambda, g, ws);
+  MatrixXd H = MatrixXd::Zero(n, n);
+  detail::add_stress_stiffening_hessian(e, ws, H);
+  const double eg = (g - g_ref).norm() / g_ref.norm(), eH = (H - H_ref).norm() / H_ref.norm();
+  EXPECT_LT(eg, 1e-12);
+  EXPECT_LT(std::abs(Vg - V), 1e-12 * std::abs(V));
+  EXPECT_LT(eH, 1e-12);
+  // The small inertia cases are kept to their own precision, not to that of the interface cases.
+  const Eigen::Map<const MatrixXd> Gx = detail::stiffening_inertia_products(e, ws);
+  for (int c = 0; c < 12; ++c) {
+    const VectorXd Gc_xi = *G[static_cast<std::size_t>(c)] * xi;
+    EXPECT_LE((Gx.col(c) - Gc_xi).norm(), 1e-12 * Gx.leftCols<12>().norm()) << "inertia case " << c;
+  }
+  EXPECT_EQ(Gx.col(5).norm(), 0.0);  // the zero case stays zero
+  std::printf("rank %d of %d; force %.1e, Hessian %.1e from the formulas\n", static_cast<int>(e.G_coef.rows()), 12 + nb, eg,
+              eH);
 }
 
 }  // namespace

@@ -77,6 +77,36 @@ MatrixXd frame_condition_null_space(const MatrixXd& Phi_f) {
   return Q.rightCols(Phi_f.cols() - 6);
 }
 
+// The basis U and coefficients W of the stiffening invariants, G_c = sum_i U_i W(i, c)
+// (docs/geometric-stiffening.md, "The rank of the invariants"). The SVD is taken of the stack with
+// each group of cases, the 12 inertia loads and the 6N interface displacements, scaled by its largest
+// |G_c|: the groups' units differ (per m/s^2 and per m; 1e7 apart on the demo's panel). Singular values
+// below kRankTolerance of the largest are round-off of combinations that stress nothing (the rigid
+// motions of the interfaces, a bar's bending, a flat plate's bending); dropping them moves no G_c by
+// more than kRankTolerance sqrt(k) of the largest |G_c| of its group.
+void stiffening_basis(AicElement& e, const MatrixXd& G_stack) {
+  constexpr double kRankTolerance = 1e-12;
+  const Eigen::Index k = G_stack.cols();
+  const VectorXd norms = G_stack.colwise().norm().transpose();
+  VectorXd scale(k);
+  scale.head(12).setConstant(norms.head(12).maxCoeff());
+  scale.tail(k - 12).setConstant(norms.tail(k - 12).maxCoeff());
+  for (Eigen::Index c = 0; c < k; ++c)
+    if (scale[c] == 0.0) scale[c] = 1.0;  // a group of zero matrices
+  const MatrixXd scaled = G_stack * scale.cwiseInverse().asDiagonal();
+  const Eigen::JacobiSVD<MatrixXd> svd(scaled, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const VectorXd& sv = svd.singularValues();
+  Eigen::Index r = 0;
+  while (r < sv.size() && sv[r] > kRankTolerance * sv[0]) ++r;
+  e.G_basis.resize(e.n, r * e.n);
+  for (Eigen::Index i = 0; i < r; ++i) {  // symmetric to the last bit, as the G_c are
+    const Eigen::Map<const MatrixXd> U(svd.matrixU().col(i).data(), e.n, e.n);
+    e.G_basis.middleCols(i * e.n, e.n) = 0.5 * (U + U.transpose());
+  }
+  e.G_coef = sv.head(r).asDiagonal() * svd.matrixV().leftCols(r).transpose() * scale.asDiagonal();
+  e.G_basis_t_V = e.G_basis.transpose() * e.V_f;
+}
+
 }  // namespace
 
 AicElement make_aic_element(const se::Superelement& s) {
@@ -160,15 +190,17 @@ AicElement make_aic_element(const se::Superelement& s) {
       throw InputError(who(name) + ": its geometric-stiffness invariants are for " + std::to_string(st.n) +
                        " reduced coordinates and " + std::to_string(st.interface.size()) +
                        " interface dofs, the superelement has " + std::to_string(e.n) + " and " + std::to_string(nb));
-    e.G_stack.resize(e.n, static_cast<Eigen::Index>(12 + nb) * e.n);
+    const auto k = static_cast<Eigen::Index>(12 + nb);
+    MatrixXd G_stack(e.n * e.n, k);  // column c: vec G_c
     for (std::size_t c = 0; c < 12 + nb; ++c) {
       const MatrixXd& G = c < 12 ? st.inertia[c] : st.interface[c - 12];
       if (G.rows() != e.n || G.cols() != e.n)
         throw InputError(who(name) + ": a geometric-stiffness invariant is " + std::to_string(G.rows()) + "x" +
                          std::to_string(G.cols()) + ", expected " + std::to_string(e.n) + " square");
-      e.G_stack.middleCols(static_cast<Eigen::Index>(c) * e.n, e.n) = 0.5 * (G + G.transpose());
+      Eigen::Map<MatrixXd>(G_stack.col(static_cast<Eigen::Index>(c)).data(), e.n, e.n) = 0.5 * (G + G.transpose());
     }
-    e.G_stack_t_V = e.G_stack.transpose() * e.V_f;
+    stiffening_basis(e, G_stack);
+    e.stiffening = true;
     // Pseudo-inverse of K_bb: its 6 rigid-motion eigenvalues are round-off against the largest.
     const auto nbi = static_cast<Eigen::Index>(nb);
     const MatrixXd Kbb = 0.5 * (e.K.topLeftCorner(nbi, nbi) + e.K.topLeftCorner(nbi, nbi).transpose());
@@ -179,6 +211,7 @@ AicElement make_aic_element(const se::Superelement& s) {
     for (Eigen::Index i = 0; i < nbi; ++i)
       if (lam[i] > floor) inv[i] = 1.0 / lam[i];
     e.Kbb_pinv = es.eigenvectors() * inv.asDiagonal() * es.eigenvectors().transpose();
+    e.G_foreshortening = e.G_coef.rightCols(nbi) * e.Kbb_pinv * e.G_coef.rightCols(nbi).transpose();
   }
   e.eta_amplitude = VectorXd::Ones(e.m);
   e.omega_modes = VectorXd::Zero(e.m);

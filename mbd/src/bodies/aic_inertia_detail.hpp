@@ -57,16 +57,21 @@ void velocity_load_tangents(const AicElement& e, const Eigen::Vector3d& Om, AicW
 
 /// g += the stress-stiffening force of the 12 inertia load cases scaled by lambda and of the interface
 /// deformation xi_b with its foreshortening (aic_stiffening.cpp, docs/geometric-stiffening.md); returns
-/// its potential V_G. Leaves G_c xi in ws.Gxi (column c of an n x (12 + 6N) map), [lambda; xi_b + s] in
-/// ws.mu, b and s in ws.fb, ws.fs. Used by the AIC body and by FFRF-LM.
+/// its potential V_G. Leaves U_i xi in ws.Uxi, [lambda; xi_b + s] in ws.mu and W mu in ws.Wmu, b and s
+/// in ws.fb, ws.fs. Used by the AIC body and by FFRF-LM.
 double add_stress_stiffening(const AicElement& e, const Eigen::VectorXd& xi, const StiffeningLoads& lambda, Eigen::VectorXd& g,
                            AicWorkspace& ws);
+/// [G_c xi]_{c<12} (n x 12, the inertia cases), after add_stress_stiffening at the same state: formed
+/// from ws.Uxi at the first call (the mass and gyroscopic tangents need it, the force does not), kept
+/// in ws.Gxi.
+Eigen::Map<const Eigen::MatrixXd> stiffening_inertia_products(const AicElement& e, AicWorkspace& ws);
 /// H (n x n) += the Hessian of V_G in xi at fixed lambda (sum_c mu_c G_c + Gb E^T + E Gb^T + Gb Kbb^+ Gb^T),
-/// after add_stress_stiffening at the same state (reads ws.Gxi, ws.mu). Used by the AIC body and by FFRF-LM.
+/// after add_stress_stiffening at the same state (reads ws.Uxi and ws.Wmu). Used by the AIC body
+/// and by FFRF-LM.
 void add_stress_stiffening_hessian(const AicElement& e, AicWorkspace& ws, Eigen::MatrixXd& H);
 /// Mt (world) += d f / d a of the stiffening force through its first six load factors, the frame's
 /// accelerations (a rank-6, unsymmetric term; after add_stress_stiffening at the same state, whose
-/// ws.Gxi it reads). The load factors' velocity dependence (Om, c) stays out of C.
+/// case products it reads). The load factors' velocity dependence (Om, c) stays out of C.
 void add_stiffening_mass_tangent(const AicElement& e, const AicKinematics& kin, AicWorkspace& ws, Eigen::MatrixXd& Mt);
 /// The last six load factors: the symmetric components of Om~ Om~ (body axes).
 void centrifugal_load_factors(const Eigen::Vector3d& Om, StiffeningLoads& lambda);

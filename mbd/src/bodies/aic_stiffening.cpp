@@ -1,6 +1,7 @@
 // Geometric stiffening of an AIC superelement (docs/geometric-stiffening.md): the differential
 // stiffness of the body's current stress state, from se::StiffeningInvariants, added to the elastic
-// force and its tangent, at a cost of two products with the n x (12 + 6N) n stacked invariants.
+// force and its tangent, at a cost of two products with the n x r n basis of the stacked invariants
+// (AicElement::G_basis, r <= 12 + 6N).
 //
 // The stress of the inertia loads is taken at the current load factors lambda (a frozen load); the
 // stress of the interface deformation comes from a potential, the energy of that stress on the
@@ -42,46 +43,82 @@ void stiffening_load_factors(const AicElement& e, const AicKinematics& kin, cons
 
 namespace detail {
 
-double add_stress_stiffening(const AicElement& e, const VectorXd& xi, const StiffeningLoads& lambda, VectorXd& g, AicWorkspace& ws) {
-  const Eigen::Index n = e.n, nb = 6 * e.N, k = 12 + nb;
-  // G_c xi for every case (the G_c are symmetric): one product with the stacked invariants, kept
-  // while xi and the element stay the same.
-  if (ws.Gxi_of != e.G_stack.data() || ws.Gxi_at.size() != xi.size() || ws.Gxi_at != xi) {
-    ws.eta_f.noalias() = e.V_f.transpose() * xi;  // xi = V_f V_f^T xi (the frame condition)
-    ws.Gxi.noalias() = e.G_stack_t_V * ws.eta_f;
-    ws.Gxi_at = xi;
-    ws.Gxi_of = e.G_stack.data();
+namespace {
+
+// U_i xi for the r basis matrices (the G_c are combinations of them, AicElement::G_basis): one
+// product with the stacked basis, kept while xi and the element stay the same.
+void basis_products(const AicElement& e, const VectorXd& xi, AicWorkspace& ws) {
+  if (ws.Uxi_of == e.G_basis_t_V.data() && ws.Uxi_at.size() == xi.size() && ws.Uxi_at == xi) return;
+  ws.eta_f.noalias() = e.V_f.transpose() * xi;  // xi = V_f V_f^T xi (the frame condition)
+  ws.Uxi.noalias() = e.G_basis_t_V * ws.eta_f;
+  ws.Uxi_at = xi;
+  ws.Uxi_of = e.G_basis_t_V.data();
+  ws.Gxi_formed = false;
+}
+
+}  // namespace
+
+Eigen::Map<const MatrixXd> stiffening_inertia_products(const AicElement& e, AicWorkspace& ws) {
+  const Eigen::Index n = e.n, r = e.G_coef.rows();
+  if (!ws.Gxi_formed) {  // [G_c xi]_{c<12} = [U_i xi]_i W(:, c<12)
+    ws.Gxi.resize(n * 12);
+    if (r > 0)
+      Eigen::Map<MatrixXd>(ws.Gxi.data(), n, 12).noalias() = Eigen::Map<const MatrixXd>(ws.Uxi.data(), n, r) * e.G_coef.leftCols<12>();
+    else
+      ws.Gxi.setZero();
+    ws.Gxi_formed = true;
   }
-  const Eigen::Map<const MatrixXd> Gx(ws.Gxi.data(), n, k);  // column c: G_c xi
-  ws.fb.noalias() = 0.5 * Gx.rightCols(nb).transpose() * xi;  // b_j = 1/2 xi^T G_j xi
-  ws.fs.noalias() = e.Kbb_pinv * ws.fb;                       // s = Kbb^+ b
+  return Eigen::Map<const MatrixXd>(ws.Gxi.data(), n, 12);
+}
+
+double add_stress_stiffening(const AicElement& e, const VectorXd& xi, const StiffeningLoads& lambda, VectorXd& g, AicWorkspace& ws) {
+  const Eigen::Index n = e.n, nb = 6 * e.N, k = 12 + nb, r = e.G_coef.rows();
+  basis_products(e, xi, ws);
   ws.mu.resize(k);
   ws.mu.head<12>() = lambda;
+  if (r == 0) {  // every G_c is zero
+    ws.fb.setZero(nb);
+    ws.fs.setZero(nb);
+    ws.mu.tail(nb) = xi.head(nb);
+    ws.Wmu.resize(0);
+    return 0.0;
+  }
+  // Every term through the r products U_i xi: xi^T G_c xi = (W^T [xi^T U_i xi]_i)_c and
+  // sum_c mu_c G_c xi = [U_i xi]_i (W mu); [G_c xi]_c itself only for the tangents.
+  const Eigen::Map<const MatrixXd> Y(ws.Uxi.data(), n, r);
+  const MatrixXd& W = e.G_coef;
+  ws.yx.noalias() = Y.transpose() * xi;                        // xi^T U_i xi
+  ws.fb.noalias() = 0.5 * W.rightCols(nb).transpose() * ws.yx;  // b_j = 1/2 xi^T G_j xi
+  ws.fs.noalias() = e.Kbb_pinv * ws.fb;                         // s = Kbb^+ b
   ws.mu.tail(nb) = xi.head(nb) + ws.fs;
-  g.noalias() += Gx * ws.mu;
+  ws.Wmu.noalias() = W * ws.mu;
+  g.noalias() += Y * ws.Wmu;
   g.head(nb) += ws.fb;
   // 1/2 xi^T (sum lambda_c G_c) xi + xi_b . b + 1/2 b . s
   StiffeningLoads xGx;  // xi^T G_c xi, c < 12 (fixed size: no allocation)
-  xGx.noalias() = Gx.leftCols<12>().transpose() * xi;
+  xGx.noalias() = W.leftCols<12>().transpose() * ws.yx;
   return 0.5 * lambda.dot(xGx) + xi.head(nb).dot(ws.fb) + 0.5 * ws.fb.dot(ws.fs);
 }
 
 void add_stress_stiffening_hessian(const AicElement& e, AicWorkspace& ws, MatrixXd& H) {
-  const Eigen::Index n = e.n, nb = 6 * e.N, k = 12 + nb;
-  const Eigen::Map<const MatrixXd> Gx(ws.Gxi.data(), n, k);  // column c: G_c xi
+  const Eigen::Index n = e.n, nb = 6 * e.N, r = e.G_coef.rows();
+  if (r == 0) return;
   // H += sum_c mu_c G_c + Gb E^T + E Gb^T + Gb Kbb^+ Gb^T, Gb = [G_j xi]_j (n x 6N), E the interface
-  // rows. vec(sum mu_c G_c) = [vec G_0 ... vec G_k-1] mu: the blocks of G_stack are contiguous, one product.
-  Eigen::Map<VectorXd>(H.data(), n * n).noalias() += Eigen::Map<const MatrixXd>(e.G_stack.data(), n * n, k) * ws.mu;
-  const auto Gb = Gx.rightCols(nb);
-  H.leftCols(nb) += Gb;
-  H.topRows(nb) += Gb.transpose();
-  ws.GK.noalias() = Gb * e.Kbb_pinv;
-  H.noalias() += ws.GK * Gb.transpose();
+  // rows. sum_c mu_c G_c = sum_i U_i (W mu)_i: the blocks of G_basis are contiguous, one product.
+  Eigen::Map<VectorXd>(H.data(), n * n).noalias() += Eigen::Map<const MatrixXd>(e.G_basis.data(), n * n, r) * ws.Wmu;
+  // With Y = [U_i xi]_i, Gb = Y W_b and Gb Kbb^+ Gb^T = Y P Y^T (P = W_b Kbb^+ W_b^T, r x r): the rest
+  // is Y Q + (Y Q)^T with Q = 1/2 P Y^T + W_b E^T.
+  const Eigen::Map<const MatrixXd> Y(ws.Uxi.data(), n, r);
+  ws.Qr.noalias() = 0.5 * e.G_foreshortening * Y.transpose();
+  ws.Qr.leftCols(nb) += e.G_coef.rightCols(nb);
+  ws.YQ.noalias() = Y * ws.Qr;
+  H += ws.YQ;
+  H += ws.YQ.transpose();
 }
 
 void add_stiffening_mass_tangent(const AicElement& e, const AicKinematics& kin, AicWorkspace& ws, MatrixXd& Mt) {
-  const Eigen::Index n = e.n, nb = 6 * e.N;
-  const Eigen::Map<const MatrixXd> Gx(ws.Gxi.data(), n, 12 + nb);
+  const Eigen::Index nb = 6 * e.N;
+  const Eigen::Map<const MatrixXd> Gx = stiffening_inertia_products(e, ws);
   // d f_local / d a_b = [G_c xi]_{c<6} Zx (lambda_0..5 = Zx (a_b - c)); f_w = Tx^T f_local, with
   // Tx^T A = A - Zx^T Phi_rig^T A_b (Tx = I - [Phi_rig; 0] Zx); then to world as the mass matrix.
   ws.nn.noalias() = Gx.leftCols<6>() * kin.Zx;

@@ -144,8 +144,7 @@ void flexible(const FfrfSystem& sys, const FfrfBody& b, const AicElement& e, con
     out.elastic += detail::add_stress_stiffening(e, w.xi, lambda, w.g, out.ws);
     out.f.tail(k).noalias() += b.V.transpose() * w.g;
     // The first six load factors are the frame's body-axis accelerations: d f_z / d ab_frame = V^T [G_c xi]_{c<6}.
-    const Eigen::Map<const MatrixXd> Gx(out.ws.Gxi.data(), e.n, 12 + 6 * e.N);
-    if (want) Mw.bottomLeftCorner(k, 6).noalias() += b.V.transpose() * Gx.leftCols<6>();
+    if (want) Mw.bottomLeftCorner(k, 6).noalias() += b.V.transpose() * detail::stiffening_inertia_products(e, out.ws).leftCols<6>();
     if (tangents) {
       // d f_z / d Om through the centrifugal load factors lambda_6.. = sym(Om~ Om~); d f_z / d z: the
       // Hessian of the stiffening potential at fixed lambda.
@@ -155,7 +154,7 @@ void flexible(const FfrfSystem& sys, const FfrfBody& b, const AicElement& e, con
         const Matrix3d Ea = skew(Vector3d::Unit(a));
         dsW.col(a) = se::sym_components(Matrix3d(Ea * W + W * Ea));
       }
-      w.n3.noalias() = Gx.middleCols<6>(6) * dsW;
+      w.n3.noalias() = detail::stiffening_inertia_products(e, out.ws).middleCols<6>(6) * dsW;
       w.Cw.block(6, 3, k, 3).noalias() += b.V.transpose() * w.n3;
       w.nn.setZero(e.n, e.n);
       add_stress_stiffening_hessian(e, out.ws, w.nn);

@@ -70,15 +70,21 @@ struct AicElement {
   Eigen::MatrixXd inv_by_xid;                ///< (6 n + 27) x (n - 6): the xi_dot-stack times V_f
   std::array<Eigen::MatrixXd, 3> inv_GPV;    ///< n x n: PmGP[a] + PgOV[a]
 
-  // Geometric-stiffness invariants (se::StiffeningInvariants, docs/geometric-stiffening.md) side by side,
-  // G_stack = [G_0 ... G_{k-1}] (n x k n), k = 12 + 6N: the 12 inertia load cases, then the 6N
-  // constraint modes. Empty when the superelement carries none.
-  Eigen::MatrixXd G_stack;
-  Eigen::MatrixXd G_stack_t_V;  ///< k n x (n - 6): G_stack^T V_f, so that [G_c xi]_c = G_stack_t_V (V_f^T xi)
+  // Geometric-stiffness invariants (se::StiffeningInvariants, docs/geometric-stiffening.md): k = 12 + 6N
+  // symmetric n x n matrices G_c, the 12 inertia load cases, then the 6N constraint modes. They span a
+  // space of dimension r < k (the rigid motions of the interfaces stress nothing; a plate's bending
+  // cases no membrane; docs/geometric-stiffening.md, "The rank of the invariants"), kept as
+  // G_c = sum_i U_i W(i, c) with r orthonormal symmetric U_i: every product reads r matrices, not k.
+  // Empty (r = 0) when the superelement carries none or all its G_c vanish.
+  Eigen::MatrixXd G_basis;        ///< n x r n: [U_0 ... U_{r-1}] side by side (column-major: n^2 x r)
+  Eigen::MatrixXd G_coef;         ///< r x k: W, G_c = sum_i U_i W(i, c)
+  Eigen::MatrixXd G_basis_t_V;    ///< r n x (n - 6): G_basis^T V_f, so that [U_i xi]_i = G_basis_t_V (V_f^T xi)
+  Eigen::MatrixXd G_foreshortening;  ///< r x r: W_b Kbb^+ W_b^T (W_b: W's 6N interface columns)
   /// 6N x 6N pseudo-inverse of K's interface block (its null space: the rigid motions): the compliance
   /// through which the bending's foreshortening loads the interface (the quartic energy term).
   Eigen::MatrixXd Kbb_pinv;
-  bool has_stiffening() const { return G_stack.size() > 0; }
+  bool stiffening = false;  ///< the superelement carries geometric-stiffness invariants
+  bool has_stiffening() const { return stiffening; }
 
   // FE-level data (FFRF baseline, the nodal reference of the tests); present when the superelement
   // carries recovery and M_fe.

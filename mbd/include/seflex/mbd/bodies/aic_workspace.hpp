@@ -32,12 +32,17 @@ struct AicWorkspace {
   Eigen::MatrixXd AOm, AD, ADPhi;    ///< n x 3, n x n, n x 6 (velocity-acceleration tangent)
   // Geometric stiffening (aic_stiffening.cpp).
   Eigen::VectorXd sw, sab, sc, sxid;  ///< n: body-axis velocities, accelerations, c, xi_dot
-  Eigen::VectorXd Gxi;                ///< k n: G_c xi for every case c, stacked
-  Eigen::VectorXd Gxi_at;             ///< the xi of Gxi: reused while xi and the element are unchanged
-  const double* Gxi_of = nullptr;     ///< (FFRF-LM's differences in the frame coordinates keep xi)
+  Eigen::VectorXd Uxi;                ///< r n: U_i xi for every basis matrix i (AicElement::G_basis), stacked
+  Eigen::VectorXd yx;                 ///< r: xi^T U_i xi
+  Eigen::VectorXd Gxi;                ///< 12 n: G_c xi for the inertia cases c < 12 (formed for the tangents)
+  bool Gxi_formed = false;            ///< Gxi belongs to the current Uxi
+  Eigen::VectorXd Uxi_at;             ///< the xi of Uxi: reused while xi and the element are unchanged
+  const double* Uxi_of = nullptr;     ///< (FFRF-LM's differences in the frame coordinates keep xi)
   Eigen::VectorXd mu;                 ///< k: [lambda; xi_b + s]
+  Eigen::VectorXd Wmu;                ///< r: W mu, sum_c mu_c G_c in the basis U
   Eigen::VectorXd fb, fs;             ///< 6N: foreshortening loads b and their interface displacements s
-  Eigen::MatrixXd GK;                 ///< n x 6N: [G_j xi] Kbb^+
+  Eigen::MatrixXd Qr;                 ///< r x n: 1/2 P Y^T + W_b E^T (the Hessian's interface terms)
+  Eigen::MatrixXd YQ;                 ///< n x n: Y Qr
   Eigen::MatrixXd Keff;               ///< n x n: K + Hessian of V_G
 };
 
