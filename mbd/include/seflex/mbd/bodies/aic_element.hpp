@@ -72,9 +72,10 @@ struct AicElement {
 
   // Geometric-stiffness invariants (se::StiffeningInvariants, docs/geometric-stiffening.md): k = 12 + 6N
   // symmetric n x n matrices G_c, the 12 inertia load cases, then the 6N constraint modes. They span a
-  // space of dimension r < k (the rigid motions of the interfaces stress nothing; a plate's bending
-  // cases no membrane; docs/geometric-stiffening.md, "The rank of the invariants"), kept as
-  // G_c = sum_i U_i W(i, c) with r orthonormal symmetric U_i: every product reads r matrices, not k.
+  // space of dimension r <= k, on real bodies far below k (the rigid motions of the interfaces stress
+  // nothing; a plate's bending cases no membrane; docs/geometric-stiffening.md, "The rank of the
+  // invariants"), kept as G_c = sum_i U_i W(i, c) with r orthonormal symmetric U_i: every product
+  // reads r matrices, not k.
   // Empty (r = 0) when the superelement carries none or all its G_c vanish.
   Eigen::MatrixXd G_basis;        ///< n x r n: [U_0 ... U_{r-1}] side by side (column-major: n^2 x r)
   Eigen::MatrixXd G_coef;         ///< r x k: W, G_c = sum_i U_i W(i, c)
