@@ -197,7 +197,7 @@ class AicStepper final : public detail::Stepper {
       vdot_predicted_ = state_.vdot + std::min(h / h_prev_, 2.0) * (state_.vdot - vdot_prev_);  // same size: no allocation
     else
       vdot_predicted_ = state_.vdot;
-    light_evaluated_ = false;  // data_ now belongs to the trial
+    at_state_ = Evaluated::None;  // data_ now belongs to the trial
     StepResult r = newton_step(model_, state_, h, c_, st_, data_, trial_, rate_, vdot_predicted_, newton_);
     last_evaluated_ = r.evaluated;
     return r;
@@ -216,32 +216,28 @@ class AicStepper final : public detail::Stepper {
     vdot_prev_ = state_.vdot;
     h_prev_ = trial_.t - state_.t;
     state_ = trial_;
-    evaluated_ = last_evaluated_;
-    light_evaluated_ = false;
+    at_state_ = last_evaluated_ ? Evaluated::Full : Evaluated::None;
     store_derived(model_, data_, state_);
   }
   void sample(Sample& out) override {
     // A sample reads energies, frames and force elements, not the residual: the light evaluation
     // (AssemblyOptions::energies_only) unless a driven hinge's sample needs its joint torque.
-    if (!evaluated_ && !light_evaluated_) {
+    if (at_state_ == Evaluated::None) {
       AssemblyOptions opt{false, true, 1.0};
       opt.energies_only = !has_drives_;
       assemble(model_, state_, data_, opt);
-      evaluated_ = !opt.energies_only;
-      light_evaluated_ = opt.energies_only;
+      at_state_ = opt.energies_only ? Evaluated::Light : Evaluated::Full;
     }
     make_sample(model_, state_, data_, out);
   }
   /// `data` evaluated at the accepted state (the last Newton iterate may have skipped it).
   void evaluate_current() {
-    if (evaluated_) return;
+    if (at_state_ == Evaluated::Full) return;
     assemble(model_, state_, data_, AssemblyOptions{false, true, 1.0});
-    evaluated_ = true;
+    at_state_ = Evaluated::Full;
   }
   void prepare_failure_sample() override {
-    evaluated_ = false;  // the failed attempts left data_ at a trial state
-    light_evaluated_ = false;
-    evaluate_current();
+    evaluate_current();  // the failed attempt left data_ at a trial state (attempt: Evaluated::None)
   }
   std::string describe_residual() const override { return detail::describe_residual(model_, data_); }
 
@@ -259,9 +255,10 @@ class AicStepper final : public detail::Stepper {
   mutable VectorXd dvdot_;
   NewtonScratch newton_;
   double h_prev_ = 0.0;      // the last accepted step (0: none yet)
-  bool evaluated_ = true;    // data_ holds the evaluation at state_ (bodies and force elements)
-  bool last_evaluated_ = true;  // the same for trial_ after the last attempt
-  bool light_evaluated_ = false;  // data_ holds the energies_only evaluation at state_ (a sample's)
+  // What data_ holds at state_: nothing (a trial's evaluation), a sample's energies_only evaluation,
+  // or the full one (bodies and force elements; initial_accelerations leaves it).
+  enum class Evaluated { None, Light, Full } at_state_ = Evaluated::Full;
+  bool last_evaluated_ = true;  // the last attempt left data_ evaluated at trial_
   bool has_drives_ = false;       // some hinge is driven: samples need the full evaluation (joint torques)
 };
 
