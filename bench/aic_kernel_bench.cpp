@@ -1,4 +1,5 @@
-// Cost of the AIC superelement's kernels per evaluation (issue 12): frame recovery, elastic force,
+// Cost of the AIC superelement's kernels per evaluation (issue 12), and of making the element once:
+// frame recovery, elastic force,
 // full inertia, and the elastic force with geometric stiffening when the file has its invariants, each
 // without and with its tangent matrices, on a superelement file, at a random
 // deformed and rotating state (the same state every repetition, so the figure is the arithmetic of
@@ -81,6 +82,9 @@ int main(int argc, char** argv) {
     fn();  // size the scratch
     std::printf("%-42s %10.2f\n", what, best_us(repeats, fn));
   };
+  // Start-up of a body: the element from the file's superelement (the stiffening invariants' SVD
+  // included, docs/geometric-stiffening.md "The rank of the invariants").
+  line("make_aic_element", [&] { const mbd::AicElement made = mbd::make_aic_element(s); });
   line("recover_frame", [&] { mbd::recover_frame(e, R_WI, p_WI, eta, mbd::FrameRecovery::Newton6, warm, kin); });
   line("elastic_force (force)", [&] { mbd::elastic_force(e, kin, mbd::TangentModel::Exact, f, nullptr, ws); });
   line("elastic_force (force + tangent)", [&] { mbd::elastic_force(e, kin, mbd::TangentModel::Exact, f, &Kt, ws); });
