@@ -122,6 +122,22 @@ Data::Data(const Model& model) {
   K.assign(nnz, 0.0);
   C.assign(nnz, 0.0);
   M.assign(nnz, 0.0);
+  S_flex.assign(nnz, 0.0);
+  // The rotation triples among every node's Jacobian columns: a Free node's three rotation dofs are
+  // consecutive dofs, and an Attached node copies its parent's columns in order (ModelBuilder::build).
+  node_rotation_triples.resize(model.nodes.size());
+  for (std::size_t k = 0; k < model.nodes.size(); ++k) {
+    const auto& dofs = model.node_dofs[k];
+    for (std::size_t r = 0; r < model.rotation_dof_starts.size(); ++r) {
+      const auto it = std::find(dofs.begin(), dofs.end(), model.rotation_dof_starts[r]);
+      if (it == dofs.end()) continue;
+      const auto c0 = it - dofs.begin();
+      SEFLEX_DEMAND(c0 + 2 < static_cast<std::ptrdiff_t>(dofs.size()) && dofs[static_cast<std::size_t>(c0 + 1)] == *it + 1 &&
+                        dofs[static_cast<std::size_t>(c0 + 2)] == *it + 2,
+                    "a node's Jacobian holds a Free node's rotation dofs as three consecutive columns");
+      node_rotation_triples[k].push_back({static_cast<int>(c0), static_cast<int>(r)});
+    }
+  }
 }
 
 bool Data::factorize(const Eigen::SparseMatrix<double>& S) {

@@ -9,6 +9,7 @@
 #include <random>
 
 #include "mbd_models.hpp"
+#include "seflex/common/error.hpp"
 #include "seflex/common/so3.hpp"
 #include "seflex/mbd/assembly/assembly.hpp"
 #include "seflex/mbd/output.hpp"
@@ -26,7 +27,7 @@ struct Mixed {
   Model model;
 };
 
-Model mixed_model(InertiaModel inertia) {
+Model mixed_model(InertiaModel inertia, double stiffness_damping = 0.0) {
   test::BeamSection sec;
   sec.E = 2e9;  // soft enough that the perturbed state carries sizeable elastic forces
   auto beam = test::straight_beam(1.0, 4, sec);
@@ -39,6 +40,7 @@ Model mixed_model(InertiaModel inertia) {
   const auto seb = mb.add_superelement(sb), sem = mb.add_superelement(sm);
   FlexibleBodyOptions fo;
   fo.inertia = inertia;
+  fo.stiffness_damping = stiffness_damping;
   // Body 1: beam from the origin along x, frame at its middle.
   const auto n2 = mb.add_node("n2", Pose{Matrix3d::Identity(), Vector3d(1, 0, 0)});
   mb.add_flexible_body("b1", seb, {mb.hinge_child(h1), n2}, Pose{Matrix3d::Identity(), Vector3d(0.5, 0, 0)}, fo);
@@ -286,4 +288,52 @@ TEST(Assembly, EnergiesOnlyEvaluationGivesTheFullEvaluationsSample) {
       EXPECT_EQ(b.hinges[h].drive_torque, 0.0);
     }
   }
+}
+
+// The flexible bodies' share of the Newton iteration matrix in one pass (AssemblyOptions::iteration:
+// one mapping of cK K + cC C + cM M per body, K's rotation columns times T and the convective term
+// through the node maps) against K, C and M assembled apart and combined by combine_matrices with the
+// same coefficients and rotation Jacobians. The model has Free nodes (identity maps), nodes attached
+// through hinges to a rigid body's slave node (Jacobians holding a Free node's rotation triple),
+// modal dofs, damping and both inertia models; the state has velocities (convective terms).
+TEST(Assembly, IterationMatrixInOnePassEqualsTheMatricesCombined) {
+  for (auto inertia : {InertiaModel::Simplified, InertiaModel::Full})
+    for (bool velocity_tangent : {true, false}) {
+      const Model model = mixed_model(inertia, 2e-3);
+      const State s = perturbed(model, 7, 2e-3);
+      std::mt19937 rng(3);
+      std::normal_distribution<double> nd;
+      std::vector<Matrix3d> T;
+      for (std::size_t r = 0; r < model.rotation_dof_starts.size(); ++r)
+        T.push_back(so3::jl(0.05 * Vector3d(nd(rng), nd(rng), nd(rng))));
+      ASSERT_GE(T.size(), 2u);
+      const double h = 1e-3, cK = 1.0, cC = 0.6 / h, cM = 0.3 / (h * h);
+      AssemblyOptions o;
+      o.inertia_velocity_tangent = velocity_tangent;
+      Data apart(model);
+      assemble(model, s, apart, o);
+      Eigen::SparseMatrix<double> Sa, S0;
+      combine_matrices(model, apart, cK, cC, cM, &T, Sa);
+      combine_matrices(model, apart, cK, cC, cM, nullptr, S0);
+      const IterationMatrix im{cK, cC, cM, &T};
+      o.iteration = &im;
+      Data one(model);
+      assemble(model, s, one, o);
+      Eigen::SparseMatrix<double> Sb;
+      combine_matrices(model, one, cK, cC, cM, &T, Sb);
+      const MatrixXd A(Sa), B(Sb), A0(S0);
+      EXPECT_LT((A - B).norm(), 1e-14 * A.norm()) << "inertia " << static_cast<int>(inertia) << " velocity tangent " << velocity_tangent;
+      // The rotation Jacobians matter here (the comparison would catch their loss).
+      EXPECT_GT((A - A0).norm(), 1e-6 * A.norm());
+      // The residual is the same evaluation.
+      EXPECT_EQ((apart.residual - one.residual).norm(), 0.0);
+      // Combining with other coefficients than the assembly's is refused.
+      Eigen::SparseMatrix<double> Sc;
+      try {
+        combine_matrices(model, one, cK, 2.0 * cC, cM, &T, Sc);
+        ADD_FAILURE() << "other coefficients accepted";
+      } catch (const InvariantError& e) {
+        EXPECT_NE(std::string(e.what()).find("AssemblyOptions::iteration"), std::string::npos) << e.what();
+      }
+    }
 }

@@ -91,13 +91,12 @@ bool convective_map(const ElementMap& map, const std::vector<const std::vector<V
   return any;
 }
 
-void scatter_mapped(std::vector<double>& vals, const std::vector<int>& offsets, int nc, const ElementMap& map,
-                    const Eigen::MatrixXd& X, std::vector<Eigen::MatrixXd>& Y, const ElementMap* right) {
-  const ElementMap& R = right ? *right : map;
-  const int nb = static_cast<int>(map.J.size());
-  const int ne = map.extra ? static_cast<int>(map.extra->size()) : 0;
-  const int ner = R.extra ? static_cast<int>(R.extra->size()) : 0;
-  // Column-mapped blocks Y_j = X(:, block j) J_j (rows: all node-space rows).
+namespace {
+
+/// Y_j = X(:, block j) R_j for every node block j of the right map (a Free node's identity block: the
+/// block itself).
+void column_blocks(const ElementMap& R, const Eigen::MatrixXd& X, std::vector<Eigen::MatrixXd>& Y) {
+  const int nb = static_cast<int>(R.J.size());
   Y.resize(static_cast<std::size_t>(nb));
   for (int j = 0; j < nb; ++j) {
     const auto& Jj = *R.J[static_cast<std::size_t>(j)];
@@ -109,13 +108,21 @@ void scatter_mapped(std::vector<double>& vals, const std::vector<int>& offsets, 
     Yj.resize(X.rows(), static_cast<Eigen::Index>(Jj.size()));
     for (std::size_t c = 0; c < Jj.size(); ++c) Yj.col(static_cast<Eigen::Index>(c)).noalias() = X.middleCols<6>(6 * j) * Jj[c];
   }
+}
+
+/// vals += L^T [Y_j]_j on the node columns (positions of R) and X's modal columns, rows and corner.
+void scatter_blocks(std::vector<double>& vals, const std::vector<int>& offsets, int nc, const ElementMap& L,
+                    const ElementMap& R, const Eigen::MatrixXd& X, const std::vector<Eigen::MatrixXd>& Y) {
+  const int nb = static_cast<int>(L.J.size());
+  const int ne = L.extra ? static_cast<int>(L.extra->size()) : 0;
+  const int ner = R.extra ? static_cast<int>(R.extra->size()) : 0;
   auto put = [&](int a, int b, double v) {
     vals[static_cast<std::size_t>(offsets[static_cast<std::size_t>(a + nc * b)])] += v;
   };
   for (int i = 0; i < nb; ++i) {
-    const auto& Ji = *map.J[static_cast<std::size_t>(i)];
-    const auto& pi = *map.pos[static_cast<std::size_t>(i)];
-    const bool idi = map.identity[static_cast<std::size_t>(i)];
+    const auto& Ji = *L.J[static_cast<std::size_t>(i)];
+    const auto& pi = *L.pos[static_cast<std::size_t>(i)];
+    const bool idi = L.identity[static_cast<std::size_t>(i)];
     for (int j = 0; j < nb; ++j) {
       const auto& Yj = Y[static_cast<std::size_t>(j)];
       const auto& pj = *R.pos[static_cast<std::size_t>(j)];
@@ -132,7 +139,7 @@ void scatter_mapped(std::vector<double>& vals, const std::vector<int>& offsets, 
     }
   }
   for (int k = 0; k < ne; ++k) {
-    const int pk = (*map.extra)[static_cast<std::size_t>(k)];
+    const int pk = (*L.extra)[static_cast<std::size_t>(k)];
     for (int j = 0; j < nb; ++j) {  // modal rows, node columns
       const auto& Yj = Y[static_cast<std::size_t>(j)];
       const auto& pj = *R.pos[static_cast<std::size_t>(j)];
@@ -140,6 +147,43 @@ void scatter_mapped(std::vector<double>& vals, const std::vector<int>& offsets, 
     }
     for (int l = 0; l < ner; ++l) put(pk, (*R.extra)[static_cast<std::size_t>(l)], X(6 * nb + k, 6 * nb + l));
   }
+}
+
+}  // namespace
+
+void scatter_mapped(std::vector<double>& vals, const std::vector<int>& offsets, int nc, const ElementMap& map,
+                    const Eigen::MatrixXd& X, std::vector<Eigen::MatrixXd>& Y, const ElementMap* right) {
+  const ElementMap& R = right ? *right : map;
+  column_blocks(R, X, Y);
+  scatter_blocks(vals, offsets, nc, map, R, X, Y);
+}
+
+void scatter_iteration(std::vector<double>& vals, const std::vector<int>& offsets, int nc, const ElementMap& map,
+                       const NodeSpaceIteration& it, std::vector<Eigen::MatrixXd>& Y) {
+  const Eigen::MatrixXd& X = *it.X;
+  column_blocks(map, X, Y);
+  const auto nb = map.J.size();
+  for (std::size_t j = 0; j < nb; ++j) {
+    Eigen::MatrixXd& Yj = Y[j];
+    const auto& Jj = *map.J[j];
+    // K's rotation columns of a Free node r times T_r: the columns (J T_r - J) of the K share.
+    if (it.T && it.K)
+      for (const auto& [c0, r] : *(*it.triples)[j]) {
+        const Eigen::Matrix3d D = (*it.T)[static_cast<std::size_t>(r)] - Eigen::Matrix3d::Identity();
+        for (int l = 0; l < 3; ++l) {
+          Vector6d dJ = Vector6d::Zero();
+          for (int q = 0; q < 3; ++q) dJ += D(q, l) * Jj[static_cast<std::size_t>(c0 + q)];
+          Yj.col(c0 + l).noalias() += (it.cK * it.K->middleCols<6>(6 * static_cast<Eigen::Index>(j))) * dJ;
+        }
+      }
+    // The convective term of the node tree, M G (zero on Free nodes; a null G: zero).
+    if (it.M && (*it.G)[j] && !map.identity[j]) {
+      const auto& Gj = *(*it.G)[j];
+      for (std::size_t c = 0; c < Gj.size(); ++c)
+        Yj.col(static_cast<Eigen::Index>(c)).noalias() += (it.cC * it.M->middleCols<6>(6 * static_cast<Eigen::Index>(j))) * Gj[c];
+    }
+  }
+  scatter_blocks(vals, offsets, nc, map, map, X, Y);
 }
 
 void add_mapped_abs(Eigen::VectorXd& out, const ElementMap& map, const Eigen::VectorXd& f) {
@@ -167,6 +211,11 @@ void assemble(const Model& model, const State& s, Data& data, const AssemblyOpti
     std::fill(data.K.begin(), data.K.end(), 0.0);
     std::fill(data.C.begin(), data.C.end(), 0.0);
     std::fill(data.M.begin(), data.M.end(), 0.0);
+  }
+  data.S_flex_filled = opt.matrices && opt.iteration != nullptr;
+  if (data.S_flex_filled) {
+    std::fill(data.S_flex.begin(), data.S_flex.end(), 0.0);
+    data.S_flex_for = *opt.iteration;
   }
   for (int b = 0; b < static_cast<int>(model.flexible_bodies.size()); ++b) detail::assemble_flexible(model, s, data, opt, b);
   for (int b = 0; b < static_cast<int>(model.rigid_bodies.size()); ++b) detail::assemble_rigid(model, data, opt, b);
@@ -212,6 +261,12 @@ void combine_matrices(const Model& model, Data& data, double cK, double cC, doub
     Kp = &Kv;
   }
   for (std::size_t i = 0; i < nnz; ++i) val[i] = cK * (*Kp)[i] + cC * data.C[i] + cM * data.M[i];
+  if (data.S_flex_filled) {
+    const IterationMatrix& f = data.S_flex_for;
+    SEFLEX_DEMAND(f.cK == cK && f.cC == cC && f.cM == cM && f.rotation_jacobians == rotation_jacobians,
+                  "combine_matrices: the coefficients of the assembly's iteration matrix (AssemblyOptions::iteration)");
+    for (std::size_t i = 0; i < nnz; ++i) val[i] += data.S_flex[i];
+  }
 }
 
 }  // namespace seflex::mbd

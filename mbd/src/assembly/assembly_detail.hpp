@@ -2,6 +2,7 @@
 // Internal helpers of the assembly (not installed): scatter into clique blocks and the per-element
 // contributions, each in its own file.
 #include <Eigen/Core>
+#include <array>
 #include <vector>
 
 #include "seflex/mbd/assembly/assembly.hpp"
@@ -20,6 +21,23 @@ inline void scatter(std::vector<double>& vals, const std::vector<int>& offsets, 
 /// Y: the caller's scratch for the column-mapped blocks (reused: keep one per element).
 void scatter_mapped(std::vector<double>& vals, const std::vector<int>& offsets, int nc, const ElementMap& map,
                     const Eigen::MatrixXd& X, std::vector<Eigen::MatrixXd>& Y, const ElementMap* right = nullptr);
+/// One element's share of the iteration matrix cK K T + cC C + cM M (AssemblyOptions::iteration) in
+/// node space: X = cK K + cC C + cM M (world), and what the maps add beyond J^T X J: K's columns of
+/// the Free nodes' rotation dofs times T (cK K (J T - J), with `triples` per node block as
+/// Data::node_rotation_triples) and the convective term cC M G of the node tree (G per node block).
+struct NodeSpaceIteration {
+  const Eigen::MatrixXd* X = nullptr;
+  const Eigen::MatrixXd* K = nullptr;  ///< null: no rotation columns to correct
+  double cK = 1.0;
+  const std::vector<Eigen::Matrix3d>* T = nullptr;
+  const std::vector<const std::vector<std::array<int, 2>>*>* triples = nullptr;
+  const Eigen::MatrixXd* M = nullptr;  ///< null: no convective term
+  double cC = 0.0;
+  const std::vector<const std::vector<Vector6d>*>* G = nullptr;  ///< per node block; null entries: G = 0
+};
+/// vals += J^T (X J + cK K (J T - J) + cC M G) scattered into the clique: one mapping per element.
+void scatter_iteration(std::vector<double>& vals, const std::vector<int>& offsets, int nc, const ElementMap& map,
+                       const NodeSpaceIteration& share, std::vector<Eigen::MatrixXd>& Y);
 /// The map of the convective Jacobians G (no identity blocks, no modal columns); false if all G
 /// vanish (every node Free).
 bool convective_map(const ElementMap& map, const std::vector<const std::vector<Vector6d>*>& G, ElementMap& out);

@@ -450,15 +450,15 @@ void elastic_force(const AicElement& e, const AicKinematics& kin, TangentModel t
 }
 
 void elastic_force(const AicElement& e, const AicKinematics& kin, TangentModel tangent, VectorXd& f, MatrixXd* Kt,
-                   AicWorkspace& ws) {
+                   AicWorkspace& ws, MatrixAxes axes) {
   ws.g.noalias() = e.K * kin.xi;
-  detail::elastic_force_of_local(e, kin, tangent, e.K, f, Kt, ws);
+  detail::elastic_force_of_local(e, kin, tangent, e.K, f, Kt, ws, axes);
 }
 
 namespace detail {
 
 void elastic_force_of_local(const AicElement& e, const AicKinematics& kin, TangentModel tangent, const MatrixXd& H,
-                                VectorXd& f, MatrixXd* Kt, AicWorkspace& ws) {
+                                VectorXd& f, MatrixXd* Kt, AicWorkspace& ws, MatrixAxes axes) {
   // Tx = I - R6 Zx with R6 = [Phi_rig; 0] (rank-6 defect): every product with Tx is O(n^2).
   const int N = e.N, nb = 6 * N;
   const MatrixXd& Phi = kin.Phi_rig;
@@ -497,7 +497,7 @@ void elastic_force_of_local(const AicElement& e, const AicKinematics& kin, Tange
   // Geometric part from the rotation of the forces with R_WB: -Ftilde E_r ZxL.
   detail::stacked_skew(e, fw, ws.S3);
   Kw.noalias() -= ws.S3 * ZxL.middleRows<3>(3);
-  rotate_to_world(e, kin.frame.R_WB, Kw);
+  if (axes == MatrixAxes::World) rotate_to_world(e, kin.frame.R_WB, Kw);
 }
 
 }  // namespace detail

@@ -315,11 +315,11 @@ void inertia_force(const AicElement& e, const AicKinematics& kin, InertiaModel m
 
 void inertia_force(const AicElement& e, const AicKinematics& kin, InertiaModel model, const Eigen::Ref<const VectorXd>& v,
                    const Eigen::Ref<const VectorXd>& a, InertiaMatrices want_matrices, InertiaResult& out,
-                   AicWorkspace& ws) {
+                   AicWorkspace& ws, MatrixAxes axes) {
   if (model == InertiaModel::Full) {
     SEFLEX_DEMAND(e.inv.present(), "full inertia needs the inertia invariants of superelement " + e.name);
   }
-  detail::inertia_in_world(e, kin, v, a, want_matrices, out, ws,
+  detail::inertia_in_world(e, kin, v, a, want_matrices, out, ws, axes,
                            [&](const VectorXd& w, const VectorXd& ab, InertiaMatrices want, MatrixXd& Mw, MatrixXd& Cw,
                                MatrixXd& Kw, VectorXd& fw, double& kinetic) {
                              if (model == InertiaModel::Full)

@@ -23,7 +23,8 @@ inline Eigen::MatrixXd stacked_skew(const AicElement& e, const Eigen::VectorXd& 
 /// caller left in ws.g, with derivative H = dg/dxi (n x n), at kin.xi: f_w = Tx^T g (formulation 2.2, 3).
 /// elastic_force uses g = K xi; elastic_force_stiffened adds the stress stiffening K_G xi.
 void elastic_force_of_local(const AicElement& e, const AicKinematics& kin, TangentModel tangent,
-                                const Eigen::MatrixXd& H, Eigen::VectorXd& f, Eigen::MatrixXd* Kt, AicWorkspace& ws);
+                                const Eigen::MatrixXd& H, Eigen::VectorXd& f, Eigen::MatrixXd* Kt, AicWorkspace& ws,
+                                MatrixAxes axes = MatrixAxes::World);
 
 /// The FE-level projections of the full inertia at local coordinates xi, local elastic velocities
 /// xid and angular velocity Om (body axes), from the inertia invariants (docs/inertia-invariants.md):
@@ -72,7 +73,8 @@ void add_stress_stiffening_hessian(const AicElement& e, AicWorkspace& ws, Eigen:
 /// Mt (world) += d f / d a of the stiffening force through its first six load factors, the frame's
 /// accelerations (a rank-6, unsymmetric term; after add_stress_stiffening at the same state, whose
 /// case products it reads). The load factors' velocity dependence (Om, c) stays out of C.
-void add_stiffening_mass_tangent(const AicElement& e, const AicKinematics& kin, AicWorkspace& ws, Eigen::MatrixXd& Mt);
+void add_stiffening_mass_tangent(const AicElement& e, const AicKinematics& kin, AicWorkspace& ws, Eigen::MatrixXd& Mt,
+                                 MatrixAxes axes = MatrixAxes::World);
 /// The last six load factors: the symmetric components of Om~ Om~ (body axes).
 void centrifugal_load_factors(const Eigen::Vector3d& Om, StiffeningLoads& lambda);
 
@@ -127,12 +129,12 @@ inline Eigen::MatrixXd times_velocity_accelerations_tangent(const AicElement& e,
 
 /// Evaluate an inertia model in body axes and rotate the result to world components:
 /// body(w, ab, want, Mw, Cw, Kw, fw, kinetic) with w, ab the body-axis velocities and accelerations.
-/// Mw, Cw, Kw are out.Mt, out.Ct, out.Kt, rotated in place afterwards (Ct only when formed); vectors
-/// live in ws.
+/// Mw, Cw, Kw are out.Mt, out.Ct, out.Kt, rotated in place afterwards (Ct only when formed) unless
+/// axes is Body; vectors live in ws.
 template <class BodyInertia>
 void inertia_in_world(const AicElement& e, const AicKinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& v,
                       const Eigen::Ref<const Eigen::VectorXd>& a, InertiaMatrices want_matrices, InertiaResult& out,
-                      AicWorkspace& ws, BodyInertia&& body) {
+                      AicWorkspace& ws, MatrixAxes axes, BodyInertia&& body) {
   const Eigen::Matrix3d& R = kin.frame.R_WB;
   to_body(e, R, v, ws.w);
   to_body(e, R, a, ws.ab);
@@ -140,7 +142,7 @@ void inertia_in_world(const AicElement& e, const AicKinematics& kin, const Eigen
   body(ws.w, ws.ab, want_matrices, out.Mt, out.Ct, out.Kt, ws.fi, out.kinetic);
   out.has_Ct = want_matrices == InertiaMatrices::All;
   to_world(e, R, ws.fi, out.f);
-  if (want_matrices == InertiaMatrices::None) return;
+  if (want_matrices == InertiaMatrices::None || axes == MatrixAxes::Body) return;
   rotate_to_world(e, R, out.Mt);
   if (want_matrices == InertiaMatrices::All) rotate_to_world(e, R, out.Ct);
   rotate_to_world(e, R, out.Kt);

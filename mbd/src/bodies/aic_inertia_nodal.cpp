@@ -81,7 +81,7 @@ void inertia_force_nodal(const AicElement& e, const AicKinematics& kin, const Ei
                          const Eigen::Ref<const VectorXd>& a, bool want_matrices, bool elastic_gyro, InertiaResult& out) {
   SEFLEX_DEMAND(e.has_fe_data, "the nodal inertia needs the FE recovery matrix and FE mass of superelement " + e.name);
   AicWorkspace ws;
-  detail::inertia_in_world(e, kin, v, a, want_matrices ? InertiaMatrices::All : InertiaMatrices::None, out, ws,
+  detail::inertia_in_world(e, kin, v, a, want_matrices ? InertiaMatrices::All : InertiaMatrices::None, out, ws, MatrixAxes::World,
                            [&](const VectorXd& w, const VectorXd& ab, InertiaMatrices want, MatrixXd& Mw, MatrixXd& Cw,
                                MatrixXd& Kw, VectorXd& fw, double& kinetic) {
                              full_nodal(e, kin, w, ab, want != InertiaMatrices::None, elastic_gyro, Mw, Cw, Kw, fw, kinetic);

@@ -116,7 +116,8 @@ void add_stress_stiffening_hessian(const AicElement& e, AicWorkspace& ws, Matrix
   H += ws.YQ.transpose();
 }
 
-void add_stiffening_mass_tangent(const AicElement& e, const AicKinematics& kin, AicWorkspace& ws, MatrixXd& Mt) {
+void add_stiffening_mass_tangent(const AicElement& e, const AicKinematics& kin, AicWorkspace& ws, MatrixXd& Mt,
+                                 MatrixAxes axes) {
   const Eigen::Index nb = 6 * e.N;
   const Eigen::Map<const MatrixXd> Gx = stiffening_inertia_products(e, ws);
   // d f_local / d a_b = [G_c xi]_{c<6} Zx (lambda_0..5 = Zx (a_b - c)); f_w = Tx^T f_local, with
@@ -124,7 +125,7 @@ void add_stiffening_mass_tangent(const AicElement& e, const AicKinematics& kin, 
   ws.nn.noalias() = Gx.leftCols<6>() * kin.Zx;
   ws.sixn.noalias() = kin.Phi_rig.transpose() * ws.nn.topRows(nb);
   ws.nn.noalias() -= kin.Zx.transpose() * ws.sixn;
-  rotate_to_world(e, kin.frame.R_WB, ws.nn);
+  if (axes == MatrixAxes::World) rotate_to_world(e, kin.frame.R_WB, ws.nn);
   Mt += ws.nn;
 }
 
@@ -136,7 +137,8 @@ void centrifugal_load_factors(const Vector3d& Om, StiffeningLoads& lambda) {
 }  // namespace detail
 
 void elastic_force_stiffened(const AicElement& e, const AicKinematics& kin, TangentModel tangent,
-                             const StiffeningLoads& lambda, VectorXd& f, MatrixXd* Kt, AicWorkspace& ws, double* energy) {
+                             const StiffeningLoads& lambda, VectorXd& f, MatrixXd* Kt, AicWorkspace& ws, double* energy,
+                             MatrixAxes axes) {
   SEFLEX_DEMAND(e.has_stiffening(), "superelement " + e.name + " has no geometric-stiffness invariants");
   const VectorXd& xi = kin.xi;
   ws.g.noalias() = e.K * xi;
@@ -151,7 +153,7 @@ void elastic_force_stiffened(const AicElement& e, const AicKinematics& kin, Tang
   MatrixXd& H = ws.Keff;
   H = e.K;
   detail::add_stress_stiffening_hessian(e, ws, H);
-  detail::elastic_force_of_local(e, kin, tangent, H, f, Kt, ws);
+  detail::elastic_force_of_local(e, kin, tangent, H, f, Kt, ws, axes);
 }
 
 }  // namespace seflex::mbd

@@ -16,6 +16,63 @@ using Eigen::MatrixXd;
 using Eigen::Vector3d;
 using Eigen::VectorXd;
 
+namespace {
+
+/// The body's share of the iteration matrix cK K T + cC C + cM M (AssemblyOptions::iteration) in one
+/// mapping, from its matrices in body axes (sc.Kl with the inertia's K, in.Mt, in.Ct, sc.Cd): with
+/// Rhat the frame's rotation on the interface blocks, J^T Rhat X Rhat^T J = (Rhat^T J)^T X (Rhat^T J),
+/// so the node maps' columns (J, and G of the convective term) are rotated, not the n x n matrices.
+void add_iteration_share(const Model& model, const FlexibleBody& body, const IterationMatrix& im, bool dynamics, bool damped,
+                         const std::vector<int>& off, int nc, Data& data, FlexibleBodyData& fd) {
+  FlexibleBodyScratch& sc = fd.scratch;
+  const InertiaResult& in = sc.inertia;
+  const auto N = body.nodes.size();
+  sc.X = im.cK * sc.Kl;
+  if (dynamics) {
+    sc.X.noalias() += im.cM * in.Mt;
+    if (in.has_Ct) sc.X.noalias() += im.cC * in.Ct;
+    if (damped) sc.X.noalias() += im.cC * sc.Cd;
+  }
+  const Eigen::Matrix3d R_BW = fd.kin.frame.R_WB.transpose();
+  auto rotate = [&](const std::vector<Vector6d>& in6, std::vector<Vector6d>& out6) {
+    out6.resize(in6.size());
+    for (std::size_t c = 0; c < in6.size(); ++c) {
+      out6[c].head<3>().noalias() = R_BW * in6[c].head<3>();
+      out6[c].tail<3>().noalias() = R_BW * in6[c].tail<3>();
+    }
+  };
+  sc.JB.resize(N);
+  sc.GB.resize(N);
+  sc.bmap = sc.map;
+  sc.GBp.clear();
+  sc.triples.clear();
+  for (std::size_t j = 0; j < N; ++j) {
+    const auto k = static_cast<std::size_t>(body.nodes[j].value);
+    sc.triples.push_back(&data.node_rotation_triples[k]);
+    rotate(data.nodes[k].J, sc.JB[j]);
+    sc.bmap.J[j] = &sc.JB[j];
+    sc.bmap.identity[j] = 0;
+    if (model.nodes[k].kind == NodeKind::Free) {  // G = 0: no convective term
+      sc.GBp.push_back(nullptr);
+      continue;
+    }
+    rotate(data.nodes[k].G, sc.GB[j]);
+    sc.GBp.push_back(&sc.GB[j]);
+  }
+  NodeSpaceIteration share;
+  share.X = &sc.X;
+  share.K = im.rotation_jacobians ? &sc.Kl : nullptr;
+  share.cK = im.cK;
+  share.T = im.rotation_jacobians;
+  share.triples = &sc.triples;
+  share.M = dynamics && im.cC != 0.0 ? &in.Mt : nullptr;
+  share.cC = im.cC;
+  share.G = &sc.GBp;
+  scatter_iteration(data.S_flex, off, nc, sc.bmap, share, sc.Y);
+}
+
+}  // namespace
+
 void assemble_flexible(const Model& model, const State& s, Data& data, const AssemblyOptions& opt, int bi) {
   const FlexibleBody& body = model.flexible_bodies[static_cast<std::size_t>(bi)];
   const AicElement& e = model.superelement(body.se);
@@ -64,13 +121,15 @@ void assemble_flexible(const Model& model, const State& s, Data& data, const Ass
     if (start == &state_frame) throw;
     recover_frame(e, sc.R_WI, sc.p_WI, eta, body.options.recovery, state_frame, fd.kin);
   }
+  // The iteration matrix's share is mapped in body axes (the node maps rotated, not the matrices).
+  const MatrixAxes axes = opt.iteration ? MatrixAxes::Body : MatrixAxes::World;
   const bool stiffened = model.stiffened(body);
   if (stiffened) {
     stiffening_load_factors(e, fd.kin, sc.v, sc.a, sc.stiffening_loads, sc.aic);
     elastic_force_stiffened(e, fd.kin, body.options.tangent, sc.stiffening_loads, fd.f_el, opt.matrices ? &sc.Kl : nullptr,
-                            sc.aic, &fd.elastic);
+                            sc.aic, &fd.elastic, axes);
   } else {
-    elastic_force(e, fd.kin, body.options.tangent, fd.f_el, opt.matrices ? &sc.Kl : nullptr, sc.aic);
+    elastic_force(e, fd.kin, body.options.tangent, fd.f_el, opt.matrices ? &sc.Kl : nullptr, sc.aic, axes);
     fd.elastic = 0.5 * fd.kin.xi.dot(sc.aic.g);  // g = K xi
   }
   if (opt.energies_only) {  // an output sample: the energies, no forces
@@ -84,9 +143,9 @@ void assemble_flexible(const Model& model, const State& s, Data& data, const Ass
     const InertiaMatrices wanted = !opt.matrices                 ? InertiaMatrices::None
                                    : opt.inertia_velocity_tangent ? InertiaMatrices::All
                                                                   : InertiaMatrices::NoVelocityTangent;
-    inertia_force(e, fd.kin, body.options.inertia, sc.v, sc.a, wanted, in, sc.aic);
+    inertia_force(e, fd.kin, body.options.inertia, sc.v, sc.a, wanted, in, sc.aic, axes);
     if (opt.matrices && opt.dynamics && stiffened)
-      add_stiffening_mass_tangent(e, fd.kin, sc.aic, in.Mt);  // the load factors are the frame's accelerations
+      add_stiffening_mass_tangent(e, fd.kin, sc.aic, in.Mt, axes);  // the load factors are the frame's accelerations
     fd.f_in = in.f;
     fd.kinetic = opt.dynamics ? in.kinetic : 0.0;
   } else {
@@ -114,7 +173,7 @@ void assemble_flexible(const Model& model, const State& s, Data& data, const Ass
       sc.RDT.noalias() = fd.kin.Phi_rig.transpose() * sc.DT.topRows(nb);
       sc.Cd = sc.DT;
       sc.Cd.noalias() -= fd.kin.Zx.transpose() * sc.RDT;     // Tx^T D Tx
-      rotate_to_world(e, fd.kin.frame.R_WB, sc.Cd);
+      if (axes == MatrixAxes::World) rotate_to_world(e, fd.kin.frame.R_WB, sc.Cd);
     }
   } else {
     fd.f_damp.setZero(n);
@@ -154,6 +213,10 @@ void assemble_flexible(const Model& model, const State& s, Data& data, const Ass
   if (!opt.matrices) return;
   const auto& off = data.pattern.offsets[static_cast<std::size_t>(ci)];
   if (need_inertia) sc.Kl += in.Kt;
+  if (opt.iteration) {
+    add_iteration_share(model, body, *opt.iteration, opt.dynamics, damped, off, nc, data, fd);
+    return;
+  }
   scatter_mapped(data.K, off, nc, map, sc.Kl, sc.Y);
   if (opt.dynamics) {
     scatter_mapped(data.M, off, nc, map, in.Mt, sc.Y);

@@ -76,6 +76,13 @@ StepResult newton_step(const Model& model, const State& s0, double h, const Coef
   Eigen::SparseMatrix<double>& S = ws.S;
   AssemblyOptions opt;
   opt.inertia_velocity_tangent = st.inertia_velocity_tangent;
+  // The iteration matrix K T + gp C + bp M: the flexible bodies add their share in one pass. T (Jl)
+  // belongs to the iterate's rotation increments and is set before each assembly with matrices.
+  const IterationMatrix iteration{1.0, gp, bp, &Jl};
+  opt.iteration = &iteration;
+  auto set_rotation_jacobians = [&] {
+    for (std::size_t r = 0; r < Jl.size(); ++r) Jl[r] = so3::jl(hDq.segment<3>(model.rotation_dof_starts[r]));
+  };
   double inc = std::numeric_limits<double>::infinity();
   double r_prev = std::numeric_limits<double>::infinity();
   bool fresh = false;  // the factorisation belongs to this step
@@ -92,6 +99,7 @@ StepResult newton_step(const Model& model, const State& s0, double h, const Coef
     configure(model, s0, c, h, hDq, s1);
     // Modified Newton: keep the iteration matrix while the residual falls fast enough.
     opt.matrices = !fresh || !st.reuse_iteration_matrix;
+    if (opt.matrices) set_rotation_jacobians();
     try {
       assemble(model, s1, data, opt);
     } catch (const ConvergenceError& e) {
@@ -120,6 +128,7 @@ StepResult newton_step(const Model& model, const State& s0, double h, const Coef
     if (!opt.matrices && out.residual > 0.1 * r_prev) {
       // Slow: re-form the matrix at this iterate.
       opt.matrices = true;
+      set_rotation_jacobians();
       try {
         assemble(model, s1, data, opt);
       } catch (const ConvergenceError& e) {
@@ -129,8 +138,7 @@ StepResult newton_step(const Model& model, const State& s0, double h, const Coef
     }
     r_prev = out.residual;
     if (opt.matrices) {
-      for (std::size_t r = 0; r < Jl.size(); ++r) Jl[r] = so3::jl(hDq.segment<3>(model.rotation_dof_starts[r]));
-      combine_matrices(model, data, 1.0, gp, bp, &Jl, S);
+      combine_matrices(model, data, iteration.cK, iteration.cC, iteration.cM, iteration.rotation_jacobians, S);
       ws.condensed = ws.lu.applicable(model, S, Data::kDenseDofs);
       if (!(ws.condensed ? ws.lu.factorize(model, S) : data.factorize(S))) {
         out.why = "the iteration matrix is singular (" + detail::describe_singular(model, S) + ")";

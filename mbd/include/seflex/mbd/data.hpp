@@ -6,8 +6,10 @@
 #include <Eigen/LU>
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
+#include <array>
 #include <vector>
 
+#include "seflex/mbd/assembly/iteration_matrix.hpp"
 #include "seflex/mbd/bodies/aic_element.hpp"
 #include "seflex/mbd/forces/hinge_force.hpp"
 #include "seflex/mbd/model.hpp"
@@ -58,6 +60,11 @@ struct FlexibleBodyScratch {
   ElementMap map, gmap;
   std::vector<const std::vector<Vector6d>*> G;
   std::vector<Eigen::MatrixXd> Y;     ///< scatter blocks
+  Eigen::MatrixXd X;                  ///< the body's share of the iteration matrix (AssemblyOptions::iteration)
+  std::vector<const std::vector<std::array<int, 2>>*> triples;  ///< per interface: Data::node_rotation_triples of its node
+  std::vector<std::vector<Vector6d>> JB, GB;  ///< per interface: its node's J and G columns in body axes
+  std::vector<const std::vector<Vector6d>*> GBp;
+  ElementMap bmap;                    ///< the body's map with the columns in body axes
   StiffeningLoads stiffening_loads = StiffeningLoads::Zero();  ///< load factors of the stiffening (aic_stiffening.cpp)
 };
 
@@ -102,6 +109,14 @@ struct Data {
   std::vector<std::vector<int>> flex_eta_pos;                ///< [body][k] clique position of eta dof k
   std::vector<double> K, C, M;  ///< values on the pattern
   std::vector<double> K_rotated;  ///< K with the rotation columns times J_l (combine_matrices)
+  /// The flexible bodies' share of the iteration matrix, when assembled with AssemblyOptions::iteration
+  /// (S_flex_for: its coefficients; S_flex_filled: this assembly made it).
+  std::vector<double> S_flex;
+  IterationMatrix S_flex_for;
+  bool S_flex_filled = false;
+  /// Per node: the first column of each Free node's rotation triple among its Jacobian columns, and
+  /// that Free node's index in Model::rotation_dof_starts (the columns T right-multiplies).
+  std::vector<std::vector<std::array<int, 2>>> node_rotation_triples;
   Eigen::VectorXd hinge_phi, hinge_phidot;  ///< scratch of the force-element assembly
   std::vector<int> force_pos;
 

@@ -23,6 +23,11 @@ struct AssemblyOptions {
   /// scale or matrices, and the hinges' joint torques are left at zero (the loads and the tree pass
   /// that sum them are skipped). Needs matrices = false.
   bool energies_only = false;
+  /// With matrices: the coefficients of the iteration matrix the caller will combine. The flexible
+  /// bodies then add their share of it in one pass (Data::S_flex: one matrix mapped per body instead
+  /// of K, C, M and the convective term apart) and leave K, C and M to the other elements;
+  /// combine_matrices must be called with the same coefficients. Null: K, C and M apart.
+  const IterationMatrix* iteration = nullptr;
 };
 
 /// Poses, Jacobians, twists and accelerations of all nodes, and hinge quantities, at `state`
@@ -39,7 +44,9 @@ void store_derived(const Model& model, const Data& data, State& state);
 
 /// Assemble the sparse matrix cK K + cC C + cM M on the pattern. `rotation_jacobians`, if given,
 /// right-multiplies the K columns of each Free node's rotation dofs by its 3x3 matrix (Lie-group
-/// tangent operator), in the order of Model::rotation_dof_starts.
+/// tangent operator), in the order of Model::rotation_dof_starts. After an assembly with
+/// AssemblyOptions::iteration, the coefficients must be those (the flexible bodies' share, Data::S_flex,
+/// is added as it is).
 void combine_matrices(const Model& model, Data& data, double cK, double cC, double cM,
                       const std::vector<Eigen::Matrix3d>* rotation_jacobians, Eigen::SparseMatrix<double>& S);
 

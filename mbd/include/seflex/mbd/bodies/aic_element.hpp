@@ -36,6 +36,11 @@ enum class InertiaModel { Simplified, Full };
 /// h |Omega| << 1.
 enum class InertiaMatrices { None, All, NoVelocityTangent };
 
+/// The components the kernels leave their n x n matrices in: world (Rhat A Rhat^T, Rhat the frame's
+/// rotation on the 2N interface 3-blocks) or the body axes of the floating frame, for a caller that
+/// rotates its node maps instead (the flexible body's share of the iteration matrix).
+enum class MatrixAxes { World, Body };
+
 /// Configuration-independent data of one superelement, precomputed once (make_aic_element).
 struct AicElement {
   std::string name;
@@ -160,7 +165,7 @@ FloatingFrame frame_guess(const AicElement& e, const Eigen::Matrix3d& R_WI0, con
 void elastic_force(const AicElement& e, const AicKinematics& kin, TangentModel tangent, Eigen::VectorXd& f,
                    Eigen::MatrixXd* Kt);
 void elastic_force(const AicElement& e, const AicKinematics& kin, TangentModel tangent, Eigen::VectorXd& f,
-                   Eigen::MatrixXd* Kt, AicWorkspace& ws);
+                   Eigen::MatrixXd* Kt, AicWorkspace& ws, MatrixAxes axes = MatrixAxes::World);
 
 /// Geometric stiffening (docs/geometric-stiffening.md). The load factors of the 12 inertia load cases
 /// of se::StiffeningInvariants at this evaluation, body axes: [a_o - g; alpha; w_s(Om~ Om~)], from the
@@ -178,7 +183,7 @@ void stiffening_load_factors(const AicElement& e, const AicKinematics& kin, cons
 /// potential to *energy when given.
 void elastic_force_stiffened(const AicElement& e, const AicKinematics& kin, TangentModel tangent,
                              const StiffeningLoads& lambda, Eigen::VectorXd& f, Eigen::MatrixXd* Kt, AicWorkspace& ws,
-                             double* energy = nullptr);
+                             double* energy = nullptr, MatrixAxes axes = MatrixAxes::World);
 
 /// Rotate between world components and body-axis components: y = Rhat^T x (to_body) or Rhat x.
 Eigen::VectorXd to_body(const AicElement& e, const Eigen::Matrix3d& R_WB, const Eigen::Ref<const Eigen::VectorXd>& x);
@@ -219,7 +224,7 @@ void inertia_force(const AicElement& e, const AicKinematics& kin, InertiaModel m
                    bool want_matrices, InertiaResult& out, AicWorkspace& ws);
 void inertia_force(const AicElement& e, const AicKinematics& kin, InertiaModel model,
                    const Eigen::Ref<const Eigen::VectorXd>& v, const Eigen::Ref<const Eigen::VectorXd>& a,
-                   InertiaMatrices matrices, InertiaResult& out, AicWorkspace& ws);
+                   InertiaMatrices matrices, InertiaResult& out, AicWorkspace& ws, MatrixAxes axes = MatrixAxes::World);
 
 /// The full inertia evaluated by sums over the FE nodes (formulation 2.4; needs has_fe_data): the
 /// reference the invariant evaluation is tested against. elastic_gyro = false leaves out the
