@@ -110,11 +110,10 @@ bool CondensedLu::factorize(const Model& model, const Eigen::SparseMatrix<double
     blk.Sce.setZero();
   }
   const double* val = S.valuePtr();
-  double scale = 0.0;
-  for (std::size_t k = 0; k < dest_.size(); ++k) {
-    *dest_[k] = val[k];
-    scale = std::max(scale, std::abs(val[k]));
-  }
+  for (std::size_t k = 0; k < dest_.size(); ++k) *dest_[k] = val[k];
+  // Apart from the scatter: a running maximum there was kept in memory (the stores through dest_ may
+  // alias it), a store-to-load chain per entry.
+  const double scale = Eigen::Map<const Eigen::VectorXd>(val, S.nonZeros()).cwiseAbs().maxCoeff();
   for (Block& blk : blocks_) {
     blk.lu.compute(blk.See);
     if (!regular(blk.lu, scale)) return false;
