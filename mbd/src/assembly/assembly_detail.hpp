@@ -22,7 +22,8 @@ inline void scatter(std::vector<double>& vals, const std::vector<int>& offsets, 
 void scatter_mapped(std::vector<double>& vals, const std::vector<int>& offsets, int nc, const ElementMap& map,
                     const Eigen::MatrixXd& X, std::vector<Eigen::MatrixXd>& Y, const ElementMap* right = nullptr);
 /// One element's share of the iteration matrix cK K T + cC C + cM M (AssemblyOptions::iteration) in
-/// node space: X = cK K + cC C + cM M (world), and what the maps add beyond J^T X J: K's columns of
+/// node space: X = cK K + cC C + cM M (in the axes of the map's columns: world, or body axes with
+/// the columns rotated, flexible_body.cpp), and what the maps add beyond J^T X J: K's columns of
 /// the Free nodes' rotation dofs times T (cK K (J T - J), with `triples` per node block as
 /// Data::node_rotation_triples) and the convective term cC M G of the node tree (G per node block).
 struct NodeSpaceIteration {

@@ -70,7 +70,7 @@ Eigen::Map<const Eigen::MatrixXd> stiffening_inertia_products(const AicElement& 
 /// after add_stress_stiffening at the same state (reads ws.Uxi and ws.Wmu). Used by the AIC body
 /// and by FFRF-LM.
 void add_stress_stiffening_hessian(const AicElement& e, AicWorkspace& ws, Eigen::MatrixXd& H);
-/// Mt (world) += d f / d a of the stiffening force through its first six load factors, the frame's
+/// Mt (world, or body axes with MatrixAxes::Body) += d f / d a of the stiffening force through its first six load factors, the frame's
 /// accelerations (a rank-6, unsymmetric term; after add_stress_stiffening at the same state, whose
 /// case products it reads). The load factors' velocity dependence (Om, c) stays out of C.
 void add_stiffening_mass_tangent(const AicElement& e, const AicKinematics& kin, AicWorkspace& ws, Eigen::MatrixXd& Mt,

@@ -161,7 +161,8 @@ FloatingFrame frame_guess(const AicElement& e, const Eigen::Matrix3d& R_WI0, con
 
 /// Elastic force f (n; world components on the 6N interface part: forces and moments about the
 /// interface nodes; generalised forces on eta) and, if Kt != nullptr, its tangent (n x n) with
-/// respect to [dr_1; dpi_1; ...; deta] (spatial rotation increments). Formulation sections 2.2, 3.
+/// respect to [dr_1; dpi_1; ...; deta] (spatial rotation increments; world components, or body axes
+/// with MatrixAxes::Body). Formulation sections 2.2, 3.
 void elastic_force(const AicElement& e, const AicKinematics& kin, TangentModel tangent, Eigen::VectorXd& f,
                    Eigen::MatrixXd* Kt);
 void elastic_force(const AicElement& e, const AicKinematics& kin, TangentModel tangent, Eigen::VectorXd& f,
@@ -203,7 +204,7 @@ Eigen::MatrixXd rigid_modes(const AicElement& e, const Eigen::Ref<const Eigen::V
 /// subtracted from the translational entries). Outputs: force f (n, world), and, when requested,
 /// the mass matrix Mt, the velocity derivative Ct (gyroscopic/Coriolis, full inertia only) and an
 /// approximate configuration derivative Kt (rotation of the inertia force with the frame), all
-/// n x n in world components. kinetic = 1/2 v^T M0 v.
+/// n x n in world components (body axes with MatrixAxes::Body). kinetic = 1/2 v^T M0 v.
 /// Kinetic energy 1/2 w^T M_w w of the inertia model at the world velocities v (as inertia_force
 /// takes them), without the force and matrices: with the full inertia only the mass pairing of the
 /// invariants is read (the output samples' energies, AssemblyOptions::energies_only).
