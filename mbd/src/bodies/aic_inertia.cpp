@@ -206,6 +206,57 @@ Matrix6d mass_operators(const AicElement& e, const AicKinematics& kin, const Mat
   return EmE - PhiPmE - PhiPmE.transpose() + PhiMR;
 }
 
+/// C_w = d/dw [N^T (M c_FE + gyro)] - M_w dc/dw (formulation 2.4) with the products by Zx gathered.
+/// Term by term (b: the 6N interface rows or columns, Zr = rows 3-5 of Z, A = M_w):
+///   Xp = Ap + DOp Zr - (Ap_b Phi) Z,  Xe = Ae + DOe Zr - (Ae_b Phi) Z - Phi^T Xp_b   (dpm/dw, dem/dw),
+///   A dc/dw = A DcOm Zr + A DcD Tx = AOm Zr + AD - (AD_b Phi) Z
+///   (detail::subtract_times_velocity_accelerations_tangent, the nodal reference's form), and
+///   C_w = Xp + Z^T Xe - A dc/dw. Gathered: with B = Ap - AD and P6 = Phi^T Ap_b,
+///   C_w = B + L Z + Z^T Xe,  L = [0 | DOp - AOm] - B_b Phi,
+///   Xe = Ae - P6 + E Z,  E = [0 | DOe - Phi^T DOp_b] - Ae_b Phi + P6_b Phi:
+/// two n x 6 x n products where the terms take five (and no n x n AD, Xp apart from B).
+void velocity_tangent(const AicElement& e, const AicKinematics& kin, const Vector3d& Om, const VectorXd& xid,
+                      const MatrixXd& A, const Eigen::Matrix<double, 6, 3>& DOe, AicWorkspace& ws, MatrixXd& Cw) {
+  const Eigen::Index n = e.n, nb = 6 * e.N;
+  const auto& Phi = kin.Phi_rig;
+  const MatrixXd& Z = kin.Zx;
+  const MatrixXd& Ap = ws.Ap;
+  const MatrixXd& Ae = ws.Ae;
+  const MatrixXd& DOp = ws.DOp;
+  const Matrix3d W = skew(Om);
+  // B = Ap - A DcD (DcD: 2 Om~ on the translations, Om~ on the rotations, zero on eta); AOm = A DcOm.
+  MatrixXd& B = ws.Xp;
+  B = Ap;
+  MatrixXd& AOm = ws.AOm;
+  AOm.setZero(n, 3);
+  for (int j = 0; j < e.N; ++j) {
+    const Vector3d s = e.x[static_cast<std::size_t>(j)] + kin.xi.segment<3>(6 * j);
+    const Vector3d ud = xid.segment<3>(6 * j), thd = xid.segment<3>(6 * j + 3);
+    const Matrix3d Bt = -skew(Om.cross(s)) - W * skew(s) - 2.0 * skew(ud);
+    AOm.noalias() += A.middleCols<3>(6 * j) * Bt;
+    AOm.noalias() -= A.middleCols<3>(6 * j + 3) * skew(thd);
+    B.middleCols<3>(6 * j).noalias() -= 2.0 * A.middleCols<3>(6 * j) * W;
+    B.middleCols<3>(6 * j + 3).noalias() -= A.middleCols<3>(6 * j + 3) * W;
+  }
+  MatrixXd& P6 = ws.sixn;
+  P6.noalias() = Phi.transpose() * Ap.topRows(nb);
+  MatrixXd& L = ws.ADPhi;
+  L.noalias() = B.leftCols(nb) * Phi;
+  L = -L;
+  L.rightCols<3>() += DOp - AOm;
+  Matrix6d E;
+  E.noalias() = P6.leftCols(nb) * Phi;
+  E.noalias() -= Ae.leftCols(nb) * Phi;
+  E.rightCols<3>() += DOe;
+  E.rightCols<3>().noalias() -= Phi.transpose() * DOp.topRows(nb);
+  MatrixXd& Xe = ws.Xe;
+  Xe = Ae - P6;
+  Xe.noalias() += E * Z;
+  Cw = B;
+  Cw.noalias() += L * Z;
+  Cw.noalias() += Z.transpose() * Xe;
+}
+
 void full(const AicElement& e, const AicKinematics& kin, const VectorXd& w, const VectorXd& ab, InertiaMatrices want,
           MatrixXd& Mw, MatrixXd& Cw, MatrixXd& Kw, VectorXd& fw, double& kinetic, AicWorkspace& ws) {
   const se::InertiaInvariants& I = e.inv;
@@ -257,26 +308,7 @@ void full(const AicElement& e, const AicKinematics& kin, const VectorXd& w, cons
   }
   Eigen::Matrix<double, 6, 3> DOe;
   detail::velocity_load_tangents(e, Om, ws, pr, DOe);
-  const MatrixXd& DOp = ws.DOp;
-  const MatrixXd& Ap = ws.Ap;
-  const MatrixXd& Ae = ws.Ae;
-  // Xp = dpm/dw = DOp Zr + Ap T, Xe = dem/dw; C_w = Xp + Z^T (Xe - R6^T Xp) - M_w dc/dw.
-  const auto Zr = Z.middleRows<3>(3);
-  MatrixXd& Xp = ws.Xp;
-  Xp = Ap;
-  Xp.noalias() += DOp * Zr;
-  ws.n6.noalias() = Ap.leftCols(nb) * Phi;
-  Xp.noalias() -= ws.n6 * Z;
-  MatrixXd& Xe = ws.Xe;
-  Xe = Ae;
-  Xe.noalias() += DOe * Zr;
-  Matrix6d AePhi;
-  AePhi.noalias() = Ae.leftCols(nb) * Phi;
-  Xe.noalias() -= AePhi * Z;
-  Xe.noalias() -= Phi.transpose() * Xp.topRows(nb);
-  Cw = Xp;
-  Cw.noalias() += Z.transpose() * Xe;
-  detail::subtract_times_velocity_accelerations_tangent(e, kin, Om, xid, Mw, ws, Cw);
+  velocity_tangent(e, kin, Om, xid, Mw, DOe, ws, Cw);
   configuration_tangent(e, kin, Mw, ab, fw, ws, Kw);
 }
 
