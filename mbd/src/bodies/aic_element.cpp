@@ -472,31 +472,36 @@ void elastic_force_of_local(const AicElement& e, const AicKinematics& kin, Tange
   if (!Kt) return;
   const bool exact = tangent == TangentModel::Exact;
   const MatrixXd& ZxL = exact ? kin.ZxL : kin.Zx;
-  MatrixXd& KL = ws.KL;  // H Lambda_x
-  KL = H;
+  // Kw = Tx^T KL TxL + Zx_r^T GT - F~ E_r ZxL with KL = H Lambda_x (formed in Kw, body axes):
+  //   material part Tx^T KL TxL = KL - n6 ZxL - Zx^T PK,  n6 = KL_b Phi,  PK = Phi^T (KL - n6 ZxL)_b;
+  //   geometric part from the variation of T: Zx^T E_r^T GT, GT = G TxL, G = [f_u1~, 0, f_u2~, 0, ...];
+  //   from the rotation of the forces with R_WB: -F~ E_r ZxL (F~: the stacked skew matrices of fw).
+  // The products by ZxL and by Zx^T gathered: Kw = KL + L ZxL + Zx^T R with L = -n6 - [0 | F~] and
+  // R = -(Phi^T KL_b - (Phi^T n6_b) ZxL) + [0; GT_0] (GT_0 = G's own blocks - (G Phi) ZxL).
+  MatrixXd& Kw = *Kt;
+  Kw = H;
   if (exact)
-    for (int j = 0; j < N; ++j) KL.middleCols<3>(6 * j + 3).noalias() = H.middleCols<3>(6 * j + 3) * kin.Lambda[j];
-  // Material part Tx^T KL TxL, TxL = I - R6 ZxL.
-  MatrixXd& Kw = *Kt;  // built in body axes, rotated to world in place at the end
-  Kw = KL;
-  ws.n6.noalias() = KL.leftCols(nb) * Phi;
-  Kw.noalias() -= ws.n6 * ZxL;
-  ws.PK.noalias() = Phi.transpose() * Kw.topRows(nb);
-  Kw.noalias() -= kin.Zx.transpose() * ws.PK;
-  // Geometric part from the variation of T: Zx^T E_r^T G TxL, G = [f_u1~, 0, f_u2~, 0, ...].
-  MatrixXd& GT = ws.GT;
-  GT.setZero(3, e.n);
+    for (int j = 0; j < N; ++j) Kw.middleCols<3>(6 * j + 3).noalias() = H.middleCols<3>(6 * j + 3) * kin.Lambda[j];
+  MatrixXd& L = ws.n6;
+  L.noalias() = Kw.leftCols(nb) * Phi;  // n6
+  Eigen::Matrix<double, 6, 6> Pn6;
+  Pn6.noalias() = Phi.transpose() * L.topRows(nb);
+  MatrixXd& R = ws.PK;
+  R.noalias() = Phi.transpose() * Kw.topRows(nb);
+  R.noalias() -= Pn6 * ZxL;
+  R = -R;
   Eigen::Matrix<double, 3, 6> GPhi = Eigen::Matrix<double, 3, 6>::Zero();
   for (int j = 0; j < N; ++j) {
     const Matrix3d F = skew(fw.segment<3>(6 * j));
-    GT.middleCols<3>(6 * j) += F;
+    R.block<3, 3>(3, 6 * j) += F;
     GPhi.noalias() += F * Phi.middleRows<3>(6 * j);
   }
-  GT.noalias() -= GPhi * ZxL;
-  Kw.noalias() += kin.Zx.middleRows<3>(3).transpose() * GT;
-  // Geometric part from the rotation of the forces with R_WB: -Ftilde E_r ZxL.
+  R.middleRows<3>(3).noalias() -= GPhi * ZxL;
   detail::stacked_skew(e, fw, ws.S3);
-  Kw.noalias() -= ws.S3 * ZxL.middleRows<3>(3);
+  L = -L;
+  L.rightCols<3>() -= ws.S3;
+  Kw.noalias() += L * ZxL;
+  Kw.noalias() += kin.Zx.transpose() * R;
   if (axes == MatrixAxes::World) rotate_to_world(e, kin.frame.R_WB, Kw);
 }
 
