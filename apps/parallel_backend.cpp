@@ -10,20 +10,10 @@ namespace seflex::app {
 namespace {
 
 const parallel::Backend* load_backend() {
-  PluginSpec spec;
-  spec.what = "the distributed backend";
-  spec.file_name = "libseflex_parallel.so";
-  spec.env_var = "SEFLEX_PARALLEL_PLUGIN";
-  spec.build_path = SEFLEX_PARALLEL_PLUGIN;
-  spec.entry = parallel::kBackendEntry;
   // RTLD_GLOBAL: Open MPI's components, which MPI_Init loads, resolve MPI's symbols from the global scope.
-  spec.dlopen_flags = RTLD_NOW | RTLD_GLOBAL;
-  const LoadedPlugin plugin = load_plugin(spec);
-  using Entry = const parallel::Backend* (*)();
-  const parallel::Backend* b = reinterpret_cast<Entry>(plugin.entry)();
-  if (b == nullptr || b->abi != parallel::kBackendAbi || b->fingerprint != parallel::backend_fingerprint())
-    throw plugin_mismatch(spec, plugin.path);
-  return b;  // the plugin stays loaded until the process ends
+  const PluginSpec spec{"the distributed backend", "libseflex_parallel.so", "SEFLEX_PARALLEL_PLUGIN",
+                        SEFLEX_PARALLEL_PLUGIN, parallel::kBackendEntry, RTLD_NOW | RTLD_GLOBAL};
+  return load_plugin_table<parallel::Backend>(spec, parallel::kBackendAbi, parallel::backend_fingerprint());
 }
 
 }  // namespace

@@ -10,18 +10,9 @@ namespace seflex::io {
 namespace {
 
 const vtk_plugin::Plugin* load_vtk_plugin() {
-  PluginSpec spec;
-  spec.what = "the VTK writer";
-  spec.file_name = "libseflex_vtk.so";
-  spec.env_var = "SEFLEX_VTK_PLUGIN";
-  spec.build_path = SEFLEX_VTK_PLUGIN;
-  spec.entry = vtk_plugin::kVtkPluginEntry;
-  const LoadedPlugin plugin = load_plugin(spec);
-  using Entry = const vtk_plugin::Plugin* (*)();
-  const vtk_plugin::Plugin* p = reinterpret_cast<Entry>(plugin.entry)();
-  if (p == nullptr || p->abi != vtk_plugin::kVtkPluginAbi || p->fingerprint != vtk_plugin::vtk_plugin_fingerprint())
-    throw plugin_mismatch(spec, plugin.path);
-  return p;
+  const PluginSpec spec{"the VTK writer", "libseflex_vtk.so", "SEFLEX_VTK_PLUGIN", SEFLEX_VTK_PLUGIN,
+                        vtk_plugin::kVtkPluginEntry, RTLD_NOW | RTLD_LOCAL};
+  return load_plugin_table<vtk_plugin::Plugin>(spec, vtk_plugin::kVtkPluginAbi, vtk_plugin::vtk_plugin_fingerprint());
 }
 
 }  // namespace

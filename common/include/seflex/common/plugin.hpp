@@ -88,6 +88,16 @@ inline PluginError plugin_mismatch(const PluginSpec& spec, const std::string& pa
   return PluginError(spec.what + " " + path + " was built from other sources than this seflex command; rebuild both (cmake --build)");
 }
 
+/// Loads `spec`'s plugin and calls its entry point, `const Table* entry()`; the table must carry
+/// `abi` and `fingerprint` (members of those names). Throws PluginError.
+template <class Table>
+const Table* load_plugin_table(const PluginSpec& spec, int abi, std::uint64_t fingerprint) {
+  const LoadedPlugin plugin = load_plugin(spec);
+  const Table* table = reinterpret_cast<const Table* (*)()>(plugin.entry)();
+  if (table == nullptr || table->abi != abi || table->fingerprint != fingerprint) throw plugin_mismatch(spec, plugin.path);
+  return table;
+}
+
 /// FNV-1a over the sizes of the types that cross a plugin's table: equal on both sides of one build.
 inline std::uint64_t size_fingerprint(std::initializer_list<std::size_t> sizes) {
   std::uint64_t h = 1469598103934665603ull;
