@@ -39,7 +39,8 @@ add_library(seflex::gmsh INTERFACE IMPORTED)
 target_include_directories(seflex::gmsh INTERFACE ${GMSH_INCLUDE_DIR})
 target_link_libraries(seflex::gmsh INTERFACE ${CMAKE_DL_LIBS})
 
-# VTK 9 (libvtk9-dev): only what the XML writers need
+# VTK 9 (libvtk9-dev): only what the XML writers need, linked by the VTK plugin alone (io/vtk_plugin/,
+# libseflex_vtk.so, loaded by io at the first .vtu written) and by the tests that read VTK files back
 find_package(VTK 9 REQUIRED COMPONENTS CommonCore CommonDataModel IOXML)
 
 # yaml-cpp (libyaml-cpp-dev): scene files

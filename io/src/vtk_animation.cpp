@@ -1,20 +1,13 @@
-// ParaView time series of deformed FE meshes (VTK XML unstructured grids + a PVD collection).
+// ParaView time series of deformed FE meshes (VTK XML unstructured grids + a PVD collection). The
+// grid is computed here and written by the VTK plugin (vtk_writer.hpp), loaded at the first step.
 #include "seflex/io/vtk_animation.hpp"
 
-#include <vtkCellArray.h>
-#include <vtkCellData.h>
-#include <vtkCellType.h>
-#include <vtkDoubleArray.h>
-#include <vtkIntArray.h>
-#include <vtkNew.h>
-#include <vtkPointData.h>
-#include <vtkPoints.h>
-#include <vtkUnstructuredGrid.h>
-#include <vtkXMLUnstructuredGridWriter.h>
-
+#include <array>
+#include <cstdint>
 #include <cstdio>
 
 #include "seflex/common/error.hpp"
+#include "vtk_writer.hpp"
 
 namespace seflex::io {
 
@@ -36,12 +29,15 @@ void deformed_mesh(const se::Superelement& se, const BodySnapshot& s, Eigen::Mat
   }
 }
 
+/// The grid as plain data (points and point data refreshed every step) and the plugin's writer.
 struct PvdSeries::Vtk {
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkDoubleArray> elastic, displacement;
-  vtkNew<vtkIntArray> body, element_id;
-  vtkNew<vtkUnstructuredGrid> grid;
-  vtkNew<vtkXMLUnstructuredGridWriter> writer;
+  std::vector<double> points, elastic, displacement;  // 3 x total each
+  std::vector<std::int32_t> cell_types;
+  std::vector<std::int64_t> offsets{0}, connectivity;
+  std::vector<int> body, element_id;
+  std::array<vtk_plugin::Array, 2> point_data, cell_data;
+  vtk_plugin::Grid grid;
+  std::unique_ptr<VtkGridWriter> writer;
 };
 
 PvdSeries::PvdSeries(std::filesystem::path folder, std::string stem, std::vector<const se::Superelement*> bodies,
@@ -61,43 +57,42 @@ void PvdSeries::write_step(double time, const std::vector<BodySnapshot>& snapsho
   Eigen::Index total = 0;
   for (const auto* b : bodies_) total += b->p_BoI_B.cols();
   const bool first = !vtk_;
-  if (first) {  // the grid's cells, arrays and the writer, once
-    vtk_ = std::make_unique<Vtk>();
-    Vtk& v = *vtk_;
-    v.points->SetDataTypeToDouble();
-    v.points->SetNumberOfPoints(total);
-    v.elastic->SetName("elastic_displacement");
-    v.elastic->SetNumberOfComponents(3);
-    v.elastic->SetNumberOfTuples(total);
-    v.displacement->SetName("displacement");
-    v.displacement->SetNumberOfComponents(3);
-    v.displacement->SetNumberOfTuples(total);
-    v.body->SetName("body");
-    v.element_id->SetName("element_id");
+  if (first) {  // the grid's cells and arrays, once; the writer at the end of this step's data
+    auto v = std::make_unique<Vtk>();
+    v->points.resize(static_cast<std::size_t>(3 * total));
+    v->elastic.resize(v->points.size());
+    v->displacement.resize(v->points.size());
     Eigen::Index offset = 0;
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
       for (const auto& c : bodies_[b]->cells) {
         const int nn = static_cast<int>(c.type);
-        vtkIdType ids[4];
-        for (int k = 0; k < nn; ++k) ids[k] = offset + c.nodes[k];
-        const int type = nn == 2 ? VTK_LINE : nn == 3 ? VTK_TRIANGLE : VTK_QUAD;
-        v.grid->InsertNextCell(type, nn, ids);
-        v.body->InsertNextValue(static_cast<int>(b));
-        v.element_id->InsertNextValue(c.element_id);
+        for (int k = 0; k < nn; ++k) v->connectivity.push_back(offset + c.nodes[k]);
+        v->offsets.push_back(static_cast<std::int64_t>(v->connectivity.size()));
+        v->cell_types.push_back(nn == 2 ? vtk_plugin::kLine : nn == 3 ? vtk_plugin::kTriangle : vtk_plugin::kQuad);
+        v->body.push_back(static_cast<int>(b));
+        v->element_id.push_back(c.element_id);
       }
       offset += bodies_[b]->p_BoI_B.cols();
     }
-    v.grid->SetPoints(v.points);
-    v.grid->GetPointData()->AddArray(v.elastic);
-    v.grid->GetPointData()->AddArray(v.displacement);
-    v.grid->GetPointData()->SetActiveVectors("elastic_displacement");
-    v.grid->GetCellData()->AddArray(v.body);
-    v.grid->GetCellData()->AddArray(v.element_id);
-    v.writer->SetInputData(v.grid);
-    v.writer->SetDataModeToAppended();
-    v.writer->EncodeAppendedDataOff();
-    v.writer->SetCompressorTypeToNone();
+    const auto cells = static_cast<std::int64_t>(v->cell_types.size());
+    v->point_data = {vtk_plugin::Array{"elastic_displacement", vtk_plugin::ValueType::kDouble, 3, total, v->elastic.data()},
+                     vtk_plugin::Array{"displacement", vtk_plugin::ValueType::kDouble, 3, total, v->displacement.data()}};
+    v->cell_data = {vtk_plugin::Array{"body", vtk_plugin::ValueType::kInt, 1, cells, v->body.data()},
+                    vtk_plugin::Array{"element_id", vtk_plugin::ValueType::kInt, 1, cells, v->element_id.data()}};
+    vtk_plugin::Grid& g = v->grid;
+    g.point_count = total;
+    g.points = v->points.data();
+    g.cell_count = cells;
+    g.cell_types = v->cell_types.data();
+    g.offsets = v->offsets.data();
+    g.connectivity = v->connectivity.data();
+    g.point_data = v->point_data.data();
+    g.point_data_count = static_cast<std::int32_t>(v->point_data.size());
+    g.active_vectors = "elastic_displacement";
+    g.cell_data = v->cell_data.data();
+    g.cell_data_count = static_cast<std::int32_t>(v->cell_data.size());
     first_positions_.resize(3, total);
+    vtk_ = std::move(v);
   }
   Vtk& v = *vtk_;
   Eigen::Index offset = 0;
@@ -106,23 +101,22 @@ void PvdSeries::write_step(double time, const std::vector<BodySnapshot>& snapsho
     for (Eigen::Index i = 0; i < positions_.cols(); ++i) {
       const Eigen::Index k = offset + i;
       if (first) first_positions_.col(k) = positions_.col(i);
-      v.points->SetPoint(k, positions_(0, i), positions_(1, i), positions_(2, i));
-      v.elastic->SetTuple3(k, elastic_(0, i), elastic_(1, i), elastic_(2, i));
       const Eigen::Vector3d d = positions_.col(i) - first_positions_.col(k);
-      v.displacement->SetTuple3(k, d.x(), d.y(), d.z());
+      for (int r = 0; r < 3; ++r) {
+        const auto at = static_cast<std::size_t>(3 * k + r);
+        v.points[at] = positions_(r, i);
+        v.elastic[at] = elastic_(r, i);
+        v.displacement[at] = d(r);
+      }
     }
     offset += positions_.cols();
   }
-  v.points->Modified();
-  v.elastic->Modified();
-  v.displacement->Modified();
-  v.grid->Modified();
+  if (!v.writer) v.writer = std::make_unique<VtkGridWriter>(v.grid, false);  // loads the plugin at the first step
 
   char name[64];
   std::snprintf(name, sizeof name, "%s_%06d.vtu", stem_.c_str(), steps_);
   const std::filesystem::path rel = std::filesystem::path(stem_) / name;
-  v.writer->SetFileName((folder_ / rel).string().c_str());
-  if (v.writer->Write() != 1) throw InputError(SourceRef{(folder_ / rel).string(), 0}, "VTK writer failed");
+  v.writer->write(v.grid, folder_ / rel);
   ++steps_;
   append_to_collection(time, rel.generic_string());
 }

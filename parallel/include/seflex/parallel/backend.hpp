@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "seflex/common/plugin.hpp"
 #include "seflex/fem/constraints.hpp"
 #include "seflex/fem/model.hpp"
 #include "seflex/parallel/partitioned_modes.hpp"
@@ -56,27 +57,11 @@ struct Backend {
 
 /// The sizes of the types that cross the table, combined: equal on both sides of one build.
 inline std::uint64_t backend_fingerprint() {
-  const std::size_t sizes[] = {sizeof(Backend),
-                               sizeof(Session),
-                               sizeof(PartitionStats),
-                               sizeof(PartitionedSystem),
-                               sizeof(fem::Model),
-                               sizeof(fem::ConstraintOptions),
-                               sizeof(fem::GlobalMatrices),
-                               sizeof(reduction::EigenOptions),
-                               sizeof(reduction::EigenSolution),
-                               sizeof(reduction::ModesOptions),
-                               sizeof(reduction::NormalModes),
-                               sizeof(reduction::CraigBamptonOptions),
-                               sizeof(reduction::CraigBamptonBasis),
-                               sizeof(std::string),
-                               sizeof(Eigen::Index)};
-  std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the sizes
-  for (std::size_t s : sizes) {
-    h ^= s;
-    h *= 1099511628211ull;
-  }
-  return h;
+  return size_fingerprint({sizeof(Backend), sizeof(Session), sizeof(PartitionStats), sizeof(PartitionedSystem),
+                           sizeof(fem::Model), sizeof(fem::ConstraintOptions), sizeof(fem::GlobalMatrices),
+                           sizeof(reduction::EigenOptions), sizeof(reduction::EigenSolution), sizeof(reduction::ModesOptions),
+                           sizeof(reduction::NormalModes), sizeof(reduction::CraigBamptonOptions),
+                           sizeof(reduction::CraigBamptonBasis), sizeof(std::string), sizeof(Eigen::Index)});
 }
 
 }  // namespace seflex::parallel
