@@ -12,10 +12,8 @@ namespace seflex::mbd {
 struct AicWorkspace {
   // Elastic force and tangent.
   Eigen::VectorXd g, fw;             ///< n      K xi, Tx^T K xi
-  Eigen::MatrixXd KL, Kw;            ///< n x n
-  Eigen::MatrixXd n6;                ///< n x 6  products with Phi_rig
-  Eigen::MatrixXd PK;                ///< 6 x n
-  Eigen::MatrixXd GT;                ///< 3 x n
+  Eigen::MatrixXd n6;                ///< n x 6  products with Phi_rig; the tangent's L (right factor ZxL)
+  Eigen::MatrixXd PK;                ///< 6 x n  the tangent's R (left factor Zx^T)
   Eigen::MatrixXd S3;                ///< n x 3  stacked skew matrices
   // Inertia in body axes and its world rotation.
   Eigen::VectorXd w, ab, fi, c, xid; ///< n
@@ -27,9 +25,9 @@ struct AicWorkspace {
   Eigen::VectorXd eta_f;             ///< n - 6: V_f^T xi or V_f^T xi_dot (AicElement::V_f)
   Eigen::MatrixXd CLp, GPp, GVp, DOp, n3;  ///< n x 6, n x 3 (GPp, GVp, DOp, n3)
   std::array<Eigen::MatrixXd, 3> HGPxi;    ///< 3 x n
-  Eigen::MatrixXd Ap, Ae, Xp, Xe;    ///< n x n, 6 x n, n x n, 6 x n
+  Eigen::MatrixXd Ap, Ae, Xp, Xe;    ///< n x n, 6 x n, n x n (the velocity tangent's B), 6 x n
   Eigen::MatrixXd nn;                ///< n x n scratch
-  Eigen::MatrixXd AOm, AD, ADPhi;    ///< n x 3, n x n, n x 6 (velocity-acceleration tangent)
+  Eigen::MatrixXd AOm, AD, ADPhi;    ///< n x 3, n x n (nodal reference only), n x 6 (the velocity tangent's L)
   // Geometric stiffening (aic_stiffening.cpp).
   Eigen::VectorXd sw, sab, sc, sxid;  ///< n: body-axis velocities, accelerations, c, xi_dot
   Eigen::VectorXd Uxi;                ///< r n: U_i xi for every basis matrix i (AicElement::G_basis), stacked
