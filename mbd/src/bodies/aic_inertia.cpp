@@ -217,27 +217,17 @@ Matrix6d mass_operators(const AicElement& e, const AicKinematics& kin, const Mat
 /// two n x 6 x n products where the terms take five (and no n x n AD, Xp apart from B).
 void velocity_tangent(const AicElement& e, const AicKinematics& kin, const Vector3d& Om, const VectorXd& xid,
                       const MatrixXd& A, const Eigen::Matrix<double, 6, 3>& DOe, AicWorkspace& ws, MatrixXd& Cw) {
-  const Eigen::Index n = e.n, nb = 6 * e.N;
+  const Eigen::Index nb = 6 * e.N;
   const auto& Phi = kin.Phi_rig;
   const MatrixXd& Z = kin.Zx;
   const MatrixXd& Ap = ws.Ap;
   const MatrixXd& Ae = ws.Ae;
   const MatrixXd& DOp = ws.DOp;
-  const Matrix3d W = skew(Om);
-  // B = Ap - A DcD (DcD: 2 Om~ on the translations, Om~ on the rotations, zero on eta); AOm = A DcOm.
+  // B = Ap - A DcD, AOm = A DcOm.
   MatrixXd& B = ws.Xp;
   B = Ap;
-  MatrixXd& AOm = ws.AOm;
-  AOm.setZero(n, 3);
-  for (int j = 0; j < e.N; ++j) {
-    const Vector3d s = e.x[static_cast<std::size_t>(j)] + kin.xi.segment<3>(6 * j);
-    const Vector3d ud = xid.segment<3>(6 * j), thd = xid.segment<3>(6 * j + 3);
-    const Matrix3d Bt = -skew(Om.cross(s)) - W * skew(s) - 2.0 * skew(ud);
-    AOm.noalias() += A.middleCols<3>(6 * j) * Bt;
-    AOm.noalias() -= A.middleCols<3>(6 * j + 3) * skew(thd);
-    B.middleCols<3>(6 * j).noalias() -= 2.0 * A.middleCols<3>(6 * j) * W;
-    B.middleCols<3>(6 * j + 3).noalias() -= A.middleCols<3>(6 * j + 3) * W;
-  }
+  detail::velocity_acceleration_blocks(e, kin, Om, xid, A, ws.AOm, B);
+  const MatrixXd& AOm = ws.AOm;
   MatrixXd& P6 = ws.sixn;
   P6.noalias() = Phi.transpose() * Ap.topRows(nb);
   MatrixXd& L = ws.ADPhi;

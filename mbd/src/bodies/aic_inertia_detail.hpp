@@ -90,31 +90,39 @@ inline void interface_velocity_accelerations(const AicElement& e, const Eigen::V
   }
 }
 
-/// out -= A * dc/dw for an n-column matrix A, with Om = Zr w and xid = Tx w (formulation 2.4 item 2):
-/// dc/dw = DcOm Zr + DcD Tx, DcD block-diagonal (2 Om~ on translations, Om~ on rotations), so the
-/// product costs O(rows n) plus the rank-6 form of Tx = I - [Phi_rig; 0] Zx. Scratch in ws.
-inline void subtract_times_velocity_accelerations_tangent(const AicElement& e, const AicKinematics& kin,
-                                                          const Eigen::Vector3d& Om, const Eigen::VectorXd& xid,
-                                                          const Eigen::MatrixXd& A, AicWorkspace& ws, Eigen::MatrixXd& out) {
+/// The parts of A * dc/dw (formulation 2.4 item 2) that do not pass through Tx's rank-6 term, with
+/// Om = Zr w and xid = Tx w: dc/dw = DcOm Zr + DcD Tx, DcD block-diagonal (2 Om~ on the translations,
+/// Om~ on the rotations, zero on eta). AOm = A DcOm (rows x 3); out -= A DcD, block by block.
+inline void velocity_acceleration_blocks(const AicElement& e, const AicKinematics& kin, const Eigen::Vector3d& Om,
+                                         const Eigen::VectorXd& xid, const Eigen::MatrixXd& A, Eigen::MatrixXd& AOm,
+                                         Eigen::MatrixXd& out) {
   using so3::skew;
   const Eigen::Matrix3d W = skew(Om);
-  Eigen::MatrixXd& AOm = ws.AOm;  // A DcOm
-  Eigen::MatrixXd& AD = ws.AD;    // A DcD
   AOm.setZero(A.rows(), 3);
-  AD.setZero(A.rows(), e.n);
   for (int j = 0; j < e.N; ++j) {
     const Eigen::Vector3d s = e.x[static_cast<std::size_t>(j)] + kin.xi.segment<3>(6 * j);
     const Eigen::Vector3d ud = xid.segment<3>(6 * j), thd = xid.segment<3>(6 * j + 3);
     const Eigen::Matrix3d Bt = -skew(Om.cross(s)) - W * skew(s) - 2.0 * skew(ud);
     AOm.noalias() += A.middleCols<3>(6 * j) * Bt;
     AOm.noalias() -= A.middleCols<3>(6 * j + 3) * skew(thd);
-    AD.middleCols<3>(6 * j).noalias() = 2.0 * A.middleCols<3>(6 * j) * W;
-    AD.middleCols<3>(6 * j + 3).noalias() = A.middleCols<3>(6 * j + 3) * W;
+    out.middleCols<3>(6 * j).noalias() -= 2.0 * A.middleCols<3>(6 * j) * W;
+    out.middleCols<3>(6 * j + 3).noalias() -= A.middleCols<3>(6 * j + 3) * W;
   }
-  out.noalias() -= AOm * kin.Zx.middleRows<3>(3);
-  out -= AD;
-  ws.ADPhi.noalias() = AD.leftCols(6 * e.N) * kin.Phi_rig;
-  out.noalias() += ws.ADPhi * kin.Zx;
+}
+
+/// out -= A * dc/dw for an n-column matrix A: velocity_acceleration_blocks plus the rank-6 form of
+/// Tx = I - [Phi_rig; 0] Zx, term by term (the nodal reference's form; the invariant path gathers the
+/// products, aic_inertia.cpp velocity_tangent). O(rows n). Scratch in ws.
+inline void subtract_times_velocity_accelerations_tangent(const AicElement& e, const AicKinematics& kin,
+                                                          const Eigen::Vector3d& Om, const Eigen::VectorXd& xid,
+                                                          const Eigen::MatrixXd& A, AicWorkspace& ws, Eigen::MatrixXd& out) {
+  Eigen::MatrixXd& mAD = ws.AD;  // -A DcD
+  mAD.setZero(A.rows(), e.n);
+  velocity_acceleration_blocks(e, kin, Om, xid, A, ws.AOm, mAD);
+  out.noalias() -= ws.AOm * kin.Zx.middleRows<3>(3);
+  out += mAD;
+  ws.ADPhi.noalias() = mAD.leftCols(6 * e.N) * kin.Phi_rig;
+  out.noalias() -= ws.ADPhi * kin.Zx;
 }
 
 /// A * dc/dw as a new matrix (the nodal reference).
