@@ -8,6 +8,7 @@
 #include <iterator>
 #include <optional>
 #include <string_view>
+#include <vector>
 
 #include "seflex/common/error.hpp"
 
@@ -107,6 +108,17 @@ std::optional<long long> integer(std::string_view t) {
   const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
   if (t.empty() || ec != std::errc() || end != t.data() + t.size()) return std::nullopt;
   return v;
+}
+
+/// Nodes of a gmsh MSH 2 element type (gmsh reference manual, "MSH file format version 2",
+/// elm-type 1-31 and 92, 93); 0 for a number that is not one.
+int msh2_nodes_per_element(long long type) {
+  static constexpr int kNodes[32] = {0, 2, 3, 4, 4, 8, 6, 5, 3, 6, 9, 10, 27, 18, 14, 1,
+                                     8, 20, 15, 13, 9, 10, 12, 15, 15, 21, 4, 5, 6, 20, 35, 56};
+  if (type >= 1 && type <= 31) return kNodes[type];
+  if (type == 92) return 64;
+  if (type == 93) return 125;
+  return 0;
 }
 
 class Checker {
@@ -231,6 +243,14 @@ class Checker {
     if (!v4_) {  // N, then N lines "tag x y z"
       const std::optional<long long> n = integer(c.token());
       bound(c.token_line(), "Nodes", n, "nodes", 4, c.remaining_tokens());
+      if (!n) return;
+      node_tags_.clear();
+      for (long long k = 0; k < *n; ++k) {
+        if (const std::optional<long long> tag = integer(c.token())) node_tags_.push_back(*tag);
+        for (int x = 0; x < 3; ++x) c.token();
+      }
+      std::sort(node_tags_.begin(), node_tags_.end());
+      nodes_known_ = true;
       return;
     }
     const std::optional<long long> blocks = integer(c.token());
@@ -276,6 +296,7 @@ class Checker {
     if (!v4_) {  // N, then N lines "tag type ntags tags... nodes..."
       const std::optional<long long> n = integer(c.token());
       bound(c.token_line(), "Elements", n, "elements", 4, c.remaining_tokens());
+      if (n) elements_v2_lines(c, *n);
       return;
     }
     const std::optional<long long> blocks = integer(c.token());
@@ -283,6 +304,40 @@ class Checker {
     const std::optional<long long> total = integer(c.token());
     bound(line, "Elements", blocks, "element blocks", 4, c.remaining_tokens() + 2);
     bound(line, "Elements", total, "elements", 2, c.remaining_tokens() + 2);
+  }
+
+  // Format 2, text: one element per line, "tag type ntags tag... node...". libgmsh reads these numbers
+  // across line ends and asserts (aborting the process) on a node it does not know, so each line must
+  // hold exactly 3 + ntags + the type's node count numbers, and every node must be in $Nodes (a file
+  // from fuzz_gmsh: a missing tag count shifted the rest of the section).
+  void elements_v2_lines(Cursor& c, long long n) {
+    c.rest_of_line();  // the count's line
+    std::vector<long long> v;
+    for (long long k = 0; k < n; ++k) {
+      const int line = c.line();
+      const std::string_view text = c.rest_of_line();
+      v.clear();
+      Cursor t(text, line);
+      for (std::string_view tok = t.token(); !tok.empty(); tok = t.token()) {
+        const std::optional<long long> x = integer(tok);
+        if (!x) throw InputError(SourceRef{file_, line}, "$Elements: '" + std::string(tok) + "' is not an integer; expected an element line 'tag type ntags tags... nodes...'");
+        v.push_back(*x);
+      }
+      const int nodes = v.size() >= 2 ? msh2_nodes_per_element(v[1]) : 0;
+      if (v.size() >= 2 && nodes == 0)
+        throw InputError(SourceRef{file_, line}, "$Elements: element " + std::to_string(v[0]) + " has type " +
+                                                     std::to_string(v[1]) + ", which is not a gmsh MSH 2 element type");
+      const long long expected = v.size() >= 3 && v[2] >= 0 ? 3 + v[2] + nodes : -1;
+      if (expected != static_cast<long long>(v.size()))
+        throw InputError(SourceRef{file_, line}, "$Elements: the line holds " + std::to_string(v.size()) +
+                                                     " numbers; expected 'tag type ntags', ntags tags and the type's " +
+                                                     std::to_string(nodes) + " nodes");
+      if (!nodes_known_) continue;
+      for (std::size_t j = v.size() - static_cast<std::size_t>(nodes); j < v.size(); ++j)
+        if (!std::binary_search(node_tags_.begin(), node_tags_.end(), v[j]))
+          throw InputError(SourceRef{file_, line}, "$Elements: element " + std::to_string(v[0]) + " refers to node " +
+                                                       std::to_string(v[j]) + ", which is not in $Nodes");
+    }
   }
 
   void elements_binary(Cursor& c, int line) {
@@ -331,6 +386,8 @@ class Checker {
   const std::string& file_;
   bool known_ = false, v4_ = false, v40_ = false, binary_ = false;
   std::size_t size_t_ = 8;
+  std::vector<long long> node_tags_;  ///< format 2, text: the tags of $Nodes, sorted
+  bool nodes_known_ = false;
 };
 
 }  // namespace

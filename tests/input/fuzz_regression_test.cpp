@@ -3,6 +3,7 @@
 // expected - not crash, not throw yaml-cpp's own exception, not allocate gigabytes.
 // The inputs are in tests/data/fuzz-regressions/<harness>/ (README.md there says where each came from).
 // These tests also run under AddressSanitizer + UndefinedBehaviorSanitizer in CI.
+#include <algorithm>
 #include <gtest/gtest.h>
 
 #include "nastran_test_util.hpp"
@@ -33,13 +34,15 @@ std::string input_error(F&& read) {
 }
 
 /// The InputError of reading a regression .msh (copied beside a valid companion file).
-std::string msh_error(const std::string& name) {
+std::string msh_text_error(const std::string& name, const std::string& text) {
   test::TempDir dir;
-  const auto mesh = dir.write(name, test::read_file(regression("gmsh/" + name)));
+  const auto mesh = dir.write(name, text);
   io::ModelReadOptions o;
   o.properties = dir.write("m.props.bdf", "$seflex group plate PSHELL 1\nMAT1,1,7.e10,,0.3\nPSHELL,1,1,0.001,1\n");
   return input_error([&] { io::read_gmsh(mesh, o); });
 }
+
+std::string msh_error(const std::string& name) { return msh_text_error(name, test::read_file(regression("gmsh/" + name))); }
 
 std::string se_error(const std::string& name) {
   return input_error([&] { io::load_superelement(regression("superelement/" + name)); });
@@ -76,8 +79,36 @@ TEST(FuzzRegression, GmshEntityTagCountBeyondTheFileIsRefused) {
 // to the missing $EndPhysicalNames as one section and never saw the $NodeData of 2,000,000,000 entities
 // near the end, which gmsh found (timeout). A section now ends at the next line starting with '$'.
 TEST(FuzzRegression, GmshSectionAfterADamagedOneIsStillChecked) {
+  // Its $Elements (lines 57-62) is damaged too: refused there since the element lines are checked.
   EXPECT_TRUE(mentions(msh_error("node_data_after_damaged_section.msh"),
-                       {"node_data_after_damaged_section.msh:70: $NodeData: 2000000000 entities"}));
+                       {"node_data_after_damaged_section.msh:59: $Elements: the line holds 4 numbers"}));
+  // Without that section, the $NodeData after the damaged $PhysicalNames is reached (the line of its
+  // count in the shortened text).
+  std::string text = test::read_file(regression("gmsh/node_data_after_damaged_section.msh"));
+  const auto begin = text.find("$Elements\n"), end = text.find("$EndElements\n");
+  ASSERT_TRUE(begin != std::string::npos && end != std::string::npos);
+  text.erase(begin, end + std::string("$EndElements\n").size() - begin);
+  const auto count_at = text.find("\n2000000000\n");
+  ASSERT_NE(count_at, std::string::npos);
+  const auto line = 2 + std::count(text.begin(), text.begin() + static_cast<long>(count_at), '\n');
+  EXPECT_TRUE(mentions(msh_text_error("node_data_after_damaged_section.msh", text),
+                       {"node_data_after_damaged_section.msh:" + std::to_string(line) + ": $NodeData: 2000000000 entities"}));
+}
+
+// A format 2.2 text mesh whose element 3 lost its tag count ("3 15  4 23 3"): libgmsh reads the
+// numbers across line ends, so the rest of $Elements was shifted, and it aborted the process on an
+// assertion (GModelIO_MSH2.cpp: a node it does not know). Each element line is now checked: the count
+// of numbers for its type and tags, and its nodes against $Nodes.
+TEST(FuzzRegression, GmshMsh2ElementLineOfTheWrongLengthIsRefused) {
+  EXPECT_TRUE(mentions(msh_error("element_tag_count_missing_msh2.msh"),
+                       {"element_tag_count_missing_msh2.msh:", "$Elements: the line holds 5 numbers; expected 'tag type ntags', "
+                        "ntags tags and the type's 1 nodes"}));
+  std::string text = test::read_file(regression("gmsh/element_tag_count_missing_msh2.msh"));
+  const auto at = text.find("\n3 15  4 23 3\n");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 14, "\n3 15 2 4 3 999\n");  // well formed, but node 999 does not exist
+  EXPECT_TRUE(mentions(msh_text_error("unknown_node.msh", text),
+                       {"unknown_node.msh:", "$Elements: element 3 refers to node 999, which is not in $Nodes"}));
 }
 
 TEST(FuzzRegression, GmshCountCheckAcceptsEveryFormatGmshWrites) {
