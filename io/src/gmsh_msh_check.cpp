@@ -110,8 +110,8 @@ std::optional<long long> integer(std::string_view t) {
   return v;
 }
 
-/// Nodes of a gmsh MSH 2 element type (gmsh reference manual, "MSH file format version 2",
-/// elm-type 1-31 and 92, 93); 0 for a number that is not one.
+/// Nodes of a gmsh element type (gmsh reference manual, "MSH file format version 2", elm-type 1-31 and
+/// 92, 93; format 4 numbers its types the same way); 0 for another number.
 int msh2_nodes_per_element(long long type) {
   static constexpr int kNodes[32] = {0, 2, 3, 4, 4, 8, 6, 5, 3, 6, 9, 10, 27, 18, 14, 1,
                                      8, 20, 15, 13, 9, 10, 12, 15, 15, 21, 4, 5, 6, 20, 35, 56};
@@ -304,6 +304,22 @@ class Checker {
     const std::optional<long long> total = integer(c.token());
     bound(line, "Elements", blocks, "element blocks", 4, c.remaining_tokens() + 2);
     bound(line, "Elements", total, "elements", 2, c.remaining_tokens() + 2);
+    if (!blocks) return;
+    c.token();  // minElementTag
+    c.token();  // maxElementTag
+    // Each block: entityDim entityTag elementType numElementsInBlock, then per element its tag and nodes.
+    for (long long b = 0; b < *blocks; ++b) {
+      c.token();
+      c.token();
+      const std::optional<long long> type = integer(c.token());
+      const std::optional<long long> n = integer(c.token());
+      if (!type || !n) return;  // gmsh reports the syntax itself
+      const int nodes = msh2_nodes_per_element(*type);
+      const std::uint64_t per = 1 + static_cast<std::uint64_t>(std::max(nodes, 1));
+      bound(c.token_line(), "Elements", n, "elements in a block", per, c.remaining_tokens());
+      if (nodes == 0) return;  // a type this table does not know (gmsh has more): the blocks after it unchecked
+      for (long long k = 0; k < *n * static_cast<long long>(per); ++k) c.token();
+    }
   }
 
   // Format 2, text: one element per line, "tag type ntags tag... node...". libgmsh reads these numbers
@@ -347,10 +363,22 @@ class Checker {
       bound(at, "Elements", n, "elements", 8, c.remaining_bytes());
       return;
     }
-    std::uint64_t blocks = 0, total = 0;
+    std::uint64_t blocks = 0, total = 0, tag = 0;
     if (!c.binary(size_t_, blocks) || !c.binary(size_t_, total)) return;
     bound_u(line, "Elements", blocks, "element blocks", 12 + size_t_, c.remaining_bytes());
     bound_u(line, "Elements", total, "elements", 2 * size_t_, c.remaining_bytes());
+    if (!c.binary(size_t_, tag) || !c.binary(size_t_, tag)) return;  // min and max element tags
+    // Each block: entityDim, entityTag, elementType (int), numElementsInBlock (size_t), then per element
+    // its tag and nodes (size_t each): libgmsh allocates the block's data before reading it.
+    for (std::uint64_t b = 0; b < blocks; ++b) {
+      std::uint64_t dim = 0, entity = 0, type = 0, n = 0;
+      if (!c.binary(4, dim) || !c.binary(4, entity) || !c.binary(4, type) || !c.binary(size_t_, n)) return;
+      const int nodes = msh2_nodes_per_element(static_cast<long long>(type));
+      const std::uint64_t per = size_t_ * (1 + static_cast<std::uint64_t>(std::max(nodes, 1)));
+      bound_u(line, "Elements", n, "elements in a block", per, c.remaining_bytes());
+      if (nodes == 0) return;  // a type this table does not know (gmsh has more): the blocks after it unchecked
+      c.skip_bytes(static_cast<std::size_t>(n * per));
+    }
   }
 
   // String tags, real tags, integer tags (time step, components, entities[, partition]), then one

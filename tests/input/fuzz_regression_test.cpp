@@ -95,6 +95,14 @@ TEST(FuzzRegression, GmshSectionAfterADamagedOneIsStillChecked) {
                        {"node_data_after_damaged_section.msh:" + std::to_string(line) + ": $NodeData: 2000000000 entities"}));
 }
 
+// A binary MSH 4.1 file whose element block declares 2^51 elements (the fuzzer's mutation): libgmsh
+// allocated the block's data before reading it (allocation-size-too-big under ASan). The counts of
+// every element block are now checked against the bytes left, as the node blocks' were.
+TEST(FuzzRegression, GmshElementBlockCountBeyondTheFileIsRefused) {
+  EXPECT_TRUE(mentions(msh_error("element_block_count_binary_msh4.msh"),
+                       {"element_block_count_binary_msh4.msh:", "$Elements: ", "elements in a block, but the rest of the section holds at most"}));
+}
+
 // A format 2.2 text mesh whose element 3 lost its tag count ("3 15  4 23 3"): libgmsh reads the
 // numbers across line ends, so the rest of $Elements was shifted, and it aborted the process on an
 // assertion (GModelIO_MSH2.cpp: a node it does not know). Each element line is now checked: the count
