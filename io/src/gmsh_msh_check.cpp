@@ -304,7 +304,7 @@ class Checker {
     const std::optional<long long> total = integer(c.token());
     bound(line, "Elements", blocks, "element blocks", 4, c.remaining_tokens() + 2);
     bound(line, "Elements", total, "elements", 2, c.remaining_tokens() + 2);
-    if (!blocks) return;
+    if (!blocks || v40_) return;  // format 4.0 has no min/max tags and other block headers: counts only
     c.token();  // minElementTag
     c.token();  // maxElementTag
     // Each block: entityDim entityTag elementType numElementsInBlock, then per element its tag and nodes.
@@ -367,7 +367,7 @@ class Checker {
     if (!c.binary(size_t_, blocks) || !c.binary(size_t_, total)) return;
     bound_u(line, "Elements", blocks, "element blocks", 12 + size_t_, c.remaining_bytes());
     bound_u(line, "Elements", total, "elements", 2 * size_t_, c.remaining_bytes());
-    if (!c.binary(size_t_, tag) || !c.binary(size_t_, tag)) return;  // min and max element tags
+    if (v40_ || !c.binary(size_t_, tag) || !c.binary(size_t_, tag)) return;  // 4.1: min and max element tags
     // Each block: entityDim, entityTag, elementType (int), numElementsInBlock (size_t), then per element
     // its tag and nodes (size_t each): libgmsh allocates the block's data before reading it.
     for (std::uint64_t b = 0; b < blocks; ++b) {
