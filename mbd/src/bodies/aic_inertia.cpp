@@ -179,11 +179,16 @@ void configuration_tangent(const AicElement& e, const AicKinematics& kin, const 
   Kw.noalias() = ws.n3 * kin.ZxL.middleRows<3>(3);
 }
 
+/// 1/2 w^T M w with the constant body-axis mass of the simplified inertia (formulation 2.3).
+double simplified_kinetic(const AicElement& e, const VectorXd& w, AicWorkspace& ws) {
+  ws.v2.noalias() = e.M * w;
+  return 0.5 * w.dot(ws.v2);
+}
+
 void simplified(const AicElement& e, const AicKinematics& kin, const VectorXd& w, const VectorXd& ab, InertiaMatrices want,
                 MatrixXd& Mw, MatrixXd& Cw, MatrixXd& Kw, VectorXd& fw, double& kinetic, AicWorkspace& ws) {
   fw.noalias() = e.M * ab;
-  ws.v2.noalias() = e.M * w;
-  kinetic = 0.5 * w.dot(ws.v2);
+  kinetic = simplified_kinetic(e, w, ws);
   if (want == InertiaMatrices::None) return;
   Mw = e.M;
   if (want == InertiaMatrices::All) Cw.setZero(e.n, e.n);
@@ -307,10 +312,7 @@ void full(const AicElement& e, const AicKinematics& kin, const VectorXd& w, cons
 double kinetic_energy(const AicElement& e, const AicKinematics& kin, InertiaModel model, const Eigen::Ref<const VectorXd>& v,
                       AicWorkspace& ws) {
   to_body(e, kin.frame.R_WB, v, ws.w);
-  if (model == InertiaModel::Simplified) {
-    ws.v2.noalias() = e.M * ws.w;
-    return 0.5 * ws.w.dot(ws.v2);
-  }
+  if (model == InertiaModel::Simplified) return simplified_kinetic(e, ws.w, ws);
   SEFLEX_DEMAND(e.inv.present(), "full inertia needs the inertia invariants of superelement " + e.name);
   // Only the mass pairing's rows of the xi-stack (HP, HE0, HE1: the first 12 n + 18).
   const StackedInvariantRows r(e.n);
