@@ -183,9 +183,15 @@ class Checker {
       const std::string_view size = c.token();
       known_ = !v.empty();
       v4_ = !v.empty() && v[0] >= '4' && v[0] <= '9';
-      v40_ = v == "4" || v == "4.0";
+      // libgmsh reads the version as a double and uses the 4.0 layout below 4.1 (gmsh writes 4.0 as "4");
+      // from_chars, as the locale must not make "4.1" 4
+      double version = 0;
+      std::from_chars(v.data(), v.data() + v.size(), version);
+      v40_ = v4_ && version >= 4 && version < 4.1;
       binary_ = type == "1";
-      size_t_ = integer(size) == 4 ? 4 : 8;
+      // The width of a binary count: 4.1 says it (data-size, sizeof(size_t)); 4.0's counts are unsigned
+      // longs, 8 bytes, and its data-size is "currently unused" (gmsh 4.0 wrote sizeof(double) there).
+      size_t_ = !v40_ && integer(size) == 4 ? 4 : 8;
       return;
     }
     if (!known_) return;  // no $MeshFormat first: gmsh refuses the file itself
@@ -253,20 +259,28 @@ class Checker {
       nodes_known_ = true;
       return;
     }
+    // 4.1: numEntityBlocks numNodes minNodeTag maxNodeTag; each block: entityDim entityTag parametric
+    // numNodesInBlock, then the block's node tags, then their coordinates x y z [u [v [w]]].
+    // 4.0: numEntityBlocks numNodes; each block: tagEntity dimEntity parametric numNodes, then per node
+    // its tag and coordinates x y z [u [v [w]]]. Either way a node is 4 numbers and, if the block is
+    // parametric, one more per dimension of its entity (libgmsh: `if(parametric) n += entityDim`).
     const std::optional<long long> blocks = integer(c.token());
     const int line = c.token_line();
     const std::optional<long long> total = integer(c.token());
-    c.token();
-    c.token();
+    if (!v40_) {
+      c.token();  // minNodeTag
+      c.token();  // maxNodeTag
+    }
     bound(line, "Nodes", blocks, "node blocks", 4, c.remaining_tokens());
     bound(line, "Nodes", total, "nodes", 4, c.remaining_tokens());
     for (long long b = 0; blocks && b < *blocks; ++b) {
-      const long long dim = integer(c.token()).value_or(0);
-      c.token();
+      const std::optional<long long> first = integer(c.token());
+      const std::optional<long long> second = integer(c.token());
+      const long long dim = (v40_ ? second : first).value_or(0);
       const long long parametric = integer(c.token()).value_or(0);
       const std::optional<long long> n = integer(c.token());
       if (!n) return;
-      const long long per_node = 4 + (parametric == 1 && dim > 0 && dim <= 3 ? dim : 0);
+      const long long per_node = 4 + (parametric != 0 && dim > 0 && dim <= 3 ? dim : 0);
       bound(c.token_line(), "Nodes", n, "nodes in a block", static_cast<std::uint64_t>(per_node), c.remaining_tokens());
       for (long long k = 0; k < *n * per_node; ++k) c.token();
     }
@@ -279,14 +293,23 @@ class Checker {
       bound(at, "Nodes", n, "nodes", 28, c.remaining_bytes());
       return;
     }
+    // 4.1: numEntityBlocks numNodes minNodeTag maxNodeTag (size_t); each block: entityDim entityTag
+    // parametric (int) numNodesInBlock (size_t), then the block's node tags (size_t), then their
+    // coordinates (double). 4.0: numEntityBlocks numNodes (unsigned long); each block: tagEntity
+    // dimEntity parametric (int) numNodes (unsigned long), then per node its tag (int) and coordinates
+    // (double). libgmsh (4.1 and later) refuses a binary 4.0 file at $MeshFormat, but only after this
+    // check, which must not refuse it first with a count read from the wrong place.
     std::uint64_t blocks = 0, total = 0, min_tag = 0, max_tag = 0;
-    if (!c.binary(size_t_, blocks) || !c.binary(size_t_, total) || !c.binary(size_t_, min_tag) || !c.binary(size_t_, max_tag)) return;
+    if (!c.binary(size_t_, blocks) || !c.binary(size_t_, total)) return;
+    if (!v40_ && (!c.binary(size_t_, min_tag) || !c.binary(size_t_, max_tag))) return;
+    const std::uint64_t tag_bytes = v40_ ? 4 : size_t_;
     bound_u(line, "Nodes", blocks, "node blocks", 12 + size_t_, c.remaining_bytes());
-    bound_u(line, "Nodes", total, "nodes", size_t_ + 24, c.remaining_bytes());
+    bound_u(line, "Nodes", total, "nodes", tag_bytes + 24, c.remaining_bytes());
     for (std::uint64_t b = 0; b < blocks; ++b) {
-      std::uint64_t dim = 0, tag = 0, parametric = 0, n = 0;
-      if (!c.binary(4, dim) || !c.binary(4, tag) || !c.binary(4, parametric) || !c.binary(size_t_, n)) return;
-      const std::uint64_t per_node = size_t_ + 8 * (3 + (parametric == 1 && dim <= 3 ? dim : 0));
+      std::uint64_t first = 0, second = 0, parametric = 0, n = 0;
+      if (!c.binary(4, first) || !c.binary(4, second) || !c.binary(4, parametric) || !c.binary(size_t_, n)) return;
+      const std::uint64_t dim = v40_ ? second : first;
+      const std::uint64_t per_node = tag_bytes + 8 * (3 + (parametric != 0 && dim <= 3 ? dim : 0));
       bound_u(line, "Nodes", n, "nodes in a block", per_node, c.remaining_bytes());
       c.skip_bytes(static_cast<std::size_t>(n * per_node));
     }
@@ -304,10 +327,13 @@ class Checker {
     const std::optional<long long> total = integer(c.token());
     bound(line, "Elements", blocks, "element blocks", 4, c.remaining_tokens() + 2);
     bound(line, "Elements", total, "elements", 2, c.remaining_tokens() + 2);
-    if (!blocks || v40_) return;  // format 4.0 has no min/max tags and other block headers: counts only
-    c.token();  // minElementTag
-    c.token();  // maxElementTag
-    // Each block: entityDim entityTag elementType numElementsInBlock, then per element its tag and nodes.
+    if (!blocks) return;
+    if (!v40_) {
+      c.token();  // minElementTag
+      c.token();  // maxElementTag
+    }
+    // Each block: entityDim entityTag (4.0: tagEntity dimEntity) elementType numElementsInBlock, then per
+    // element its tag and nodes.
     for (long long b = 0; b < *blocks; ++b) {
       c.token();
       c.token();
@@ -363,18 +389,22 @@ class Checker {
       bound(at, "Elements", n, "elements", 8, c.remaining_bytes());
       return;
     }
+    // 4.1: numEntityBlocks numElements minElementTag maxElementTag (size_t); each block: entityDim
+    // entityTag elementType (int) numElementsInBlock (size_t), then per element its tag and nodes (size_t
+    // each): libgmsh allocates the block's data before reading it. 4.0: numEntityBlocks numElements
+    // (unsigned long); each block: tagEntity dimEntity typeEle (int) numElements (unsigned long), then
+    // per element its tag and nodes (int each).
     std::uint64_t blocks = 0, total = 0, tag = 0;
     if (!c.binary(size_t_, blocks) || !c.binary(size_t_, total)) return;
+    const std::uint64_t tag_bytes = v40_ ? 4 : size_t_;
     bound_u(line, "Elements", blocks, "element blocks", 12 + size_t_, c.remaining_bytes());
-    bound_u(line, "Elements", total, "elements", 2 * size_t_, c.remaining_bytes());
-    if (v40_ || !c.binary(size_t_, tag) || !c.binary(size_t_, tag)) return;  // 4.1: min and max element tags
-    // Each block: entityDim, entityTag, elementType (int), numElementsInBlock (size_t), then per element
-    // its tag and nodes (size_t each): libgmsh allocates the block's data before reading it.
+    bound_u(line, "Elements", total, "elements", 2 * tag_bytes, c.remaining_bytes());
+    if (!v40_ && (!c.binary(size_t_, tag) || !c.binary(size_t_, tag))) return;  // 4.1: min and max element tags
     for (std::uint64_t b = 0; b < blocks; ++b) {
-      std::uint64_t dim = 0, entity = 0, type = 0, n = 0;
-      if (!c.binary(4, dim) || !c.binary(4, entity) || !c.binary(4, type) || !c.binary(size_t_, n)) return;
+      std::uint64_t first = 0, second = 0, type = 0, n = 0;
+      if (!c.binary(4, first) || !c.binary(4, second) || !c.binary(4, type) || !c.binary(size_t_, n)) return;
       const int nodes = msh2_nodes_per_element(static_cast<long long>(type));
-      const std::uint64_t per = size_t_ * (1 + static_cast<std::uint64_t>(std::max(nodes, 1)));
+      const std::uint64_t per = tag_bytes * (1 + static_cast<std::uint64_t>(std::max(nodes, 1)));
       bound_u(line, "Elements", n, "elements in a block", per, c.remaining_bytes());
       if (nodes == 0) return;  // a type this table does not know (gmsh has more): the blocks after it unchecked
       c.skip_bytes(static_cast<std::size_t>(n * per));

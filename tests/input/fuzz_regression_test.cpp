@@ -4,6 +4,7 @@
 // The inputs are in tests/data/fuzz-regressions/<harness>/ (README.md there says where each came from).
 // These tests also run under AddressSanitizer + UndefinedBehaviorSanitizer in CI.
 #include <algorithm>
+#include <cstdint>
 #include <gtest/gtest.h>
 
 #include "nastran_test_util.hpp"
@@ -120,14 +121,106 @@ TEST(FuzzRegression, GmshMsh2ElementLineOfTheWrongLengthIsRefused) {
 }
 
 TEST(FuzzRegression, GmshCountCheckAcceptsEveryFormatGmshWrites) {
-  // text and binary, formats 2.2 and 4.1: the check refuses none of the valid meshes
-  for (const char* name : {"panel_msh2.msh", "panel_msh4.msh", "panel_msh4_binary.msh"}) {
+  // text and binary, formats 2.2, 4.0 and 4.1: the check refuses none of the valid meshes
+  io::ModelReadOptions o;
+  o.properties = test::source_dir() / "meshes" / "panel.props.bdf";
+  for (const char* name : {"panel_msh2.msh", "panel_msh40.msh", "panel_msh4.msh", "panel_msh4_binary.msh"}) {
     test::TempDir dir;
     const auto mesh = dir.write(name, test::read_file(test::data_dir() / "gmsh" / name));
-    io::ModelReadOptions o;
-    o.properties = test::source_dir() / "meshes" / "panel.props.bdf";
     EXPECT_NO_THROW(io::read_gmsh(mesh, o)) << name;
   }
+  // Format 4.0 (gmsh -format msh40) reads to the model of format 4.1: the same grids at the same
+  // coordinates, the same elements on the same grids.
+  const fem::Model v41 = io::read_gmsh(test::data_dir() / "gmsh" / "panel_msh4.msh", o);
+  const fem::Model v40 = io::read_gmsh(test::data_dir() / "gmsh" / "panel_msh40.msh", o);
+  ASSERT_EQ(v40.grids.size(), 31u);
+  ASSERT_EQ(v40.grids.size(), v41.grids.size());
+  for (std::size_t k = 0; k < v41.grids.size(); ++k) {
+    EXPECT_EQ(v40.grids[k].id, v41.grids[k].id) << k;
+    EXPECT_EQ(v40.grids[k].x_basic, v41.grids[k].x_basic) << v41.grids[k].id;
+  }
+  ASSERT_EQ(v40.shells.size(), 16u);
+  ASSERT_EQ(v40.shells.size(), v41.shells.size());
+  for (std::size_t k = 0; k < v41.shells.size(); ++k) EXPECT_EQ(v40.shells[k].g, v41.shells[k].g) << v41.shells[k].id;
+  ASSERT_EQ(v40.bars.size(), 14u);
+  ASSERT_EQ(v40.bars.size(), v41.bars.size());
+  for (std::size_t k = 0; k < v41.bars.size(); ++k) {
+    EXPECT_EQ(v40.bars[k].ga, v41.bars[k].ga) << v41.bars[k].id;
+    EXPECT_EQ(v40.bars[k].gb, v41.bars[k].gb) << v41.bars[k].id;
+  }
+  ASSERT_EQ(v40.conm2.size(), 25u);
+  ASSERT_EQ(v40.conm2.size(), v41.conm2.size());
+  for (std::size_t k = 0; k < v41.conm2.size(); ++k) EXPECT_EQ(v40.conm2[k].grid, v41.conm2[k].grid) << k;
+  EXPECT_EQ(v40.node_sets, v41.node_sets);
+  // Format 4.0 binary (tests/data/gmsh/msh40_to_binary.py: gmsh >= 4.1 writes 4.0 as text only) passes
+  // the check; libgmsh 4.8 then refuses it itself.
+  EXPECT_TRUE(mentions(msh_text_error("panel_msh40_binary.msh", test::read_file(test::data_dir() / "gmsh" / "panel_msh40_binary.msh")),
+                       {"panel_msh40_binary.msh: gmsh cannot read it", "Can only read MSH 4.0 format in ASCII mode"}));
+}
+
+namespace {
+
+/// The text of a data file with `from` (which must occur once) replaced by `to`.
+std::string replaced(const std::string& name, const std::string& from, const std::string& to) {
+  std::string text = test::read_file(test::data_dir() / "gmsh" / name);
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  EXPECT_EQ(text.find(from, at + 1), std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+/// `bytes` little-endian, as an MSH binary file holds a number.
+std::string little_endian(std::uint64_t value, int bytes) {
+  std::string s;
+  for (int k = 0; k < bytes; ++k) s += static_cast<char>((value >> (8 * k)) & 0xff);
+  return s;
+}
+
+}  // namespace
+
+// MSH 4.0 lays out $Nodes otherwise than 4.1 (no min/max tags in the header, entity tag before its
+// dimension, each node's tag beside its coordinates; in binary, int node tags). The check read 4.0 as
+// 4.1: it lost its place in the section and passed a text block of 2^40 nodes to libgmsh, which
+// allocates the block's tags before reading them; a valid binary 4.0 file it refused with a count
+// read from the coordinates.
+TEST(FuzzRegression, GmshMsh40NodeBlockCountBeyondTheFileIsRefused) {
+  // The first node block (point 1, dimension 0, not parametric, 1 node), line 118.
+  EXPECT_TRUE(mentions(msh_text_error("panel_msh40.msh", replaced("panel_msh40.msh", "\n$Nodes\n61 31\n1 0 0 1\n",
+                                                                  "\n$Nodes\n61 31\n1 0 0 1099511627776\n")),
+                       {"panel_msh40.msh:118: $Nodes: 1099511627776 nodes in a block, but the rest of the section holds at most 91",
+                        "expected a count that matches the data"}));
+  // The last block (surface 315, no nodes), reached through 60 blocks read with the 4.0 layout.
+  EXPECT_TRUE(mentions(msh_text_error("panel_msh40.msh", replaced("panel_msh40.msh", "\n315 2 0 0\n", "\n315 2 0 1\n")),
+                       {"panel_msh40.msh:209: $Nodes: 1 nodes in a block, but the rest of the section holds at most 0"}));
+  // Binary: the first block's count (after the header's 2 counts and the block's 3 ints), the line of $Nodes.
+  const std::string binary = test::read_file(test::data_dir() / "gmsh" / "panel_msh40_binary.msh");
+  const std::string first_block = "$Nodes\n" + little_endian(61, 8) + little_endian(31, 8) + little_endian(1, 4) +
+                                  little_endian(0, 4) + little_endian(0, 4) + little_endian(1, 8);
+  std::string damaged = binary;
+  const auto at = damaged.find(first_block);
+  ASSERT_NE(at, std::string::npos);
+  damaged.replace(at + first_block.size() - 8, 8, little_endian(1ULL << 40, 8));
+  EXPECT_TRUE(mentions(msh_text_error("panel_msh40_binary.msh", damaged),
+                       {"panel_msh40_binary.msh:27: $Nodes: 1099511627776 nodes in a block, but the rest of the section holds at most 73"}));
+}
+
+// The element blocks of MSH 4.0 are checked as those of 4.1 (the header has no min/max tags; in binary,
+// tags and nodes are ints), no longer the section's totals only.
+TEST(FuzzRegression, GmshMsh40ElementBlockCountBeyondTheFileIsRefused) {
+  // The first element block (point 1, dimension 0, type 15, 1 element), line 213.
+  EXPECT_TRUE(mentions(msh_text_error("panel_msh40.msh", replaced("panel_msh40.msh", "\n$Elements\n61 61\n1 0 15 1\n",
+                                                                  "\n$Elements\n61 61\n1 0 15 1099511627776\n")),
+                       {"panel_msh40.msh:213: $Elements: 1099511627776 elements in a block, but the rest of the section holds at most 212"}));
+  const std::string binary = test::read_file(test::data_dir() / "gmsh" / "panel_msh40_binary.msh");
+  const std::string first_block = "$Elements\n" + little_endian(61, 8) + little_endian(61, 8) + little_endian(1, 4) +
+                                  little_endian(0, 4) + little_endian(15, 4) + little_endian(1, 8);
+  std::string damaged = binary;
+  const auto at = damaged.find(first_block);
+  ASSERT_NE(at, std::string::npos);
+  damaged.replace(at + first_block.size() - 8, 8, little_endian(1ULL << 40, 8));
+  EXPECT_TRUE(mentions(msh_text_error("panel_msh40_binary.msh", damaged),
+                       {"panel_msh40_binary.msh:32: $Elements: 1099511627776 elements in a block, but the rest of the section holds at most 242"}));
 }
 
 // A header value of the wrong kind where the reader looks up a key (a scalar or a list instead of an

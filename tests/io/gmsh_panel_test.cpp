@@ -1,7 +1,7 @@
 // The demonstration panel from gmsh (meshes/panel.geo + panel.props.bdf) against the Nastran panel
 // (meshes/panel.bdf, written independently by meshes/make_solar_array.py): at refine = 1 both are the
-// same 4 x 4 model, so their free-free frequencies agree to round-off; .msh files (format 2 and 4,
-// written by gmsh 4.8 from panel.geo: tests/data/gmsh/README.md) give bitwise the same matrices as
+// same 4 x 4 model, so their free-free frequencies agree to round-off; .msh files (formats 2, 4.0 and
+// 4.1, written by gmsh 4.8 from panel.geo: tests/data/gmsh/README.md) give bitwise the same matrices as
 // the .geo meshed on the fly; refined panels converge.
 #include <gtest/gtest.h>
 
@@ -66,7 +66,7 @@ TEST(GmshPanel, SameModelAsNastranPanel) {
 
 TEST(GmshPanel, MshFormats2And4AsciiAndBinaryGiveTheGeoModel) {
   const fem::Model geo = io::read_model(test::meshes_dir() / "panel.geo");
-  for (const char* name : {"panel_msh2.msh", "panel_msh4.msh", "panel_msh4_binary.msh"}) {
+  for (const char* name : {"panel_msh2.msh", "panel_msh40.msh", "panel_msh4.msh", "panel_msh4_binary.msh"}) {
     SCOPED_TRACE(name);
     io::ModelReadOptions o;
     o.properties = test::meshes_dir() / "panel.props.bdf";
