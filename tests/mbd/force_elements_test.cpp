@@ -77,8 +77,17 @@ TEST(ForceElements, TorsionSpringLinearAndTable) {
     EXPECT_NEAR(energy(tab, phi), -I, 1e-8) << phi;
   }
   for (double phi : {-1.7, 0.3, 1.4}) check_derivatives(tab, VectorXd::Constant(1, phi), VectorXd::Zero(1), false);
-  EXPECT_THROW(validate(TorsionSpring{h, 0, 0, 1, {0.0, 0.0}, {1.0, 2.0}}, "s"), InputError);
-  EXPECT_THROW(validate(TorsionSpring{h, 1, 2, 0.0, {}, {}}, "s"), InputError);
+  auto message = [](const TorsionSpring& s) {
+    try {
+      validate(s, "s");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no InputError)");
+  };
+  EXPECT_EQ(message(TorsionSpring{h, 0, 0, 1, {0.0, 0.0}, {1.0, 2.0}}),
+            "torsion spring 's': table angles must be strictly increasing (entry 2)");
+  EXPECT_EQ(message(TorsionSpring{h, 1, 2, 0.0, {}, {}}), "torsion spring 's': reference angle must be a nonzero number");
 }
 
 TEST(ForceElements, LockActsOnlyWhenLatched) {
