@@ -188,7 +188,10 @@ TEST(ForceElements, LockCrossingTimeIsLocated) {
 }
 
 // Energy balance with spring and lock, no damping, rho_inf = 1: kinetic + spring + lock energy stays
-// constant through the latch and the lock vibration (19 Hz) to 1e-5 of the spring work.
+// constant through the latch and the lock vibration (19 Hz). The average-acceleration rule conserves
+// the energy of a linear system exactly and the lock is linear on each side of its located latch, so
+// what remains is the Newton and event-location round-off: measured 1.3e-12 J of 16.5 J; bound 1e-10
+// of the spring work.
 TEST(ForceElements, EnergyBalanceWithSpringAndLock) {
   const Model model = rotor(13, 8, M_PI / 2, M_PI / 2, 5000);
   State s = initial_state(model);
@@ -206,7 +209,8 @@ TEST(ForceElements, EnergyBalanceWithSpringAndLock) {
   double drift = 0;
   for (const auto& smp : rec.samples) drift = std::max(drift, std::abs(smp.energy.total() - E0));
   std::printf("energy drift %.2e J of %.2f J spring work\n", drift, scale);
-  EXPECT_LT(drift, 1e-5 * scale);
+  ASSERT_GT(rec.samples.size(), 100u);
+  EXPECT_LT(drift, 1e-10 * scale);
 }
 
 // Two rigid rotors on ground hinges coupled by a cable loop (no preload): e = r_a phi_a - r_b phi_b
