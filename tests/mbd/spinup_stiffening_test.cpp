@@ -190,6 +190,8 @@ TEST(SpinupStiffening, NoRunawayAtTwelveRadiansPerSecond) {
   const History ref = reference("spinup_beam_12rads_reference.csv");
   const History on = spin_up(s, true, 12.0, 20.0);
   const auto [err, peak] = deviation(on, ref);
+  ASSERT_FALSE(on.t.empty());
+  ASSERT_NEAR(on.t.back(), 20.0, 1e-9);  // 5 s at the constant rate checked below
   double after = 0;
   for (std::size_t i = 0; i < on.t.size(); ++i)
     if (on.t[i] >= 15.0) after = std::max(after, std::abs(on.v[i]));
