@@ -5,6 +5,9 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "seflex/common/error.hpp"
 #include "seflex/fem/beam_section.hpp"
@@ -85,14 +88,28 @@ TEST(BeamSection, IFromItsThreePlates) {
 }
 
 TEST(BeamSection, RejectsWhatIsNoSection) {
-  EXPECT_THROW(beam_section("NACA", {1, 1, .1, .1}), seflex::InputError);  // not in the QRG standard library
-  EXPECT_THROW(beam_section("CHAN", {1, 1, 1.2, .1}), seflex::InputError);  // web thicker than the channel is wide
-  EXPECT_THROW(beam_section("BAR", {1}), seflex::InputError);
-  EXPECT_THROW(beam_section("BAR", {1, 0}), seflex::InputError);
-  EXPECT_THROW(beam_section("BAR", {1, std::nan("")}), seflex::InputError);
-  EXPECT_THROW(beam_section("TUBE", {1, 1.5}), seflex::InputError);
-  EXPECT_THROW(beam_section("BOX", {1, 1, .5, .1}), seflex::InputError);
-  EXPECT_THROW(beam_section("I", {1, 1, 1, .1, .6, .5}), seflex::InputError);
+  // User input errors: each refused with a message naming the section type and what is wrong.
+  auto message = [](const char* type, const std::vector<double>& dims) {
+    try {
+      beam_section(type, dims);
+    } catch (const seflex::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no InputError)");
+  };
+  const std::pair<std::string, std::string> cases[] = {
+      // not in the QRG standard library
+      {message("NACA", {1, 1, .1, .1}), "section TYPE NACA is not supported; expected one of "},
+      // web thicker than the channel is wide
+      {message("CHAN", {1, 1, 1.2, .1}), "CHAN section: web thickness DIM3 not smaller than the width DIM1 (1.2 >= 1)"},
+      {message("BAR", {1}), "BAR section: has 1 dimensions; expected 2"},
+      {message("BAR", {1, 0}), "BAR section: DIM2 = 0; expected a dimension > 0"},
+      {message("BAR", {1, std::nan("")}), "BAR section: DIM2 = nan; expected a dimension > 0"},
+      {message("TUBE", {1, 1.5}), "TUBE section: DIM2 (inner radius 1.5) must be smaller than DIM1 (outer radius 1)"},
+      {message("BOX", {1, 1, .5, .1}), "BOX section: two walls of thickness DIM3 = 0.5 do not fit in the height DIM2 = 1"},
+      {message("I", {1, 1, 1, .1, .6, .5}), "I section: the flanges DIM5 + DIM6 = 1.1 are not thinner than the height DIM1 = 1"},
+  };
+  for (const auto& [msg, expected] : cases) EXPECT_EQ(msg.rfind(expected, 0), 0u) << msg;
   EXPECT_EQ(seflex::fem::section_dimension_count("I"), 6);
   EXPECT_EQ(seflex::fem::section_dimension_count("Z"), 4);
   EXPECT_EQ(seflex::fem::section_dimension_count("DBOX"), 10);

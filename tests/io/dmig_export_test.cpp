@@ -77,7 +77,15 @@ TEST(DmigExport, DeckLayout) {
   }
   io::DmigExportOptions o;
   o.first_spoint = 4;  // clashes with interface grid 4
-  EXPECT_THROW(io::dmig_deck(s, o), InputError);
+  try {
+    io::dmig_deck(s, o);
+    ADD_FAILURE() << "a first SPOINT id clashing with interface grid 4 was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("DMIG export: modal SPOINT ids 4-5 clash with interface grid 4; expected a first "
+                                         "SPOINT id outside the interface ids"),
+              std::string::npos)
+        << e.what();
+  }
   o.first_spoint = 101;
   EXPECT_NE(io::dmig_deck(s, o).find("SPOINT  101     THRU    102"), std::string::npos);
 }

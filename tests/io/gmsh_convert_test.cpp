@@ -3,6 +3,7 @@
 // the meshes/ decks, the validation decks, a deck using every card the writer knows, and gmsh models.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
 
 #include "gmsh_test_util.hpp"
@@ -249,9 +250,13 @@ TEST(NastranWriter, RealsRoundTripExactly) {
   std::ostringstream out;
   io::write_nastran(m, out);
   const fem::Model back = io::read_nastran_text(out.str(), "back.bdf");
+  ASSERT_EQ(m.grids.size(), 2u);
+  ASSERT_EQ(back.grids.size(), 2u);
   for (std::size_t i = 0; i < 2; ++i)
     for (int k = 0; k < 3; ++k) EXPECT_EQ(back.grids[i].x(k), m.grids[i].x(k)) << i << " " << k;
   EXPECT_EQ(back.grids[0].x(1), 0.30000000000000004);
+  EXPECT_EQ(back.grids[1].x(1), 4.9e-324);
+  EXPECT_TRUE(std::signbit(back.grids[1].x(2)));  // -0. stays negative (== cannot tell it from 0.)
 }
 
 TEST(GmshConvert, GmshModelRoundTripsThroughNastran) {

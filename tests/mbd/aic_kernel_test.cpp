@@ -236,7 +236,7 @@ TEST(AicKernel, TransferAppliedEqualsFormed) {
   EXPECT_LT((kin.Zx * T).norm(), 1e-12 * kin.Zx.norm());
 }
 
-// T5: the exact tangent against central finite differences (<= 1e-7), and the simplified tangent's
+// T5: the exact tangent against central finite differences (<= 1e-8), and the simplified tangent's
 // error growing like |q|^2 (formulation section 3: 9e-7 at 1e-3 and 8e-5 at 1e-2).
 TEST(AicKernel, T5_TangentAgainstFiniteDifferences) {
   for (int modes : {0, 3}) {
@@ -259,7 +259,9 @@ TEST(AicKernel, T5_TangentAgainstFiniteDifferences) {
       const MatrixXd Kfd = fd_tangent(e, P, eta, warm);
       const double err_exact = (Kex - Kfd).norm() / Kfd.norm();
       err_simple[k++] = (Ksi - Kfd).norm() / Kfd.norm();
-      EXPECT_LT(err_exact, 1e-7) << "modes " << modes << " amplitude " << amp;
+      // Differences of step 1e-7 (test::fd_tangent): round-off ~eps |f| / h ~ 1e-9 of K, truncation
+      // ~h^2 (measured 1.5e-9..1.8e-9); the simplified tangent's error, a missing term, is >= 1e-6.
+      EXPECT_LT(err_exact, 1e-8) << "modes " << modes << " amplitude " << amp;
     }
     const double ratio = err_simple[1] / err_simple[0];
     EXPECT_GT(ratio, 30.0) << "modes " << modes;   // |q|^2 growth: 100 per decade

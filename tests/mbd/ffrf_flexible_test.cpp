@@ -89,7 +89,8 @@ TEST(FfrfFlexible, AgreesWithAicAsStepAndModesAreRefined) {
 // FlexibleDynamics.T11_EnergyConservationPendulumChain (two 0.25 m links, gravity 30 deg off the
 // chain's normal) with FFRF-LM, all modes, constant step 1e-3 s over 4 s (two swings). Conservation
 // law: kinetic + elastic + gravity energy is constant; the undamped scheme keeps it to its
-// truncation error, bounded (no drift); same bound as the AIC test: 0.1 % of the peak kinetic energy.
+// truncation error, bounded (no drift). formulation.md's T11 criterion (the AIC test's) is 0.1 % of the
+// peak kinetic energy; this fixed-step run holds 0.002 % (measured 1.06e-6 J of 0.0443 J), bound 0.01 %.
 TEST(FfrfFlexible, EnergyIsConservedWithoutNumericalDamping) {
   test::ChainOptions o;
   o.bodies = 2;
@@ -115,7 +116,9 @@ TEST(FfrfFlexible, EnergyIsConservedWithoutNumericalDamping) {
   std::printf("FFRF chain: energy drift %.2e J = %.3f %% of the largest kinetic energy %.4f J; %ld steps; constraint drift %.1e m, "
               "%.1e m/s\n",
               drift, 100 * drift / kinetic, kinetic, st.run.steps, st.drift_position, st.drift_velocity);
-  EXPECT_LT(drift, 1e-3 * kinetic);
+  ASSERT_GT(rec.samples.size(), 50u);
+  EXPECT_GT(kinetic, 0.01);  // the chain swings (0.044 J)
+  EXPECT_LT(drift, 1e-4 * kinetic);
   EXPECT_LT(st.drift_position, 1e-9 * o.length);
 }
 
@@ -239,7 +242,8 @@ Model spinup_beam_model() {
 // the hub by 3.20 of its 3.22 deg at t = 3 s of the bench run) and modes of omega^2 ~ 1e50 on
 // which Newton later failed. Reference: AIC with the same superelement and inertia, same settings;
 // the two differ only in the elastic kinematics (linear modes against absolute interface poses)
-// and the discretisation; at a tip deflection of ~0.2 m (2 % of L) they agree to ~1 um (bound 0.1 mm).
+// and the discretisation; at a tip deflection of ~0.2 m (2 % of L) they agree to ~1 um (measured 1.3e-6 m,
+// frame angle 1.4e-7 rad; bounds 1e-5 m and 1e-6 rad).
 // Expected size of the deflection: the tip lags the hub line by ~0.2 m at t = 3 s (the classic
 // response peaks at ~0.58 m near 7 s; tests/mbd/spinup_test.cpp).
 TEST(FfrfFlexible, FollowsADrivenHingeWithAMasslessTwist) {
@@ -277,8 +281,8 @@ TEST(FfrfFlexible, FollowsADrivenHingeWithAMasslessTwist) {
   std::printf("t = 3 s: hub %.4f deg; tip lag AIC %.5f m, FFRF-LM %.5f m; max |tip_aic - tip_ffrf| %.2e m, frame angle %.2e rad; KE %.4f / %.4f J\n",
               th * 180 / M_PI, v_aic, v_ff, max_tip, max_frame, aic.samples.back().energy.kinetic, ff.samples.back().energy.kinetic);
   EXPECT_NEAR(th, spinup_hub(3.0).phi, 1e-12);
-  EXPECT_LT(max_tip, 1e-4);
-  EXPECT_LT(max_frame, 1e-5);
+  EXPECT_LT(max_tip, 1e-5);
+  EXPECT_LT(max_frame, 1e-6);
   EXPECT_NEAR(v_ff, v_aic, 1e-3 * std::abs(v_aic));
   EXPECT_LT(v_ff, -0.15);  // lags the hub (negative), of the expected size
   EXPECT_GT(v_ff, -0.3);

@@ -39,7 +39,8 @@ Drive ramp(double omega, double T) {
 // U(x) = rho omega^2 (x L^2 - x^3/3) / (2E), tip rho omega^2 L^3 / (3E) (code_aster V3.04.104).
 // One 2-interface superelement of an 8-element consistent-mass bar (bending stiff enough that the
 // spin-up hardly bends it); spin-up over 1 s, transients removed by stiffness-proportional
-// damping; the tip radius is read at t = 1.2 s. Tolerance 1 %. A radial bar's centripetal field is
+// damping; the tip radius is read at t = 1.2 s. Tolerance 0.2 % (measured 0.05 % with either inertia:
+// the 8-element discretisation of the cubic U(x) and what is left of the transient). A radial bar's centripetal field is
 // linear along the bar, so the simplified and full inertia both reproduce it.
 TEST(FlexibleDynamics, T9_RotatingRadialBar) {
   const double L = 1.0, omega = 100.0;
@@ -76,7 +77,7 @@ TEST(FlexibleDynamics, T9_RotatingRadialBar) {
     const double u_tip = st.p_WN.back().norm() - L;
     std::printf("T9 %s inertia: tip %.5e m, exact %.5e m (%.2f %%)\n", inertia == InertiaModel::Full ? "full" : "simplified", u_tip,
                 exact, 100 * (u_tip / exact - 1));
-    EXPECT_NEAR(u_tip, exact, 0.01 * exact);
+    EXPECT_NEAR(u_tip, exact, 0.002 * exact);
     // The drive torque (I w' during the spin-up, 18 N m peak) is ~0 at constant rate.
     EXPECT_NEAR(peak_torque, 0.09 * omega * 2, 0.05 * 18.0);  // I = m L^2 / 3 = 0.09, max w' = 2 w / T
     EXPECT_LT(std::abs(data.hinges[0].joint_torque), 5e-3 * peak_torque);
@@ -132,7 +133,8 @@ TEST(FlexibleDynamics, T10_FrameNodeIndependence) {
   std::printf("T10: deflection %.4f / %.4f m, frame-node difference %.3e / %.3e m, ratio %.2f\n", defl[0], defl[1], diff[0], diff[1],
               diff[1] / diff[0]);
   EXPECT_NEAR(defl[0], 0.03, 0.003);
-  EXPECT_LT(diff[0], 0.05 * defl[0]);
+  // O(deformation^2): (defl / L)^2 = 9e-4; measured diff / defl = 7.4e-4 (and 1.6e-3 at twice the load).
+  EXPECT_LT(diff[0], 2e-3 * defl[0]);
   EXPECT_NEAR(diff[1] / diff[0], 4.0, 0.6);
 }
 
@@ -164,6 +166,7 @@ TEST(FlexibleDynamics, T11_EnergyConservationFreeBody) {
   is.output_interval = 0.05;
   test::Recorder rec;
   simulate(model, st, data, is, &rec);
+  ASSERT_GT(rec.samples.size(), 50u);
   const double E0 = rec.samples.front().energy.total();
   double drift = 0, elastic = 0;
   for (const auto& smp : rec.samples) {
@@ -195,6 +198,7 @@ TEST(FlexibleDynamics, T11_EnergyConservationPendulumChain) {
   is.output_interval = 0.05;
   test::Recorder rec;
   simulate(model, st, data, is, &rec);
+  ASSERT_GT(rec.samples.size(), 50u);
   const double E0 = rec.samples.front().energy.total();
   double drift = 0, kinetic = 0;
   for (const auto& smp : rec.samples) {
@@ -202,5 +206,6 @@ TEST(FlexibleDynamics, T11_EnergyConservationPendulumChain) {
     kinetic = std::max(kinetic, smp.energy.kinetic);
   }
   std::printf("T11 chain: largest drift %.2e J, %.3f %% of the largest kinetic energy %.4f J\n", drift, 100 * drift / kinetic, kinetic);
+  EXPECT_GT(kinetic, 0.01);  // the chain swings (0.044 J)
   EXPECT_LT(drift, 1e-3 * kinetic);
 }

@@ -77,8 +77,17 @@ TEST(ForceElements, TorsionSpringLinearAndTable) {
     EXPECT_NEAR(energy(tab, phi), -I, 1e-8) << phi;
   }
   for (double phi : {-1.7, 0.3, 1.4}) check_derivatives(tab, VectorXd::Constant(1, phi), VectorXd::Zero(1), false);
-  EXPECT_THROW(validate(TorsionSpring{h, 0, 0, 1, {0.0, 0.0}, {1.0, 2.0}}, "s"), InputError);
-  EXPECT_THROW(validate(TorsionSpring{h, 1, 2, 0.0, {}, {}}, "s"), InputError);
+  auto message = [](const TorsionSpring& s) {
+    try {
+      validate(s, "s");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no InputError)");
+  };
+  EXPECT_EQ(message(TorsionSpring{h, 0, 0, 1, {0.0, 0.0}, {1.0, 2.0}}),
+            "torsion spring 's': table angles must be strictly increasing (entry 2)");
+  EXPECT_EQ(message(TorsionSpring{h, 1, 2, 0.0, {}, {}}), "torsion spring 's': reference angle must be a nonzero number");
 }
 
 TEST(ForceElements, LockActsOnlyWhenLatched) {
@@ -179,7 +188,10 @@ TEST(ForceElements, LockCrossingTimeIsLocated) {
 }
 
 // Energy balance with spring and lock, no damping, rho_inf = 1: kinetic + spring + lock energy stays
-// constant through the latch and the lock vibration (19 Hz) to 1e-5 of the spring work.
+// constant through the latch and the lock vibration (19 Hz). The average-acceleration rule conserves
+// the energy of a linear system exactly and the lock is linear on each side of its located latch, so
+// what remains is the Newton and event-location round-off: measured 1.3e-12 J of 16.5 J; bound 1e-10
+// of the spring work.
 TEST(ForceElements, EnergyBalanceWithSpringAndLock) {
   const Model model = rotor(13, 8, M_PI / 2, M_PI / 2, 5000);
   State s = initial_state(model);
@@ -197,7 +209,8 @@ TEST(ForceElements, EnergyBalanceWithSpringAndLock) {
   double drift = 0;
   for (const auto& smp : rec.samples) drift = std::max(drift, std::abs(smp.energy.total() - E0));
   std::printf("energy drift %.2e J of %.2f J spring work\n", drift, scale);
-  EXPECT_LT(drift, 1e-5 * scale);
+  ASSERT_GT(rec.samples.size(), 100u);
+  EXPECT_LT(drift, 1e-10 * scale);
 }
 
 // Two rigid rotors on ground hinges coupled by a cable loop (no preload): e = r_a phi_a - r_b phi_b

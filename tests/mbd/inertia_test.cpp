@@ -121,7 +121,9 @@ TEST(Inertia, T7_FullInertiaMatchesExactLagrangian) {
   const double err_full = (full.f - Q_exact).norm() / Q_exact.norm();
   const double err_simple = (simple.f - Q_exact).norm() / Q_exact.norm();
   std::printf("T7: full inertia %.2e, simplified %.2e (relative error against the exact Lagrangian)\n", err_full, err_simple);
-  EXPECT_LT(err_full, 1e-3);       // formulation.md T7 criterion (prototype: 4e-5)
+  // formulation.md's T7 criterion is 1e-3 (prototype: 4e-5). Measured 9.0e-5: the error of the O(theta)
+  // velocity map (deterministic: seeded state; the differences in time and space contribute ~1e-8).
+  EXPECT_LT(err_full, 2e-4);
   EXPECT_GT(err_simple, 0.5);      // the simplified mass misses the quadratic-velocity terms (0.96)
   // Kinetic energy 1/2 v^T M0 v equals the FE nodes' 1/2 xdot^T M xdot up to the O(theta)
   // velocity-map approximation Lambda = I (elastic rotations ~1e-3 here).

@@ -96,21 +96,27 @@ History reference(const std::string& name) {
     r.v.push_back(std::stod(b));
     r.u.push_back(std::stod(c));
   }
+  EXPECT_GT(r.t.size(), 100u) << name;  // 0 to 30 s every 0.05 s
   return r;
 }
 
 /// Largest |v - v_ref| (axial: |u - u_ref|) over the common output times, and the reference's peak |v| (|u|).
+/// Every output time of the run must be a time of the reference (both every 0.05 s, the run's within the
+/// reference's 0..30 s): otherwise nothing would be compared and the error would read 0.
 std::pair<double, double> deviation(const History& h, const History& ref, bool axial = false) {
   const auto& x = axial ? h.u : h.v;
   const auto& xr = axial ? ref.u : ref.v;
   double err = 0, peak = 0;
-  std::size_t k = 0;
+  std::size_t k = 0, compared = 0;
   for (std::size_t i = 0; i < h.t.size(); ++i) {
     while (k < ref.t.size() && ref.t[k] < h.t[i] - 1e-9) ++k;
     if (k == ref.t.size()) break;
     if (std::abs(ref.t[k] - h.t[i]) > 1e-9) continue;
     err = std::max(err, std::abs(x[i] - xr[k]));
+    ++compared;
   }
+  EXPECT_GT(h.t.size(), 100u);  // at least 5 s of output
+  EXPECT_EQ(compared, h.t.size()) << "output times of the run not found in the reference";
   for (double v : xr) peak = std::max(peak, std::abs(v));
   return {err, peak};
 }
@@ -184,6 +190,8 @@ TEST(SpinupStiffening, NoRunawayAtTwelveRadiansPerSecond) {
   const History ref = reference("spinup_beam_12rads_reference.csv");
   const History on = spin_up(s, true, 12.0, 20.0);
   const auto [err, peak] = deviation(on, ref);
+  ASSERT_FALSE(on.t.empty());
+  ASSERT_NEAR(on.t.back(), 20.0, 1e-9);  // 5 s at the constant rate checked below
   double after = 0;
   for (std::size_t i = 0; i < on.t.size(); ++i)
     if (on.t[i] >= 15.0) after = std::max(after, std::abs(on.v[i]));

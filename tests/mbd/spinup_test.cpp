@@ -92,6 +92,8 @@ TEST(Spinup, SimoVuQocBeam) {
   EXPECT_NEAR(ps, p4, 0.01 * std::abs(p4));
   const double u_exact = 1.2 * 36 * 1000 / (3 * 2.8e7);
   for (const auto* h : {&full4, &full8}) {
+    ASSERT_FALSE(h->t.empty());
+    ASSERT_NEAR(h->t.back(), 30.0, 1e-9);  // the run reached its end: 15 s at constant rate checked below
     double vmax = 0;
     for (std::size_t k = 0; k < h->t.size(); ++k)
       if (h->t[k] >= 15.0) vmax = std::max(vmax, std::abs(h->v[k]));

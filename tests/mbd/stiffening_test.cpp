@@ -87,7 +87,8 @@ TEST(Stiffening, TangentAgainstFiniteDifferences) {
     return stiffened_force(e, Q, et, warm, lambda);
   });
   const double err = (K - Kfd).norm() / Kfd.norm();
-  EXPECT_LT(err, 1e-7);
+  // Central differences of step 1e-7: round-off ~1e-9 of K (measured 2.7e-10).
+  EXPECT_LT(err, 1e-8);
   std::printf("stiffened tangent against central differences: %.2e\n", err);
 }
 
