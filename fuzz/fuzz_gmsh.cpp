@@ -4,7 +4,9 @@
 // Input: the .msh bytes, optionally followed by a line "$seflex-fuzz-props" and the companion file's
 // text (the default is a valid one naming groups "plate" (PSHELL) and "edges" (PBAR)). Both are
 // written to the harness's private scratch folder; only .msh is read (never .geo, whose language can
-// run programs). INCLUDE in the companion part is rejected when a '/' or '\' appears in it.
+// run programs: gmsh would parse any file not starting with $MeshFormat as a script, so the reader
+// refuses those first - io/src/gmsh_msh_check.cpp). INCLUDE in the companion part is rejected when a
+// '/' or '\' appears in it.
 // Accepted outcomes: the model reads, or InputError. Seeds: tests/data/gmsh/*.msh and meshes made by
 // bench/fuzz.sh; dictionary fuzz/dict/gmsh.dict. Findings inside libgmsh itself (not instrumented)
 // show as crashes or leaks with gmsh frames: see docs/reliability.md.

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "seflex/common/error.hpp"
+#include "seflex/io/nastran_number.hpp"
 
 namespace seflex::io::gmsh {
 namespace {
@@ -194,7 +195,7 @@ class Checker {
       size_t_ = !v40_ && integer(size) == 4 ? 4 : 8;
       return;
     }
-    if (!known_) return;  // no $MeshFormat first: gmsh refuses the file itself
+    if (!known_) return;  // no $MeshFormat yet: gmsh's error to report
     if (name == "Entities" && v4_) return binary_ ? entities_binary(c, header_line) : entities_ascii(c);
     if (name == "Nodes") return binary_ ? nodes_binary(c, header_line) : nodes_ascii(c);
     if (name == "Elements") return binary_ ? elements_binary(c, header_line) : elements_ascii(c);
@@ -454,6 +455,19 @@ void check_msh_counts(const std::filesystem::path& path, const std::string& file
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(file + ": cannot open it; expected a readable gmsh .msh file");
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // gmsh chooses its reader by the first line, whatever the file's name: "$MeshFormat" (and a few
+  // legacy keywords) a mesh, "$PostFormat"/"$View" a post-processing view, anything else a .geo
+  // script - a language that runs shell commands (SystemCall), writes files and exits the process
+  // (found by fuzz_gmsh: a damaged first line made gmsh parse the mesh as a script). MSH 2 and 4
+  // files start with $MeshFormat.
+  std::string_view first(bytes);
+  first = first.substr(0, std::min(first.find('\n'), first.size()));
+  if (!first.empty() && first.back() == '\r') first.remove_suffix(1);
+  if (first.rfind("$MeshFormat", 0) != 0)
+    throw InputError(SourceRef{file, 1},
+                     (bytes.empty() ? std::string("the file is empty") : "the file starts with " + nastran::quote_field(first)) +
+                         "; expected a gmsh mesh (MSH format 2 or 4), whose first line is $MeshFormat (gmsh would read "
+                         "any other file as a .geo script; a script must be named .geo)");
   Checker(bytes, file).run();
 }
 

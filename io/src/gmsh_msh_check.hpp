@@ -8,6 +8,8 @@
 // entity count of $NodeData, $ElementData and $ElementNodeData - in ASCII and binary files of formats
 // 2 and 4, and refuses a count the rest of its section cannot hold (each item takes at least a few
 // tokens or bytes).
+// First of all the file must start with the line $MeshFormat: gmsh reads any other file, whatever
+// its name, as a .geo script, which can run commands.
 // It checks nothing else: everything else is gmsh's to read and report.
 #include <filesystem>
 #include <string>
@@ -16,7 +18,8 @@ namespace seflex::io::gmsh {
 
 /// Throws InputError "FILE:LINE: $Nodes: a block of N nodes, but the section holds at most M; expected
 /// a count that matches the data (a truncated or corrupted .msh file?)" for a count too large for the
-/// file. `file` names the file in messages.
+/// file, and "FILE:1: the file starts with '...'; expected a gmsh mesh (MSH format 2 or 4), whose first
+/// line is $MeshFormat ..." for a file gmsh would not read as a mesh. `file` names the file in messages.
 void check_msh_counts(const std::filesystem::path& path, const std::string& file);
 
 }  // namespace seflex::io::gmsh

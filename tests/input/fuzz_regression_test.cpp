@@ -120,6 +120,22 @@ TEST(FuzzRegression, GmshMsh2ElementLineOfTheWrongLengthIsRefused) {
                        {"unknown_node.msh:", "$Elements: element 3 refers to node 999, which is not in $Nodes"}));
 }
 
+// The fuzzer's 13 bytes "$M\0\0\0\0\0" "2Eata\xA7" (a damaged $MeshFormat line): gmsh chooses its reader by
+// the first line, not the name, and parsed this .msh as a .geo script - a language with SystemCall (a
+// shell command), file output and Exit (found by a leak scan of the corpus, looking for why a 458 s run
+// had grown to 2 GB). A .msh must now start with $MeshFormat before gmsh sees it.
+TEST(FuzzRegression, GmshMeshNotStartingWithMeshFormatIsNotReadAsAScript) {
+  EXPECT_TRUE(mentions(msh_error("script_first_line.msh"),
+                       {"script_first_line.msh:1: the file starts with '$M\\x00\\x00\\x00\\x00\\x002Eata\\xA7'",
+                        "expected a gmsh mesh (MSH format 2 or 4), whose first line is $MeshFormat"}));
+  test::TempDir dir;
+  const std::string ran = (dir / "ran").string();
+  EXPECT_TRUE(mentions(msh_text_error("s.msh", "SystemCall \"touch " + ran + "\";\n"),
+                       {"s.msh:1: the file starts with 'SystemCall", "a script must be named .geo"}));
+  EXPECT_FALSE(std::filesystem::exists(ran)) << "gmsh ran the .msh as a script";
+  EXPECT_TRUE(mentions(msh_text_error("e.msh", ""), {"e.msh:1: the file is empty; expected a gmsh mesh"}));
+}
+
 TEST(FuzzRegression, GmshCountCheckAcceptsEveryFormatGmshWrites) {
   // text and binary, formats 2.2, 4.0 and 4.1: the check refuses none of the valid meshes
   io::ModelReadOptions o;
