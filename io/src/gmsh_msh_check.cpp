@@ -170,6 +170,13 @@ class Checker {
     if (static_cast<std::uint64_t>(*count) > available / unit)
       too_many(line, section, static_cast<std::uint64_t>(*count), what, available / unit);
   }
+  /// A binary section that ends before the data it declares: gmsh does not stop at the section's end
+  /// but reads on into the next sections and takes their bytes for counts (fuzz_gmsh: a byte inserted
+  /// in $Entities made it allocate 2^50 bytes), so the check must not stop there either.
+  [[noreturn]] void ends_early(int line, const std::string& section, const std::string& inside) const {
+    throw InputError(SourceRef{file_, line}, "$" + section + ": the section ends inside " + inside +
+                                                 "; expected the data of everything it declares (a truncated or corrupted .msh file?)");
+  }
   /// The same for a binary count (unsigned).
   void bound_u(int line, const std::string& section, std::uint64_t count, const std::string& what, std::uint64_t unit,
                std::uint64_t available) const {
@@ -229,16 +236,21 @@ class Checker {
   void entities_binary(Cursor& c, int line) {
     std::uint64_t count[4] = {};
     for (auto& n : count)
-      if (!c.binary(size_t_, n)) return;
+      if (!c.binary(size_t_, n)) ends_early(line, "Entities", "its four entity counts");
     for (int dim = 0; dim < 4; ++dim)
       bound_u(line, "Entities", count[dim], "entities of dimension " + std::to_string(dim), 4 + 24 + size_t_,
               c.remaining_bytes());
     for (int dim = 0; dim < 4; ++dim)
       for (std::uint64_t e = 0; e < count[dim]; ++e) {
-        c.skip_bytes(4 + 8 * (dim == 0 && !v40_ ? 3 : 6));
+        const auto entity = [&] {
+          return "entity " + std::to_string(e + 1) + " of the " + std::to_string(count[dim]) + " of dimension " + std::to_string(dim);
+        };
+        const std::size_t tag_and_box = 4 + 8 * (dim == 0 && !v40_ ? 3 : 6);
+        if (c.remaining_bytes() < tag_and_box) ends_early(line, "Entities", entity());
+        c.skip_bytes(tag_and_box);
         for (int list = 0; list < (dim == 0 ? 1 : 2); ++list) {
           std::uint64_t n = 0;
-          if (!c.binary(size_t_, n)) return;
+          if (!c.binary(size_t_, n)) ends_early(line, "Entities", entity());
           bound_u(line, "Entities", n, list == 0 ? "physical tags of an entity" : "bounding entities of an entity", 4,
                   c.remaining_bytes());
           c.skip_bytes(static_cast<std::size_t>(4 * n));
@@ -396,14 +408,16 @@ class Checker {
     // (unsigned long); each block: tagEntity dimEntity typeEle (int) numElements (unsigned long), then
     // per element its tag and nodes (int each).
     std::uint64_t blocks = 0, total = 0, tag = 0;
-    if (!c.binary(size_t_, blocks) || !c.binary(size_t_, total)) return;
+    if (!c.binary(size_t_, blocks) || !c.binary(size_t_, total)) ends_early(line, "Elements", "its counts");
     const std::uint64_t tag_bytes = v40_ ? 4 : size_t_;
     bound_u(line, "Elements", blocks, "element blocks", 12 + size_t_, c.remaining_bytes());
     bound_u(line, "Elements", total, "elements", 2 * tag_bytes, c.remaining_bytes());
-    if (!v40_ && (!c.binary(size_t_, tag) || !c.binary(size_t_, tag))) return;  // 4.1: min and max element tags
+    if (!v40_ && (!c.binary(size_t_, tag) || !c.binary(size_t_, tag)))  // 4.1: min and max element tags
+      ends_early(line, "Elements", "its counts");
     for (std::uint64_t b = 0; b < blocks; ++b) {
       std::uint64_t first = 0, second = 0, type = 0, n = 0;
-      if (!c.binary(4, first) || !c.binary(4, second) || !c.binary(4, type) || !c.binary(size_t_, n)) return;
+      if (!c.binary(4, first) || !c.binary(4, second) || !c.binary(4, type) || !c.binary(size_t_, n))
+        ends_early(line, "Elements", "the header of element block " + std::to_string(b + 1) + " of " + std::to_string(blocks));
       const int nodes = msh2_nodes_per_element(static_cast<long long>(type));
       const std::uint64_t per = tag_bytes * (1 + static_cast<std::uint64_t>(std::max(nodes, 1)));
       bound_u(line, "Elements", n, "elements in a block", per, c.remaining_bytes());

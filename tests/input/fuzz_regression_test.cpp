@@ -136,6 +136,33 @@ TEST(FuzzRegression, GmshMeshNotStartingWithMeshFormatIsNotReadAsAScript) {
   EXPECT_TRUE(mentions(msh_text_error("e.msh", ""), {"e.msh:1: the file is empty; expected a gmsh mesh"}));
 }
 
+// Binary MSH 4.1 whose $Entities ends before the data it declares (the fuzzer's input, minimised to an
+// empty section; first found as one byte inserted into the panel's entities): libgmsh does not stop at
+// "$EndEntities" but reads on and took the following bytes for counts - an allocation of 2^50 bytes
+// (allocation-size-too-big under ASan). The check stopped quietly where the section ended; now a binary
+// $Entities or $Elements that ends inside what it declares is refused.
+TEST(FuzzRegression, GmshBinarySectionEndingInsideItsDataIsRefused) {
+  EXPECT_TRUE(mentions(msh_error("entities_section_ends_early_binary.msh"),
+                       {"entities_section_ends_early_binary.msh:21: $Entities: the section ends inside its four entity counts",
+                        "expected the data of everything it declares"}));
+  // The panel mesh with its $Entities cut 10 bytes into entity 10 of its 46 curves (the counts alone
+  // still fit the bytes left, so only reading the entities one by one finds the cut).
+  std::string text = test::read_file(test::data_dir() / "gmsh" / "panel_msh4_binary.msh");
+  const auto begin = text.find("\n$Entities\n"), end = text.find("\n$EndEntities");
+  ASSERT_TRUE(begin != std::string::npos && end != std::string::npos);
+  text.erase(begin + 11 + 2010, end - (begin + 11 + 2010));
+  EXPECT_TRUE(mentions(msh_text_error("cut.msh", text),
+                       {"cut.msh:21: $Entities: the section ends inside entity 10 of the 46 of dimension 1"}));
+  // The same for an element block's header: $Elements cut 5 bytes into block 35 of 61 (the counts of
+  // 61 blocks and 61 elements still fit the 1,286 bytes left).
+  text = test::read_file(test::data_dir() / "gmsh" / "panel_msh4_binary.msh");
+  const auto elements = text.find("\n$Elements\n"), end_elements = text.find("\n$EndElements");
+  ASSERT_TRUE(elements != std::string::npos && end_elements != std::string::npos);
+  text.erase(elements + 11 + 1285, end_elements - (elements + 11 + 1285));
+  EXPECT_TRUE(mentions(msh_text_error("cut.msh", text),
+                       {"cut.msh:32: $Elements: the section ends inside the header of element block 35 of 61"}));
+}
+
 TEST(FuzzRegression, GmshCountCheckAcceptsEveryFormatGmshWrites) {
   // text and binary, formats 2.2, 4.0 and 4.1: the check refuses none of the valid meshes
   io::ModelReadOptions o;
