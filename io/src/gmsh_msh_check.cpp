@@ -203,10 +203,32 @@ class Checker {
       return;
     }
     if (!known_) return;  // no $MeshFormat yet: gmsh's error to report
+    if (name == "PhysicalNames" && v4_) return physical_names(c);
     if (name == "Entities" && v4_) return binary_ ? entities_binary(c, header_line) : entities_ascii(c);
     if (name == "Nodes") return binary_ ? nodes_binary(c, header_line) : nodes_ascii(c);
     if (name == "Elements") return binary_ ? elements_binary(c, header_line) : elements_ascii(c);
     if (name == "NodeData" || name == "ElementData" || name == "ElementNodeData") return data(name, c, header_line);
+  }
+
+  // Format 4: the count, then per physical group "dim tag "name"" (ASCII in binary files too), read as
+  // gmsh does: two integers, then the rest of the line. libgmsh 4.8 crashes (SEGV in
+  // GModel::setPhysicalName; fuzz_gmsh) on a dimension outside 0-3 in formats 4.0 and 4.1; its format 2
+  // reader takes such a line without harm (and a damaged format 2 section is gmsh's to report).
+  void physical_names(Cursor& c) {
+    const std::optional<long long> n = integer(c.token());
+    if (!n) return;  // gmsh's syntax error to report
+    for (long long k = 0; k < *n; ++k) {
+      const std::string_view dim_text = c.token();
+      if (dim_text.empty()) return;  // the section ends early: gmsh's error
+      const int line = c.token_line();
+      const std::optional<long long> dim = integer(dim_text);
+      const std::optional<long long> tag = integer(c.token());
+      if (!dim || !tag) return;  // gmsh's syntax error
+      if (*dim < 0 || *dim > 3)
+        throw InputError(SourceRef{file_, line}, "$PhysicalNames: physical group " + std::to_string(*tag) + " has dimension " +
+                                                     std::to_string(*dim) + "; expected 0 (point), 1 (curve), 2 (surface) or 3 (volume)");
+      c.rest_of_line();  // its name
+    }
   }
 
   // Format 4: numPoints numCurves numSurfaces numVolumes, then per entity: tag, its box (points of

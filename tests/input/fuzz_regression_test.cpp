@@ -163,6 +163,18 @@ TEST(FuzzRegression, GmshBinarySectionEndingInsideItsDataIsRefused) {
                        {"cut.msh:32: $Elements: the section ends inside the header of element block 35 of 61"}));
 }
 
+// A format 4 $PhysicalNames line "5 13 "interface_beam"" (the fuzzer changed the panel's dimension 0 to 5;
+// minimised by hand to that one line): libgmsh 4.8 crashed (SEGV in GModel::setPhysicalName) on a
+// dimension outside 0-3. Every physical name's dimension is now checked first.
+TEST(FuzzRegression, GmshPhysicalNameOfAnImpossibleDimensionIsRefused) {
+  EXPECT_TRUE(mentions(msh_error("physical_name_dimension_msh4.msh"),
+                       {"physical_name_dimension_msh4.msh:6: $PhysicalNames: physical group 13 has dimension 5; expected 0 "
+                        "(point), 1 (curve), 2 (surface) or 3 (volume)"}));
+  EXPECT_TRUE(mentions(msh_text_error("n.msh", "$MeshFormat\n4 0 8\n$EndMeshFormat\n$PhysicalNames\n2\n1 2 \"a\"\n-1 3 \"b\"\n"
+                                               "$EndPhysicalNames\n"),
+                       {"n.msh:7: $PhysicalNames: physical group 3 has dimension -1"}));
+}
+
 TEST(FuzzRegression, GmshCountCheckAcceptsEveryFormatGmshWrites) {
   // text and binary, formats 2.2, 4.0 and 4.1: the check refuses none of the valid meshes
   io::ModelReadOptions o;
