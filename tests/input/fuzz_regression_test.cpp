@@ -175,6 +175,18 @@ TEST(FuzzRegression, GmshPhysicalNameOfAnImpossibleDimensionIsRefused) {
                        {"n.msh:7: $PhysicalNames: physical group 3 has dimension -1"}));
 }
 
+// The fuzzer's first line "$MeshFormat"Nodes", then "1 2 1 2": gmsh recognises a section by the first
+// letters of its line (this is $MeshFormat to it) and takes any file-type but 0 as binary; the check
+// compared whole names and file-type "1" only, so it skipped the whole file, and libgmsh's _readMSH2
+// asked for 2,160,361,668 bytes (libFuzzer: out-of-memory, malloc over the 2 GB limit). Section names are
+// now matched as gmsh matches them.
+TEST(FuzzRegression, GmshSectionNamesAreRecognisedAsGmshRecognisesThem) {
+  EXPECT_TRUE(mentions(msh_error("mesh_format_keyword_prefix.msh"),
+                       {"mesh_format_keyword_prefix.msh:23: $Nodes: 31 nodes, but the rest of the section holds at most 15"}));
+  EXPECT_TRUE(mentions(msh_text_error("p.msh", "$MeshFormat\"x\n2.2 0 8\n$EndMeshFormat\n$NodesX\n2000000000\n1 0 0 0\n$EndNodes\n"),
+                       {"p.msh:5: $Nodes: 2000000000 nodes, but the rest of the section holds at most 1"}));
+}
+
 TEST(FuzzRegression, GmshCountCheckAcceptsEveryFormatGmshWrites) {
   // text and binary, formats 2.2, 4.0 and 4.1: the check refuses none of the valid meshes
   io::ModelReadOptions o;
