@@ -111,6 +111,14 @@ std::optional<long long> integer(std::string_view t) {
   return v;
 }
 
+/// The integer a line starts with, as libgmsh's sscanf("%d") takes a count line (the rest of the line is
+/// ignored); none if it starts with something else.
+std::optional<long long> leading_integer(std::string_view line) {
+  line = trimmed(line);
+  const std::size_t end = line.find_first_of(" \t\r\n\v\f");
+  return integer(line.substr(0, end));
+}
+
 /// Nodes of a gmsh element type (gmsh reference manual, "MSH file format version 2", elm-type 1-31 and
 /// 92, 93; format 4 numbers its types the same way); 0 for another number.
 int msh2_nodes_per_element(long long type) {
@@ -329,7 +337,7 @@ class Checker {
   void nodes_binary(Cursor& c, int line) {
     if (!v4_) {  // "N\n", then N records of int tag + 3 doubles
       const int at = c.line();
-      const std::optional<long long> n = integer(c.rest_of_line());
+      const std::optional<long long> n = leading_integer(c.rest_of_line());
       bound(at, "Nodes", n, "nodes", 28, c.remaining_bytes());
       return;
     }
@@ -422,11 +430,35 @@ class Checker {
     }
   }
 
+  // Format 2, binary: after the count line, blocks of one element type until the count is reached, each
+  // a header of three ints (elm-type, num-elm-follow, num-tags) and then per element its number, tags
+  // and nodes (ints). libgmsh allocates one element's ints, 1 + num-tags + nodes, before it reads the
+  // block or looks at the type (GModelIO_MSH2.cpp; fuzz_gmsh: text bytes read as num-tags asked for
+  // 4.66 GB), so the tag count must leave room for one element, and the block for all of them.
+  void elements_v2_binary_blocks(Cursor& c, int line, std::uint64_t total) {
+    std::uint64_t seen = 0;
+    for (int block = 1; seen < total; ++block) {
+      std::uint64_t type = 0, n = 0, ntags = 0;
+      if (!c.binary(4, type) || !c.binary(4, n) || !c.binary(4, ntags))
+        ends_early(line, "Elements", "the header of element block " + std::to_string(block));
+      // ints read as unsigned: a negative count or tag count is above 2^31, which no file holds
+      const std::string what = "element block " + std::to_string(block) + " (type " + std::to_string(type) + ")";
+      bound_u(line, "Elements", ntags, "tags per element in " + what, 4, c.remaining_bytes());
+      const int nodes = msh2_nodes_per_element(static_cast<long long>(type));
+      if (nodes == 0) return;  // a type this table does not know (gmsh has more): the blocks after it unchecked
+      const std::uint64_t per = 4 * (1 + ntags + static_cast<std::uint64_t>(nodes));
+      bound_u(line, "Elements", n, "elements in " + what, per, c.remaining_bytes());
+      c.skip_bytes(static_cast<std::size_t>(n * per));
+      seen += n;
+    }
+  }
+
   void elements_binary(Cursor& c, int line) {
     if (!v4_) {
       const int at = c.line();
-      const std::optional<long long> n = integer(c.rest_of_line());
+      const std::optional<long long> n = leading_integer(c.rest_of_line());
       bound(at, "Elements", n, "elements", 8, c.remaining_bytes());
+      if (n) elements_v2_binary_blocks(c, at, static_cast<std::uint64_t>(*n));
       return;
     }
     // 4.1: numEntityBlocks numElements minElementTag maxElementTag (size_t); each block: entityDim

@@ -163,6 +163,45 @@ TEST(FuzzRegression, GmshBinarySectionEndingInsideItsDataIsRefused) {
                        {"cut.msh:32: $Elements: the section ends inside the header of element block 35 of 61"}));
 }
 
+// A binary format 2 file (fuzz_gmsh, long campaign): the count lines of $Nodes and $Elements held
+// "1 2 1 2" and "1 1 1 1", which libgmsh reads with sscanf("%d") as 1 and the check took for no count, so
+// nothing was checked; libgmsh then read text bytes as an element block's tag count and allocated its
+// 1 + tags + nodes ints before looking at the block (4.66 GB, GModelIO_MSH2.cpp). The counts are now
+// read as libgmsh reads them, and every binary format 2 element block is bounded: its tag count by one
+// element, its element count by all of them.
+TEST(FuzzRegression, GmshBinaryMsh2ElementBlocksAreBounded) {
+  EXPECT_TRUE(mentions(msh_error("count_lines_binary_msh2.msh"),
+                       {"count_lines_binary_msh2.msh:5: $Nodes: 1 nodes, but the rest of the section holds at most 0"}));
+  // The panel in binary format 2 (gmsh -format msh22 -bin): 68 blocks of one element each, 2,152 bytes.
+  const std::string panel = test::read_file(test::data_dir() / "gmsh" / "panel_msh2_binary.msh");
+  const std::size_t blocks = panel.find("\n$Elements\n68\n");
+  ASSERT_NE(blocks, std::string::npos);
+  auto with_int = [&](std::size_t offset, std::uint32_t value) {  // an int of the element data replaced
+    std::string text = panel;
+    for (int k = 0; k < 4; ++k) text[blocks + 14 + offset + k] = static_cast<char>((value >> (8 * k)) & 0xff);
+    return text;
+  };
+  // block 2's num-tags (its header at byte 28) 2^30: one element would not fit the 2,113 bytes left
+  EXPECT_TRUE(mentions(msh_text_error("b.msh", with_int(28 + 8, 1u << 30)),
+                       {"b.msh:27: $Elements: 1073741824 tags per element in element block 2 (type 15), but the rest of the "
+                        "section holds at most 528"}));
+  // block 3's num-elm-follow (header at byte 56) 10^6 points of 16 bytes in the 2,085 bytes left
+  EXPECT_TRUE(mentions(msh_text_error("b.msh", with_int(56 + 4, 1000000)),
+                       {"b.msh:27: $Elements: 1000000 elements in element block 3 (type 15), but the rest of the section "
+                        "holds at most 130"}));
+  // a count line with more after the count is read as libgmsh reads it, by its first number: the panel
+  // still reads, with all its elements
+  std::string junk = panel;
+  junk.replace(blocks + 11, 3, "68 x\n");
+  test::TempDir dir;
+  io::ModelReadOptions o;
+  o.properties = test::source_dir() / "meshes" / "panel.props.bdf";
+  fem::Model m;
+  EXPECT_NO_THROW(m = io::read_gmsh(dir.write("j.msh", junk), o));
+  EXPECT_EQ(m.shells.size(), 16u);
+  EXPECT_EQ(m.bars.size(), 14u);
+}
+
 // A format 4 $PhysicalNames line "5 13 "interface_beam"" (the fuzzer changed the panel's dimension 0 to 5;
 // minimised by hand to that one line): libgmsh 4.8 crashed (SEGV in GModel::setPhysicalName) on a
 // dimension outside 0-3. Every physical name's dimension is now checked first.
@@ -191,7 +230,7 @@ TEST(FuzzRegression, GmshCountCheckAcceptsEveryFormatGmshWrites) {
   // text and binary, formats 2.2, 4.0 and 4.1: the check refuses none of the valid meshes
   io::ModelReadOptions o;
   o.properties = test::source_dir() / "meshes" / "panel.props.bdf";
-  for (const char* name : {"panel_msh2.msh", "panel_msh40.msh", "panel_msh4.msh", "panel_msh4_binary.msh"}) {
+  for (const char* name : {"panel_msh2.msh", "panel_msh2_binary.msh", "panel_msh40.msh", "panel_msh4.msh", "panel_msh4_binary.msh"}) {
     test::TempDir dir;
     const auto mesh = dir.write(name, test::read_file(test::data_dir() / "gmsh" / name));
     EXPECT_NO_THROW(io::read_gmsh(mesh, o)) << name;

@@ -66,7 +66,7 @@ TEST(GmshPanel, SameModelAsNastranPanel) {
 
 TEST(GmshPanel, MshFormats2And4AsciiAndBinaryGiveTheGeoModel) {
   const fem::Model geo = io::read_model(test::meshes_dir() / "panel.geo");
-  for (const char* name : {"panel_msh2.msh", "panel_msh40.msh", "panel_msh4.msh", "panel_msh4_binary.msh"}) {
+  for (const char* name : {"panel_msh2.msh", "panel_msh2_binary.msh", "panel_msh40.msh", "panel_msh4.msh", "panel_msh4_binary.msh"}) {
     SCOPED_TRACE(name);
     io::ModelReadOptions o;
     o.properties = test::meshes_dir() / "panel.props.bdf";
