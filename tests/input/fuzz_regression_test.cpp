@@ -283,6 +283,18 @@ std::string little_endian(std::uint64_t value, int bytes) {
   return s;
 }
 
+/// `text` with the 8-byte little-endian count that ends `prefix` (its first occurrence) set to `value`.
+std::string with_count_ending(const std::string& text, const std::string& prefix, std::uint64_t value) {
+  const auto at = text.find(prefix);
+  if (at == std::string::npos) {
+    ADD_FAILURE() << "the block header to damage is not in the file";
+    return text;
+  }
+  std::string out = text;
+  out.replace(at + prefix.size() - 8, 8, little_endian(value, 8));
+  return out;
+}
+
 }  // namespace
 
 // MSH 4.0 lays out $Nodes otherwise than 4.1 (no min/max tags in the header, entity tag before its
@@ -303,11 +315,7 @@ TEST(FuzzRegression, GmshMsh40NodeBlockCountBeyondTheFileIsRefused) {
   const std::string binary = test::read_file(test::data_dir() / "gmsh" / "panel_msh40_binary.msh");
   const std::string first_block = "$Nodes\n" + little_endian(61, 8) + little_endian(31, 8) + little_endian(1, 4) +
                                   little_endian(0, 4) + little_endian(0, 4) + little_endian(1, 8);
-  std::string damaged = binary;
-  const auto at = damaged.find(first_block);
-  ASSERT_NE(at, std::string::npos);
-  damaged.replace(at + first_block.size() - 8, 8, little_endian(1ULL << 40, 8));
-  EXPECT_TRUE(mentions(msh_text_error("panel_msh40_binary.msh", damaged),
+  EXPECT_TRUE(mentions(msh_text_error("panel_msh40_binary.msh", with_count_ending(binary, first_block, 1ULL << 40)),
                        {"panel_msh40_binary.msh:27: $Nodes: 1099511627776 nodes in a block, but the rest of the section holds at most 73"}));
 }
 
@@ -321,11 +329,7 @@ TEST(FuzzRegression, GmshMsh40ElementBlockCountBeyondTheFileIsRefused) {
   const std::string binary = test::read_file(test::data_dir() / "gmsh" / "panel_msh40_binary.msh");
   const std::string first_block = "$Elements\n" + little_endian(61, 8) + little_endian(61, 8) + little_endian(1, 4) +
                                   little_endian(0, 4) + little_endian(15, 4) + little_endian(1, 8);
-  std::string damaged = binary;
-  const auto at = damaged.find(first_block);
-  ASSERT_NE(at, std::string::npos);
-  damaged.replace(at + first_block.size() - 8, 8, little_endian(1ULL << 40, 8));
-  EXPECT_TRUE(mentions(msh_text_error("panel_msh40_binary.msh", damaged),
+  EXPECT_TRUE(mentions(msh_text_error("panel_msh40_binary.msh", with_count_ending(binary, first_block, 1ULL << 40)),
                        {"panel_msh40_binary.msh:32: $Elements: 1099511627776 elements in a block, but the rest of the section holds at most 242"}));
 }
 
