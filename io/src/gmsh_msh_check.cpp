@@ -111,12 +111,17 @@ std::optional<long long> integer(std::string_view t) {
   return v;
 }
 
-/// The integer a line starts with, as libgmsh's sscanf("%d") takes a count line (the rest of the line is
-/// ignored); none if it starts with something else.
-std::optional<long long> leading_integer(std::string_view line) {
-  line = trimmed(line);
-  const std::size_t end = line.find_first_of(" \t\r\n\v\f");
-  return integer(line.substr(0, end));
+/// The integer `t` starts with, as libgmsh's scanf("%d") reads one (leading white space, a sign, digits;
+/// what follows is left): a count line "1 1 1 1" is 1, a physical group "5 13"name"" is 5 and 13. None if
+/// `t` starts with something else.
+std::optional<long long> leading_integer(std::string_view t) {
+  t = trimmed(t);
+  const bool plus = !t.empty() && t[0] == '+';
+  long long v = 0;
+  const char* first = t.data() + (plus ? 1 : 0);
+  const auto [end, ec] = std::from_chars(first, t.data() + t.size(), v);
+  if (ec != std::errc() || end == first) return std::nullopt;
+  return v;
 }
 
 /// Nodes of a gmsh element type (gmsh reference manual, "MSH file format version 2", elm-type 1-31 and
@@ -208,10 +213,10 @@ class Checker {
       double version = 0;
       std::from_chars(v.data(), v.data() + v.size(), version);
       v40_ = v4_ && version >= 4 && version < 4.1;
-      binary_ = integer(type).value_or(0) != 0;  // gmsh: any file-type but 0 is binary
+      binary_ = leading_integer(type).value_or(0) != 0;  // gmsh: any file-type but 0 is binary
       // The width of a binary count: 4.1 says it (data-size, sizeof(size_t)); 4.0's counts are unsigned
       // longs, 8 bytes, and its data-size is "currently unused" (gmsh 4.0 wrote sizeof(double) there).
-      size_t_ = !v40_ && integer(size) == 4 ? 4 : 8;
+      size_t_ = !v40_ && leading_integer(size) == 4 ? 4 : 8;
       return;
     }
     if (!known_) return;  // no $MeshFormat yet: gmsh's error to report
@@ -224,18 +229,19 @@ class Checker {
   }
 
   // Format 4: the count, then per physical group "dim tag "name"" (ASCII in binary files too), read as
-  // gmsh does: two integers, then the rest of the line. libgmsh 4.8 crashes (SEGV in
-  // GModel::setPhysicalName; fuzz_gmsh) on a dimension outside 0-3 in formats 4.0 and 4.1; its format 2
-  // reader takes such a line without harm (and a damaged format 2 section is gmsh's to report).
+  // gmsh does: two integers by fscanf("%d %d"), each to its first non-digit, then the rest of the line.
+  // libgmsh 4.8 crashes (SEGV in GModel::setPhysicalName; fuzz_gmsh) on a dimension outside 0-3 in
+  // formats 4.0 and 4.1; its format 2 reader takes such a line without harm (and a damaged format 2
+  // section is gmsh's to report). (fuzz_gmsh, CI: "5 13\"in..." is dimension 5 and tag 13 to gmsh.)
   void physical_names(Cursor& c) {
-    const std::optional<long long> n = integer(c.token());
+    const std::optional<long long> n = leading_integer(c.token());
     if (!n) return;  // gmsh's syntax error to report
     for (long long k = 0; k < *n; ++k) {
       const std::string_view dim_text = c.token();
       if (dim_text.empty()) return;  // the section ends early: gmsh's error
       const int line = c.token_line();
-      const std::optional<long long> dim = integer(dim_text);
-      const std::optional<long long> tag = integer(c.token());
+      const std::optional<long long> dim = leading_integer(dim_text);
+      const std::optional<long long> tag = leading_integer(c.token());
       if (!dim || !tag) return;  // gmsh's syntax error
       if (*dim < 0 || *dim > 3)
         throw InputError(SourceRef{file_, line}, "$PhysicalNames: physical group " + std::to_string(*tag) + " has dimension " +
@@ -248,7 +254,7 @@ class Checker {
   // 4.1: X Y Z), numPhysicalTags and the tags, and (curves and up) numBounding and the tags.
   void entities_ascii(Cursor& c) {
     std::optional<long long> count[4];
-    for (auto& n : count) n = integer(c.token());
+    for (auto& n : count) n = leading_integer(c.token());
     const int line = c.token_line();
     for (int dim = 0; dim < 4; ++dim) {
       bound(line, "Entities", count[dim], "entities of dimension " + std::to_string(dim), 5, c.remaining_tokens());
@@ -259,7 +265,7 @@ class Checker {
         const int doubles = dim == 0 && !v40_ ? 3 : 6;
         for (int k = 0; k < 1 + doubles; ++k) c.token();
         for (int list = 0; list < (dim == 0 ? 1 : 2); ++list) {
-          const std::optional<long long> n = integer(c.token());
+          const std::optional<long long> n = leading_integer(c.token());
           if (!n) return;
           bound(c.token_line(), "Entities", n, list == 0 ? "physical tags of an entity" : "bounding entities of an entity", 1,
                 c.remaining_tokens());
@@ -295,12 +301,12 @@ class Checker {
 
   void nodes_ascii(Cursor& c) {
     if (!v4_) {  // N, then N lines "tag x y z"
-      const std::optional<long long> n = integer(c.token());
+      const std::optional<long long> n = leading_integer(c.token());
       bound(c.token_line(), "Nodes", n, "nodes", 4, c.remaining_tokens());
       if (!n) return;
       node_tags_.clear();
       for (long long k = 0; k < *n; ++k) {
-        if (const std::optional<long long> tag = integer(c.token())) node_tags_.push_back(*tag);
+        if (const std::optional<long long> tag = leading_integer(c.token())) node_tags_.push_back(*tag);
         for (int x = 0; x < 3; ++x) c.token();
       }
       std::sort(node_tags_.begin(), node_tags_.end());
@@ -312,9 +318,9 @@ class Checker {
     // 4.0: numEntityBlocks numNodes; each block: tagEntity dimEntity parametric numNodes, then per node
     // its tag and coordinates x y z [u [v [w]]]. Either way a node is 4 numbers and, if the block is
     // parametric, one more per dimension of its entity (libgmsh: `if(parametric) n += entityDim`).
-    const std::optional<long long> blocks = integer(c.token());
+    const std::optional<long long> blocks = leading_integer(c.token());
     const int line = c.token_line();
-    const std::optional<long long> total = integer(c.token());
+    const std::optional<long long> total = leading_integer(c.token());
     if (!v40_) {
       c.token();  // minNodeTag
       c.token();  // maxNodeTag
@@ -322,11 +328,11 @@ class Checker {
     bound(line, "Nodes", blocks, "node blocks", 4, c.remaining_tokens());
     bound(line, "Nodes", total, "nodes", 4, c.remaining_tokens());
     for (long long b = 0; blocks && b < *blocks; ++b) {
-      const std::optional<long long> first = integer(c.token());
-      const std::optional<long long> second = integer(c.token());
+      const std::optional<long long> first = leading_integer(c.token());
+      const std::optional<long long> second = leading_integer(c.token());
       const long long dim = (v40_ ? second : first).value_or(0);
-      const long long parametric = integer(c.token()).value_or(0);
-      const std::optional<long long> n = integer(c.token());
+      const long long parametric = leading_integer(c.token()).value_or(0);
+      const std::optional<long long> n = leading_integer(c.token());
       if (!n) return;
       const long long per_node = 4 + (parametric != 0 && dim > 0 && dim <= 3 ? dim : 0);
       bound(c.token_line(), "Nodes", n, "nodes in a block", static_cast<std::uint64_t>(per_node), c.remaining_tokens());
@@ -365,14 +371,14 @@ class Checker {
 
   void elements_ascii(Cursor& c) {
     if (!v4_) {  // N, then N lines "tag type ntags tags... nodes..."
-      const std::optional<long long> n = integer(c.token());
+      const std::optional<long long> n = leading_integer(c.token());
       bound(c.token_line(), "Elements", n, "elements", 4, c.remaining_tokens());
       if (n) elements_v2_lines(c, *n);
       return;
     }
-    const std::optional<long long> blocks = integer(c.token());
+    const std::optional<long long> blocks = leading_integer(c.token());
     const int line = c.token_line();
-    const std::optional<long long> total = integer(c.token());
+    const std::optional<long long> total = leading_integer(c.token());
     bound(line, "Elements", blocks, "element blocks", 4, c.remaining_tokens() + 2);
     bound(line, "Elements", total, "elements", 2, c.remaining_tokens() + 2);
     if (!blocks) return;
@@ -385,8 +391,8 @@ class Checker {
     for (long long b = 0; b < *blocks; ++b) {
       c.token();
       c.token();
-      const std::optional<long long> type = integer(c.token());
-      const std::optional<long long> n = integer(c.token());
+      const std::optional<long long> type = leading_integer(c.token());
+      const std::optional<long long> n = leading_integer(c.token());
       if (!type || !n) return;  // gmsh reports the syntax itself
       const int nodes = msh2_nodes_per_element(*type);
       const std::uint64_t per = 1 + static_cast<std::uint64_t>(std::max(nodes, 1));
@@ -495,15 +501,15 @@ class Checker {
     int entities_line = header_line;
     for (int kind = 0; kind < 3; ++kind) {
       const int line = c.line();
-      const std::optional<long long> n = integer(c.rest_of_line());
+      const std::optional<long long> n = leading_integer(c.rest_of_line());
       if (!n || *n < 0) return;  // gmsh's syntax error to report
       bound(line, name, n, "tags", 1, c.remaining_tokens());
       for (long long k = 0; k < *n; ++k) {
         const int tline = c.line();
         const std::string_view t = c.rest_of_line();
-        if (kind == 2 && k == 1) components = std::max(1LL, integer(t).value_or(1));
+        if (kind == 2 && k == 1) components = std::max(1LL, leading_integer(t).value_or(1));
         if (kind == 2 && k == 2) {
-          entities = integer(t);
+          entities = leading_integer(t);
           entities_line = tline;
         }
       }

@@ -212,6 +212,13 @@ TEST(FuzzRegression, GmshPhysicalNameOfAnImpossibleDimensionIsRefused) {
   EXPECT_TRUE(mentions(msh_text_error("n.msh", "$MeshFormat\n4 0 8\n$EndMeshFormat\n$PhysicalNames\n2\n1 2 \"a\"\n-1 3 \"b\"\n"
                                                "$EndPhysicalNames\n"),
                        {"n.msh:7: $PhysicalNames: physical group 3 has dimension -1"}));
+  // CI's fuzz_gmsh (seed 1, 2026-11-28): "5 13\"in$EndElements\"" - gmsh's fscanf("%d %d") reads the tag
+  // to its first non-digit (13); the check took the token for no number and let the line through.
+  // Every number of the text sections is now read as scanf reads it.
+  EXPECT_TRUE(mentions(msh_error("physical_name_tag_prefix_msh4.msh"),
+                       {"physical_name_tag_prefix_msh4.msh:6: $PhysicalNames: physical group 13 has dimension 5"}));
+  EXPECT_TRUE(mentions(msh_text_error("c.msh", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n2000000000x\n1 0 0 0\n$EndNodes\n"),
+                       {"c.msh:5: $Nodes: 2000000000 nodes, but the rest of the section holds at most 1"}));
 }
 
 // The fuzzer's first line "$MeshFormat"Nodes", then "1 2 1 2": gmsh recognises a section by the first
