@@ -47,7 +47,7 @@ def read_history(path):
     return {n: data[:, i] for i, n in enumerate(names)}
 
 
-def edit_scene(text, tol=None, method=None, step=None, stop=None, t_end=None):
+def edit_scene(text, tol=None, method=None, step=None, stop=None, t_end=None, max_step=None):
     if tol is not None:
         text = re.sub(r"tolerance: \{position: [^,]+, angle: [^}]+\}", f"tolerance: {{position: {tol:g}, angle: {tol:g}}}", text)
     if stop is not None:
@@ -58,6 +58,10 @@ def edit_scene(text, tol=None, method=None, step=None, stop=None, t_end=None):
         text = re.sub(r"step: [0-9.eE+-]+", f"step: {step:g}", text, count=1)
     if t_end is not None:
         text = re.sub(r"t_end: [0-9.eE+-]+", f"t_end: {t_end:g}", text, count=1)
+    if max_step is not None:
+        text, k = re.subn(r"max_step: [0-9.eE+-]+", f"max_step: {max_step:g}", text, count=1)
+        if not k:
+            raise SystemExit("edit_scene: the scene has no max_step to change")
     return text
 
 
