@@ -70,10 +70,17 @@ TEST(SolutionBadInput, StaticWithAnUndefinedLoadSet) {
 
 TEST(SolutionBadInput, MissingDeckAndBadOptions) {
   test::TempDir dir;
-  EXPECT_EQ(test::run_seflex("modes missing.bdf", dir.path()).exit_code, 3);
-  EXPECT_EQ(test::run_seflex("static", dir.path()).exit_code, 2);
-  EXPECT_EQ(test::run_seflex("modes x.bdf --count many", dir.path()).exit_code, 2);
-  EXPECT_EQ(test::run_seflex("modes x.bdf --factorization lu", dir.path()).exit_code, 2);
+  // exit 3 for bad input, 2 for a bad command line; each message names the file or option, what it
+  // got and what was expected
+  const auto expect_message = [&](const std::string& args, int code, const std::string& message) {
+    const auto r = test::run_seflex(args, dir.path());
+    EXPECT_EQ(r.exit_code, code) << args << "\n" << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << args << "\n" << r.err << "\nlacks: " << message;
+  };
+  expect_message("modes missing.bdf", 3, "error: missing.bdf: no such file; expected a Nastran deck");
+  expect_message("static", 2, "seflex static: missing DECK\nusage: seflex static DECK");
+  expect_message("modes x.bdf --count many", 2, "seflex modes: option --count expects an integer, got 'many'");
+  expect_message("modes x.bdf --factorization lu", 2, "seflex modes: option --factorization expects cholmod or ldlt, got 'lu'");
 }
 
 }  // namespace
