@@ -152,7 +152,7 @@ TEST(Laminate, SandwichTransverseShear) {
   face.G1z = face.G2z = 26e9;
   plies[0].material = plies[2].material = shell_material(face);
   const ShellSection s2 = laminate_section(plies, std::nullopt, 0.0);
-  EXPECT_NEAR(s2.S(0, 0) / s.S(0, 0), 1.0, 2e-3);
+  EXPECT_NEAR(s2.S(0, 0) / s.S(0, 0), 1.0, 1.3e-4);  // measured (2026-11-28) 6.5e-5; twice that
   // the stabilisation thickness (section.hpp ts2) as a PSHELL of the faces would have it:
   // (5/6) G_face (12 I) / S with 12 I = h^3 - tc^3
   const double G_face = 70e9 / 2.6;
