@@ -231,6 +231,34 @@ TEST(Laminate, PshellWithMat2AndMid4IsTheEquivalentOfThePcomp) {
   EXPECT_FALSE(ps.isotropic);
 }
 
+// PSHELL with MID2 blank is a membrane (A = T G1, no bending, no coupling), with MID1 blank a plate in
+// bending only (D = (12I/T^3) T^3/12 G2, no membrane stiffness); the mass per area is RHO T + NSM with
+// the RHO of MID1, or of MID2 when MID1 is blank (MSC Nastran QRG, PSHELL, as section.hpp states it).
+// Neither case was tested.
+TEST(Laminate, PshellWithoutMid2IsAMembraneWithoutMid1ABendingPlate) {
+  const ShellMaterial m = shell_material(t300(5e9, 4e9));
+  const Eigen::Matrix3d Q = Qbar(0);
+  PshellInput membrane;
+  membrane.mid1 = &m;
+  membrane.t = 3e-3;
+  membrane.nsm = 0.7;
+  const ShellSection a = pshell_section(membrane);
+  expect_matrix_near(a.A, Q * 3e-3, 1e-14, "A");
+  EXPECT_EQ(a.D.norm(), 0.0);
+  EXPECT_EQ(a.B.norm(), 0.0);
+  EXPECT_NEAR(a.mass_per_area(), 1600.0 * 3e-3 + 0.7, 1e-15);
+  PshellInput plate;
+  plate.mid2 = &m;
+  plate.t = 3e-3;
+  plate.bend_ratio = 2.5;
+  plate.nsm = 0.7;
+  const ShellSection b = pshell_section(plate);
+  expect_matrix_near(b.D, Q * 2.5 * 27e-9 / 12, 1e-14, "D");
+  EXPECT_EQ(b.A.norm(), 0.0);
+  EXPECT_EQ(b.B.norm(), 0.0);
+  EXPECT_NEAR(b.mass_per_area(), 1600.0 * 3e-3 + 0.7, 1e-15);
+}
+
 TEST(Laminate, Mat8PshellIsTheOrthotropicPlate) {
   // PSHELL with MID1 = MID2 = MID3 = a MAT8: A = T Q, D = T^3/12 Q, S = (TS/T) T diag(G1Z, G2Z)
   const Mat8 m8 = t300(5e9, 4e9);
