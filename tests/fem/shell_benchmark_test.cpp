@@ -163,7 +163,7 @@ TEST(MacNealHarder, ScordelisLoRoof) {
   EXPECT_LE(std::abs(q32 - q16), std::abs(q16 - q8));
   const double t16 = scordelis_lo(16, true) / ref, t32 = scordelis_lo(32, true) / ref;
   std::printf("Scordelis-Lo CTRIA3: 16x16x2 %.4f 32x32x2 %.4f\n", t16, t32);
-  EXPECT_NEAR(t32, 1.0, 0.05);
+  EXPECT_NEAR(t32, 1.0, 0.025);  // measured 1.3e-2 (2026-11-28)
   EXPECT_LT(std::abs(t32 - 1.0), std::abs(t16 - 1.0));
 }
 
