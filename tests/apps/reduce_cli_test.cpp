@@ -94,6 +94,10 @@ TEST(ReduceCli, ExportDmigAndOp4) {
   // Existing files are not replaced without --force.
   const auto again = test::run_seflex("export " + q(se_path) + " --op4 " + q(tmp / "yoke.op4"));
   EXPECT_EQ(again.exit_code, 3);
+  EXPECT_NE(again.err.find((tmp / "yoke.op4").string() + ": exists already; refusing to overwrite it (use --force to replace it)"),
+            std::string::npos)
+      << again.err;
+  EXPECT_EQ(test::read_file(tmp / "yoke.op4"), op4);
   EXPECT_EQ(test::run_seflex("export " + q(se_path) + " --op4 " + q(tmp / "yoke.op4") + " --force").exit_code, 0);
 }
 

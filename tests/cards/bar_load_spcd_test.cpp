@@ -99,9 +99,9 @@ TEST(Pload1, ProjectedLoadTotals) {
 }
 
 TEST(Pload1, BadInputIsRefused) {
-  EXPECT_TRUE(test::mentions(test::read_error("PLOAD1,2,1,FQ,LE,0.,1.\n"), {"PLOAD1 2", "TYPE", "expected FX, FY"}));
-  EXPECT_TRUE(test::mentions(test::read_error("PLOAD1,2,1,FX,LX,0.,1.\n"), {"PLOAD1 2", "SCALE", "expected LE, FR, LEPR or FRPR"}));
-  EXPECT_TRUE(test::mentions(test::read_error("PLOAD1,2,1,FX,FR,0.,1.,1.5,1.\n"), {"PLOAD1 2", "X2", "<= 1"}));
+  EXPECT_TRUE(test::mentions(test::read_error("PLOAD1,2,1,FQ,LE,0.,1.\n"), {"deck.bdf:1: PLOAD1 2, field 4 (TYPE): got text 'FQ'; expected FX, FY, FZ, FXE, FYE, FZE, MX, MY, MZ, MXE, MYE or MZE"}));
+  EXPECT_TRUE(test::mentions(test::read_error("PLOAD1,2,1,FX,LX,0.,1.\n"), {"deck.bdf:1: PLOAD1 2, field 5 (SCALE): got text 'LX'; expected LE, FR, LEPR or FRPR"}));
+  EXPECT_TRUE(test::mentions(test::read_error("PLOAD1,2,1,FX,FR,0.,1.,1.5,1.\n"), {"deck.bdf:1: PLOAD1 2, field 8 (X2): got real '1.5'; expected a fraction of the length <= 1 with SCALE FR"}));
   const fem::Model m = test::read_deck(bar_deck("LOAD = 2\n", "SPC1,1,123456,1\nPLOAD1,2,1,FZ,LE,0.,1.,3.,1.\n"));
   std::string msg;
   try {
@@ -109,7 +109,8 @@ TEST(Pload1, BadInputIsRefused) {
   } catch (const InputError& e) {
     msg = e.what();
   }
-  EXPECT_TRUE(test::mentions(msg, {"PLOAD1 2", "X2", "beyond the end of CBAR 1"}));
+  EXPECT_TRUE(test::mentions(msg, {"deck.bdf:12: PLOAD1 2, field 8 (X2): X2 = 3.000000 is beyond the end of CBAR 1 (length 2.000000); "
+                                   "expected 0 <= X1 <= X2 <= L"}));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -137,7 +138,8 @@ TEST(Spcd, ComponentOutsideTheSpcSetIsAnError) {
   } catch (const InputError& e) {
     msg = e.what();
   }
-  EXPECT_TRUE(test::mentions(msg, {"deck.bdf:", "SPCD", "grid 2 component 3", "not in the subcase's SPC set 1"}));
+  EXPECT_TRUE(test::mentions(msg, {"deck.bdf:12: SPCD: grid 2 component 3 is not in the subcase's SPC set 1; expected every SPCD component "
+                                   "to be constrained by an SPC/SPC1 of the selected set"}));
 }
 
 }  // namespace

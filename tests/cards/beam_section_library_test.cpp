@@ -217,10 +217,11 @@ TEST(BeamSectionLibrary, ImpossibleDimensionsAreRefused) {
     }
     return std::string();
   };
-  EXPECT_TRUE(test::mentions(message("T", {0.08, 0.005, 0.006, 0.004}), {"T section", "DIM3", "DIM2"}));
-  EXPECT_TRUE(test::mentions(message("CHAN1", {0.04, 0.005, 0.12, 0.1}), {"CHAN1 section", "DIM3", "DIM4"}));
-  EXPECT_TRUE(test::mentions(message("DBOX", {0.2, 0.1, 0.195, 0.006, 0.004, 0.006, 0.005, 0.005, 0.005, 0.005}), {"DBOX section", "DIM1"}));
-  EXPECT_TRUE(test::mentions(message("Z", {0.04, 0.005, 0.1}), {"Z section", "has 3 dimensions; expected 4"}));
+  EXPECT_TRUE(test::mentions(message("T", {0.08, 0.005, 0.006, 0.004}), {"T section: flange thickness DIM3 not smaller than the height DIM2 (0.006 >= 0.005); expected "
+                                                                            "dimensions that describe the section"}));
+  EXPECT_TRUE(test::mentions(message("CHAN1", {0.04, 0.005, 0.12, 0.1}), {"CHAN1 section: the clear web height DIM3 is not smaller than the height DIM4 (0.12 >= 0.1)"}));
+  EXPECT_TRUE(test::mentions(message("DBOX", {0.2, 0.1, 0.195, 0.006, 0.004, 0.006, 0.005, 0.005, 0.005, 0.005}), {"DBOX section: DIM3 + DIM5/2 + DIM6 reach past the width DIM1 (0.203 >= 0.2)"}));
+  EXPECT_TRUE(test::mentions(message("Z", {0.04, 0.005, 0.1}), {"Z section: has 3 dimensions; expected 4"}));
   EXPECT_TRUE(test::mentions(test::read_error("MAT1,1,7.e10,,0.3\nPBARL,1,1,,HAT\n,0.05,0.03,0.04,0.01\n"),
                              {"PBARL 1", "HAT section", "DIM1"}));
 }

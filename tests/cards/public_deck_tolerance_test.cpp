@@ -325,7 +325,7 @@ TEST(PublicDecks, ScalarPointsTwiceOrImpliedByScalarElements) {
   EXPECT_EQ(m.spoints[3].id, 1303);
   EXPECT_NE(listed(m, "SPOINT id given twice (one scalar point kept)"), nullptr);
   // a grid id on CELAS3 is still an error
-  EXPECT_TRUE(mentions(read_error("GRID,7,,0.,0.,0.\nPELAS,1,100.\nCELAS3,5,1,7\n"), {"which is not an SPOINT", "it is a GRID"}));
+  EXPECT_TRUE(mentions(read_error("GRID,7,,0.,0.,0.\nPELAS,1,100.\nCELAS3,5,1,7\n"), {"deck.bdf:3: CELAS3 5, field 4 (S1): references point 7, which is not an SPOINT; expected a scalar point (it is a GRID: use CELAS1 or CELAS2)"}));
 }
 
 }  // namespace

@@ -159,6 +159,28 @@ TEST(Bar, MassSumsToTotalAndRigidInertia) {
   EXPECT_NEAR(ax.dot(M0.bottomRightCorner<3, 3>() * ax), e.material.rho * (e.section.I1 + e.section.I2) * L, 1e-10 * m);
 }
 
+// Spin about the bar axis through the (offset) bar's centroid: a CBAR's lumped mass has no inertia
+// about it (m/2 on the axis at each end, no rotary inertia), a CBEAM's lumped mass carries the polar
+// inertia (rho (I1 + I2) + NSI) L, half at each end (as Nastran's: the MSC Nastran result quoted in
+// tests/solutions/validation_modes_test.cpp, CbarCbeamConm2MatchesNastranLumpedMass), and the coupled mass of both the
+// continuous rod's (rho (I1 + I2) + NSI) L (NSI only on CBEAM: PBAR has no such field).
+TEST(Bar, SpinInertiaOfLumpedAndCoupledCbarAndCbeam) {
+  for (bool beam : {false, true})
+    for (MassKind kind : {MassKind::Lumped, MassKind::Coupled}) {
+      BarElement e = general_bar();
+      e.is_beam = beam;
+      e.nsi = beam ? 0.35 : 0.0;
+      const double L = bar_length(e);
+      const Eigen::Vector3d c = 0.5 * (e.x_A + e.w_A + e.x_B + e.w_B), ax = bar_axes(e).col(0);
+      const Matrix6 M0 = rigid_body_modes<2>({e.x_A, e.x_B}, c).transpose() * bar_mass(e, kind) *
+                         rigid_body_modes<2>({e.x_A, e.x_B}, c);
+      const double polar = (e.material.rho * (e.section.I1 + e.section.I2) + e.nsi) * L;
+      const double expected = !beam && kind == MassKind::Lumped ? 0.0 : polar;
+      EXPECT_NEAR(ax.dot(M0.bottomRightCorner<3, 3>() * ax), expected, 1e-12 * polar)
+          << (beam ? "CBEAM " : "CBAR ") << (kind == MassKind::Lumped ? "lumped" : "coupled");
+    }
+}
+
 }  // namespace
 }  // namespace seflex::fem
 

@@ -49,7 +49,10 @@ std::vector<double> frequencies(const Model& m, const BeamSpec& s, std::optional
 // BAR-CC-GIV.DAT: 4 CBAR, PBAR A = I1 = I2 = J = .1, MAT1 E = 1e7, nu = .3, rho = .1, GRDSET PS
 // 1246, SPC1 35 at grid 1, PARAM WTMASS .002591, default lumped mass. Reference: MYSTRAN 12.0
 // (tests/data/validation/mystran_cbar_cantilever_and_freefree_modes/BAR-CC-GIV.reference.txt).
-TEST(BeamFrequencies, BarCcMatchesMystranTo1e5) {
+// MYSTRAN prints 7 significant digits: the reference itself is only good to half a unit in the last
+// digit, at most 4.7e-7 relative (10.68719). Measured (2026-11-28): largest difference 2.9e-7
+// (cantilever), 1.8e-7 (free-free), i.e. within that rounding; tolerance 1e-6, twice the rounding.
+TEST(BeamFrequencies, BarCcMatchesMystranToItsPrintedDigits) {
   BeamSpec s;
   s.wtmass = 0.002591;
   Model m = beam_model(s);
@@ -57,11 +60,12 @@ TEST(BeamFrequencies, BarCcMatchesMystranTo1e5) {
   const auto f = frequencies(m, s, 1);
   const double ref[4] = {10.68719, 62.81653, 166.3460, 289.9396};
   ASSERT_GE(f.size(), 4u);
-  for (int i = 0; i < 4; ++i) EXPECT_NEAR(f[i] / ref[i], 1.0, 1e-5) << "mode " << i + 1 << " f = " << f[i];
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(f[i] / ref[i], 1.0, 1e-6) << "mode " << i + 1 << " f = " << f[i];
 }
 
-// BAR-FF-GIV.DAT: the same bar free-free; two rigid modes, then 59.11978 / 150.0817 / 271.5359 Hz.
-TEST(BeamFrequencies, BarFfMatchesMystranTo1e5) {
+// BAR-FF-GIV.DAT: the same bar free-free; two rigid modes, then 59.11978 / 150.0817 / 271.5359 Hz
+// (tolerance: see above).
+TEST(BeamFrequencies, BarFfMatchesMystranToItsPrintedDigits) {
   BeamSpec s;
   s.wtmass = 0.002591;
   const Model m = beam_model(s);
@@ -69,7 +73,7 @@ TEST(BeamFrequencies, BarFfMatchesMystranTo1e5) {
   ASSERT_EQ(f.size(), 5u);
   EXPECT_LT(f[1], 1e-4 * f[2]);
   const double ref[3] = {59.11978, 150.0817, 271.5359};
-  for (int i = 0; i < 3; ++i) EXPECT_NEAR(f[i + 2] / ref[i], 1.0, 1e-5) << "mode " << i + 3 << " f = " << f[i + 2];
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(f[i + 2] / ref[i], 1.0, 1e-6) << "mode " << i + 3 << " f = " << f[i + 2];
 }
 
 // Euler-Bernoulli cantilever: omega_n = (beta_n L)^2 sqrt(EI / (rho A L^4)), beta_1 L = 1.8751041,

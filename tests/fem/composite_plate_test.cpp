@@ -317,10 +317,12 @@ TEST(CompositePlate, UnsymmetricLaminateBendsUnderTensionAsLaminationTheory) {
     const StripResult r = pulled_plate(pcomp, Nx, triangles), q = pulled_plate(pshell, Nx, triangles);
     std::printf("[0/90] under N_x = %g N/m (%s): corner w %.6e m (theory %.6e), u %.6e m (theory %.6e); PSHELL+MID4 w %.6e\n",
                 Nx, triangles ? "CTRIA3" : "CQUAD4", r.w_corner, w_ref, r.u_corner, u_ref, q.w_corner);
-    EXPECT_NEAR(r.w_corner / w_ref, 1.0, 1e-6);
-    EXPECT_NEAR(r.u_corner / u_ref, 1.0, 1e-6);
-    EXPECT_NEAR(q.w_corner / w_ref, 1.0, 1e-6);
-    EXPECT_NEAR(q.u_corner / u_ref, 1.0, 1e-6);
+    // the uniform state is exact for the elements: measured (2026-11-28) 4.3e-12 at most, round-off;
+    // tolerance 1e-9
+    EXPECT_NEAR(r.w_corner / w_ref, 1.0, 1e-9);
+    EXPECT_NEAR(r.u_corner / u_ref, 1.0, 1e-9);
+    EXPECT_NEAR(q.w_corner / w_ref, 1.0, 1e-9);
+    EXPECT_NEAR(q.u_corner / u_ref, 1.0, 1e-9);
   }
   EXPECT_GT(std::abs(w_ref), 10 * std::abs(u_ref));  // the coupling dominates: the test can fail
 }
@@ -343,8 +345,9 @@ TEST(CompositePlate, ZoffsIsEccentricTension) {
     const StripResult r = pulled_plate(pshell, Nx, triangles, e);
     std::printf("ZOFFS %g m, N_x %g N/m (%s): corner w %.6e m (theory %.6e), u %.6e m (theory %.6e)\n", e, Nx,
                 triangles ? "CTRIA3" : "CQUAD4", r.w_corner, w_ref, r.u_corner, u_ref);
-    EXPECT_NEAR(r.w_corner / w_ref, 1.0, 1e-6);
-    EXPECT_NEAR(r.u_corner / u_ref, 1.0, 1e-6);
+    // exact state: measured (2026-11-28) 1.3e-12 at most, round-off; tolerance 1e-9
+    EXPECT_NEAR(r.w_corner / w_ref, 1.0, 1e-9);
+    EXPECT_NEAR(r.u_corner / u_ref, 1.0, 1e-9);
   }
   auto stiffness = [&](bool pcomp) {
     Model m;
@@ -410,7 +413,9 @@ TEST(CompositePlate, SandwichPcompAndPshellAgreeWithMindlinPlate) {
     const double f_ref = std::sqrt(D * k2 * k2 / (mass * (1 + D * k2 / S))) / (2 * kPi);
     std::printf("sandwich mode %d: PCOMP %.4f Hz, PSHELL %.4f Hz (%+.3f %%), Mindlin %.4f Hz (PCOMP %+.3f %%)\n", i + 1, fc[i],
                 fs[i], 100 * (fc[i] / fs[i] - 1), f_ref, 100 * (fc[i] / f_ref - 1));
-    EXPECT_NEAR(fc[i] / fs[i], 1.0, 0.01) << "mode " << i + 1;
+    // the same sandwich as PCOMP and as PSHELL (the PCOMP core's small in-plane stiffness the only
+    // difference): measured (2026-11-28) 3.3e-5 at most; tolerance 6e-5
+    EXPECT_NEAR(fc[i] / fs[i], 1.0, 6e-5) << "mode " << i + 1;
     // mode (2,2) has 5 elements per half wave: -1.0 % at 20 x 20, the element's discretisation error
     if (i < 3) {
       EXPECT_NEAR(fc[i] / f_ref, 1.0, 0.01) << "mode " << i + 1;

@@ -105,6 +105,59 @@ TEST(Constraints, Rbe2ChainIsRigid) {
   EXPECT_NEAR(p.dot(u), pf.dot(ldlt.solve(pf)), 1e-12 * std::abs(p.dot(u)));
 }
 
+// RBE2 with CM = 123 (translations only): the dependent grid's translations follow the rigid motion
+// of the independent grid, u_m = u_n + theta_n x d, and its rotations stay its own (here nothing
+// else reaches them, so AUTOSPC removes them). A force F at the dependent grid therefore reaches
+// the tip as F and the moment d x F: the same displacements as a cantilever loaded so at the tip,
+// and the tip deflection in plane 1 is the Euler-Bernoulli closed form
+// v = F_y L^3 / (3 E I1) + M_z L^2 / (2 E I1) (exact with cubic elements).
+TEST(Constraints, Rbe2TranslationalComponentsOnly) {
+  const double L = 2.0, EI1 = 2e11 * 2e-7;
+  const Eigen::Vector3d P(2.3, 0.2, -0.4), d = P - Eigen::Vector3d(L, 0, 0), F(10.0, 40.0, -25.0);
+  Model a = cantilever(4, L);
+  test::add_grid(a, 100, P.x(), P.y(), P.z());
+  Rbe2 r;
+  r.id = 200;
+  r.gn = 5;
+  r.cm = test::mask("123");
+  r.gm = {100};
+  a.rbe2.push_back(r);
+  PointLoad f;
+  f.sid = 5;
+  f.grid = 100;
+  f.scale = 1.0;
+  f.n = F;
+  a.point_loads.push_back(f);
+  test::finalize_for_test(a);
+
+  Model b = cantilever(4, L);
+  f.grid = 5;
+  PointLoad mo = f;
+  mo.kind = PointLoad::Kind::Moment;
+  mo.n = d.cross(F);
+  b.point_loads = {f, mo};
+  test::finalize_for_test(b);
+
+  const auto solve = [](const Model& m, ConstrainedSystem& c) {
+    const GlobalMatrices g = assemble(m, AssemblyOptions{});
+    c = apply_constraints(m, g, 1);
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(c.K_ff);
+    EXPECT_EQ(ldlt.info(), Eigen::Success);
+    return Eigen::VectorXd(expand(c, ldlt.solve(reduce_load(c, g, load_vector(m, g.dofs, 5)))));
+  };
+  ConstrainedSystem ca, cb;
+  const Eigen::VectorXd ua = solve(a, ca), ub = solve(b, cb);
+  ASSERT_EQ(ua.size(), 36);
+  ASSERT_EQ(ub.size(), 30);
+  EXPECT_LE((ua.head(30) - ub).norm(), 1e-12 * ub.norm());
+  const Eigen::Vector3d u5 = ua.segment<3>(24), th5 = ua.segment<3>(27);
+  EXPECT_LE((ua.segment<3>(30) - (u5 + th5.cross(d))).norm(), 1e-12 * u5.norm());
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(ca.status[30 + k], DofStatus::Dependent) << "component " << k + 1;
+  for (int k = 3; k < 6; ++k) EXPECT_EQ(ca.status[30 + k], DofStatus::AutoSpc) << "component " << k + 1;
+  const double v = F.y() * L * L * L / (3 * EI1) + d.cross(F).z() * L * L / (2 * EI1);
+  EXPECT_NEAR(u5.y(), v, 1e-10 * std::abs(v));
+}
+
 // Enforced displacement (SPC with D): a cantilever whose tip deflection is prescribed as delta
 // needs the tip force 3 EI delta / L^3 (Euler-Bernoulli, exact with cubic elements).
 TEST(Constraints, EnforcedDisplacement) {

@@ -113,12 +113,29 @@ TEST(MystranPlate, Aq3u2s004EigenvaluesAreMystrans) {
   const std::vector<double> lam = lowest_eigenvalues(q.model, 4);
   for (int i = 0; i < 4; ++i) EXPECT_NEAR(lam[i] / mystran[i], 1.0, 1e-6) << "mode " << i + 1;
 
-  // Without the PARAM: seflex's MITC4, mode 1 -2.6 %, mode 4 -16 % (docs/validation-mystran.md).
+  // Without the PARAM: seflex's MITC4, a different element (docs/validation-mystran.md: mode 1 -2.6 %,
+  // mode 4 -16 % from MYSTRAN). Checked against Mindlin's plate without rotary inertia (the references
+  // of thick_plate_test.cpp), omega^2 = D k^4 / (m (1 + D k^2 / S)), k^2 = (p^2 + q^2) (pi/a)^2 with
+  // a = 2, D = E t^3 / (12 (1 - nu^2)), S = (5/6) G t, m = WTMASS rho t; modes 1 and 4 of the quarter
+  // are (1,1) and (3,3). (Until 2026-11-28 the MITC4 ratios to MYSTRAN, 0.974 and 0.835, seflex's own
+  // output, were asserted here.)
   Quarter d = aq3u2s004(false);
   test::finalize_for_test(d.model);
   const std::vector<double> mitc = lowest_eigenvalues(d.model, 4);
-  EXPECT_NEAR(mitc[0] / mystran[0], 0.974, 0.002);
-  EXPECT_NEAR(mitc[3] / mystran[3], 0.835, 0.003);
+  const double a = 2.0, t = 0.2, E = 10.9e6, G = 4.19e6, nu = 0.3, mass = 0.002591 * 0.1 * t;
+  const double D = E * t * t * t / (12 * (1 - nu * nu)), S = 5.0 / 6.0 * G * t;
+  const auto mindlin = [&](int p, int r) {
+    const double k2 = (p * p + r * r) * std::pow(kPi / a, 2);
+    return D * k2 * k2 / (mass * (1 + D * k2 / S));
+  };
+  std::printf("AQ3U2S004 MITC4: mode 1 %.6e (Mindlin %.6e, %+.3f %%), mode 4 %.6e (Mindlin %.6e, %+.3f %%)\n", mitc[0],
+              mindlin(1, 1), 100 * (mitc[0] / mindlin(1, 1) - 1), mitc[3], mindlin(3, 3), 100 * (mitc[3] / mindlin(3, 3) - 1));
+  // measured (2026-11-28): -2.6 % for (1,1) (MYSTRAN's MIN4T: -1e-4) and -24 % for (3,3), which has 1.3
+  // elements per half-wave on this 4 x 4 quarter (MIN4T: -8.8 %); tolerances 1.5 times those. The
+  // convergence of the element is thick_plate_test.cpp's.
+  EXPECT_NEAR(mitc[0] / mindlin(1, 1), 1.0, 0.04);
+  EXPECT_NEAR(mitc[3] / mindlin(3, 3), 1.0, 0.36);
+  EXPECT_NEAR(mystran[0] / mindlin(1, 1), 1.0, 2e-4);  // the reference plate is the deck's
 }
 
 TEST(MystranPlate, Aq3u2s004StaticsAreMystrans) {

@@ -111,9 +111,11 @@ TEST(MacNealHarder, TwistedBeam) {
     const double r2 = twisted_beam(24, 4, axis) / ref;
     const double r3 = twisted_beam(48, 8, axis) / ref;
     std::printf("twisted beam, load along %d: 12x2 %.4f 24x4 %.4f 48x8 %.4f\n", axis, r1, r2, r3);
-    EXPECT_NEAR(r1, 1.0, 0.02) << "axis " << axis;
-    EXPECT_NEAR(r2, 1.0, 0.02) << "axis " << axis;
-    EXPECT_NEAR(r3, 1.0, 0.02) << "axis " << axis;
+    // measured (2026-11-28), worse of the two axes: 2.8e-3, 1.7e-3, 1.4e-3 (the references' 4 digits
+    // are good to 3e-4); tolerances about twice those
+    EXPECT_NEAR(r1, 1.0, 0.005) << "axis " << axis;
+    EXPECT_NEAR(r2, 1.0, 0.0035) << "axis " << axis;
+    EXPECT_NEAR(r3, 1.0, 0.003) << "axis " << axis;
     EXPECT_LE(std::abs(r3 - r2), std::abs(r2 - r1) + 1e-4);
   }
 }
@@ -155,12 +157,13 @@ TEST(MacNealHarder, ScordelisLoRoof) {
   const double q8 = scordelis_lo(8, false) / ref, q16 = scordelis_lo(16, false) / ref,
                q32 = scordelis_lo(32, false) / ref;
   std::printf("Scordelis-Lo CQUAD4: 8x8 %.4f 16x16 %.4f 32x32 %.4f\n", q8, q16, q32);
-  EXPECT_NEAR(q16, 1.0, 0.02);
-  EXPECT_NEAR(q32, 1.0, 0.02);
+  // measured (2026-11-28): 1.4e-3 and 1.8e-3 (the reference's 4 digits are good to 1.7e-4); twice those
+  EXPECT_NEAR(q16, 1.0, 0.003);
+  EXPECT_NEAR(q32, 1.0, 0.0035);
   EXPECT_LE(std::abs(q32 - q16), std::abs(q16 - q8));
   const double t16 = scordelis_lo(16, true) / ref, t32 = scordelis_lo(32, true) / ref;
   std::printf("Scordelis-Lo CTRIA3: 16x16x2 %.4f 32x32x2 %.4f\n", t16, t32);
-  EXPECT_NEAR(t32, 1.0, 0.05);
+  EXPECT_NEAR(t32, 1.0, 0.025);  // measured 1.3e-2 (2026-11-28)
   EXPECT_LT(std::abs(t32 - 1.0), std::abs(t16 - 1.0));
 }
 
@@ -195,6 +198,9 @@ TEST(MacNealHarder, PinchedHemisphere) {
   const double ref = 0.094;
   const double h16 = hemisphere(16) / ref, h32 = hemisphere(32) / ref, h64 = hemisphere(64) / ref;
   std::printf("pinched hemisphere: 16x16 %.4f 32x32 %.4f 64x64 %.4f\n", h16, h32, h64);
+  // measured (2026-11-28): 0.8e-3, 2.2e-3, 3.1e-3. The tolerance is the reference's own uncertainty, not
+  // the element's error: MH's 0.094 has two digits (+-0.5 %) and the converged thin-shell value 0.0924
+  // lies 1.7 % below it.
   for (double h : {h16, h32, h64}) EXPECT_NEAR(h, 1.0, 0.02);
   EXPECT_LT(std::abs(h64 - h32), 0.75 * std::abs(h32 - h16));  // differences shrink (about halve)
 }

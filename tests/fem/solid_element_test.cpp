@@ -167,15 +167,15 @@ TEST(SolidElement, CantileverTipDeflectionMatchesBeamTheory) {
   struct Case {
     SolidType type;
     int nx, nyz;
-    double tolerance;  // relative; the ratio measured (2026-11-26) in the comment
+    double tolerance;  // relative, about 1.2-2 times the error measured (2026-11-26, again 2026-11-28)
   };
   const Case cases[] = {
-      {SolidType::Hexa8, 20, 2, 0.005},    // 0.9984
-      {SolidType::Hexa20, 10, 1, 0.005},   // 0.9988
-      {SolidType::Penta6, 40, 4, 0.035},   // 0.9703: no bubble functions, slow convergence in bending
-      {SolidType::Penta15, 10, 1, 0.005},  // 0.9988
-      {SolidType::Tetra4, 80, 8, 0.06},    // 0.9486: the constant-strain tetrahedron (0.824 at 40 x 4 x 4)
-      {SolidType::Tetra10, 10, 2, 0.005},  // 0.9994
+      {SolidType::Hexa8, 20, 2, 0.003},     // 0.9984
+      {SolidType::Hexa20, 10, 1, 0.002},    // 0.9988
+      {SolidType::Penta6, 40, 4, 0.035},    // 0.9703: no bubble functions, slow convergence in bending
+      {SolidType::Penta15, 10, 1, 0.002},   // 0.9988
+      {SolidType::Tetra4, 80, 8, 0.06},     // 0.9486: the constant-strain tetrahedron (0.824 at 40 x 4 x 4)
+      {SolidType::Tetra10, 10, 2, 0.0012},  // 0.99935
   };
   const double E = 1.0e4, L = 10, P = 1;
   const double I = 1.0 / 12, G = E / 2, A = 1;
@@ -233,7 +233,7 @@ TEST(SolidElement, Hexa8BubbleModesAvoidShearLocking) {
     for (const auto& [id, l] : lattice)
       if (l[0] == 2 * box.nx) w -= translation(m, g, u, id).z() / 4;
     if (bubbles)
-      EXPECT_NEAR(w / reference, 1.0, 0.02);
+      EXPECT_NEAR(w / reference, 1.0, 0.006);  // measured 3.5e-3 (2026-11-28)
     else
       EXPECT_LT(w / reference, 0.75);  // locked
   }

@@ -49,14 +49,15 @@ fem::ConstrainedSystem constrained(const fem::Model& m, const fem::GlobalMatrice
 }  // namespace
 
 // BAR-CC-GIV: cantilever, 4 CBAR, WTMASS, lumped mass; MYSTRAN 10.68719 / 62.81653 / 166.3460 /
-// 289.9396 Hz, expected agreement 1e-5.
+// 289.9396 Hz. The 7 printed digits are good to 4.7e-7 relative at most; measured (2026-11-28)
+// largest difference 2.9e-7, tolerance 1e-6 (twice the print rounding; also for BAR-FF-GIV).
 TEST(ValidationModes, BarCantilever) {
   const fem::Model m = deck("mystran_cbar_cantilever_and_freefree_modes/BAR-CC-GIV.DAT");
   const fem::GlobalMatrices g = fem::assemble(m, fem::assembly_options(m));
   const auto lam = eigenvalues(constrained(m, g));
   const double ref[4] = {10.68719, 62.81653, 166.3460, 289.9396};
   ASSERT_GE(lam.size(), 4u);
-  for (int i = 0; i < 4; ++i) EXPECT_NEAR(hz(lam[i]) / ref[i], 1.0, 1e-5) << "mode " << i + 1;
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(hz(lam[i]) / ref[i], 1.0, 1e-6) << "mode " << i + 1;
 }
 
 // BAR-FF-GIV: the same bar free-free: two rigid modes, then 59.11978 / 150.0817 / 271.5359 Hz.
@@ -67,7 +68,7 @@ TEST(ValidationModes, BarFreeFree) {
   ASSERT_EQ(lam.size(), 5u);
   EXPECT_LT(hz(lam[1]), 1e-4 * hz(lam[2]));
   const double ref[3] = {59.11978, 150.0817, 271.5359};
-  for (int i = 0; i < 3; ++i) EXPECT_NEAR(hz(lam[i + 2]) / ref[i], 1.0, 1e-5) << "mode " << i + 3;
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(hz(lam[i + 2]) / ref[i], 1.0, 1e-6) << "mode " << i + 3;
 }
 
 // ALL-ELEM-TEST-GIV: CBAR (BAROR), CROD, CQUAD4, CTRIA3, CELAS1, MAT1 with G given, SPC set 998;
@@ -81,14 +82,17 @@ TEST(ValidationModes, MixedElements) {
   ASSERT_GE(lam.size(), 4u);
   for (int i = 0; i < 4; ++i) {
     std::printf("ALL-ELEM mode %d: %.5f Hz (MYSTRAN %.5f, ratio %.5f)\n", i + 1, hz(lam[i]), ref[i], hz(lam[i]) / ref[i]);
-    EXPECT_NEAR(hz(lam[i]) / ref[i], 1.0, 1e-3) << "mode " << i + 1;  // issue 3 asks 1 %; 3e-5 reached
+    // issue 3 asks 1 %; measured (2026-11-28) 3.6e-5 at most (the shell formulations differ):
+    // tolerance 6e-5, about 1.7 times that
+    EXPECT_NEAR(hz(lam[i]) / ref[i], 1.0, 6e-5) << "mode " << i + 1;
   }
 }
 
 // CB-EXAMPLE-12: CBAR frame with pin flags, CONM2 with offsets (one on an RBE2 dependent grid),
 // SPC1; the SUPORT dofs (the Craig-Bampton boundary) held fixed: the fixed-interface eigenvalues
 // are the diagonal of MYSTRAN 17's KXX (mystran17_run_CB_matrices.txt, 15 digits; MYSTRAN 12.0
-// prints the same 3895.211 / 7011.163 / 8533.585), expected agreement 1e-6.
+// prints the same 3895.211 / 7011.163 / 8533.585). Measured (2026-11-28): 3.9e-15, round-off against
+// the 15 printed digits; tolerance 1e-12.
 TEST(ValidationModes, CraigBamptonFrameFixedInterface) {
   const fem::Model m = deck("mystran_craig_bampton_cbar_frame/CB-EXAMPLE-12.DAT");
   const fem::GlobalMatrices g = fem::assemble(m, fem::assembly_options(m));
@@ -102,5 +106,5 @@ TEST(ValidationModes, CraigBamptonFrameFixedInterface) {
   const auto lam = eigenvalues(c);
   const double ref[3] = {3.89521138255555e+03, 7.01116273348857e+03, 8.53358493285352e+03};
   ASSERT_GE(lam.size(), 3u);
-  for (int i = 0; i < 3; ++i) EXPECT_NEAR(lam[i] / ref[i], 1.0, 1e-6) << "mode " << i + 1 << ": " << lam[i];
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(lam[i] / ref[i], 1.0, 1e-12) << "mode " << i + 1 << ": " << lam[i];
 }

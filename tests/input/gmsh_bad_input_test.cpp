@@ -186,9 +186,21 @@ TEST(GmshBadInput, Parameters) {
   EXPECT_TRUE(mentions(read_error(test::source_dir() / "meshes" / "panel.bdf", o), {"panel.bdf: parameter 'refin' given for a Nastran deck"}));
   o.parameters = {{"refine", 0}};  // panel.geo checks its parameter with Error(): a gmsh error
   EXPECT_TRUE(mentions(read_error(panel_geo(), o), {"panel.geo: gmsh cannot read it: refine = 0: expected a whole number >= 1"}));
-  EXPECT_THROW(io::parse_gmsh_parameter("refine"), InputError);
-  EXPECT_THROW(io::parse_gmsh_parameter("refine=x"), InputError);
-  EXPECT_THROW(io::parse_gmsh_parameter("1x=2"), InputError);
+  // --parameter NAME=VALUE: the message quotes the argument, says what is wrong and the form expected
+  const auto parameter_error = [](const std::string& text) -> std::string {
+    try {
+      io::parse_gmsh_parameter(text);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    ADD_FAILURE() << "no error for '" << text << "'";
+    return "";
+  };
+  EXPECT_EQ(parameter_error("refine"), "parameter 'refine': no '='; expected NAME=VALUE, e.g. refine=8");
+  EXPECT_EQ(parameter_error("refine=x"), "parameter 'refine=x': the value 'x' is not a number; expected NAME=VALUE, e.g. refine=8");
+  EXPECT_EQ(parameter_error("1x=2"), "parameter '1x=2': the name must start with a letter or '_'; expected NAME=VALUE, e.g. refine=8");
+  EXPECT_EQ(parameter_error("re-fine=2"),
+            "parameter 're-fine=2': the name has a character other than letters, digits and '_'; expected NAME=VALUE, e.g. refine=8");
   EXPECT_EQ(io::parse_gmsh_parameter(" refine = 8 ").value, 8.0);
 }
 

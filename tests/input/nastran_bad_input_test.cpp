@@ -81,7 +81,7 @@ TEST(NastranBadInput, DuplicateIds) {
   EXPECT_TRUE(mentions(read_error(d + "CQUAD4,5,1,1,2,3,4\nCONM2,5,1,,1.\n"), {"deck.bdf:8: CONM2 5", "duplicate element id", "deck.bdf:7"}));
   EXPECT_TRUE(mentions(read_error(d + "PROD,1,1,1.\n"), {"PROD 1", "duplicate property id", "deck.bdf:2"}));
   EXPECT_TRUE(mentions(read_error(d + "MAT1,1,1.,,.3\n"), {"MAT1 1", "duplicate material id"}));
-  EXPECT_TRUE(mentions(read_error(d + "SPOINT,3\n"), {"SPOINT 3", "also a GRID"}));
+  EXPECT_TRUE(mentions(read_error(d + "SPOINT,3\n"), {"deck.bdf:7: SPOINT 3: the id is also a GRID (at deck.bdf:5); expected grid and scalar point ids to be distinct"}));
   EXPECT_TRUE(mentions(read_error(d + "EIGRL,1,,,3\nEIGR,1,LAN\n"), {"EIGR 1", "duplicate method id"}));
   EXPECT_TRUE(mentions(read_error(d + "PARAM,WTMASS,1.\nPARAM,WTMASS,2.\n"), {"deck.bdf:8: PARAM WTMASS", "a second value"}));
   EXPECT_TRUE(mentions(read_error(d + "GRDSET,,1\nGRDSET,,2\n"), {"deck.bdf:8: GRDSET", "a second GRDSET", "deck.bdf:7"}));
@@ -197,7 +197,7 @@ TEST(NastranBadInput, InconsistentCards) {
   EXPECT_TRUE(mentions(read_error(d + "RBE3,9,,1,123\n"), {"RBE3 9, field 6 (WT1): blank; expected at least one weight"}));
   EXPECT_TRUE(mentions(read_error(d + "RBE3,9,,1,123,1,123,2\n"), {"RBE3 9, field 6 (WT1): got integer '1'", "weighting factor"}));
   EXPECT_TRUE(mentions(read_error(d + "RBE3,9,,1,123,1.,123\n"), {"RBE3 9", "no grid after the components"}));
-  EXPECT_TRUE(mentions(read_error(d + "RBE3,9,,1,123,1.,123,2,3\n,UM,2\n"), {"RBE3 9", "CMi"}));
+  EXPECT_TRUE(mentions(read_error(d + "RBE3,9,,1,123,1.,123,2,3\n,UM,2\n"), {"deck.bdf:8: RBE3 9, field 4 (CMi): blank; expected component numbers 1-6 without repeats"}));
   EXPECT_TRUE(mentions(read_error(d + "RBE3,9,,1,123,-1.,123,2,3\n"), {"RBE3 9, field 6 (WTi): got real '-1.'", ">= 0"}));
   EXPECT_TRUE(mentions(read_error(d + "EIGRL,1,10.,5.\n"), {"EIGRL 1, field 4 (V2): got real '5.'; expected V2 >= V1"}));
   EXPECT_TRUE(mentions(read_error(d + "DMIG,K,0,6,3,0\n"), {"DMIG K, field 5 (TIN): got integer '3'", "complex matrices are not supported"}));

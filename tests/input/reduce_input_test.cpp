@@ -39,16 +39,27 @@ TEST(ReduceInput, BadInterfaceNodesNameTheNodeAndWhy) {
 }
 
 TEST(ReduceInput, UsageErrors) {
-  expect_error("reduce " + q(yoke()), 2, {"missing --interface"});
-  expect_error("reduce " + q(yoke()) + " --interface 1,5 --modes 3 --fmax 10", 2, {"either --modes or --fmax"});
-  expect_error("reduce " + q(yoke()) + " --interface 1,5 --modes -2", 2, {"--modes"});
-  expect_error("reduce " + q(yoke()) + " --interface 1,,5", 2, {"--interface"});
-  expect_error("reduce " + q(yoke()) + " --interface 1,5 --fmax -1", 2, {"--fmax"});
-  expect_error("reduce " + q(yoke()) + " --interface 1,5 --eigensolver lapack", 2, {"--eigensolver"});
-  expect_error("reduce " + q(test::source_dir() / "meshes" / "missing.bdf") + " --interface 1", 3, {"missing.bdf"});
+  expect_error("reduce " + q(yoke()), 2,
+               {"seflex reduce: missing --interface (grid ids like 1,3,4; aset, bset, suport; or a node set name)"});
+  expect_error("reduce " + q(yoke()) + " --interface 1,5 --modes 3 --fmax 10", 2,
+               {"seflex reduce: give either --modes or --fmax, not both"});
+  expect_error("reduce " + q(yoke()) + " --interface 1,5 --modes -2", 2, {"seflex reduce: option --modes expects a number >= 0"});
+  expect_error("reduce " + q(yoke()) + " --interface 1,,5", 2,
+               {"seflex reduce: option --interface: '1,,5': expected grid ids or node set names separated by commas"});
+  expect_error("reduce " + q(yoke()) + " --interface 1,5 --fmax -1", 2, {"seflex reduce: option --fmax expects a frequency > 0 (Hz)"});
+  expect_error("reduce " + q(yoke()) + " --interface 1,5 --eigensolver lapack", 2,
+               {"seflex reduce: option --eigensolver expects block, spectra, arpack or dense, got 'lapack'"});
+  expect_error("reduce " + q(test::source_dir() / "meshes" / "missing.bdf") + " --interface 1", 3,
+               {"missing.bdf: no such file; expected a Nastran deck"});
   const auto r = test::run_seflex("export " + q(yoke()) + " --op4 x.op4");
   EXPECT_EQ(r.exit_code, 3) << r.err;  // not a superelement file
-  EXPECT_EQ(test::run_seflex("export x.se").exit_code, 2);
+  EXPECT_NE(r.err.find(yoke().string() + ": not a seflex superelement file (expected the magic bytes 'SEFLEXSE' at the start)"),
+            std::string::npos)
+      << r.err;
+  const auto nothing = test::run_seflex("export x.se");
+  EXPECT_EQ(nothing.exit_code, 2) << nothing.err;
+  EXPECT_NE(nothing.err.find("seflex export: nothing to export: give --dmig FILE and/or --op4 FILE"), std::string::npos)
+      << nothing.err;
 }
 
 void expect_dmig_error(const std::string& bulk, const std::vector<std::string>& parts) {

@@ -59,7 +59,7 @@ TEST(SolidInput, ReaderErrorsNameTheField) {
     EXPECT_TRUE(mentions(read_error(cube("CHEXA,11,2,1,2,3,4,5,6\n,7,8,,99\n")), {"CHEXA 11, G10: references grid 99, which is not defined"}));
     EXPECT_TRUE(mentions(read_error(cube("CHEXA,11,2,1,2,3,4,5,6\n,7,8,,3\n")), {"CHEXA 11", "G10", "grid 3 repeats G3"}));
   }
-  EXPECT_TRUE(mentions(read_error(cube("CTETRA,11,2,1,2,3,3\n")), {"CTETRA 11", "G4", "repeats G3"}));
+  EXPECT_TRUE(mentions(read_error(cube("CTETRA,11,2,1,2,3,3\n")), {"deck.bdf:13: CTETRA 11, field 7 (G4): grid 3 repeats G3; expected distinct grids"}));
   EXPECT_TRUE(mentions(read_error(cube("", "PSOLID,2,1,,,,,FFLUID\n")), {"PSOLID 2", "FCTN", "expected SMECH, PFLUID (a fluid, listed as unsupported) or blank"}));
   EXPECT_TRUE(mentions(read_error(cube("", "PSOLID,2,1,,FOUR\n")), {"PSOLID 2", "IN", "0/BUBBLE, 2/TWO, 3/THREE"}));
   EXPECT_TRUE(mentions(read_error(cube("PLOAD4,3,10,1.,,,,1,7\n,,0.,0.,1.,LINE\n")), {"PLOAD4 3", "SORL", "edge line loads"}));
@@ -68,7 +68,7 @@ TEST(SolidInput, ReaderErrorsNameTheField) {
 TEST(SolidInput, ModelErrorsNameTheCard) {
   // PSOLID referencing a material that is not a MAT1; reduced shear integration of a CHEXA 8 (IN =
   // TWO) is modelled (tests/fem/solid_thermal_test.cpp).
-  EXPECT_TRUE(mentions(test::read_error(cube("", "PSOLID,2,9\n")), {"PSOLID 2", "MID", "9"}));
+  EXPECT_TRUE(mentions(test::read_error(cube("", "PSOLID,2,9\n")), {"deck.bdf:2: PSOLID 2, field 3 (MID): references MAT1 9, which is not defined; expected the id of a MAT1 or MAT9 card"}));
   {
     const fem::Model m = read_deck(cube("", "PSOLID,2,1,,TWO\n"));
     EXPECT_NO_THROW(fem::assemble(m, fem::assembly_options(m)));

@@ -31,19 +31,24 @@ void expect_input_error(const test::RunResult& r, std::initializer_list<const ch
 }
 
 TEST(SolutionBadInput, ModesWithoutMethod) {
-  expect_input_error(run("modes", "SPC = 1\n"), {"bad.bdf", "METHOD", "--count"});
+  expect_input_error(run("modes", "SPC = 1\n"), {"error: bad.bdf: case control selects no METHOD (EIGRL/EIGR) for normal "
+                                                 "modes; add METHOD = <sid> or give the number of modes with --count"});
 }
 
 TEST(SolutionBadInput, ModesWithUndefinedMethod) {
-  expect_input_error(run("modes", "SPC = 1\nMETHOD = 9\n"), {"bad.bdf", "METHOD = 9", "EIGRL"});
+  expect_input_error(run("modes", "SPC = 1\nMETHOD = 9\n"),
+                     {"error: bad.bdf: case control METHOD: the global case control: METHOD = 9 selects no EIGRL or "
+                      "EIGR card; normal modes (SOL 103) cannot run without it"});
 }
 
 TEST(SolutionBadInput, ModesWithAnUnboundedEigrl) {
-  expect_input_error(run("modes", "SPC = 1\nMETHOD = 2\n"), {"bad.bdf:", "EIGRL 2", "ND"});
+  expect_input_error(run("modes", "SPC = 1\nMETHOD = 2\n"),
+                     {"error: bad.bdf:15: EIGRL 2: neither ND (number of roots) nor F2 (upper frequency) is given",
+                      "set one of them or use --count"});
 }
 
 TEST(SolutionBadInput, ModesWithAnUndefinedSubcase) {
-  expect_input_error(run("modes --subcase 4", "SPC = 1\nMETHOD = 1\n"), {"bad.bdf", "SUBCASE 4"});
+  expect_input_error(run("modes --subcase 4", "SPC = 1\nMETHOD = 1\n"), {"error: bad.bdf: case control: SUBCASE 4 is not defined"});
 }
 
 // Nastran runs a subcase without LOAD (its enforced displacements drive it); seflex too, and warns
@@ -61,19 +66,29 @@ TEST(SolutionBadInput, StaticWithoutLoadWarns) {
 }
 
 TEST(SolutionBadInput, StaticOfAnUnsupportedModel) {
-  expect_input_error(run("static", "LOAD = 7\n"), {"bad.bdf", "singular at grid", "SPC"});
+  expect_input_error(run("static", "LOAD = 7\n"), {"error: bad.bdf: statics: the constrained stiffness matrix is singular at "
+                                                  "grid 3 component 2", "constrain it with SPC/SPC1 or GRID PS"});
 }
 
 TEST(SolutionBadInput, StaticWithAnUndefinedLoadSet) {
-  expect_input_error(run("static", "SPC = 1\nLOAD = 8\n"), {"bad.bdf", "8"});
+  expect_input_error(run("static", "SPC = 1\nLOAD = 8\n"),
+                     {"error: bad.bdf: case control LOAD: the global case control: LOAD = 8 selects no load card",
+                      "linear statics (SOL 101) cannot run without it"});
 }
 
 TEST(SolutionBadInput, MissingDeckAndBadOptions) {
   test::TempDir dir;
-  EXPECT_EQ(test::run_seflex("modes missing.bdf", dir.path()).exit_code, 3);
-  EXPECT_EQ(test::run_seflex("static", dir.path()).exit_code, 2);
-  EXPECT_EQ(test::run_seflex("modes x.bdf --count many", dir.path()).exit_code, 2);
-  EXPECT_EQ(test::run_seflex("modes x.bdf --factorization lu", dir.path()).exit_code, 2);
+  // exit 3 for bad input, 2 for a bad command line; each message names the file or option, what it
+  // got and what was expected
+  const auto expect_message = [&](const std::string& args, int code, const std::string& message) {
+    const auto r = test::run_seflex(args, dir.path());
+    EXPECT_EQ(r.exit_code, code) << args << "\n" << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << args << "\n" << r.err << "\nlacks: " << message;
+  };
+  expect_message("modes missing.bdf", 3, "error: missing.bdf: no such file; expected a Nastran deck");
+  expect_message("static", 2, "seflex static: missing DECK\nusage: seflex static DECK");
+  expect_message("modes x.bdf --count many", 2, "seflex modes: option --count expects an integer, got 'many'");
+  expect_message("modes x.bdf --factorization lu", 2, "seflex modes: option --factorization expects cholmod or ldlt, got 'lu'");
 }
 
 }  // namespace

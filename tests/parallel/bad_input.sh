@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Bad input under MPI (issue 16): `mpirun -n 2 seflex modes DECK --backend slepc` on a deck with an
 # error stops every rank with exit 3 and prints the reader's message once (rank 0), not once per rank.
-# A missing --backend value and a missing deck are checked too, and a distributed backend plugin that is
-# missing or not seflex's (SEFLEX_PARALLEL_PLUGIN): exit 1, the file named. Usage: bad_input.sh MPIRUN SEFLEX OUTDIR
+# A missing deck is checked too, and a distributed backend plugin that is missing or not seflex's
+# (SEFLEX_PARALLEL_PLUGIN): exit 1, the file named. (A command-line usage error such as a missing
+# --backend value is printed by every rank, exit 2: not checked here.) Usage: bad_input.sh MPIRUN SEFLEX OUTDIR
 set -u
 mpirun=$1 seflex=$2 out=$3
 mkdir -p "$out"
@@ -34,7 +35,7 @@ check() {  # name, expected exit code, expected message (grep -E), command...
   echo "ok   $name: exit $rc, $(grep -E "$pattern" "$out/$name.err")"
 }
 check undefined_pshell 3 "^error: .*bad_pshell.bdf:10: CQUAD4 1, field 3 \(PID\): references property 7, which is not defined" "$mpirun" -n 2 "$seflex" modes "$deck" --backend slepc
-check missing_deck 3 "^error: .*nowhere.bdf" "$mpirun" -n 2 "$seflex" modes "$out/nowhere.bdf" --backend slepc
+check missing_deck 3 "^error: .*nowhere.bdf: no such file; expected a Nastran deck \(rank 0 of 2\)$" "$mpirun" -n 2 "$seflex" modes "$out/nowhere.bdf" --backend slepc
 check missing_plugin 1 "^error: the distributed backend \(libseflex_parallel.so\) is not installed: looked for $out/no-plugin.so; set SEFLEX_PARALLEL_PLUGIN to its path$" \
   env SEFLEX_PARALLEL_PLUGIN="$out/no-plugin.so" "$seflex" modes "$deck" --backend slepc
 not_plugin=$(ldd "$seflex" | awk '$1 ~ /^libm[.]so/ {print $3}')

@@ -74,7 +74,7 @@ TEST(Advise, StiffLinkRigidIsEnough) {
   const io::AdviseReport r = io::advise(io::read_scene(scene), o);
   ASSERT_TRUE(r.horizon_at_lock);
   EXPECT_EQ(r.horizon_lock, "lock.H1");
-  EXPECT_NEAR(r.horizon, fall_time(60 * kDeg, 1.0, 9.81), 2e-3 * r.horizon);
+  EXPECT_NEAR(r.horizon, fall_time(60 * kDeg, 1.0, 9.81), 2e-4 * r.horizon);  // measured 1.1e-4 (2026-11-28)
   const io::AdviseRow& rigid = row(r, "rigid");
   ASSERT_TRUE(rigid.ran) << rigid.failure;
   const double estimate = quasi_static_ratio(7e10);
@@ -123,7 +123,7 @@ TEST(Advise, SoftLinkNeedsFlexibility) {
   EXPECT_EQ(ffrf.multipliers, 6);            // one hinge to ground: 6 constraint equations
   EXPECT_EQ(ffrf.dofs, 6 + (12 + 4 - 6) + 1);  // frame, frame-clamped modes of the 12 interface dofs
                                                // and 4 internal modes, hinge angle
-  EXPECT_NEAR(rigid_lm.max_error, rigid.max_error, 0.02 * rigid.max_error);
+  EXPECT_NEAR(rigid_lm.max_error, rigid.max_error, 4e-5 * rigid.max_error);  // measured 2.0e-5 (2026-11-28)
   EXPECT_FALSE(rigid_lm.within);
 }
 

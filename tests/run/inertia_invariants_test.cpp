@@ -171,7 +171,21 @@ TEST(InertiaInvariants, RefusedWithoutInvariantsOrMesh) {
   s.cells.clear();
   const AicElement e = make_aic_element(s);
   EXPECT_FALSE(e.inv.present());
-  EXPECT_THROW(se::compute_inertia_invariants(s), InputError);
+  const auto invariants_error = [](const se::Superelement& body) -> std::string {
+    try {
+      se::compute_inertia_invariants(body);
+    } catch (const InputError& err) {
+      return err.what();
+    }
+    ADD_FAILURE() << "no InputError";
+    return "";
+  };
+  EXPECT_EQ(invariants_error(s), "superelement 'lframe': the inertia invariants need the recovery matrix (6 x 0 FE node "
+                                 "rows by " + std::to_string(s.size()) + " columns)");
+  se::Superelement no_mass = test::craig_bampton(fe, {0, 8, 6}, 3, 0, "lframe");
+  no_mass.M_fe.resize(0, 0);
+  EXPECT_EQ(invariants_error(no_mass), "superelement 'lframe': the inertia invariants need the FE mass matrix M_fe (" +
+                                           std::to_string(6 * no_mass.p_BoI_B.cols()) + " square)");
   ModelBuilder mb;
   const auto sei = mb.add_superelement(s);
   std::vector<NodeIndex> nodes;

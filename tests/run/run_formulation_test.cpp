@@ -102,7 +102,7 @@ TEST(RunFormulation, FloatingFrameRunsWithoutTheMesh) {
   EXPECT_LT(b.back(), -60.0);
   const double d = max_difference(a, b);
   std::printf("FFRF-LM with and without the mesh part: max |phi difference| = %.2e deg\n", d);
-  EXPECT_LT(d, 1e-6);
+  EXPECT_LT(d, 1e-12);  // the same arithmetic either way: measured 0 (2026-11-28)
 }
 
 TEST(RunFormulation, RejectsUnknownFormulation) {

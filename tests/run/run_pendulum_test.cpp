@@ -124,10 +124,11 @@ output: {interval: 0.002}
   const double d = (s.p_OBo + s.p_BoCm_B).norm();  // hinge at the origin (grid 1)
   const double I_O = s.I_Cm_B(2, 2) + s.mass * d * d;
   const double T_ref = 2 * M_PI * std::sqrt(I_O / (s.mass * 9.81 * d));
-  EXPECT_NEAR(T, T_ref, 2e-4 * T_ref) << "T = " << T << " s, analytic " << T_ref << " s";
+  // measured (2026-11-28): 1.0e-5 relative (rate zero crossings interpolated in 2 ms samples); tolerance 2e-5
+  EXPECT_NEAR(T, T_ref, 2e-5 * T_ref) << "T = " << T << " s, analytic " << T_ref << " s";
   double amp = 0;
   for (double x : phi) amp = std::max(amp, std::abs(x));
-  EXPECT_NEAR(amp, 2.0 * T_ref / (2 * M_PI), 0.01);  // theta0 = rate0 / Omega
+  EXPECT_NEAR(amp, 2.0 * T_ref / (2 * M_PI), 2.5e-6);  // theta0 = rate0 / Omega (deg); measured 1.2e-6 (2026-11-28)
 }
 
 // Energy conservation (formulation.md T11): no damping, rho_inf = 1; the total-energy column of
@@ -180,9 +181,11 @@ output: {interval: 0.01}
   std::size_t first = 0;
   while (first < latched.size() && latched[first] == 0) ++first;
   ASSERT_LT(first, latched.size());
-  EXPECT_NEAR(t[first], t_ref, 1e-5 * t_ref) << "the latching sample is at the located crossing";
-  EXPECT_NEAR(phi[first], 60.0, 1e-6);
-  EXPECT_NEAR(t.back(), t[first] + 0.5, 0.02);  // stop rule: 0.5 s after the last lock latched
+  // constant torque: the motion is quadratic in time, which the integrator reproduces; measured
+  // (2026-11-28) 6.7e-16 s and 7.1e-15 deg, round-off
+  EXPECT_NEAR(t[first], t_ref, 1e-12 * t_ref) << "the latching sample is at the located crossing";
+  EXPECT_NEAR(phi[first], 60.0, 1e-12);
+  EXPECT_NEAR(t.back(), t[first] + 0.5, 0.004);  // stop rule: 0.5 s after the last lock latched (measured 1.9e-3)
   for (std::size_t i = first; i < phi.size(); ++i) EXPECT_NEAR(phi[i], 60.0, 5.0);
   const std::string events = read_file(dir / "out" / "events.csv");
   EXPECT_NE(events.find(",lock,lock.HL1,"), std::string::npos) << events;

@@ -42,7 +42,7 @@ TEST(ModesCli, BarCantileverTableAndCsv) {
   const double cycles[4] = {10.68719, 62.81653, 166.3460, 289.9396};
   for (int j = 0; j < 4; ++j) {
     EXPECT_EQ(rows[j][0], j + 1);
-    EXPECT_NEAR(rows[j][2] / cycles[j], 1.0, 1e-5);
+    EXPECT_NEAR(rows[j][2] / cycles[j], 1.0, 1e-6);  // MYSTRAN's 7 digits: 4.7e-7; measured 2.9e-7
     EXPECT_NEAR(std::sqrt(rows[j][1]) / (2 * M_PI), rows[j][2], 1e-12 * rows[j][2]);
   }
 }
@@ -87,7 +87,7 @@ TEST(ModesCli, VtkModeShapesReadBack) {
   vtkDataArray* hz = grid->GetFieldData()->GetArray("frequency_hz");
   ASSERT_NE(hz, nullptr);
   ASSERT_EQ(hz->GetNumberOfTuples(), 4);
-  EXPECT_NEAR(hz->GetTuple1(0) / 10.68719, 1.0, 1e-5);
+  EXPECT_NEAR(hz->GetTuple1(0) / 10.68719, 1.0, 1e-6);
 }
 
 // A free plate large enough for the Krylov backends: Spectra, ARPACK and block Lanczos print the

@@ -14,14 +14,15 @@ namespace {
 
 fem::Model deck(const char* rel) { return io::read_nastran(test::validation_dir() / rel); }
 
-// BAR-CC-GIV.reference.txt: REAL EIGENVALUES (EIGR GIV, ND = 4, NORM = MAX), 1e-5 in frequency.
+// BAR-CC-GIV.reference.txt: REAL EIGENVALUES (EIGR GIV, ND = 4, NORM = MAX). Frequencies to 1e-6: the
+// 7 printed digits are good to 4.7e-7 relative at most; measured (2026-11-28) 2.9e-7 (1.8e-7 free-free).
 TEST(ValidationModes, BarCantileverMatchesMystran) {
   const auto r = reduction::solve_normal_modes(deck("mystran_cbar_cantilever_and_freefree_modes/BAR-CC-GIV.DAT"));
   ASSERT_EQ(r.eigenvalues.size(), 4);
   const double cycles[4] = {1.068719E+01, 6.281653E+01, 1.663460E+02, 2.899396E+02};
   const double gen_mass[4] = {6.800571E-04, 9.499997E-04, 1.461918E-03, 1.590132E-03};
   for (int j = 0; j < 4; ++j) {
-    EXPECT_NEAR(r.cycles()(j) / cycles[j], 1.0, 1e-5) << "mode " << j + 1;
+    EXPECT_NEAR(r.cycles()(j) / cycles[j], 1.0, 1e-6) << "mode " << j + 1;
     EXPECT_NEAR(r.generalized_mass(j) / gen_mass[j], 1.0, 2e-6) << "mode " << j + 1;
   }
 }
@@ -36,18 +37,18 @@ TEST(ValidationModes, BarFreeFreeMatchesMystran) {
   ASSERT_EQ(r.eigenvalues.size(), 5);
   EXPECT_LT(r.cycles()(1), 1e-4 * r.cycles()(2));
   const double elastic[3] = {59.11978, 150.0817, 271.5359};
-  for (int j = 0; j < 3; ++j) EXPECT_NEAR(r.cycles()(j + 2) / elastic[j], 1.0, 1e-5) << "mode " << j + 3;
+  for (int j = 0; j < 3; ++j) EXPECT_NEAR(r.cycles()(j + 2) / elastic[j], 1.0, 1e-6) << "mode " << j + 3;
   EXPECT_NEAR(r.generalized_mass(2) / 9.738369E-04, 1.0, 2e-6);
 }
 
 // ALL-ELEM-TEST-GIV (CBAR, CROD, CQUAD4, CTRIA3, CELAS1; SPC 998, EIGR 2 with ND = 4, NORM = MAX):
-// within 1 % of MYSTRAN's 34.46520 / 39.34327 / 63.02253 / 74.00890 Hz (README: shell formulations
-// differ, so 1 % is the expected agreement).
-TEST(ValidationModes, MixedElementShelfWithinOnePercent) {
+// MYSTRAN's 34.46520 / 39.34327 / 63.02253 / 74.00890 Hz. The README expects 1 % (the shell
+// formulations differ); measured (2026-11-28) 3.6e-5 at most, so the tolerance is 6e-5 (1.7 times).
+TEST(ValidationModes, MixedElementShelfMatchesMystran) {
   const auto r = reduction::solve_normal_modes(deck("mystran_mixed_cbar_crod_cquad4_ctria3_celas_modes/ALL-ELEM-TEST-GIV.DAT"));
   ASSERT_EQ(r.eigenvalues.size(), 4);
   const double cycles[4] = {34.46520, 39.34327, 63.02253, 74.00890};
-  for (int j = 0; j < 4; ++j) EXPECT_NEAR(r.cycles()(j) / cycles[j], 1.0, 0.01) << "mode " << j + 1;
+  for (int j = 0; j < 4; ++j) EXPECT_NEAR(r.cycles()(j) / cycles[j], 1.0, 6e-5) << "mode " << j + 1;
 }
 
 // CB-EXAMPLE-12: the Craig-Bampton frame's fixed-interface modes, i.e. the normal modes with the
