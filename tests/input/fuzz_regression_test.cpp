@@ -202,6 +202,32 @@ TEST(FuzzRegression, GmshBinaryMsh2ElementBlocksAreBounded) {
   EXPECT_EQ(m.bars.size(), 14u);
 }
 
+// A binary format 2 file (fuzz_gmsh, 2026-11-28 campaign, found after 173 s): element block 19 has type
+// 0, which neither the check's node table nor gmsh knows. The check stopped walking the blocks there;
+// gmsh reads on (an element of an unknown type is 1 + tags ints to it), took later bytes for a block
+// header and asked for 12,872,318,976 bytes. A block of a type the table does not know is now refused,
+// as a text MSH 2 element line of such a type already was: its size, and so where the next header
+// starts, would be gmsh's guess. The same in the format 4 walks, text and binary.
+TEST(FuzzRegression, GmshElementBlockOfAnUnknownTypeIsRefused) {
+  EXPECT_TRUE(mentions(msh_error("element_type_unknown_binary_msh2.msh"),
+                       {"element_type_unknown_binary_msh2.msh:27: $Elements: element block 19 has element type 0, which "
+                        "seflex does not read; expected a type of the gmsh reference manual (1-31, 92, 93"}));
+  // The panel in format 4.1 text: the first block's type 15 (point) made 99.
+  std::string text = test::read_file(test::data_dir() / "gmsh" / "panel_msh4.msh");
+  const std::size_t at = text.find("$Elements\n61 61 1 61\n0 1 15 1\n");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at + 25, 2, "99");
+  EXPECT_TRUE(mentions(msh_text_error("t.msh", text), {"t.msh:244: $Elements: element block 1 has element type 99"}));
+  // The panel in format 4.1 binary: the first block's type (after 4 size_t counts and two ints) made 99.
+  std::string binary = test::read_file(test::data_dir() / "gmsh" / "panel_msh4_binary.msh");
+  const std::size_t e = binary.find("$Elements\n");
+  ASSERT_NE(e, std::string::npos);
+  const std::size_t type_at = e + 10 + 4 * 8 + 2 * 4;
+  ASSERT_EQ(binary[type_at], 15);
+  binary[type_at] = 99;
+  EXPECT_TRUE(mentions(msh_text_error("b.msh", binary), {"$Elements: element block 1 of 61 has element type 99"}));
+}
+
 // A format 4 $PhysicalNames line "5 13 "interface_beam"" (the fuzzer changed the panel's dimension 0 to 5;
 // minimised by hand to that one line): libgmsh 4.8 crashed (SEGV in GModel::setPhysicalName) on a
 // dimension outside 0-3. Every physical name's dimension is now checked first.
