@@ -219,28 +219,29 @@ class LoadBuilder {
   }
 
   /// Axes (columns, basic) of the rectangular system `cid` of an inertia load card.
-  Eigen::Matrix3d rectangular_axes(int cid, const CardRef& ref, const char* card, int sid) const {
+  /// `field`: where the card holds CID, as the messages name fields ("3 (CID)").
+  Eigen::Matrix3d rectangular_axes(int cid, const CardRef& ref, const char* card, int sid, const char* field) const {
     if (cid == 0) return Eigen::Matrix3d::Identity();
     const auto it = m_.coord_index.find(cid);
     if (it == m_.coord_index.end())
-      detail::fail(m_, ref, card, sid, "CID",
+      detail::fail(m_, ref, card, sid, field,
                    "references coordinate system " + std::to_string(cid) + ", which is not defined");
     const CoordSys& c = m_.coords[it->second];
     if (c.type != CoordType::Rectangular)
-      detail::fail(m_, ref, card, sid, "CID",
+      detail::fail(m_, ref, card, sid, field,
                    "references coordinate system " + std::to_string(cid) +
                        ", which is not rectangular; expected a rectangular system (CORD1R/CORD2R) or 0");
     return c.axes;
   }
 
   void gravity(const GravityLoad& g, double scale) {
-    const Eigen::Vector3d a = rectangular_axes(g.cid, g.ref, "GRAV", g.sid) * (g.a * g.n);  // basic
+    const Eigen::Vector3d a = rectangular_axes(g.cid, g.ref, "GRAV", g.sid, "3 (CID)") * (g.a * g.n);  // basic
     Eigen::VectorXd& A = acc();
     for (std::size_t gi = 0; gi < m_.grids.size(); ++gi) add_grid(gi, 1, a, scale, A);
   }
 
   void rotation(const RotationalLoad& r, double scale) {
-    const Eigen::Vector3d R = rectangular_axes(r.cid, r.ref, "RFORCE", r.sid) * r.r;
+    const Eigen::Vector3d R = rectangular_axes(r.cid, r.ref, "RFORCE", r.sid, "4 (CID)") * r.r;
     const Eigen::Vector3d w = kTwoPi * r.a * R, alpha = kTwoPi * r.racc * R;  // rad per unit time (squared)
     Eigen::Vector3d x_axis = Eigen::Vector3d::Zero();
     if (r.grid != 0) x_axis = m_.grids[detail::grid_index(m_, r.grid, r.ref, "RFORCE", r.sid, "3 (G)")].x_basic;

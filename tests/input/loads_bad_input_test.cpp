@@ -62,9 +62,12 @@ TEST(LoadsBadInput, SelectedLoadReferencesAreChecked) {
   EXPECT_TRUE(mentions(solve_error(deck("LOAD = 5\n", "PLOAD2,5,1.,99\n")), {"PLOAD2 5", "element 99 is not defined"}));
   // GRAV/RFORCE in a system that does not exist or is not rectangular, RFORCE about a missing grid
   const std::string cyl = "CORD2C,8,,0.,0.,0.,0.,0.,1.,+C\n+C,1.,0.,0.\n";
-  EXPECT_TRUE(mentions(solve_error(deck("LOAD = 3\n", "GRAV,3,6,9.81,0.,0.,1.\n")), {"deck.bdf:18: GRAV 3, field CID: references coordinate system 6, which is not defined"}));
+  EXPECT_TRUE(mentions(solve_error(deck("LOAD = 3\n", "GRAV,3,6,9.81,0.,0.,1.\n")), {"deck.bdf:18: GRAV 3, field 3 (CID): references coordinate system 6, which is not defined"}));
   EXPECT_TRUE(mentions(solve_error(deck("LOAD = 3\n", cyl + "GRAV,3,8,9.81,0.,0.,1.\n")),
-                       {"GRAV 3", "CID", "not rectangular"}));
+                       {"GRAV 3, field 3 (CID): references coordinate system 8, which is not rectangular; expected a "
+                        "rectangular system (CORD1R/CORD2R) or 0"}));
+  EXPECT_TRUE(mentions(solve_error(deck("LOAD = 4\n", cyl + "RFORCE,4,,8,1.,0.,0.,1.\n")),
+                       {"RFORCE 4, field 4 (CID): references coordinate system 8, which is not rectangular"}));
   EXPECT_TRUE(
       mentions(solve_error(deck("LOAD = 4\n", "RFORCE,4,77,,1.,0.,0.,1.\n")), {"deck.bdf:18: RFORCE 4, field 3 (G): references GRID 77, which is not defined"}));
   // an unselected GRAV/RFORCE/PLOAD2 set is a warning, whatever it references; the deck runs
