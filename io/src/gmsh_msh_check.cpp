@@ -74,6 +74,19 @@ class Cursor {
     return s_.substr(start, end - start);
   }
 
+  /// What C's fgets(buf, size) reads: through the next newline, but at most size - 1 bytes (the rest
+  /// of a longer line is left for the next read, as libgmsh leaves it).
+  std::string_view fgets(std::size_t size) {
+    const std::size_t start = pos_;
+    while (pos_ < s_.size() && pos_ - start < size - 1) {
+      const bool eol = s_[pos_] == '\n';
+      advance();
+      if (eol) break;
+    }
+    tokens_known_ = false;
+    return s_.substr(start, pos_ - start);
+  }
+
   /// A little-endian unsigned number of `width` bytes (4 or 8); false at the end of the section.
   bool binary(std::size_t width, std::uint64_t& value) {
     if (remaining_bytes() < width) return false;
@@ -244,8 +257,13 @@ class Checker {
   // libgmsh 4.8 crashes (SEGV in GModel::setPhysicalName; fuzz_gmsh) on a dimension outside 0-3 in
   // formats 4.0 and 4.1; its format 2 reader takes such a line without harm (and a damaged format 2
   // section is gmsh's to report). (fuzz_gmsh, CI: "5 13\"in..." is dimension 5 and tag 13 to gmsh.)
+  // The lines are read as libgmsh reads them (GModelIO_MSH4.cpp): the count by fgets into 1,024 bytes
+  // and sscanf, the rest of that line ignored; each name by fgets into 256 bytes, so the rest of a
+  // longer line is where the next "dim tag" is read. (fuzz_gmsh, a random seed: the count line
+  // '110 "hi..."' made the check read '"hi...' as the first group's dimension and stop, while gmsh went
+  // on to dimension 5 on the next line and crashed.)
   void physical_names(Cursor& c) {
-    const std::optional<long long> n = leading_integer(c.token());
+    const std::optional<long long> n = leading_integer(c.fgets(1024));
     if (!n) return;  // gmsh's syntax error to report
     for (long long k = 0; k < *n; ++k) {
       const std::string_view dim_text = c.token();
@@ -257,7 +275,7 @@ class Checker {
       if (*dim < 0 || *dim > 3)
         throw InputError(SourceRef{file_, line}, "$PhysicalNames: physical group " + std::to_string(*tag) + " has dimension " +
                                                      std::to_string(*dim) + "; expected 0 (point), 1 (curve), 2 (surface) or 3 (volume)");
-      c.rest_of_line();  // its name
+      c.fgets(256);  // its name
     }
   }
 

@@ -247,6 +247,25 @@ TEST(FuzzRegression, GmshPhysicalNameOfAnImpossibleDimensionIsRefused) {
                        {"c.msh:5: $Nodes: 2000000000 nodes, but the rest of the section holds at most 1"}));
 }
 
+// A format 4.1 $PhysicalNames whose count line reads '110 "hi$EndEntitiesframe"' (fuzz_gmsh, random seed,
+// 2026-11-28): libgmsh reads the count line with fgets and sscanf and ignores the rest of it, then
+// read "5 12" on the next line and crashed in GModel::setPhysicalName (SEGV). The check read the
+// count as a token and took '"hi...' for the first group's dimension, a syntax error it left to gmsh.
+// The section's lines are now read as libgmsh reads them, names by fgets into 256 bytes included.
+TEST(FuzzRegression, GmshPhysicalNamesAreReadAsGmshReadsThem) {
+  EXPECT_TRUE(mentions(msh_error("physical_names_count_line_msh4.msh"),
+                       {"physical_names_count_line_msh4.msh:6: $PhysicalNames: physical group 12 has dimension 5"}));
+  // A name line of 263 bytes: libgmsh's fgets takes 255 of them after "0 1" and reads the next group,
+  // dimension 5, from the rest of the line.
+  const std::string head = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$PhysicalNames\n2\n0 1 \"";
+  const std::string tail = "\n$EndPhysicalNames\n";
+  EXPECT_TRUE(mentions(msh_text_error("l.msh", head + std::string(253, 'a') + "5 12 \"x\"" + tail),
+                       {"l.msh:6: $PhysicalNames: physical group 12 has dimension 5"}));
+  // A name of 200 characters is one name: the next line's group is read, and its dimension checked.
+  EXPECT_TRUE(mentions(msh_text_error("m.msh", head + std::string(200, 'a') + "\"\n7 3 \"y\"" + tail),
+                       {"m.msh:7: $PhysicalNames: physical group 3 has dimension 7"}));
+}
+
 // The fuzzer's first line "$MeshFormat"Nodes", then "1 2 1 2": gmsh recognises a section by the first
 // letters of its line (this is $MeshFormat to it) and takes any file-type but 0 as binary; the check
 // compared whole names and file-type "1" only, so it skipped the whole file, and libgmsh's _readMSH2
