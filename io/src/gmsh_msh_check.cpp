@@ -38,7 +38,9 @@ std::size_t count_tokens(std::string_view s) {
 /// Reads a section body: ASCII tokens and lines (with line numbers), or binary numbers.
 class Cursor {
  public:
-  Cursor(std::string_view body, int first_line) : s_(body), line_(first_line) {}
+  /// `swap`: binary numbers are big-endian (libgmsh swaps their bytes when the file's endianness int
+  /// after the format line is not 1).
+  Cursor(std::string_view body, int first_line, bool swap = false) : s_(body), line_(first_line), swap_(swap) {}
 
   int line() const { return line_; }
   /// The line of the last token() read.
@@ -87,12 +89,13 @@ class Cursor {
     return s_.substr(start, pos_ - start);
   }
 
-  /// A little-endian unsigned number of `width` bytes (4 or 8); false at the end of the section.
+  /// An unsigned number of `width` bytes (4 or 8), little-endian unless swapped; false at the end of
+  /// the section.
   bool binary(std::size_t width, std::uint64_t& value) {
     if (remaining_bytes() < width) return false;
     value = 0;
     for (std::size_t k = 0; k < width; ++k)
-      value |= static_cast<std::uint64_t>(static_cast<unsigned char>(s_[pos_ + k])) << (8 * k);
+      value |= static_cast<std::uint64_t>(static_cast<unsigned char>(s_[pos_ + k])) << (8 * (swap_ ? width - 1 - k : k));
     pos_ += width;
     tokens_known_ = false;
     return true;
@@ -110,6 +113,7 @@ class Cursor {
   std::string_view s_;
   std::size_t pos_ = 0;
   int line_;
+  bool swap_ = false;
   int token_line_ = 0;
   std::size_t tokens_ = 0;
   bool tokens_known_ = false;
@@ -170,8 +174,10 @@ class Checker {
         if (end == std::string_view::npos) end = bytes_.find("\n$", eol);
         const std::size_t body_end = end == std::string_view::npos ? bytes_.size() : end + 1;
         section(name, bytes_.substr(body_begin, body_end - body_begin), line);
-        line += static_cast<int>(std::count(bytes_.begin() + static_cast<long>(pos), bytes_.begin() + static_cast<long>(body_end), '\n'));
-        pos = body_end;
+        std::size_t next = body_end;
+        if (binary_ && byte_order_end_ && name.compare(0, 10, "MeshFormat") == 0) next = after_byte_order();
+        line += static_cast<int>(std::count(bytes_.begin() + static_cast<long>(pos), bytes_.begin() + static_cast<long>(next), '\n'));
+        pos = next;
         continue;
       }
       pos = eol + 1;
@@ -214,6 +220,21 @@ class Checker {
                                                  "(1-31, 92, 93; seflex models use 2-node lines, 3-node triangles and "
                                                  "4-node quadrangles)");
   }
+  /// Where libgmsh reads on after a binary $MeshFormat: it read the byte-order int after the format
+  /// line, and those 4 bytes are data even when they read "$Nod" (CI's fuzz_gmsh: taken for a section
+  /// header, whose binary body ran to "$EndNodes" and hid $Entities and $Nodes from the check). Format
+  /// 4 then reads lines to one whose characters after the first are "EndMeshFormat"; format 2 looks
+  /// for the next section from right after the int (GModelIO_MSH4.cpp, GModelIO_MSH2.cpp).
+  std::size_t after_byte_order() const {
+    const std::size_t from = *byte_order_end_;
+    if (!v4_) return from;
+    for (std::size_t start = from; start < bytes_.size();) {
+      const std::size_t eol = std::min(bytes_.find('\n', start), bytes_.size());
+      if (eol - start >= 14 && bytes_.compare(start + 1, 13, "EndMeshFormat") == 0) return std::min(eol + 1, bytes_.size());
+      start = eol + 1;
+    }
+    return bytes_.size();
+  }
   /// The same for a binary count (unsigned).
   void bound_u(int line, const std::string& section, std::uint64_t count, const std::string& what, std::uint64_t unit,
                std::uint64_t available) const {
@@ -224,7 +245,7 @@ class Checker {
   // "$Nodes2" is $Nodes: strncmp with the keyword's length), so the check does too (fuzz_gmsh: a first
   // line "$MeshFormat"Nodes" left the whole file unchecked, and libgmsh asked for 2 GB).
   void section(const std::string& name, std::string_view body, int header_line) {
-    Cursor c(body, header_line + 1);
+    Cursor c(body, header_line + 1, swap_);
     const auto is = [&](std::string_view keyword) { return name.compare(0, keyword.size(), keyword) == 0; };
     if (is("MeshFormat")) {
       const std::string_view v = c.token();
@@ -241,6 +262,22 @@ class Checker {
       // The width of a binary count: 4.1 says it (data-size, sizeof(size_t)); 4.0's counts are unsigned
       // longs, 8 bytes, and its data-size is "currently unused" (gmsh 4.0 wrote sizeof(double) there).
       size_t_ = !v40_ && leading_integer(size) == 4 ? 4 : 8;
+      // libgmsh reads the format line with fgets (at most 1,023 bytes) and then, in a binary file, the
+      // int 1 in the file's byte order: any other value makes it swap the bytes of every binary number.
+      // Those 4 bytes are read wherever they are, a "$..." line included (CI's fuzz_gmsh: "$Nod" there
+      // made gmsh read the counts byte-swapped, and allocate 2^58 bytes for what the check had bounded).
+      swap_ = false;
+      byte_order_end_.reset();
+      if (binary_) {
+        const std::size_t start = static_cast<std::size_t>(body.data() - bytes_.data());
+        const std::size_t at = start + std::min(body.find('\n'), std::size_t{1022}) + 1;
+        if (at + 4 <= bytes_.size()) {
+          std::uint32_t one = 0;
+          for (int k = 0; k < 4; ++k) one |= static_cast<std::uint32_t>(static_cast<unsigned char>(bytes_[at + k])) << (8 * k);
+          swap_ = one != 1;
+          byte_order_end_ = at + 4;
+        }
+      }
       return;
     }
     if (!known_) return;  // no $MeshFormat yet: gmsh's error to report
@@ -554,7 +591,8 @@ class Checker {
 
   std::string_view bytes_;
   const std::string& file_;
-  bool known_ = false, v4_ = false, v40_ = false, binary_ = false;
+  bool known_ = false, v4_ = false, v40_ = false, binary_ = false, swap_ = false;
+  std::optional<std::size_t> byte_order_end_;  ///< where the byte-order int of a binary file ends
   std::size_t size_t_ = 8;
   std::vector<long long> node_tags_;  ///< format 2, text: the tags of $Nodes, sorted
   bool nodes_known_ = false;

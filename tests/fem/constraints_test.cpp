@@ -43,12 +43,7 @@ TEST(Constraints, Rbe2CarriesMassExactly) {
 
   Model a = cantilever(4, 2.0);
   test::add_grid(a, 100, P.x(), P.y(), P.z());
-  Rbe2 r;
-  r.id = 200;
-  r.gn = 5;
-  r.cm = test::mask("123456");
-  r.gm = {100};
-  a.rbe2.push_back(r);
+  test::add_rbe2(a, 200, 5, "123456", {100});
   c.grid = 100;
   a.conm2.push_back(c);
   test::finalize_for_test(a);
@@ -116,12 +111,7 @@ TEST(Constraints, Rbe2TranslationalComponentsOnly) {
   const Eigen::Vector3d P(2.3, 0.2, -0.4), d = P - Eigen::Vector3d(L, 0, 0), F(10.0, 40.0, -25.0);
   Model a = cantilever(4, L);
   test::add_grid(a, 100, P.x(), P.y(), P.z());
-  Rbe2 r;
-  r.id = 200;
-  r.gn = 5;
-  r.cm = test::mask("123");
-  r.gm = {100};
-  a.rbe2.push_back(r);
+  test::add_rbe2(a, 200, 5, "123", {100});
   PointLoad f;
   f.sid = 5;
   f.grid = 100;

@@ -164,6 +164,17 @@ inline ComponentMask mask(const std::string& digits) {
   return c;
 }
 
+/// RBE2 `id`: the dependent grids `gm` follow the independent grid `gn` in components `cm` ("123456").
+inline Rbe2& add_rbe2(Model& m, int id, int gn, const std::string& cm, std::vector<int> gm) {
+  Rbe2 r;
+  r.id = id;
+  r.gn = gn;
+  r.cm = mask(cm);
+  r.gm = std::move(gm);
+  m.rbe2.push_back(r);
+  return m.rbe2.back();
+}
+
 /// Null-space dimension of a symmetric matrix: eigenvalues below tol * largest.
 inline int null_space_dimension(const Eigen::MatrixXd& K, double tol = 1e-9) {
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(K);

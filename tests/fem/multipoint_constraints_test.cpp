@@ -242,12 +242,7 @@ TEST(Rbar, IsEquivalentToRbe2) {
     test::add_grid(m, 50, 1.9, 0.4, -0.3);
     test::add_conm2(m, 60, 50, 4.0).I11 = 0.1;
     if (kind == 0) {
-      Rbe2 r;
-      r.id = 70;
-      r.gn = 4;
-      r.cm = test::mask("123456");
-      r.gm = {50};
-      m.rbe2.push_back(r);
+      test::add_rbe2(m, 70, 4, "123456", {50});
     } else {
       Rbar r;
       r.id = 70;

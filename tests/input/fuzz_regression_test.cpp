@@ -266,6 +266,27 @@ TEST(FuzzRegression, GmshPhysicalNamesAreReadAsGmshReadsThem) {
                        {"m.msh:7: $PhysicalNames: physical group 3 has dimension 7"}));
 }
 
+// CI's fuzz_gmsh (seed 1, 2026-11-28, on the checker of the two fixes above): a binary format 4.1 file
+// whose line after "4.1 1 8" reads "$Nod". libgmsh reads those 4 bytes as the file's byte-order int,
+// finds it is not 1 and swaps the bytes of every binary number after it; the check read them
+// little-endian, so it bounded other numbers than gmsh used (allocation of 2^58 bytes). The check now
+// reads the byte-order int where libgmsh does and swaps as it does.
+TEST(FuzzRegression, GmshBinaryByteOrderIsReadAsGmshReadsIt) {
+  // the 4 bytes "$Nod" were also taken for a section header, whose binary body ran to "$EndNodes" and
+  // hid $Entities from the check: it is checked now, its count of 31 points read byte-swapped, 31 * 2^56
+  EXPECT_TRUE(mentions(msh_error("byte_order_marker_msh4.msh"),
+                       {"byte_order_marker_msh4.msh:21: $Entities: 2233785415175766016 entities of dimension 0, but the rest "
+                        "of the section holds at most 173"}));
+  // The binary panel with its byte-order int 1 written big-endian: the same count, read as gmsh reads it.
+  std::string panel = test::read_file(test::data_dir() / "gmsh" / "panel_msh4_binary.msh");
+  const std::size_t one = panel.find("4.1 1 8\n") + 8;
+  ASSERT_EQ(panel.substr(one, 4), std::string("\x01\0\0\0", 4));
+  panel.replace(one, 4, std::string("\0\0\0\x01", 4));
+  EXPECT_TRUE(mentions(msh_text_error("b.msh", panel),
+                       {"b.msh:21: $Entities: 2233785415175766016 entities of dimension 0, but the rest of the section holds "
+                        "at most 173"}));
+}
+
 // The fuzzer's first line "$MeshFormat"Nodes", then "1 2 1 2": gmsh recognises a section by the first
 // letters of its line (this is $MeshFormat to it) and takes any file-type but 0 as binary; the check
 // compared whole names and file-type "1" only, so it skipped the whole file, and libgmsh's _readMSH2

@@ -42,12 +42,7 @@ inline fem::Model box_frame(bool coupled = false) {
     add_cbar(m, bar++, 1, mid, b, v);
   }
   add_grid(m, 30, 1.1, 0.05, 0.45);
-  fem::Rbe2 r;
-  r.id = 401;
-  r.gn = 6;
-  r.cm = mask("123456");
-  r.gm = {30};
-  m.rbe2.push_back(r);
+  add_rbe2(m, 401, 6, "123456", {30});
   auto conm2 = [&](int id, int grid, double mass, Eigen::Vector3d offset, double I) {
     fem::Conm2 c;
     c.id = id;
