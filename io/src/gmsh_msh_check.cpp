@@ -271,9 +271,9 @@ class Checker {
       if (binary_) {
         const std::size_t start = static_cast<std::size_t>(body.data() - bytes_.data());
         const std::size_t at = start + std::min(body.find('\n'), std::size_t{1022}) + 1;
-        if (at + 4 <= bytes_.size()) {
-          std::uint32_t one = 0;
-          for (int k = 0; k < 4; ++k) one |= static_cast<std::uint32_t>(static_cast<unsigned char>(bytes_[at + k])) << (8 * k);
+        std::uint64_t one = 0;
+        Cursor marker(bytes_.substr(std::min(at, bytes_.size())), header_line + 2);
+        if (marker.binary(4, one)) {
           swap_ = one != 1;
           byte_order_end_ = at + 4;
         }
