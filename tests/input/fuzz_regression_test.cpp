@@ -287,6 +287,35 @@ TEST(FuzzRegression, GmshBinaryByteOrderIsReadAsGmshReadsIt) {
                         "at most 173"}));
 }
 
+// CI's fuzz_gmsh (seed 1, on the checker of the fix above): a binary format 2 file whose $PhysicalNames
+// ends in a damaged "$EndPhysicalNa..." line, with "$Nodes", "$EndNodes" and "$Elements" after it and
+// a "$EndPhysicalNames" only further down. libgmsh's format 2 reader looks for the next section at the
+// next line that starts with '$' and read that $Elements (2.16 GB); the check ran the body of
+// $PhysicalNames, text in a binary file too, to "$EndPhysicalNames" as if it were binary data, and
+// never saw it. Only sections with binary data now run to their $End line.
+TEST(FuzzRegression, GmshTextSectionsOfABinaryFileEndAtTheNextSection) {
+  EXPECT_TRUE(mentions(msh_error("physical_names_body_binary_msh2.msh"),
+                       {"physical_names_body_binary_msh2.msh:56: $Elements: 68 elements, but the rest of the section holds at "
+                        "most 12"}));
+}
+
+// fuzz_gmsh (CI's seed 1, run locally on the checker of the fix above): a format 4.1 $Nodes that declares
+// 0 nodes in all and then a block of 2. libgmsh keeps the section's nodes in an array of the declared
+// count and fills it block by block without looking at it: a heap overflow (ASan: alloc-dealloc-mismatch
+// at the next delete). The same holds for $Elements. The blocks' counts are now summed against the
+// section's, text and binary.
+TEST(FuzzRegression, GmshBlocksHoldNoMoreThanTheSectionDeclares) {
+  EXPECT_TRUE(mentions(msh_error("node_blocks_beyond_total_msh4.msh"),
+                       {"node_blocks_beyond_total_msh4.msh:10: $Nodes: block 1 holds 2 nodes, but the section declares 0; "
+                        "expected the blocks to hold the section's count"}));
+  // The panel in format 4.1 text: 61 element blocks of one element each, the total made 60.
+  std::string text = test::read_file(test::data_dir() / "gmsh" / "panel_msh4.msh");
+  const std::size_t at = text.find("$Elements\n61 61 1 61\n");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at + 13, 2, "60");
+  EXPECT_TRUE(mentions(msh_text_error("t.msh", text), {"t.msh:", "$Elements: blocks 1 to 61 hold 61 elements, but the section declares 60"}));
+}
+
 // The fuzzer's first line "$MeshFormat"Nodes", then "1 2 1 2": gmsh recognises a section by the first
 // letters of its line (this is $MeshFormat to it) and takes any file-type but 0 as binary; the check
 // compared whole names and file-type "1" only, so it skipped the whole file, and libgmsh's _readMSH2
