@@ -280,8 +280,9 @@ struct Reader {
     f.check_keys({"method", "rho_inf", "t_end", "step", "max_step", "min_step", "adaptive", "tolerance", "newton", "stop"});
     mbd::IntegratorSettings& s = d.integrator;
     const std::string method = f.text_or("method", "generalized-alpha");
-    if (method != "generalized-alpha" && method != "rk4") f["method"].fail("expected generalized-alpha or rk4, got '" + method + "'");
-    d.method = method == "rk4" ? IntegratorMethod::Rk4 : IntegratorMethod::GeneralizedAlpha;
+    if (method != "generalized-alpha" && method != "rk4" && method != "radau5")
+      f["method"].fail("expected generalized-alpha, radau5 or rk4, got '" + method + "'");
+    d.method = method == "rk4" ? IntegratorMethod::Rk4 : method == "radau5" ? IntegratorMethod::Radau5 : IntegratorMethod::GeneralizedAlpha;
     if (f.has("rho_inf")) {
       s.rho_inf = f["rho_inf"].number();
       if (!(s.rho_inf >= 0.0 && s.rho_inf <= 1.0)) f["rho_inf"].fail("expected a spectral radius between 0 and 1");

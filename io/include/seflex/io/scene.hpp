@@ -32,9 +32,10 @@ struct SceneWhere {
 
 enum class Fidelity { Flexible, Rigid };
 
-/// `integrator.method`: the implicit Lie-group generalized-alpha (mbd/integrator.hpp) or the
-/// explicit Runge-Kutta-Munthe-Kaas 4 with a constant step (mbd/explicit_integrator.hpp).
-enum class IntegratorMethod { GeneralizedAlpha, Rk4 };
+/// `integrator.method`: the implicit Lie-group generalized-alpha (mbd/integrator.hpp), the implicit
+/// Radau IIA of order 5 (mbd/radau5.hpp) or the explicit Runge-Kutta-Munthe-Kaas 4 with a constant
+/// step (mbd/explicit_integrator.hpp).
+enum class IntegratorMethod { GeneralizedAlpha, Radau5, Rk4 };
 
 /// `ground` or `body.node` (node = FE grid id of one of the body's interface nodes).
 struct SceneNodeRef {

@@ -22,6 +22,9 @@ enum class Formulation {
 /// "aic", "ffrf-lm", "rigid-lm" (the spelling of `seflex run --formulation`).
 const char* formulation_name(Formulation f);
 
+/// "generalized-alpha", "radau5", "rk4" (the spelling of `integrator.method`).
+const char* method_name(IntegratorMethod m);
+
 struct SceneRun {
   mbd::RunStats run;
   std::optional<mbd::FfrfStats> ffrf;  ///< FfrfLm / RigidLm: coordinates, multipliers, constraint drift
