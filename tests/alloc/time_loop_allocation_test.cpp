@@ -19,8 +19,8 @@
 #include <unistd.h>
 
 #include "../run/scene_fixture.hpp"
-#include "seflex/io/scene.hpp"
-#include "seflex/io/solve_scene.hpp"
+#include "seflex/scene/scene.hpp"
+#include "seflex/scene/solve_scene.hpp"
 
 extern "C" {
 void* __libc_malloc(std::size_t);
@@ -109,13 +109,13 @@ class TimeLoopAllocations : public ::testing::Test {
                                   " --modes 10 --no-mesh -o " + q(*dir_ / (std::string(r.body) + "-" + r.tag + ".se")));
       ASSERT_EQ(run.exit_code, 0) << run.err;
     }
-    scene_ = new io::Scene(demo_scene("sync-3d"));
-    beam_scene_ = new io::Scene(demo_scene("sync-beam"));
+    scene_ = new scene::Scene(demo_scene("sync-3d"));
+    beam_scene_ = new scene::Scene(demo_scene("sync-beam"));
   }
-  static io::Scene demo_scene(const std::string& name) {
+  static scene::Scene demo_scene(const std::string& name) {
     std::string text = read_file(source_dir() / "examples" / "solar_array" / (name + ".yaml"));
     replace_all(text, "superelements/", "");
-    return io::build_scene(io::read_scene(dir_->write(name + ".yaml", text)), io::SceneBuildOptions{false});
+    return scene::build_scene(scene::read_scene(dir_->write(name + ".yaml", text)), scene::SceneBuildOptions{false});
   }
   static void TearDownTestSuite() {
     delete scene_;
@@ -123,20 +123,20 @@ class TimeLoopAllocations : public ::testing::Test {
     delete dir_;
   }
   static TempDir* dir_;
-  static io::Scene* scene_;       ///< sync-3d
-  static io::Scene* beam_scene_;  ///< sync-beam (one hinge per hinge line)
+  static scene::Scene* scene_;       ///< sync-3d
+  static scene::Scene* beam_scene_;  ///< sync-beam (one hinge per hinge line)
 };
 TempDir* TimeLoopAllocations::dir_ = nullptr;
-io::Scene* TimeLoopAllocations::scene_ = nullptr;
-io::Scene* TimeLoopAllocations::beam_scene_ = nullptr;
+scene::Scene* TimeLoopAllocations::scene_ = nullptr;
+scene::Scene* TimeLoopAllocations::beam_scene_ = nullptr;
 
 TEST_F(TimeLoopAllocations, DemoSync3dHundredStepsAllocateNothing) {
-  const io::Scene& scene = *scene_;
+  const scene::Scene& scene = *scene_;
   ASSERT_GE(scene.model.flexible_bodies.size(), 3u);
   g_allocations = 0;
   const long steps = 100;
   StepWindow window(steps, false);
-  const io::SceneRun run = io::solve_scene(scene, scene.description.integrator, io::Formulation::Aic, &window);
+  const mbd::SimulationRun run = scene::solve_scene(scene, scene.description.integrator, mbd::Formulation::Aic, &window);
   g_counting = false;
   ASSERT_EQ(window.accepted(), 1 + steps);
   EXPECT_GT(run.run.newton_iterations, steps);  // the window saw real Newton work
@@ -149,7 +149,7 @@ TEST_F(TimeLoopAllocations, DemoSync3dHundredStepsAllocateNothing) {
 TEST_F(TimeLoopAllocations, DemoSync3dThroughTheFirstLatchAllocatesNothing) {
   g_allocations = 0;
   StepWindow window(50, true);
-  const io::SceneRun run = io::solve_scene(*scene_, scene_->description.integrator, io::Formulation::Aic, &window);
+  const mbd::SimulationRun run = scene::solve_scene(*scene_, scene_->description.integrator, mbd::Formulation::Aic, &window);
   g_counting = false;
   ASSERT_GT(window.latch_step(), 100);
   EXPECT_GT(run.run.event_retries, 0);
@@ -161,26 +161,26 @@ TEST_F(TimeLoopAllocations, DemoSync3dThroughTheFirstLatchAllocatesNothing) {
 // multipliers) on sync-3d and under rigid-LM on sync-beam. Rigid-LM cannot run sync-3d: its hinge
 // lines are two coaxial hinges each, redundant between rigid bodies (a singular saddle system; the
 // speed-vs-accuracy study runs rigid-LM on the beam scenes for that reason).
-void expect_no_allocations_in_hundred_steps(const io::Scene& scene, io::Formulation formulation) {
+void expect_no_allocations_in_hundred_steps(const scene::Scene& scene, mbd::Formulation formulation) {
   g_allocations = 0;
   const long steps = 100;
   StepWindow window(steps, false);
-  const io::SceneRun run = io::solve_scene(scene, scene.description.integrator, formulation, &window);
+  const mbd::SimulationRun run = scene::solve_scene(scene, scene.description.integrator, formulation, &window);
   g_counting = false;
   ASSERT_EQ(window.accepted(), 1 + steps);
   ASSERT_TRUE(run.ffrf.has_value());
   EXPECT_GT(run.ffrf->constraints, 0);           // the joints are multipliers
   EXPECT_GT(run.run.newton_iterations, steps);  // the window saw real Newton work
-  EXPECT_EQ(g_allocations.load(), 0) << "heap allocations in " << steps << " steps of " << io::formulation_name(formulation)
+  EXPECT_EQ(g_allocations.load(), 0) << "heap allocations in " << steps << " steps of " << mbd::formulation_name(formulation)
                                      << " (SEFLEX_TRACE_ALLOCATIONS=1 prints where)";
 }
 
 TEST_F(TimeLoopAllocations, DemoSync3dFfrfLmHundredStepsAllocateNothing) {
-  expect_no_allocations_in_hundred_steps(*scene_, io::Formulation::FfrfLm);
+  expect_no_allocations_in_hundred_steps(*scene_, mbd::Formulation::FfrfLm);
 }
 
 TEST_F(TimeLoopAllocations, DemoSyncBeamRigidLmHundredStepsAllocateNothing) {
-  expect_no_allocations_in_hundred_steps(*beam_scene_, io::Formulation::RigidLm);
+  expect_no_allocations_in_hundred_steps(*beam_scene_, mbd::Formulation::RigidLm);
 }
 
 TEST(TimeLoopAllocationCounter, SeesAllocations) {  // the hook is live: a vector and an Eigen matrix count

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "../run/scene_fixture.hpp"
-#include "seflex/io/scene.hpp"
+#include "seflex/scene/scene.hpp"
 
 namespace seflex {
 namespace {
@@ -31,7 +31,7 @@ Outcome read(const std::string& newton) {
   const auto path = dir.write("scene.yaml", scene_text(newton));
   Outcome o;
   try {
-    o.fraction = io::read_scene(path).integrator.newton_error_fraction;
+    o.fraction = scene::read_scene(path).integrator.newton_error_fraction;
   } catch (const InputError& e) {
     o.error = e.what();
   }

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "../run/scene_fixture.hpp"
-#include "seflex/io/scene.hpp"
+#include "seflex/scene/scene.hpp"
 
 namespace seflex {
 namespace {
@@ -31,7 +31,7 @@ std::string scene_error(const std::string& text) {
   test::write_link(dir, "link.se");
   const auto path = dir.write("scene.yaml", text);
   try {
-    io::build_scene(io::read_scene(path));
+    scene::build_scene(scene::read_scene(path));
   } catch (const InputError& e) {
     return e.what();
   }

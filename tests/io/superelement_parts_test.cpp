@@ -12,7 +12,7 @@
 
 #include "../mbd/beam_superelement.hpp"
 #include "seflex/common/error.hpp"
-#include "seflex/io/scene.hpp"
+#include "seflex/scene/scene.hpp"
 #include "seflex/io/sha256.hpp"
 #include "seflex/io/superelement_file.hpp"
 #include "seflex/reduction/inertia_invariants.hpp"
@@ -365,7 +365,7 @@ TEST(SuperelementParts, FullInertiaWithoutInvariantsOrMeshIsRefused) {
   io::drop_mesh(s);
   io::save_superelement(s, tmp / "link.se");
   const auto scene = tmp.write("scene.yaml", scene_text("full"));
-  const std::string msg = message_of([&] { io::build_scene(io::read_scene(scene), {.keep_mesh = false}); });
+  const std::string msg = message_of([&] { scene::build_scene(scene::read_scene(scene), {.keep_mesh = false}); });
   for (const char* part : {"scene.yaml:3: bodies[0]: inertia: full needs the inertia invariants of superelement ",
                            "link.se or its mesh part (recovery matrix and FE mass), and the file has neither",
                            "reduced with --no-mesh", "re-run `seflex reduce` with this seflex",
@@ -373,7 +373,7 @@ TEST(SuperelementParts, FullInertiaWithoutInvariantsOrMeshIsRefused) {
     EXPECT_NE(msg.find(part), std::string::npos) << part << "\n" << msg;
   // The simplified inertia needs neither.
   const auto simple = tmp.write("simple.yaml", scene_text("simplified"));
-  EXPECT_NO_THROW(io::build_scene(io::read_scene(simple), {.keep_mesh = false}));
+  EXPECT_NO_THROW(scene::build_scene(scene::read_scene(simple), {.keep_mesh = false}));
 }
 
 // A run without animation reads the dynamics part only; a full-inertia body of an old file (no
@@ -383,14 +383,14 @@ TEST(SuperelementParts, SceneLoadsTheDynamicsOnlyWhenTheMeshIsNotNeeded) {
   const se::Superelement s = beam(2);  // with mesh, no invariants
   io::save_superelement(s, tmp / "link.se");
   const auto simple = tmp.write("simple.yaml", scene_text("simplified"));
-  const io::Scene a = io::build_scene(io::read_scene(simple), {.keep_mesh = false});
+  const scene::Scene a = scene::build_scene(scene::read_scene(simple), {.keep_mesh = false});
   EXPECT_TRUE(a.superelements[0]->fe_node_ids.empty());
   EXPECT_EQ(a.superelements[0]->recovery.size(), 0);
-  const io::Scene b = io::build_scene(io::read_scene(simple));
+  const scene::Scene b = scene::build_scene(scene::read_scene(simple));
   EXPECT_EQ(b.superelements[0]->fe_node_ids, s.fe_node_ids);
 
   const auto full = tmp.write("full.yaml", scene_text("full"));
-  const io::Scene c = io::build_scene(io::read_scene(full), {.keep_mesh = false});
+  const scene::Scene c = scene::build_scene(scene::read_scene(full), {.keep_mesh = false});
   const se::InertiaInvariants expected = reduction::compute_inertia_invariants(s);
   ASSERT_TRUE(expected.present());  // else first_difference of two empty sets would be "" too
   ASSERT_TRUE(c.superelements[0]->invariants.present());
@@ -452,13 +452,13 @@ TEST(SuperelementParts, StiffeningAskedFromAFileWithoutItIsRefused) {
   std::string text = scene_text("simplified");
   text.replace(text.find("inertia: simplified}"), 20, "inertia: simplified, geometric_stiffening: on}");
   const auto scene = tmp.write("scene.yaml", text);
-  const std::string msg = message_of([&] { io::build_scene(io::read_scene(scene), {.keep_mesh = false}); });
+  const std::string msg = message_of([&] { scene::build_scene(scene::read_scene(scene), {.keep_mesh = false}); });
   for (const char* part : {"scene.yaml:3: bodies[0]: geometric_stiffening: on, but ", "link.se carries no geometric-stiffness invariants",
                            "re-run `seflex reduce` without --no-stiffening", "or set geometric_stiffening: off"})
     EXPECT_NE(msg.find(part), std::string::npos) << part << "\n" << msg;
   // Unset, the body runs without stiffening; with the invariants in the file it runs with them.
-  EXPECT_NO_THROW(io::build_scene(io::read_scene(tmp.write("plain.yaml", scene_text("simplified"))), {.keep_mesh = false}));
+  EXPECT_NO_THROW(scene::build_scene(scene::read_scene(tmp.write("plain.yaml", scene_text("simplified"))), {.keep_mesh = false}));
   s.stiffening = random_stiffening(s.size(), s.num_interfaces(), 3);
   io::save_superelement(s, tmp / "link.se", io::SaveOptions{true});
-  EXPECT_NO_THROW(io::build_scene(io::read_scene(scene), {.keep_mesh = false}));
+  EXPECT_NO_THROW(scene::build_scene(scene::read_scene(scene), {.keep_mesh = false}));
 }

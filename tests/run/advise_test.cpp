@@ -20,9 +20,9 @@
 #include <numbers>
 
 #include "scene_fixture.hpp"
-#include "seflex/io/advise.hpp"
-#include "seflex/io/scene.hpp"
-#include "seflex/io/solve_scene.hpp"
+#include "seflex/scene/advise.hpp"
+#include "seflex/scene/scene.hpp"
+#include "seflex/scene/solve_scene.hpp"
 
 namespace seflex::test {
 namespace {
@@ -59,7 +59,7 @@ double quasi_static_ratio(double E) {
   return (wp / w1) * (wp / w1);
 }
 
-const io::AdviseRow& row(const io::AdviseReport& r, const std::string& name) {
+const scene::AdviseRow& row(const scene::AdviseReport& r, const std::string& name) {
   for (const auto& x : r.rows)
     if (x.name == name) return x;
   throw std::runtime_error("no variant " + name);
@@ -69,20 +69,20 @@ TEST(Advise, StiffLinkRigidIsEnough) {
   TempDir dir;
   write_link(dir, "link.se", 4);
   const auto scene = dir.write("scene.yaml", kFall);
-  io::AdviseOptions o;
+  scene::AdviseOptions o;
   o.tolerance = 0.1 * kDeg;
-  const io::AdviseReport r = io::advise(io::read_scene(scene), o);
+  const scene::AdviseReport r = scene::advise(scene::read_scene(scene), o);
   ASSERT_TRUE(r.horizon_at_lock);
   EXPECT_EQ(r.horizon_lock, "lock.H1");
   EXPECT_NEAR(r.horizon, fall_time(60 * kDeg, 1.0, 9.81), 2e-4 * r.horizon);  // measured 1.1e-4 (2026-11-28)
-  const io::AdviseRow& rigid = row(r, "rigid");
+  const scene::AdviseRow& rigid = row(r, "rigid");
   ASSERT_TRUE(rigid.ran) << rigid.failure;
   const double estimate = quasi_static_ratio(7e10);
   EXPECT_LT(rigid.max_error, o.tolerance);
   EXPECT_GT(rigid.max_error, 0.1 * estimate);  // the sag is seen, of the predicted size
   EXPECT_LT(rigid.max_error, 10 * estimate);
   ASSERT_GE(r.recommended, 0);
-  const io::AdviseRow& best = r.rows[static_cast<std::size_t>(r.recommended)];
+  const scene::AdviseRow& best = r.rows[static_cast<std::size_t>(r.recommended)];
   EXPECT_TRUE(best.within);
   EXPECT_LE(best.cpu_seconds, r.rows[0].cpu_seconds);
   EXPECT_EQ(best.name, "rigid");  // 1 dof against 12 + 4 modes: cheaper by far
@@ -92,17 +92,17 @@ TEST(Advise, SoftLinkNeedsFlexibility) {
   TempDir dir;
   write_link(dir, "link.se", 4, 7e7);
   const auto scene = dir.write("scene.yaml", kFall);
-  io::AdviseOptions o;
+  scene::AdviseOptions o;
   o.tolerance = 0.1 * kDeg;
-  const io::AdviseReport r = io::advise(io::read_scene(scene), o);
-  const io::AdviseRow& rigid = row(r, "rigid");
+  const scene::AdviseReport r = scene::advise(scene::read_scene(scene), o);
+  const scene::AdviseRow& rigid = row(r, "rigid");
   ASSERT_TRUE(rigid.ran) << rigid.failure;
   const double estimate = quasi_static_ratio(7e7);
   EXPECT_GT(rigid.max_error, o.tolerance);
   EXPECT_GT(rigid.max_error, 0.1 * estimate);
   EXPECT_LT(rigid.max_error, 10 * estimate);
   ASSERT_GE(r.recommended, 0);
-  const io::AdviseRow& best = r.rows[static_cast<std::size_t>(r.recommended)];
+  const scene::AdviseRow& best = r.rows[static_cast<std::size_t>(r.recommended)];
   EXPECT_NE(best.name, "rigid");
   EXPECT_TRUE(best.within);
   EXPECT_LE(best.max_error, o.tolerance);
@@ -112,8 +112,8 @@ TEST(Advise, SoftLinkNeedsFlexibility) {
   // superelement captures the sag (its difference from AIC is the formulations' and the
   // integrators' error, a small fraction of the rigid error), and rigid bodies with multipliers
   // miss it exactly as AIC's rigid body does (the same rigid dynamics, two sets of coordinates).
-  const io::AdviseRow& ffrf = row(r, "FFRF-LM / flexible / all modes");
-  const io::AdviseRow& rigid_lm = row(r, "rigid-LM");
+  const scene::AdviseRow& ffrf = row(r, "FFRF-LM / flexible / all modes");
+  const scene::AdviseRow& rigid_lm = row(r, "rigid-LM");
   ASSERT_TRUE(ffrf.ran) << ffrf.failure;
   ASSERT_TRUE(rigid_lm.ran) << rigid_lm.failure;
   std::printf("soft link: rigid %.4f deg, rigid-LM %.4f deg, FFRF-LM %.2e deg (%d coordinates + %d multipliers)\n",
@@ -243,14 +243,14 @@ class TipRecorder : public mbd::Observer {
   std::size_t tip_;
 };
 
-TipHistory run_tip(io::SceneDescription d, bool stiffening, const std::string& tip) {
+TipHistory run_tip(scene::SceneDescription d, bool stiffening, const std::string& tip) {
   for (auto& b : d.bodies) b.geometric_stiffening = stiffening;
-  const io::Scene s = io::build_scene(d);
+  const scene::Scene s = scene::build_scene(d);
   std::size_t k = 0;
   while (k < s.model.nodes.size() && s.model.nodes[k].name != tip) ++k;
   EXPECT_LT(k, s.model.nodes.size()) << tip;
   TipRecorder rec(k);
-  io::solve_scene(s, s.description.integrator, io::Formulation::Aic, &rec);
+  scene::solve_scene(s, s.description.integrator, mbd::Formulation::Aic, &rec);
   return rec.h;
 }
 
@@ -276,7 +276,7 @@ TEST(Advise, SpinningBeamNeedsStiffening) {
   ASSERT_NEAR(peak, 0.574, 0.001);
 
   // The truth for the variants advise compares: one superelement against the corotational beam.
-  const io::SceneDescription d1 = io::read_scene(one);
+  const scene::SceneDescription d1 = scene::read_scene(one);
   const double e_on = max_difference(run_tip(d1, true, tip), ref);
   const double e_off = max_difference(run_tip(d1, false, tip), ref);
   std::printf("spin-up beam, one superelement, tip off the corotational beam: %.4f m with stiffening, %.4f m without (peak %.4f m)\n",
@@ -284,16 +284,16 @@ TEST(Advise, SpinningBeamNeedsStiffening) {
   ASSERT_LT(e_on, 0.01 * peak);   // docs/geometric-stiffening.md: 0.37 % with 20 CBARs
   ASSERT_GT(e_off, 0.30 * peak);  // the linear body: 66 % (issue 15, -0.75 m against -0.57 m)
 
-  io::AdviseOptions o;
+  scene::AdviseOptions o;
   o.tolerance = 1.0 * kDeg;  // the hub is driven: its angle is the same in every variant
   o.t_end = t_end;
   o.nodes = {tip};
   o.position_tolerance = 0.03 * peak;  // the issue's 3 % of the peak
-  o.alternatives = {io::read_scene(two)};
-  const io::AdviseReport r = io::advise(d1, o);
+  o.alternatives = {scene::read_scene(two)};
+  const scene::AdviseReport r = scene::advise(d1, o);
   ASSERT_EQ(r.rows[0].name, "flexible / full inertia / all modes");
   EXPECT_TRUE(r.rows[0].stiffening);  // the finest model uses the invariants the file carries
-  const io::AdviseRow& off = row(r, "flexible / full inertia / all modes / no stiffening");
+  const scene::AdviseRow& off = row(r, "flexible / full inertia / all modes / no stiffening");
   ASSERT_TRUE(off.ran) << off.failure;
   EXPECT_FALSE(off.stiffening);
   std::printf("advise: no stiffening %.4f m (tip), two superelements with stiffening %.4f m, without %.4f m\n", off.max_position_error,
@@ -306,8 +306,8 @@ TEST(Advise, SpinningBeamNeedsStiffening) {
   EXPECT_FALSE(off.within);  // rejected at 3 % of the peak ...
   // ... where two superelements with stiffening agree with one (both within e_on-ish of the truth),
   // and two without stiffening are still off by the ~10 % that docs/speed-vs-accuracy.md reports.
-  const io::AdviseRow& two_on = row(r, "alternative two: flexible / full inertia / all modes");
-  const io::AdviseRow& two_off = row(r, "alternative two: flexible / full inertia / all modes / no stiffening");
+  const scene::AdviseRow& two_on = row(r, "alternative two: flexible / full inertia / all modes");
+  const scene::AdviseRow& two_off = row(r, "alternative two: flexible / full inertia / all modes / no stiffening");
   ASSERT_TRUE(two_on.ran) << two_on.failure;
   ASSERT_TRUE(two_off.ran) << two_off.failure;
   EXPECT_TRUE(two_on.within);

@@ -13,7 +13,7 @@
 #include <cstdio>
 
 #include "scene_fixture.hpp"
-#include "seflex/io/scene.hpp"
+#include "seflex/scene/scene.hpp"
 #include "seflex/mbd/ffrf/ffrf.hpp"
 
 namespace seflex::test {
@@ -33,7 +33,7 @@ TEST(FfrfDemoTangents, IterationMatrixWithAnalyticTangentsMatchesFiniteDifferenc
   std::string text = read_file(source_dir() / "examples" / "solar_array" / "sync-3d.yaml");
   replace_all(text, "superelements/", "");
   // With the mesh part: the FE data of the nodal sums.
-  const io::Scene scene = io::build_scene(io::read_scene(dir.write("sync-3d.yaml", text)), io::SceneBuildOptions{true});
+  const scene::Scene scene = scene::build_scene(scene::read_scene(dir.write("sync-3d.yaml", text)), scene::SceneBuildOptions{true});
   const mbd::Model& model = scene.model;
   for (auto inertia : {mbd::FfrfOptions::Inertia::Invariants, mbd::FfrfOptions::Inertia::Nodal}) {
     mbd::FfrfOptions fa;

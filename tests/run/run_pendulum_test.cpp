@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "scene_fixture.hpp"
-#include "seflex/io/scene.hpp"
+#include "seflex/scene/scene.hpp"
 #include "seflex/mbd/forces/drive_profile.hpp"
 #include "seflex/mbd/solvers/integrator.hpp"
 #include "seflex/mbd/model.hpp"

@@ -1,10 +1,10 @@
-#include "seflex/io/run_output.hpp"
+#include "seflex/scene/run_output.hpp"
 
 #include <charconv>
 #include <cmath>
 #include <sstream>
 
-namespace seflex::io {
+namespace seflex::scene {
 
 namespace {
 
@@ -134,7 +134,7 @@ RunOutput::RunOutput(const Scene& scene, const RunOutputOptions& o) : scene_(sce
   if (o.animation && scene.description.output.animation_interval) {
     std::vector<const se::Superelement*> bodies;
     for (const auto& s : scene.superelements) bodies.push_back(s.get());
-    animation_ = std::make_unique<PvdSeries>(folder_, "animation", bodies, true);
+    animation_ = std::make_unique<io::PvdSeries>(folder_, "animation", bodies, true);
   }
 }
 
@@ -248,9 +248,9 @@ void RunOutput::write_animation(const mbd::Sample& s) {
   if (!animation_) return;
   const double dt = *scene_.description.output.animation_interval;
   if (animation_->steps_written() > 0 && s.t < next_animation_ - 1e-9 * std::max(1.0, std::abs(s.t))) return;
-  std::vector<BodySnapshot> snaps;
+  std::vector<io::BodySnapshot> snaps;
   for (const SceneBodyRef& r : scene_.bodies) {
-    BodySnapshot b;
+    io::BodySnapshot b;
     const mbd::Pose& X = r.rigid ? s.rigid[static_cast<std::size_t>(r.index)].frame : s.flexible[static_cast<std::size_t>(r.index)].frame;
     b.R_WB = X.R;
     b.p_WBo = X.p;
@@ -334,4 +334,4 @@ void RunOutput::finish(const RunEnd& end) {
   tx.flush();
 }
 
-}  // namespace seflex::io
+}  // namespace seflex::scene

@@ -18,9 +18,9 @@
 #include <string>
 #include <vector>
 
-#include "seflex/io/scene.hpp"
+#include "seflex/scene/scene.hpp"
 
-namespace seflex::io {
+namespace seflex::scene {
 
 struct AdviseOptions {
   double tolerance = 0.0;                        ///< largest acceptable hinge-angle error [rad] (> 0)
@@ -70,4 +70,4 @@ struct AdviseReport {
 /// compared node must exist in the scene); a variant that fails is reported, not thrown.
 AdviseReport advise(const SceneDescription& scene, const AdviseOptions& options);
 
-}  // namespace seflex::io
+}  // namespace seflex::scene

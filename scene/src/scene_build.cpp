@@ -7,13 +7,12 @@
 #include <numeric>
 #include <sstream>
 
-#include "seflex/io/scene.hpp"
+#include "seflex/scene/scene.hpp"
 #include "seflex/io/superelement_file.hpp"
 #include "seflex/mbd/forces/drive_profile.hpp"
-#include "seflex/reduction/inertia_invariants.hpp"
-#include "invariant_datasets.hpp"
+#include "seflex/superelement/inertia_invariants.hpp"
 
-namespace seflex::io {
+namespace seflex::scene {
 
 namespace {
 
@@ -86,14 +85,14 @@ struct Builder {
   /// A superelement file with the parts the run needs. `full_inertia`: the first body that uses the
   /// file with full inertia (nullptr: none does).
   se::Superelement load_file(const SceneBody& b, const SceneBody* full_inertia) const {
-    const auto load = [&](SuperelementParts parts) {
-      return at(b.file_where, [&] { return load_superelement(b.superelement, LoadOptions{parts}); });
+    const auto load = [&](io::SuperelementParts parts) {
+      return at(b.file_where, [&] { return io::load_superelement(b.superelement, io::LoadOptions{parts}); });
     };
-    se::Superelement s = load(options.keep_mesh ? SuperelementParts::All : SuperelementParts::Dynamics);
+    se::Superelement s = load(options.keep_mesh ? io::SuperelementParts::All : io::SuperelementParts::Dynamics);
     if (!full_inertia || s.invariants.present()) return s;
     // Full inertia from a file without invariants (format 1.0/1.1, or a reduction that did not
     // compute them): compute them from the mesh part when the file has one.
-    if (!options.keep_mesh) s = load(SuperelementParts::All);
+    if (!options.keep_mesh) s = load(io::SuperelementParts::All);
     if (s.recovery.size() == 0 || s.M_fe.size() == 0)
       full_inertia->where.fail(
           "inertia: full needs the inertia invariants of superelement " + b.superelement.string() +
@@ -101,8 +100,8 @@ struct Builder {
           s.seflex_version + (s.fe_node_ids.empty() ? ", reduced with --no-mesh" : ", reduced without recovery and FE mass") +
           "); re-run `seflex reduce` with this seflex (superelement format 1.2 stores the inertia invariants, with or "
           "without --no-mesh), or use inertia: simplified for this body");
-    s.invariants = at(b.file_where, [&] { return reduction::compute_inertia_invariants(s); });
-    if (!options.keep_mesh && s.invariants.present()) drop_mesh(s);
+    s.invariants = at(b.file_where, [&] { return se::compute_inertia_invariants(s); });
+    if (!options.keep_mesh && s.invariants.present()) io::drop_mesh(s);
     return s;
   }
 
@@ -133,7 +132,7 @@ struct Builder {
         scene.superelements.push_back(files[key]);
       } else {
         auto& kept = truncated[{key, m}];
-        if (!kept) kept = std::make_shared<const se::Superelement>(keep_internal_modes(full, m));
+        if (!kept) kept = std::make_shared<const se::Superelement>(io::keep_internal_modes(full, m));
         scene.superelements.push_back(kept);
       }
       const se::Superelement& s = *scene.superelements.back();
@@ -371,23 +370,6 @@ struct Builder {
 
 }  // namespace
 
-se::Superelement keep_internal_modes(const se::Superelement& s, int modes) {
-  SEFLEX_DEMAND(modes >= 0 && modes <= s.num_modes, "mode count out of range");
-  se::Superelement r = s;
-  const Eigen::Index n = 6 * s.num_interfaces() + modes;
-  r.num_modes = modes;
-  r.K = s.K.topLeftCorner(n, n);
-  r.M = s.M.topLeftCorner(n, n);
-  r.Phi_f = s.Phi_f.leftCols(n);
-  if (s.recovery.size() != 0) r.recovery = s.recovery.leftCols(n);
-  r.invariants = detail::truncate_invariants(s.invariants, n);
-  r.stiffening = detail::truncate_stiffening(s.stiffening, n);
-  r.mode_frequencies_hz = s.mode_frequencies_hz.head(modes);
-  if (modes < s.num_modes) r.truncation.first_neglected_hz = s.mode_frequencies_hz(modes);
-  r.truncation.max_kept_hz = modes > 0 ? s.mode_frequencies_hz(modes - 1) : 0.0;
-  return r;
-}
-
 Scene build_scene(const SceneDescription& d, const SceneBuildOptions& options) {
   Builder b(d, options);
   b.load_bodies();
@@ -398,4 +380,4 @@ Scene build_scene(const SceneDescription& d, const SceneBuildOptions& options) {
   return std::move(b.scene);
 }
 
-}  // namespace seflex::io
+}  // namespace seflex::scene

@@ -13,7 +13,7 @@
 
 #include "seflex/common/error.hpp"
 
-namespace seflex::io::detail {
+namespace seflex::scene::detail {
 
 /// "did you mean 'x'?" for the candidate closest to `word` (edit distance), or "" when none is close.
 std::string did_you_mean(const std::string& word, const std::vector<std::string>& candidates);
@@ -70,4 +70,4 @@ class YamlField {
 /// Parse a whole document (syntax errors become InputError with the line). `file` must outlive the fields.
 YamlField load_yaml(const std::string& text, const std::string* file);
 
-}  // namespace seflex::io::detail
+}  // namespace seflex::scene::detail

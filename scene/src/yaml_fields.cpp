@@ -4,7 +4,7 @@
 #include <cmath>
 #include <set>
 
-namespace seflex::io::detail {
+namespace seflex::scene::detail {
 
 namespace {
 
@@ -179,4 +179,4 @@ YamlField load_yaml(const std::string& text, const std::string* file) {
   }
 }
 
-}  // namespace seflex::io::detail
+}  // namespace seflex::scene::detail

@@ -16,10 +16,11 @@
 
 #include "seflex/common/error.hpp"
 #include "seflex/mbd/solvers/integrator.hpp"
+#include "seflex/mbd/solvers/simulate.hpp"
 #include "seflex/mbd/model.hpp"
 #include "seflex/superelement/superelement.hpp"
 
-namespace seflex::io {
+namespace seflex::scene {
 
 /// Where an item of a scene was written: file:line and its key path ("hinges[2].child").
 struct SceneWhere {
@@ -31,10 +32,6 @@ struct SceneWhere {
 };
 
 enum class Fidelity { Flexible, Rigid };
-
-/// `integrator.method`: the implicit Lie-group generalized-alpha (mbd/integrator.hpp) or the
-/// explicit Runge-Kutta-Munthe-Kaas 4 with a constant step (mbd/explicit_integrator.hpp).
-enum class IntegratorMethod { GeneralizedAlpha, Rk4 };
 
 /// `ground` or `body.node` (node = FE grid id of one of the body's interface nodes).
 struct SceneNodeRef {
@@ -113,7 +110,7 @@ struct SceneDescription {
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
   std::vector<SceneDrive> drives;
   mbd::IntegratorSettings integrator;
-  IntegratorMethod method = IntegratorMethod::GeneralizedAlpha;
+  mbd::IntegratorMethod method = mbd::IntegratorMethod::GeneralizedAlpha;  ///< integrator.method
   std::optional<double> stop_after_all_locked;  ///< [s]
   SceneOutput output;
 };
@@ -141,7 +138,7 @@ SceneDescription parse_scene(const std::string& text, const std::filesystem::pat
 /// What build_scene keeps of the superelement files.
 struct SceneBuildOptions {
   /// Keep each file's mesh part (FE nodes, recovery, FE mass, cells): needed for the animation.
-  /// Without it a file is read without its mesh datasets (SuperelementParts::Dynamics) unless a
+  /// Without it a file is read without its mesh datasets (io::SuperelementParts::Dynamics) unless a
   /// full-inertia body needs the mesh because the file carries no inertia invariants.
   bool keep_mesh = true;
   /// Every flexible body needs the inertia invariants (or the mesh to compute them), whatever its
@@ -151,11 +148,7 @@ struct SceneBuildOptions {
 
 /// Load the superelement files and build the multibody model. A body with full inertia whose file
 /// has no inertia invariants gets them computed from the file's mesh part
-/// (reduction::compute_inertia_invariants); when the file has neither, InputError says what to do.
+/// (se::compute_inertia_invariants); when the file has neither, InputError says what to do.
 Scene build_scene(const SceneDescription& description, const SceneBuildOptions& options = {});
 
-/// The superelement with only its first `modes` fixed-interface modes (exact truncation of the
-/// Craig-Bampton basis: K, M, Phi_f, recovery and the inertia invariants lose the trailing columns).
-se::Superelement keep_internal_modes(const se::Superelement& s, int modes);
-
-}  // namespace seflex::io
+}  // namespace seflex::scene

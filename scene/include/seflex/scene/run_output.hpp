@@ -20,12 +20,12 @@
 #include <string>
 #include <vector>
 
-#include "seflex/io/scene.hpp"
+#include "seflex/scene/scene.hpp"
 #include "seflex/io/vtk_animation.hpp"
 #include "seflex/mbd/solvers/integrator.hpp"
 #include "seflex/mbd/output.hpp"
 
-namespace seflex::io {
+namespace seflex::scene {
 
 struct RunOutputOptions {
   std::filesystem::path folder;
@@ -39,7 +39,7 @@ struct RunEnd {
   std::string message;               ///< failure diagnosis (or a note)
   double wall_seconds = 0.0;
   double cpu_seconds = 0.0;          ///< process CPU time over the same span (building the scene, integrating, writing)
-  std::string formulation = "aic";   ///< which solver ran (io::formulation_name)
+  std::string formulation = "aic";   ///< which solver ran (mbd::formulation_name)
   int coordinates = -1;              ///< unknowns of a multiplier formulation (-1: the model's dofs)
   int multipliers = 0;               ///< its Lagrange multipliers
   std::optional<mbd::RunStats> stats;  ///< absent when the solver threw (counts then come from the samples)
@@ -89,7 +89,7 @@ class RunOutput : public mbd::Observer {
   std::ofstream history_, events_, poses_;
   std::string history_buf_, poses_buf_;  ///< rows not yet written (write_out)
   std::chrono::steady_clock::time_point last_flush_ = std::chrono::steady_clock::now();
-  std::unique_ptr<PvdSeries> animation_;
+  std::unique_ptr<io::PvdSeries> animation_;
   double next_animation_ = 0.0;
   int max_q_ = 0;
   long samples_ = 0, steps_ = 0, newton_ = 0;
@@ -101,4 +101,4 @@ class RunOutput : public mbd::Observer {
   bool stop_announced_ = false;
 };
 
-}  // namespace seflex::io
+}  // namespace seflex::scene

@@ -6,10 +6,10 @@
 #include <set>
 #include <sstream>
 
-#include "seflex/io/scene.hpp"
+#include "seflex/scene/scene.hpp"
 #include "yaml_fields.hpp"
 
-namespace seflex::io {
+namespace seflex::scene {
 
 namespace {
 
@@ -281,7 +281,7 @@ struct Reader {
     mbd::IntegratorSettings& s = d.integrator;
     const std::string method = f.text_or("method", "generalized-alpha");
     if (method != "generalized-alpha" && method != "rk4") f["method"].fail("expected generalized-alpha or rk4, got '" + method + "'");
-    d.method = method == "rk4" ? IntegratorMethod::Rk4 : IntegratorMethod::GeneralizedAlpha;
+    d.method = method == "rk4" ? mbd::IntegratorMethod::Rk4 : mbd::IntegratorMethod::GeneralizedAlpha;
     if (f.has("rho_inf")) {
       s.rho_inf = f["rho_inf"].number();
       if (!(s.rho_inf >= 0.0 && s.rho_inf <= 1.0)) f["rho_inf"].fail("expected a spectral radius between 0 and 1");
@@ -383,4 +383,4 @@ SceneDescription read_scene(const std::filesystem::path& file) {
   return parse_scene(ss.str(), file);
 }
 
-}  // namespace seflex::io
+}  // namespace seflex::scene

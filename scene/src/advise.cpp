@@ -1,6 +1,6 @@
 // seflex advise: variants of a scene run over a short horizon and compared on the hinge angles
 // with the finest variant (io/advise.hpp).
-#include "seflex/io/advise.hpp"
+#include "seflex/scene/advise.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,9 +11,9 @@
 #include <set>
 #include <sstream>
 
-#include "seflex/io/solve_scene.hpp"
+#include "seflex/scene/solve_scene.hpp"
 
-namespace seflex::io {
+namespace seflex::scene {
 
 namespace {
 
@@ -23,7 +23,7 @@ struct Variant {
   std::string name;
   bool reference = false;
   SceneDescription scene;
-  Formulation formulation = Formulation::Aic;
+  mbd::Formulation formulation = mbd::Formulation::Aic;
   bool alternative = false;  ///< another reduction: compared nodes matched by position
 };
 
@@ -150,21 +150,21 @@ void add_ladder(std::vector<Variant>& out, const SceneDescription& d, const std:
   const int most = in_files.empty() ? 0 : *std::max_element(in_files.begin(), in_files.end());
   const auto full = mbd::InertiaModel::Full, simplified = mbd::InertiaModel::Simplified;
   const bool alt = !with_reference;
-  out.push_back({prefix + "flexible / full inertia / all modes", with_reference, with_bodies(d, Fidelity::Flexible, full, {}), Formulation::Aic, alt});
+  out.push_back({prefix + "flexible / full inertia / all modes", with_reference, with_bodies(d, Fidelity::Flexible, full, {}), mbd::Formulation::Aic, alt});
   if (has_stiffening)
     out.push_back({prefix + "flexible / full inertia / all modes / no stiffening", false,
-                   without_stiffening(with_bodies(d, Fidelity::Flexible, full, {})), Formulation::Aic, alt});
+                   without_stiffening(with_bodies(d, Fidelity::Flexible, full, {})), mbd::Formulation::Aic, alt});
   std::set<int> ks(few.begin(), few.end());
   for (auto it = ks.rbegin(); it != ks.rend(); ++it)
     if (*it > 0 && *it < most)
       out.push_back({prefix + "flexible / full inertia / " + modes_name(*it), false, with_bodies(d, Fidelity::Flexible, full, capped(in_files, *it)),
-                     Formulation::Aic, alt});
+                     mbd::Formulation::Aic, alt});
   if (most > 0)
-    out.push_back({prefix + "flexible / full inertia / 0 modes", false, with_bodies(d, Fidelity::Flexible, full, capped(in_files, 0)), Formulation::Aic, alt});
-  out.push_back({prefix + "flexible / simplified mass / all modes", false, with_bodies(d, Fidelity::Flexible, simplified, {}), Formulation::Aic, alt});
+    out.push_back({prefix + "flexible / full inertia / 0 modes", false, with_bodies(d, Fidelity::Flexible, full, capped(in_files, 0)), mbd::Formulation::Aic, alt});
+  out.push_back({prefix + "flexible / simplified mass / all modes", false, with_bodies(d, Fidelity::Flexible, simplified, {}), mbd::Formulation::Aic, alt});
   if (most > 0)
     out.push_back({prefix + "flexible / simplified mass / 0 modes", false, with_bodies(d, Fidelity::Flexible, simplified, capped(in_files, 0)),
-                   Formulation::Aic, alt});
+                   mbd::Formulation::Aic, alt});
 }
 
 /// "alternative NAME: " with NAME the file stem (numbered when two alternatives share a stem).
@@ -222,8 +222,8 @@ AdviseReport advise(const SceneDescription& scene, const AdviseOptions& o) {
   variants.push_back({"rigid", false, with_bodies(scene, Fidelity::Rigid, mbd::InertiaModel::Simplified, {})});
   // The baselines of the classic floating frame with Lagrange multipliers (docs/ffrf.md): the
   // finest model's bodies and modes, and rigid bodies.
-  variants.push_back({"FFRF-LM / flexible / all modes", false, finest, Formulation::FfrfLm});
-  variants.push_back({"rigid-LM", false, finest, Formulation::RigidLm});
+  variants.push_back({"FFRF-LM / flexible / all modes", false, finest, mbd::Formulation::FfrfLm});
+  variants.push_back({"rigid-LM", false, finest, mbd::Formulation::RigidLm});
   for (std::size_t a = 0; a < o.alternatives.size(); ++a) {
     const SceneDescription& alt_d = o.alternatives[a];
     const Scene alt = build_scene(with_bodies(alt_d, Fidelity::Flexible, mbd::InertiaModel::Full, {}));
@@ -248,7 +248,7 @@ AdviseReport advise(const SceneDescription& scene, const AdviseOptions& o) {
     row.reference = true;
     row.dofs = ref_scene.model.num_dofs;
     row.stiffening = stiffened(ref_scene);
-    const mbd::RunStats st = solve_scene(ref_scene, base, Formulation::Aic, &ref).run;  // the reference must run
+    const mbd::RunStats st = solve_scene(ref_scene, base, mbd::Formulation::Aic, &ref).run;  // the reference must run
     row.cpu_seconds = cpu_now() - c0;
     row.steps = st.steps;
     row.ran = true;
@@ -270,11 +270,11 @@ AdviseReport advise(const SceneDescription& scene, const AdviseOptions& o) {
     try {
       const Scene s = build_scene(variants[v].scene);
       row.dofs = s.model.num_dofs;
-      row.stiffening = stiffened(s) && variants[v].formulation == Formulation::Aic;
+      row.stiffening = stiffened(s) && variants[v].formulation == mbd::Formulation::Aic;
       rec = std::make_unique<AngleRecorder>(false, match_nodes(s.model, o.nodes, p0, variants[v].scene.file));
       const double c0 = cpu_now();
       try {
-        const SceneRun run = solve_scene(s, short_run, variants[v].formulation, rec.get());
+        const mbd::SimulationRun run = solve_scene(s, short_run, variants[v].formulation, rec.get());
         const mbd::RunStats& st = run.run;
         if (run.ffrf) {
           row.dofs = run.ffrf->coordinates;
@@ -327,4 +327,4 @@ AdviseReport advise(const SceneDescription& scene, const AdviseOptions& o) {
   return rep;
 }
 
-}  // namespace seflex::io
+}  // namespace seflex::scene
