@@ -17,7 +17,7 @@
 #include "info_superelement.hpp"
 #include "model_args.hpp"
 #include "usage_warnings.hpp"
-#include "seflex/reduction/card_usage.hpp"
+#include "seflex/solutions/card_usage.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/common/version.hpp"
 #include "seflex/io/model_reader.hpp"
@@ -30,6 +30,8 @@ namespace {
 
 using seflex::app::UsageError;
 namespace red = seflex::reduction;
+namespace linalg = seflex::linalg;
+namespace solutions = seflex::solutions;
 
 std::string lower(std::string s) {
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -182,8 +184,8 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
   if (!std::isnan(fmax) && !(fmax > 0 && std::isfinite(fmax)))
     throw UsageError("option --fmax expects a frequency > 0 (Hz)");
   if (compare != kAbsent && compare < 1) throw UsageError("option --compare expects a number of elastic modes >= 1");
-  const auto backend = red::parse_eigen_backend(solver);
-  if (!backend) throw UsageError("option --eigensolver expects " + std::string(red::eigen_backend_names()) + ", got '" + solver + "'");
+  const auto backend = linalg::parse_eigen_backend(solver);
+  if (!backend) throw UsageError("option --eigensolver expects " + std::string(linalg::eigen_backend_names()) + ", got '" + solver + "'");
   const bool writer = seflex::app::writes_files(session);
   if (writer && !force && std::filesystem::exists(*out))  // before the work, not after it
     throw seflex::InputError(seflex::SourceRef{*out, 0},
@@ -194,11 +196,11 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
   red::SuperelementOptions o;
   o.interface_ids = interface_ids(model, *spec);
   const std::string spec_lower = lower(*spec);
-  o.interface_cards = spec_lower == "aset" ? red::kInterfaceAset
-                      : spec_lower == "bset" ? red::kInterfaceBset
-                      : (spec_lower == "suport" || spec_lower == "support") ? red::kInterfaceSuport
-                                                                            : red::kInterfaceNone;
-  const red::CardUsage usage = red::check_card_usage(model, red::Solution::CraigBampton, {red::select_case(model)},
+  o.interface_cards = spec_lower == "aset" ? solutions::kInterfaceAset
+                      : spec_lower == "bset" ? solutions::kInterfaceBset
+                      : (spec_lower == "suport" || spec_lower == "support") ? solutions::kInterfaceSuport
+                                                                            : solutions::kInterfaceNone;
+  const solutions::CardUsage usage = solutions::check_card_usage(model, solutions::Solution::CraigBampton, {solutions::select_case(model)},
                                                      o.interface_cards);
   seflex::app::check_and_print_card_usage(model, usage);
   if (frame) o.frame_node = frame_id(model, *frame);
@@ -219,7 +221,7 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
     o.stiffening_ranks = session->size();
     o.sum_stiffening = plugin.sum_over_ranks;
     // Elements partitioned by METIS, each rank assembling its own, unless constraints need the whole model.
-    if (const auto refusal = plugin.partition_refusal(model, red::select_case(model).mpc)) {
+    if (const auto refusal = plugin.partition_refusal(model, solutions::select_case(model).mpc)) {
       assembly = "replicated on every rank (" + *refusal + ")";
     } else {
       assembly = "partitioned by METIS over " + std::to_string(session->size()) + " ranks";
@@ -248,8 +250,8 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
   seflex::se::Superelement s = red::reduce_to_superelement(model, o, &info);
   const auto t2 = std::chrono::steady_clock::now();
   s.source_file = model_path;
-  for (const red::CardUse& u : usage.uses)
-    if (u.kind != red::CardUse::Kind::Refused) s.source_warnings.push_back(red::describe(model, u));
+  for (const solutions::CardUse& u : usage.uses)
+    if (u.kind != solutions::CardUse::Kind::Refused) s.source_warnings.push_back(solutions::describe(model, u));
   s.source_hash = source_hash(model);
   s.created = iso_utc_now();
   s.seflex_version = seflex::kVersion;

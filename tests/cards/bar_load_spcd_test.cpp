@@ -20,7 +20,7 @@
 #include "nastran_test_util.hpp"
 #include "seflex/fem/loads.hpp"
 #include "seflex/io/nastran_writer.hpp"
-#include "seflex/reduction/statics.hpp"
+#include "seflex/solutions/statics.hpp"
 
 namespace seflex {
 namespace {
@@ -37,7 +37,7 @@ double load_at(const fem::Model& m, int sid, int g, int c) {
   return fem::load_vector(m, dofs, sid)[*fem::find_dof(m, dofs, g, c)];
 }
 
-double u(const fem::Model& m, const reduction::StaticSolution& s, int g, int c) {
+double u(const fem::Model& m, const solutions::StaticSolution& s, int g, int c) {
   return s.u_g[*fem::find_dof(m, s.dofs, g, c)];
 }
 
@@ -58,7 +58,7 @@ TEST(Pload1, FixedEndForcesOfAHalfSpanUniformLoad) {
     EXPECT_NEAR(load_at(m, 2, 2, 5), 5 * q * L * L / 192, 1e-12 * std::abs(q * L * L)) << card;
     EXPECT_EQ(load_at(m, 2, 1, 2), 0.0);
     // the clamped bar does not move: the SPC forces are minus the loads
-    const auto s = reduction::solve_static(m);
+    const auto s = solutions::solve_static(m);
     EXPECT_NEAR(s.q_g[*fem::find_dof(m, s.dofs, 1, 3)], -13 * q * L / 32, 1e-9 * std::abs(q * L));
     EXPECT_NEAR(load_at(round_trip(m), 2, 2, 5), 5 * q * L * L / 192, 1e-12 * std::abs(q * L * L));
   }
@@ -69,13 +69,13 @@ TEST(Pload1, CantileverTipDeflections) {
     const double q0 = 800.0;
     const fem::Model m = test::read_deck(bar_deck("LOAD = 2\n", "SPC1,1,123456,1\nPLOAD1,2,1,FYE,LE,0.,800.,2.,0.\n"));
     const double w = q0 * std::pow(L, 4) / (30 * E * I1);
-    EXPECT_NEAR(u(m, reduction::solve_static(m), 2, 2), w, 1e-12 * w);
+    EXPECT_NEAR(u(m, solutions::solve_static(m), 2, 2), w, 1e-12 * w);
   }
   {  // point load P along basic z at mid-span (X1 = X2)
     const double P = 250.0, a = 1.0;
     const fem::Model m = test::read_deck(bar_deck("LOAD = 2\n", "SPC1,1,123456,1\nPLOAD1,2,1,FZ,LE,1.,250.\n"));
     const double w = P * a * a * (3 * L - a) / (6 * E * I2);
-    const auto s = reduction::solve_static(m);
+    const auto s = solutions::solve_static(m);
     EXPECT_NEAR(u(m, s, 2, 3), w, 1e-12 * w);
     EXPECT_NEAR(s.q_g[*fem::find_dof(m, s.dofs, 1, 5)], P * a, 1e-9 * P * a);  // root moment about y: -(-a P)
   }
@@ -105,7 +105,7 @@ TEST(Pload1, BadInputIsRefused) {
   const fem::Model m = test::read_deck(bar_deck("LOAD = 2\n", "SPC1,1,123456,1\nPLOAD1,2,1,FZ,LE,0.,1.,3.,1.\n"));
   std::string msg;
   try {
-    reduction::solve_static(m);
+    solutions::solve_static(m);
   } catch (const InputError& e) {
     msg = e.what();
   }
@@ -118,23 +118,23 @@ TEST(Spcd, EnforcedTipDisplacementOfACantilever) {
   const double d = 0.01;
   const std::string bulk = "SPC1,1,123456,1\nSPC1,1,3,2\nSPCD,2,2,3,0.01\nLOAD,5,2.,1.,2\n";
   const fem::Model m = test::read_deck(bar_deck("LOAD = 2\n", bulk));
-  const auto s = reduction::solve_static(m);
+  const auto s = solutions::solve_static(m);
   EXPECT_NEAR(u(m, s, 2, 3), d, 1e-15);
   EXPECT_NEAR(u(m, s, 2, 5), -3 * d / (2 * L), 1e-12 * d / L);  // theta_y = -dw/dx
   EXPECT_NEAR(s.q_g[*fem::find_dof(m, s.dofs, 2, 3)], 3 * E * I2 * d / std::pow(L, 3), 1e-9 * 3 * E * I2 * d / std::pow(L, 3));
   // through a LOAD combination: scaled by S * S1 = 2
   const fem::Model c = test::read_deck(bar_deck("LOAD = 5\n", bulk));
-  EXPECT_NEAR(u(c, reduction::solve_static(c), 2, 3), 2 * d, 1e-15);
+  EXPECT_NEAR(u(c, solutions::solve_static(c), 2, 3), 2 * d, 1e-15);
   // written back by seflex convert
   const fem::Model back = round_trip(m);
-  EXPECT_NEAR(u(back, reduction::solve_static(back), 2, 3), d, 1e-15);
+  EXPECT_NEAR(u(back, solutions::solve_static(back), 2, 3), d, 1e-15);
 }
 
 TEST(Spcd, ComponentOutsideTheSpcSetIsAnError) {
   const fem::Model m = test::read_deck(bar_deck("LOAD = 2\n", "SPC1,1,123456,1\nSPCD,2,2,3,0.01\n"));
   std::string msg;
   try {
-    reduction::solve_static(m);
+    solutions::solve_static(m);
   } catch (const InputError& e) {
     msg = e.what();
   }

@@ -13,8 +13,8 @@
 #include "nastran_test_util.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/io/nastran_writer.hpp"
-#include "seflex/reduction/normal_modes.hpp"
-#include "seflex/reduction/statics.hpp"
+#include "seflex/solutions/normal_modes.hpp"
+#include "seflex/solutions/statics.hpp"
 
 namespace seflex {
 namespace {
@@ -22,7 +22,7 @@ namespace {
 Eigen::MatrixXd dense_K(const fem::Model& m) { return Eigen::MatrixXd(fem::assemble(m, fem::assembly_options(m)).K); }
 Eigen::MatrixXd dense_M(const fem::Model& m) { return Eigen::MatrixXd(fem::assemble(m, fem::assembly_options(m)).M); }
 
-double u(const fem::Model& m, const reduction::StaticSolution& s, int g, int c) {
+double u(const fem::Model& m, const solutions::StaticSolution& s, int g, int c) {
   return s.u_g[*fem::find_dof(m, s.dofs, g, c)];
 }
 
@@ -66,7 +66,7 @@ TEST(Cbush, OrientationAndOffsetAgainstHandCalculation) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.4f", S);
     const fem::Model m = test::read_deck(bush_cantilever(card + buf + "\n"));
-    const auto s = reduction::solve_static(m);
+    const auto s = solutions::solve_static(m);
     const double w = F / K2 + F * (1 - S) * (1 - S) * L * L / K6;
     const double ty = -F * (1 - S) * L / K6;
     EXPECT_NEAR(u(m, s, 2, 3), w, 1e-12 * w) << "S = " << S;
@@ -74,7 +74,7 @@ TEST(Cbush, OrientationAndOffsetAgainstHandCalculation) {
     EXPECT_NEAR(u(m, s, 2, 1), 0.0, 1e-15);
     EXPECT_NEAR(u(m, s, 2, 2), 0.0, 1e-15);
     const fem::Model back = round_trip(m);
-    EXPECT_NEAR(u(back, reduction::solve_static(back), 2, 3), w, 1e-12 * w);
+    EXPECT_NEAR(u(back, solutions::solve_static(back), 2, 3), w, 1e-12 * w);
   }
 }
 
@@ -88,9 +88,9 @@ TEST(Cbush, OffsetSystemGoAndCidGiveTheSameStiffness) {
                                  std::string("CBUSH,7,70,1,2,3\nGRID,3,,0.,0.,5.\n"),
                                  std::string("CBUSH,7,70,1,2,,,,9\nCORD2R,9,,0.,0.,0.,0.,-1.,0.,\n,1.,0.,0.\n")}) {
     const fem::Model m = test::read_deck(bush_cantilever(card));
-    EXPECT_NEAR(u(m, reduction::solve_static(m), 2, 3), w, 1e-12 * w) << card;
+    EXPECT_NEAR(u(m, solutions::solve_static(m), 2, 3), w, 1e-12 * w) << card;
     const fem::Model back = round_trip(m);
-    EXPECT_NEAR(u(back, reduction::solve_static(back), 2, 3), w, 1e-12 * w) << card;
+    EXPECT_NEAR(u(back, solutions::solve_static(back), 2, 3), w, 1e-12 * w) << card;
   }
 }
 
@@ -150,13 +150,13 @@ TEST(ScalarElements, TwoDofChainOnScalarPointsMatchesClosedForm) {
   const double a = m1 * m2, b = -(m1 * k2 + m2 * (k1 + k2)), c = k1 * k2;
   const double r1 = (-b - std::sqrt(b * b - 4 * a * c)) / (2 * a), r2 = (-b + std::sqrt(b * b - 4 * a * c)) / (2 * a);
   for (const fem::Model* model : {&m}) {
-    const auto modes = reduction::solve_normal_modes(*model);
+    const auto modes = solutions::solve_normal_modes(*model);
     ASSERT_EQ(modes.eigenvalues.size(), 2);
     EXPECT_NEAR(modes.eigenvalues[0], r1, 1e-9 * r1);
     EXPECT_NEAR(modes.eigenvalues[1], r2, 1e-9 * r2);
   }
   const fem::Model back = round_trip(m);
-  const auto modes = reduction::solve_normal_modes(back);
+  const auto modes = solutions::solve_normal_modes(back);
   ASSERT_EQ(modes.eigenvalues.size(), 2);
   EXPECT_NEAR(modes.eigenvalues[1], r2, 1e-9 * r2);
   EXPECT_TRUE(test::mentions(test::read_error("GRID,5,,0.,0.,0.\nCELAS4,1,1000.,5\nCMASS2,2,1.,5,1\n"), {"deck.bdf:2: CELAS4 1, field 4 (S1): references point 5, which is not an SPOINT; expected a scalar point (it is a GRID: use CELAS1 or CELAS2)"}));
@@ -200,7 +200,7 @@ TEST(Conm1, RotatedMatrixAndFrequency) {
   const fem::Model f = test::read_deck(
       "SOL 103\nCEND\nMETHOD = 1\nSPC = 1\nBEGIN BULK\nEIGRL,1,,,1\nGRID,1,,0.,0.,0.\nSPC1,1,12456,1\n"
       "CONM1,5,1,,2.,,3.,,,\n,4.\nCELAS2,6,100.,1,3\nENDDATA\n");
-  const auto modes = reduction::solve_normal_modes(f);
+  const auto modes = solutions::solve_normal_modes(f);
   ASSERT_GE(modes.eigenvalues.size(), 1);
   EXPECT_NEAR(modes.eigenvalues[0], 100.0 / 4.0, 1e-12 * 25.0);
   EXPECT_TRUE(test::mentions(test::read_error("CONM1,5,1,,-2.\n"), {"deck.bdf:1: CONM1 5, field 5 (M11): got real '-2.'; expected a diagonal term >= 0"}));

@@ -10,8 +10,8 @@
 
 #include "nastran_test_util.hpp"
 #include "seflex/fem/finalize.hpp"
-#include "seflex/reduction/card_usage.hpp"
-#include "seflex/reduction/statics.hpp"
+#include "seflex/solutions/card_usage.hpp"
+#include "seflex/solutions/statics.hpp"
 
 namespace seflex {
 namespace {
@@ -28,9 +28,9 @@ const fem::UnsupportedCard* listed(const fem::Model& m, const std::string& name)
 
 /// The error a linear statics run gives (require_usable), "" if it would run.
 std::string statics_refusal(const fem::Model& m) {
-  const auto cases = reduction::select_cases(m);
+  const auto cases = solutions::select_cases(m);
   try {
-    reduction::require_usable(m, reduction::check_card_usage(m, reduction::Solution::Statics, cases));
+    solutions::require_usable(m, solutions::check_card_usage(m, solutions::Solution::Statics, cases));
   } catch (const InputError& e) {
     return e.what();
   }

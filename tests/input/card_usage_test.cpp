@@ -4,15 +4,15 @@
 #include <gtest/gtest.h>
 
 #include "nastran_test_util.hpp"
-#include "seflex/reduction/card_usage.hpp"
-#include "seflex/reduction/normal_modes.hpp"
-#include "seflex/reduction/statics.hpp"
+#include "seflex/solutions/card_usage.hpp"
+#include "seflex/solutions/normal_modes.hpp"
+#include "seflex/solutions/statics.hpp"
 
 namespace seflex {
 namespace {
 
-using reduction::CardUse;
-using reduction::Solution;
+using solutions::CardUse;
+using solutions::Solution;
 using test::mentions;
 
 /// A clamped two-bar cantilever (grids 1-3) with a tip FORCE in load set 7, SPC set 1, EIGRL 1.
@@ -27,13 +27,13 @@ std::string deck(const std::string& case_control, const std::string& more_bulk) 
   return "SOL 101\nCEND\n" + case_control + "BEGIN BULK\n" + bulk() + more_bulk + "ENDDATA\n";
 }
 
-reduction::CardUsage usage(const fem::Model& m, Solution s) {
-  const auto cases = s == Solution::Statics ? reduction::select_cases(m) : std::vector{reduction::select_case(m)};
-  return reduction::check_card_usage(m, s, cases);
+solutions::CardUsage usage(const fem::Model& m, Solution s) {
+  const auto cases = s == Solution::Statics ? solutions::select_cases(m) : std::vector{solutions::select_case(m)};
+  return solutions::check_card_usage(m, s, cases);
 }
 
 /// The entry of `card` (first one), or a test failure.
-const CardUse* find(const reduction::CardUsage& u, const std::string& card) {
+const CardUse* find(const solutions::CardUsage& u, const std::string& card) {
   for (const CardUse& e : u.uses)
     if (e.card == card) return &e;
   ADD_FAILURE() << "no entry for " << card;
@@ -42,7 +42,7 @@ const CardUse* find(const reduction::CardUsage& u, const std::string& card) {
 
 std::string refusal(const fem::Model& m, Solution s) {
   try {
-    reduction::require_usable(m, usage(m, s));
+    solutions::require_usable(m, usage(m, s));
   } catch (const InputError& e) {
     return e.what();
   }
@@ -59,7 +59,7 @@ TEST(CardUsage, SelectedLoadWithAnUnsupportedCardIsRefusedUnselectedIsAWarning) 
                        {"deck.bdf:16: PLOADX1: load set 9 selected by the case control holds them, and seflex does not "
                         "apply PLOADX1 loads; linear statics (SOL 101) cannot run without it"}));
   try {  // the library refuses too, with the same message
-    reduction::solve_static(used);
+    solutions::solve_static(used);
     ADD_FAILURE() << "solve_static ran a deck whose selected load set holds PLOADX1";
   } catch (const InputError& e) {
     EXPECT_TRUE(mentions(e.what(), {"deck.bdf:16: PLOADX1: load set 9 selected by the case control holds them, and "
@@ -72,9 +72,9 @@ TEST(CardUsage, SelectedLoadWithAnUnsupportedCardIsRefusedUnselectedIsAWarning) 
   const CardUse* p = find(u, "PLOADX1");
   ASSERT_NE(p, nullptr);
   EXPECT_EQ(p->kind, CardUse::Kind::Unused);
-  EXPECT_EQ(reduction::describe(unused, *p),
+  EXPECT_EQ(solutions::describe(unused, *p),
             "PLOADX1: 1 card, first at deck.bdf:16: load set 9 not selected by any subcase linear statics (SOL 101) runs");
-  EXPECT_NO_THROW(reduction::solve_static(unused));
+  EXPECT_NO_THROW(solutions::solve_static(unused));
   // in normal modes every load card is unused
   const auto modes = usage(unused, Solution::NormalModes);
   EXPECT_EQ(find(modes, "FORCE")->reason, "loads are not used by normal modes (SOL 103)");
@@ -89,17 +89,17 @@ TEST(CardUsage, ReferencesOfUnselectedSetsWarnSelectedRefuse) {
   const fem::Model m = test::read_deck("SOL 103\nCEND\nSPC = 1\nMETHOD = 1\nBEGIN BULK\n" + bulk() + eigr);
   const auto u = usage(m, Solution::NormalModes);
   EXPECT_FALSE(u.refused());
-  EXPECT_TRUE(mentions(reduction::describe(m, *find(u, "EIGR")),
+  EXPECT_TRUE(mentions(solutions::describe(m, *find(u, "EIGR")),
                        {"EIGR: 1 card, first at deck.bdf:16: NORM = POINT names grid 55 component 3, which is not a dof of "
                         "the model (the method is not selected)"}));
-  EXPECT_EQ(reduction::solve_normal_modes(m).eigenvalues.size(), 2);
+  EXPECT_EQ(solutions::solve_normal_modes(m).eigenvalues.size(), 2);
   // selected: the modes are computed and normalised to MAX instead (eigenvalues do not depend on it)
   const fem::Model sel = test::read_deck("SOL 103\nCEND\nSPC = 1\nMETHOD = 2\nBEGIN BULK\n" + bulk() + eigr);
   const auto usel = usage(sel, Solution::NormalModes);
   const CardUse* e = find(usel, "EIGR");
   ASSERT_NE(e, nullptr);
   EXPECT_EQ(e->kind, CardUse::Kind::Approximated);
-  const reduction::NormalModes r = reduction::solve_normal_modes(sel);
+  const solutions::NormalModes r = solutions::solve_normal_modes(sel);
   ASSERT_EQ(r.eigenvalues.size(), 4);  // ND of EIGR 2
   for (Eigen::Index k = 0; k < 4; ++k) EXPECT_EQ(r.shapes_g.col(k).cwiseAbs().maxCoeff(), 1.0);  // MAX
 
@@ -108,14 +108,14 @@ TEST(CardUsage, ReferencesOfUnselectedSetsWarnSelectedRefuse) {
   const fem::Model s1 = test::read_deck(deck("SPC = 1\nLOAD = 7\n", spc));
   const auto u1 = usage(s1, Solution::Statics);
   EXPECT_FALSE(u1.refused());
-  EXPECT_TRUE(mentions(reduction::describe(s1, *find(u1, "SPC/SPC1")),
+  EXPECT_TRUE(mentions(solutions::describe(s1, *find(u1, "SPC/SPC1")),
                        {"deck.bdf:16", "SPC set 4: references point 77, which is not defined (the set is not used)"}));
   // selected through SPCADD 5: set 4's missing grid and the missing set 88 both refuse it
   EXPECT_TRUE(mentions(refusal(test::read_deck(deck("SPC = 5\nLOAD = 7\n", spc)), Solution::Statics),
                        {"deck.bdf:16: SPC/SPC1: SPC set 4: references point 77, which is not defined", "1 more problem"}));
   const fem::Model s5 = test::read_deck(deck("SPC = 5\nLOAD = 7\n", spc));
   const auto u5 = usage(s5, Solution::Statics);
-  EXPECT_TRUE(mentions(reduction::describe(s5, *find(u5, "SPCADD")),
+  EXPECT_TRUE(mentions(solutions::describe(s5, *find(u5, "SPCADD")),
                        {"deck.bdf:17: SPCADD 5 references SPC set 88, which no card defines"}));
   // a selection that names nothing
   EXPECT_TRUE(mentions(refusal(test::read_deck(deck("SPC = 1\nLOAD = 8\n", "")), Solution::Statics),
@@ -129,7 +129,7 @@ TEST(CardUsage, ReferencesOfUnselectedSetsWarnSelectedRefuse) {
   // PARAM GRDPNT naming no grid: the basic origin, with a warning
   const fem::Model g = test::read_deck(deck("SPC = 1\nLOAD = 7\n", "PARAM,GRDPNT,12\n"));
   const auto ug = usage(g, Solution::Statics);
-  EXPECT_TRUE(mentions(reduction::describe(g, *find(ug, "PARAM GRDPNT")),
+  EXPECT_TRUE(mentions(solutions::describe(g, *find(ug, "PARAM GRDPNT")),
                        {"deck.bdf:16", "grid 12 is not defined; the mass properties (seflex info) use the basic origin"}));
 }
 
@@ -143,9 +143,9 @@ TEST(CardUsage, Spc1ThruSkipsMissingGrids) {
   ASSERT_NE(e, nullptr);
   EXPECT_EQ(e->kind, CardUse::Kind::Approximated);
   EXPECT_EQ(e->count, 997u);  // 4 ... 1000 do not exist
-  EXPECT_TRUE(mentions(reduction::describe(m, *e), {"SPC1: 997 cards, first at deck.bdf:17",
+  EXPECT_TRUE(mentions(solutions::describe(m, *e), {"SPC1: 997 cards, first at deck.bdf:17",
                                                     "grids of a THRU range that do not exist are skipped"}));
-  const auto s = reduction::solve_static(m);
+  const auto s = solutions::solve_static(m);
   EXPECT_GT(s.u_g.norm(), 0.0);
   EXPECT_TRUE(mentions(refusal(test::read_deck(deck("SPC = 3\nLOAD = 7\n", "SPC1,3,123456,1,1000\n")), Solution::Statics),
                        {"deck.bdf:16: SPC/SPC1: SPC set 3: references point 1000, which is not defined"}));
@@ -158,7 +158,7 @@ TEST(CardUsage, UnsupportedStructureRefusesEverySolution) {
   for (const Solution s : {Solution::Statics, Solution::NormalModes, Solution::CraigBampton})
     EXPECT_TRUE(mentions(refusal(m, s), {"deck.bdf:16: CPYRAM: seflex does not model CPYRAM", "cannot run without it",
                                          "1 more problem"}));
-  const auto c = reduction::check_card_usage(m, Solution::Convert, {});
+  const auto c = solutions::check_card_usage(m, Solution::Convert, {});
   EXPECT_FALSE(c.refused());
   EXPECT_EQ(find(c, "CPYRAM")->reason, "not written: seflex does not model it");
 }
@@ -175,9 +175,9 @@ TEST(CardUsage, CompositeShellCardsAreUsed) {
   const fem::Model m = test::read_deck(deck("SPC = 1\nLOAD = 7\n", shells));
   for (const Solution s : {Solution::Statics, Solution::NormalModes, Solution::CraigBampton}) {
     const auto u = usage(m, s);
-    EXPECT_FALSE(u.refused()) << reduction::solution_name(s);
+    EXPECT_FALSE(u.refused()) << solutions::solution_name(s);
     for (const char* card : {"PCOMP", "PCOMPG", "MAT8", "MAT2"})
-      for (const CardUse& e : u.uses) EXPECT_NE(e.card, card) << reduction::describe(m, e);
+      for (const CardUse& e : u.uses) EXPECT_NE(e.card, card) << solutions::describe(m, e);
   }
   const auto u = usage(m, Solution::Statics);
   EXPECT_EQ(find(u, "PCOMP ply of MAT2 (rigid in transverse shear: a MAT2 gives no transverse shear moduli)")->kind,
@@ -197,7 +197,7 @@ TEST(CardUsage, CaseControlSelections) {
                 "TEMPD or TEMPRB card"}));
   const fem::Model t = test::read_deck(deck("SPC = 1\nSUBCASE 1\nLOAD = 7\nSUBCASE 2\nTEMP(LOAD) = 21\n", temps));
   EXPECT_FALSE(usage(t, Solution::Statics).refused());
-  const auto b = reduction::check_card_usage(t, Solution::Buckling, reduction::select_cases(t));
+  const auto b = solutions::check_card_usage(t, Solution::Buckling, solutions::select_cases(t));
   ASSERT_TRUE(b.refused());
   EXPECT_TRUE(mentions(b.uses.front().reason, {"TEMPERATURE(LOAD) = 21 selects thermal loads", "in buckling"}));
   // the first subcase alone does not need it; TEMP(INIT) and DLOAD are warnings
@@ -240,7 +240,7 @@ TEST(CardUsage, DeckForAnotherSolutionIsSaidNotRefused) {
   const CardUse* sol = find(modes, "executive control SOL");
   ASSERT_NE(sol, nullptr);
   EXPECT_EQ(sol->kind, CardUse::Kind::Unused);
-  EXPECT_TRUE(mentions(reduction::describe(m, *sol), {"executive control SOL (deck.bdf", "the deck asks for linear statics (SOL 101)"}));
+  EXPECT_TRUE(mentions(solutions::describe(m, *sol), {"executive control SOL (deck.bdf", "the deck asks for linear statics (SOL 101)"}));
   for (const CardUse& e : usage(m, Solution::Statics).uses) EXPECT_NE(e.card, "executive control SOL");
 }
 
@@ -267,7 +267,7 @@ fem::Model plate_with_conm2(const std::string& inertia, const std::string& more)
 // only, or when a bar also reaches the grid.
 TEST(CardUsage, ConmInertiaAboutAFlatShellNormalIsAWarning) {
   const fem::Model m = plate_with_conm2("1.e-4,0.,1.e-4,0.,0.,2.e-4", "");
-  const reduction::CardUsage u = usage(m, Solution::NormalModes);
+  const solutions::CardUsage u = usage(m, Solution::NormalModes);
   const CardUse* e = find(u, "CONM2");
   ASSERT_NE(e, nullptr);
   EXPECT_EQ(e->kind, CardUse::Kind::Approximated);
@@ -286,9 +286,9 @@ TEST(CardUsage, ConmInertiaAboutAFlatShellNormalIsAWarning) {
   // The physics the warning stands for: with I33 = 10 kg m^2 and K6ROT = 100 the centre's drilling
   // rotation is a mode (2.8 Hz) below the plate's first elastic one (4.5 Hz); with K6ROT = 1e5 it is
   // 32x higher (stiffness 1000x), out of the low spectrum, and the elastic modes are unchanged.
-  const auto low = reduction::solve_normal_modes(plate_with_conm2("1.e-4,0.,1.e-4,0.,0.,10.", ""));
-  const auto high = reduction::solve_normal_modes(plate_with_conm2("1.e-4,0.,1.e-4,0.,0.,10.", "PARAM,K6ROT,1.e5\n"));
-  const auto bare = reduction::solve_normal_modes(plate_with_conm2("1.e-4,0.,1.e-4,0.,0.,0.", ""));
+  const auto low = solutions::solve_normal_modes(plate_with_conm2("1.e-4,0.,1.e-4,0.,0.,10.", ""));
+  const auto high = solutions::solve_normal_modes(plate_with_conm2("1.e-4,0.,1.e-4,0.,0.,10.", "PARAM,K6ROT,1.e5\n"));
+  const auto bare = solutions::solve_normal_modes(plate_with_conm2("1.e-4,0.,1.e-4,0.,0.,0.", ""));
   EXPECT_LT(low.cycles()(6), 0.7 * bare.cycles()(6));  // 2.76 Hz against 4.51 Hz
   for (int k = 6; k < 9; ++k) EXPECT_NEAR(high.cycles()(k) / bare.cycles()(k), 1.0, 1e-6) << "mode " << k + 1;
 }

@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "nastran_test_util.hpp"
-#include "seflex/reduction/card_usage.hpp"
-#include "seflex/reduction/statics.hpp"
+#include "seflex/solutions/card_usage.hpp"
+#include "seflex/solutions/statics.hpp"
 #include "test_support.hpp"
 
 namespace seflex {
@@ -29,7 +29,7 @@ std::string deck(const std::string& case_control, const std::string& more) {
 /// The InputError of solving the statics of `text` ("" and a failure if it solves).
 std::string solve_error(const std::string& text) {
   try {
-    reduction::solve_statics(test::read_deck(text));
+    solutions::solve_statics(test::read_deck(text));
   } catch (const InputError& e) {
     return e.what();
   }
@@ -73,14 +73,14 @@ TEST(LoadsBadInput, SelectedLoadReferencesAreChecked) {
   // an unselected GRAV/RFORCE/PLOAD2 set is a warning, whatever it references; the deck runs
   const fem::Model w = test::read_deck(
       deck("LOAD = 3\n", "GRAV,3,,9.81,0.,0.,1.\nGRAV,4,6,1.,0.,0.,1.\nRFORCE,5,77,,1.,0.,0.,1.\nPLOAD2,6,1.,2\n"));
-  const auto u = reduction::check_card_usage(w, reduction::Solution::Statics, reduction::select_cases(w));
+  const auto u = solutions::check_card_usage(w, solutions::Solution::Statics, solutions::select_cases(w));
   EXPECT_FALSE(u.refused());
   std::size_t unselected = 0;
   for (const auto& e : u.uses)
     unselected += e.reason.find(" not selected by any subcase") != std::string::npos &&
                   (e.card == "GRAV" || e.card == "RFORCE" || e.card == "PLOAD2");
   EXPECT_EQ(unselected, 3u);
-  EXPECT_NO_THROW(reduction::solve_static(w));
+  EXPECT_NO_THROW(solutions::solve_static(w));
   // a LOAD combining a set no load card defines
   EXPECT_TRUE(mentions(solve_error(deck("LOAD = 9\n", "GRAV,3,,9.81,0.,0.,1.\nLOAD,9,1.,1.,3,1.,6\n")),
                        {"deck.bdf:19: LOAD: LOAD 9 (selected by the global case control) references load set 6, which no load "
@@ -94,7 +94,7 @@ TEST(LoadsBadInput, ThermalSelections) {
       mentions(solve_error(deck("TEMPERATURE(LOAD) = 8\n", bars_only)),
                {"case control TEMPERATURE(LOAD)", "TEMPERATURE(LOAD) = 8 selects no TEMP, TEMPD or TEMPRB card"}));
   // grid temperatures that heat the shell (its MAT1 has ALPHA): its thermal load is computed
-  EXPECT_NO_THROW(reduction::solve_statics(test::read_deck(deck("TEMP(LOAD) = 7\n", "TEMPD,7,50.\n"))));
+  EXPECT_NO_THROW(solutions::solve_statics(test::read_deck(deck("TEMP(LOAD) = 7\n", "TEMPD,7,50.\n"))));
   // ... but not the thermal moment of a PSHELL MID4 with thermal expansion: refused, naming the shell
   const std::string mid4 = "MAT1,4,7.e9,,0.3,0.,1.e-5,20.\nPSHELL,3,1,0.002,1,,,,,+P\n+P,,,4\n"
                            "GRID,7,,0.,2.,0.\nGRID,8,,1.,2.,0.\nCQUAD4,11,3,4,5,8,7\n";
@@ -110,7 +110,7 @@ TEST(LoadsBadInput, ThermalSelections) {
   // the shell at TREF is fine, the bars get their load; TEMP(INIT) and an unselected set warn
   const fem::Model ok =
       test::read_deck(deck("TEMP(LOAD) = 7\nTEMP(INIT) = 9\n", "TEMPD,7,20.\nTEMP,7,3,80.\nTEMPD,9,0.\nTEMPD,12,5.\n"));
-  const auto u = reduction::check_card_usage(ok, reduction::Solution::Statics, reduction::select_cases(ok));
+  const auto u = solutions::check_card_usage(ok, solutions::Solution::Statics, solutions::select_cases(ok));
   EXPECT_FALSE(u.refused());
   bool init = false, unselected = false;
   for (const auto& e : u.uses) {
@@ -120,7 +120,7 @@ TEST(LoadsBadInput, ThermalSelections) {
   }
   EXPECT_TRUE(init);
   EXPECT_TRUE(unselected);
-  EXPECT_NO_THROW(reduction::solve_static(ok));
+  EXPECT_NO_THROW(solutions::solve_static(ok));
 }
 
 // Shells of a PCOMP or of MAT8/MAT2 materials: their ply/material expansion coefficients are used
@@ -129,11 +129,11 @@ TEST(LoadsBadInput, ThermalSelections) {
 TEST(LoadsBadInput, ThermalSetsOnCompositeShellsRun) {
   const std::string pcomp = "MAT8,8,1.81+11,1.03+10,.28,7.17+9,5.+9,4.+9,1600.\n,0.02-6,22.5-6\nPCOMP,3\n,8,.001,0.,,8,.001,90.\n"
                             "GRID,7,,0.,2.,0.\nGRID,8,,1.,2.,0.\nCQUAD4,11,3,4,5,8,7\n";
-  const auto s = reduction::solve_static(test::read_deck(deck("TEMP(LOAD) = 7\n", pcomp + "TEMP,7,7,80.\nTEMPD,7,20.\n")));
+  const auto s = solutions::solve_static(test::read_deck(deck("TEMP(LOAD) = 7\n", pcomp + "TEMP,7,7,80.\nTEMPD,7,20.\n")));
   EXPECT_GT(s.u_g.cwiseAbs().maxCoeff(), 0.0);  // the unsymmetric [0/90] curls
   const std::string mat8_pshell = "MAT8,8,1.81+11,1.03+10,.28,7.17+9,5.+9,4.+9,1600.\nPSHELL,3,8,.002,8\n"
                                   "GRID,7,,0.,2.,0.\nGRID,8,,1.,2.,0.\nCQUAD4,11,3,4,5,8,7\n";
-  EXPECT_NO_THROW(reduction::solve_static(
+  EXPECT_NO_THROW(solutions::solve_static(
       test::read_deck(deck("TEMP(LOAD) = 7\n", mat8_pshell + "TEMPRB,7,1,30.,30.\nTEMPRB,7,2,30.,30.\nTEMP,7,8,80.\nTEMPD,7,20.\n"))));
 }
 

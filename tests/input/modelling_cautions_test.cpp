@@ -1,4 +1,4 @@
-// Cautions of reduction::check_card_usage (reduction/src/modelling_cautions.hpp): what a deck asks
+// Cautions of solutions::check_card_usage (reduction/src/modelling_cautions.hpp): what a deck asks
 // for and seflex computes as written, with a consequence the user is told in a warning: a bar
 // without torsional stiffness (J = 0), plates thick for their mesh, RFORCE's unit. Each message is
 // asserted whole, and each is absent from ordinary decks (the demo meshes, the examples, the
@@ -10,30 +10,30 @@
 
 #include "nastran_test_util.hpp"
 #include "seflex/io/nastran.hpp"
-#include "seflex/reduction/buckling.hpp"
-#include "seflex/reduction/card_usage.hpp"
-#include "seflex/reduction/statics.hpp"
+#include "seflex/solutions/buckling.hpp"
+#include "seflex/solutions/card_usage.hpp"
+#include "seflex/solutions/statics.hpp"
 
 namespace seflex {
 namespace {
 
-using reduction::CardUse;
-using reduction::Solution;
+using solutions::CardUse;
+using solutions::Solution;
 
-reduction::CardUsage usage(const fem::Model& m, Solution s) {
+solutions::CardUsage usage(const fem::Model& m, Solution s) {
   if (s == Solution::Buckling) {
-    const auto [preload, buckle] = reduction::buckling_cases(m);
-    return reduction::check_card_usage(m, s, {preload, buckle});
+    const auto [preload, buckle] = solutions::buckling_cases(m);
+    return solutions::check_card_usage(m, s, {preload, buckle});
   }
-  const auto cases = s == Solution::Statics ? reduction::select_cases(m) : std::vector{reduction::select_case(m)};
-  return reduction::check_card_usage(m, s, cases);
+  const auto cases = s == Solution::Statics ? solutions::select_cases(m) : std::vector{solutions::select_case(m)};
+  return solutions::check_card_usage(m, s, cases);
 }
 
 /// The Caution entries of `u`, described ("CARD: N cards, first at file:line: reason").
-std::vector<std::string> cautions(const fem::Model& m, const reduction::CardUsage& u) {
+std::vector<std::string> cautions(const fem::Model& m, const solutions::CardUsage& u) {
   std::vector<std::string> out;
   for (const CardUse& e : u.uses)
-    if (e.kind == CardUse::Kind::Caution) out.push_back(reduction::describe(m, e));
+    if (e.kind == CardUse::Kind::Caution) out.push_back(solutions::describe(m, e));
   return out;
 }
 
@@ -58,7 +58,7 @@ TEST(ModellingCautions, BarWithoutTorsionalStiffnessIsNamedWithItsElements) {
                 "PBAR: 1 card, first at deck.bdf:7: PBAR 1 (2 CBAR elements): J = 0, no torsional stiffness: the twist "
                 "of these elements about their axis is held only by what they connect to (other elements, SPC, or "
                 "AUTOSPC where nothing else holds it); give J if the section has torsional stiffness"});
-  EXPECT_NO_THROW(reduction::solve_static(m));  // a warning, not a refusal: the clamp holds the twist
+  EXPECT_NO_THROW(solutions::solve_static(m));  // a warning, not a refusal: the clamp holds the twist
   // normal modes: the same
   EXPECT_EQ(cautions(m, usage(m, Solution::NormalModes)), cautions(m, statics));
 
@@ -93,10 +93,10 @@ TEST(ModellingCautions, BarWithoutTorsionalStiffnessIsNamedWithItsElements) {
 TEST(ModellingCautions, BarWithTorsionalStiffnessOrUnusedPropertyIsNotNamed) {
   const fem::Model m = test::read_deck(cantilever("SPC = 1\nLOAD = 7\n", kPbarJ, "PBAR,2,1,1.e-4,1.e-8,1.e-8\n"));
   for (const Solution s : {Solution::Statics, Solution::NormalModes, Solution::Info})
-    EXPECT_TRUE(cautions(m, usage(m, s)).empty()) << reduction::solution_name(s);
+    EXPECT_TRUE(cautions(m, usage(m, s)).empty()) << solutions::solution_name(s);
   // seflex convert writes the deck as it is: nothing to caution about
   const fem::Model z = test::read_deck(cantilever("SPC = 1\nLOAD = 7\n", kPbarNoJ));
-  EXPECT_TRUE(cautions(z, reduction::check_card_usage(z, Solution::Convert, {})).empty());
+  EXPECT_TRUE(cautions(z, solutions::check_card_usage(z, Solution::Convert, {})).empty());
 }
 
 // RFORCE A is in revolutions per unit time (MSC Nastran QRG; fem/src/loads.cpp applies 2 pi A,
@@ -213,7 +213,7 @@ TEST(ModellingCautions, ValidationDecksStateTheirsOrdinaryDecksNone) {
   const std::filesystem::path loads = data / "validation/mystran_static_loads";
   auto cautions_of = [](const std::filesystem::path& p) {
     const fem::Model m = io::read_nastran(p);
-    const Solution s = reduction::solution_of_deck(m);
+    const Solution s = solutions::solution_of_deck(m);
     return cautions(m, usage(m, s == Solution::Info ? Solution::NormalModes : s));
   };
   const auto thick = cautions_of(loads / "AQ3U2S004.DAT");

@@ -1,6 +1,6 @@
 // Generalised eigensolver against analytic spectra, an independent dense reference (massless dofs
 // condensed exactly), MYSTRAN's beam frequencies, and between its backends.
-#include "seflex/reduction/eigensolver.hpp"
+#include "seflex/linalg/eigensolver.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 
 #include "test_problems.hpp"
 
-namespace seflex::reduction {
+namespace seflex::linalg {
 namespace {
 
 using test::Pencil;
@@ -255,4 +255,4 @@ TEST(Eigensolver, ParsesBackendNames) {
 }
 
 }  // namespace
-}  // namespace seflex::reduction
+}  // namespace seflex::linalg

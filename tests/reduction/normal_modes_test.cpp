@@ -1,6 +1,6 @@
 // Normal-modes solution: MYSTRAN's bar decks (frequencies, normalisation, generalised mass and
 // stiffness), free-free plates (rigid-body mode count, Spectra vs ARPACK vs dense), EIGRL ranges.
-#include "seflex/reduction/normal_modes.hpp"
+#include "seflex/solutions/normal_modes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 
 #include "fem_models.hpp"
 
-namespace seflex::reduction {
+namespace seflex::solutions {
 namespace {
 
 // BAR-CC-GIV (MYSTRAN 12.0, tests/data/validation/mystran_cbar_cantilever_and_freefree_modes/
@@ -79,7 +79,7 @@ void expect_six_rigid_body_modes(const NormalModes& r) {
 TEST(NormalModes, FreePlateHasSixRigidBodyModesWithEveryKrylovBackend) {
   const fem::Model m = free_plate();
   std::vector<NormalModes> results;
-  for (auto backend : {EigenBackend::Spectra, EigenBackend::Arpack, EigenBackend::Block}) {
+  for (auto backend : {linalg::EigenBackend::Spectra, linalg::EigenBackend::Arpack, linalg::EigenBackend::Block}) {
     ModesOptions o;
     o.count = 14;
     o.backend = backend;
@@ -102,11 +102,11 @@ TEST(NormalModes, KrylovMatchesTheDenseSolution) {
   const fem::Model m = free_plate(10, 7);  // 528 dofs
   ModesOptions o;
   o.count = 12;
-  o.backend = EigenBackend::Dense;
+  o.backend = linalg::EigenBackend::Dense;
   const NormalModes dense = solve_normal_modes(m, o);
-  EXPECT_EQ(dense.stats.backend_used, EigenBackend::Dense);
+  EXPECT_EQ(dense.stats.backend_used, linalg::EigenBackend::Dense);
   expect_six_rigid_body_modes(dense);
-  for (auto backend : {ModesOptions{}.backend, EigenBackend::Spectra}) {
+  for (auto backend : {ModesOptions{}.backend, linalg::EigenBackend::Spectra}) {
     o.backend = backend;
     const NormalModes krylov = solve_normal_modes(m, o);
     EXPECT_EQ(krylov.stats.backend_used, backend);
@@ -270,4 +270,4 @@ TEST(NormalModes, OmitGivesTheSameReductionAndConflictsAreErrors) {
   }
 }
 }  // namespace
-}  // namespace seflex::reduction
+}  // namespace seflex::solutions

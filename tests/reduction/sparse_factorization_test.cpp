@@ -1,12 +1,12 @@
 // Sparse factorisation backends: solves against the matrix itself, symbolic reuse, indefinite
 // matrices (Sturm counts against analytic eigenvalues) and breakdown reporting.
-#include "seflex/reduction/sparse_factorization.hpp"
+#include "seflex/linalg/sparse_factorization.hpp"
 
 #include <gtest/gtest.h>
 
 #include "test_problems.hpp"
 
-namespace seflex::reduction {
+namespace seflex::linalg {
 namespace {
 
 using test::Pencil;
@@ -126,4 +126,4 @@ TEST(Factorization, ParsesBackendNames) {
 }
 
 }  // namespace
-}  // namespace seflex::reduction
+}  // namespace seflex::linalg

@@ -1,12 +1,12 @@
 // Linear statics against beam theory and equilibrium; bad case control and unsupported models.
-#include "seflex/reduction/statics.hpp"
+#include "seflex/solutions/statics.hpp"
 
 #include <gtest/gtest.h>
 
 #include "fem_models.hpp"
-#include "seflex/reduction/grid_results.hpp"
+#include "seflex/solutions/grid_results.hpp"
 
-namespace seflex::reduction {
+namespace seflex::solutions {
 namespace {
 
 constexpr double kE = 7.0e10, kI = 2.0e-8, kL = 1.5, kP = 120.0;
@@ -121,4 +121,4 @@ TEST(Statics, UnsupportedModelNamesAGrid) {
 }
 
 }  // namespace
-}  // namespace seflex::reduction
+}  // namespace seflex::solutions

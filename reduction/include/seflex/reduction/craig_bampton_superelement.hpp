@@ -108,6 +108,6 @@ Eigen::VectorXd reduced_eigenvalues(const se::Superelement& body, int count);
 /// Lowest `count` eigenvalues of the full FE model with the constraints `reduce_to_superelement`
 /// applies (case-control SPC and MPC, rigid elements, AUTOSPC), for comparison with the reduced model.
 Eigen::VectorXd full_model_eigenvalues(const fem::Model& model, int count,
-                                       EigenBackend backend = EigenBackend::Spectra);
+                                       linalg::EigenBackend backend = linalg::EigenBackend::Spectra);
 
 }  // namespace seflex::reduction
