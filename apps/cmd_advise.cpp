@@ -1,6 +1,6 @@
 // seflex advise SCENE --tol ANGLE_DEG [--node NAME --tol-position M]: the cheapest model of a scene
 // whose hinge angles (and node positions) stay within a tolerance of the finest one over a short
-// horizon, with the evidence (io/advise.hpp).
+// horizon, with the evidence (scene/advise.hpp).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

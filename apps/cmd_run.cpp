@@ -1,5 +1,5 @@
 // seflex run SCENE -o OUTDIR: simulate the mechanism of a scene file (docs/scenes.md) and write its
-// time histories, events, poses, animation and summary (io/run_output.hpp) as the run goes.
+// time histories, events, poses, animation and summary (scene/run_output.hpp) as the run goes.
 #include <unistd.h>
 
 #include <algorithm>

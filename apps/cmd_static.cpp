@@ -2,7 +2,7 @@
 // displacements of every grid to a CSV file (basic system, or each grid's displacement system with
 // --system global as Nastran prints them), and a short summary per subcase (largest displacement,
 // load and SPC-force resultants). Cards the deck holds that statics does not use are reported as
-// warnings; cards it needs and seflex cannot use refuse the deck (reduction/card_usage.hpp).
+// warnings; cards it needs and seflex cannot use refuse the deck (solutions/card_usage.hpp).
 #include <chrono>
 #include <cmath>
 #include <cstdio>

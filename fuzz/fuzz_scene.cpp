@@ -1,4 +1,4 @@
-// Fuzzes the scene reader and model builder (io/scene.hpp): YAML syntax (yaml-cpp), keys, values,
+// Fuzzes the scene reader and model builder (scene/scene.hpp): YAML syntax (yaml-cpp), keys, values,
 // references between bodies, hinges, springs, dampers, cables, locks, drives, loads, integrator and
 // output settings (parse_scene), then build_scene: loading the superelement files, placing bodies,
 // merging interface nodes, building the mbd::Model. The scene is never run.

@@ -47,8 +47,9 @@ cmake --build build -j "$jobs"
 (cd build && ctest --output-on-failure -j "$jobs" --timeout 900)
 
 # The sanitizer stage, one clang folder (build-fuzz; docs/reliability.md): ASan + UBSan + libFuzzer's
-# coverage counters (-DSEFLEX_FUZZ=ON). It builds seflex, the bad-input and card tests and the fuzz
-# harnesses; runs the bad-input tests (label input, fuzz regression inputs included) and the Nastran card
+# coverage counters (-DSEFLEX_FUZZ=ON). It builds seflex, the test executables that hold the bad-input
+# and card tests and the multibody kernels' tests (target sanitizer_tests, tests/CMakeLists.txt) and the
+# fuzz harnesses; runs the bad-input tests (label input, fuzz regression inputs included) and the Nastran card
 # tests (label cards: 41 tests, 17 s there; the rest of the suite takes hours under the sanitizers, see
 # docs/reliability.md), the multibody kernels' unit tests (the AIC kernel, assembly, stiffening, the
 # condensed LU, Newton's stopping and sampling, FFRF-LM's system: 26 tests, 15 s there; they found an
@@ -59,9 +60,12 @@ cmake --build build -j "$jobs"
 # allocation over 2 GB fails the run. No distributed backend there (the input tests run serial commands).
 configure build-fuzz -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DSEFLEX_FUZZ=ON -DSEFLEX_BUILD_BENCH=OFF -DSEFLEX_BUILD_EXAMPLES=OFF -DSEFLEX_MPI=OFF
-cmake --build build-fuzz -j "$jobs" --target seflex test_input test_cards test_mbd fuzz_all
-(cd build-fuzz && ctest --output-on-failure -j "$jobs" -L '^(input|cards)$' --timeout 900)
-(cd build-fuzz && ctest --output-on-failure -j "$jobs" -R '^(CondensedLu|NewtonRate|AicKernel|Assembly|FfrfSystem|Stiffening)[.]' --timeout 900)
+cmake --build build-fuzz -j "$jobs" --target seflex sanitizer_tests fuzz_all
+sanitizer_labels='^(input|cards)$'
+sanitizer_kernels='^(CondensedLu|NewtonRate|AicKernel|Assembly|FfrfSystem|Stiffening)[.]'
+echo "bootstrap: sanitizer stage: $(cd build-fuzz && ctest -N -L "$sanitizer_labels" | tail -1 | sed 's/Total Tests: //') tests labelled input or cards, $(cd build-fuzz && ctest -N -R "$sanitizer_kernels" | tail -1 | sed 's/Total Tests: //') multibody kernel tests"
+(cd build-fuzz && ctest --output-on-failure -j "$jobs" -L "$sanitizer_labels" --timeout 900)
+(cd build-fuzz && ctest --output-on-failure -j "$jobs" -R "$sanitizer_kernels" --timeout 900)
 fuzz_dir="$(mktemp -d "${TMPDIR:-/tmp}/seflex-ci-fuzz.XXXXXX")"
 SEFLEX_FUZZ_BUILD=build-fuzz SEFLEX_FUZZ_NO_BUILD=1 SEFLEX_FUZZ_DIR="$fuzz_dir" SEFLEX_FUZZ_SEED=1 \
   bench/fuzz.sh "${SEFLEX_CI_FUZZ_SECONDS:-20}" ||

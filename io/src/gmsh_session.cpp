@@ -5,7 +5,7 @@
 // General.AbortOnError = 0: gmsh then reports errors only to its logger, where they are read after
 // every call. With gmsh's API default (throw from inside the call) a syntax error thrown out of the
 // .geo parser leaves the parser in a broken state, and the next read in the process fails with a
-// bogus "line 0: syntax error" (gmsh 4.8; tests/input/gmsh_bad_input_test.cpp).
+// bogus "line 0: syntax error" (gmsh 4.8; tests/io/gmsh_bad_input_test.cpp).
 #include <algorithm>
 #include <cstdio>
 #include <mutex>

@@ -1,5 +1,5 @@
 #pragma once
-// Factories of the backends of reduction/ (private to the library; one source file each).
+// Factories of the backends of linalg/ (private to the library; one source file each).
 #include <memory>
 
 #include "seflex/linalg/sparse_factorization.hpp"

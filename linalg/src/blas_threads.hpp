@@ -1,5 +1,5 @@
 #pragma once
-// Threads of the BLAS in a scope (private to reduction/). OpenBLAS synchronises its threads on every
+// Threads of the BLAS in a scope (private to linalg/). OpenBLAS synchronises its threads on every
 // call; a supernodal triangular solve makes one call per supernode and the Lanczos basis products
 // are memory-bound, so for them a second thread gains little on an idle machine and, on a machine
 // shared with other jobs, loses several times over waiting for a descheduled partner (100k-dof

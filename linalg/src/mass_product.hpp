@@ -1,5 +1,5 @@
 #pragma once
-// y = M x for a symmetric mass matrix in its cheapest form (private to reduction/): Krylov methods
+// y = M x for a symmetric mass matrix in its cheapest form (private to linalg/): Krylov methods
 // multiply by M several times per step (every M inner product), and Nastran's lumped mass is
 // diagonal, where a coefficient-wise product is several times cheaper than a sparse symmetric one.
 #include <Eigen/Core>

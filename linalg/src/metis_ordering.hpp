@@ -1,5 +1,5 @@
 #pragma once
-// Fill-reducing ordering shared by the factorisation backends (the only user of metis.h in reduction/).
+// Fill-reducing ordering shared by the factorisation backends (the only user of metis.h in linalg/).
 #include <cstdint>
 #include <vector>
 

@@ -1,6 +1,6 @@
 #pragma once
 // The shift-invert operator of the generalised eigenproblem and the Krylov backends that use it
-// (private to reduction/; one source file per backend).
+// (private to linalg/; one source file per backend).
 #include <Eigen/Core>
 
 #include "mass_product.hpp"

@@ -26,7 +26,7 @@ std::unique_ptr<SparseFactorization> make_factorization(FactorizationBackend bac
     case FactorizationBackend::EigenLdlt: return make_ldlt_factorization();
     case FactorizationBackend::Mumps: break;  // parallel/'s, through a FactorizationMaker
   }
-  SEFLEX_DEMAND(false, "make_factorization: backend " + std::string(to_string(backend)) + " is not built into reduction/");
+  SEFLEX_DEMAND(false, "make_factorization: backend " + std::string(to_string(backend)) + " is not built into linalg/");
   return nullptr;
 }
 

@@ -1,5 +1,5 @@
 // seflex advise: variants of a scene run over a short horizon and compared on the hinge angles
-// with the finest variant (io/advise.hpp).
+// with the finest variant (scene/advise.hpp).
 #include "seflex/scene/advise.hpp"
 
 #include <algorithm>

@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "../run/scene_fixture.hpp"
+#include "scene_fixture.hpp"
 #include "seflex/io/model_reader.hpp"
 #include "seflex/io/sha256.hpp"
 #include "seflex/io/superelement_file.hpp"

@@ -8,7 +8,7 @@
 #include <limits>
 #include <string>
 
-#include "../reduction/fem_models.hpp"
+#include "fem_models.hpp"
 #include "plates.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/constraints.hpp"

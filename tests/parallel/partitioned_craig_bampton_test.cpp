@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "../reduction/fem_models.hpp"
+#include "fem_models.hpp"
 #include "plates.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/constraints.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// Block shift-invert Lanczos on a factorisation of K - sigma M (internal to reduction). Used for
+// Block shift-invert Lanczos on a factorisation of K - sigma M (linalg; public for reduction/). Used for
 // - the fixed-interface modes of a Craig-Bampton reduction, from the factorisation of K_ii that the
 //   constraint modes already needed (shift 0: K_ii is positive definite when the interface holds the
 //   interior), so the reduction factorises K_ii once (craig_bampton.cpp);

@@ -33,7 +33,7 @@
 
 namespace seflex::linalg {
 
-/// Slepc is the distributed backend of parallel/ (SEFLEX_MPI builds): reduction/ never runs it itself,
+/// Slepc is the distributed backend of parallel/ (SEFLEX_MPI builds): linalg/ never runs it itself,
 /// it arrives through EigenOptions::external and is never parsed from an --eigensolver name.
 enum class EigenBackend : std::uint8_t { Spectra, Arpack, Dense, Block, Slepc };
 
@@ -45,7 +45,7 @@ std::string_view eigen_backend_names();
 
 struct EigenSolution;
 struct EigenOptions;
-/// An eigensolver outside reduction/ (parallel/'s SLEPc backend): same contract as solve_eigenproblem.
+/// An eigensolver outside linalg/ (parallel/'s SLEPc backend): same contract as solve_eigenproblem.
 using ExternalEigensolver = std::function<EigenSolution(const SparseMatrixd& K, const SparseMatrixd& M,
                                                         const EigenOptions& options)>;
 

@@ -1,5 +1,5 @@
 #pragma once
-// Norms of symmetric sparse matrices (private to reduction/).
+// Norms of symmetric sparse matrices (linalg/ and solutions/ statics).
 #include <cmath>
 
 #include "seflex/linalg/sparse_factorization.hpp"

@@ -114,7 +114,7 @@ class SparseFactorization {
   }
 };
 
-/// Makes a new, empty factorisation (a backend outside reduction/, e.g. parallel/'s MUMPS).
+/// Makes a new, empty factorisation (a backend outside linalg/, e.g. parallel/'s MUMPS).
 using FactorizationMaker = std::function<std::unique_ptr<SparseFactorization>()>;
 
 /// A new, empty factorisation of the given backend (Cholmod or EigenLdlt; InvariantError for Mumps).

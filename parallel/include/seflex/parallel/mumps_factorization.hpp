@@ -1,5 +1,5 @@
 #pragma once
-// Distributed sparse Cholesky factorisation by MUMPS through PETSc, behind reduction's
+// Distributed sparse Cholesky factorisation by MUMPS through PETSc, behind linalg's
 // SparseFactorization interface (the FactorizationMaker of `seflex reduce --backend slepc`).
 // - factorize(A): every rank passes the same A (lower triangle read); each rank copies its block of
 //   rows into a distributed MATSBAIJ and MUMPS factorises it (Cholesky, positive definite A).

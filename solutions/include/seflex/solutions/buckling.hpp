@@ -9,7 +9,7 @@
 // reduced to the f-set of the buckling subcase's SPC/MPC and rigid elements (T^T K_sigma T: rigid
 // elements carry no differential stiffness, docs/buckling.md).
 //
-// Eigensolver (reduction/eigensolver.hpp, the seam `seflex modes` uses): K_sigma is indefinite, so it
+// Eigensolver (linalg/eigensolver.hpp, the seam `seflex modes` uses): K_sigma is indefinite, so it
 // cannot be the seam's "mass". With alpha > 0 and B = K - alpha K_sigma (positive definite when
 // alpha is below the magnitude of every negative load factor), the pencil
 //   K phi = mu B phi,    mu = lambda / (lambda + alpha)
@@ -24,7 +24,6 @@
 // Preload subcase: STATSUB(BUCKLING) (or STATSUB) of the buckling subcase if given, else the first
 // subcase before it that selects a LOAD. Errors (InputError): no subcase selects METHOD, no preload
 // subcase, a preload that stresses nothing (K_sigma = 0), STATSUB naming no subcase.
-// Temporary home in apps/: it uses reduction's statics and eigensolver and belongs in reduction/.
 #include <Eigen/Core>
 #include <optional>
 

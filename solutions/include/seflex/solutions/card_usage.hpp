@@ -9,7 +9,7 @@
 //   - used with an approximation seflex states (Approximated: a warning), or
 //   - used as written, with a consequence a careful user wants to be told (Caution: a warning):
 //     a bar without torsional stiffness (J = 0), a plate thick for its mesh, RFORCE's unit
-//     (reduction/src/modelling_cautions.hpp).
+//     (solutions/src/modelling_cautions.hpp).
 //
 //   auto cases = solutions::select_cases(model, subcase);
 //   auto usage = solutions::check_card_usage(model, solutions::Solution::Statics, cases);
@@ -22,7 +22,7 @@
 // the deck needs.
 //
 // Which card types seflex supports, and what each is for, is one table in
-// reduction/src/card_usage_table.cpp: to support a new card, parse it into the Model and flip its
+// solutions/src/card_usage_table.cpp: to support a new card, parse it into the Model and flip its
 // row (for a card that belongs to a load/method set, give the function that lists its set ids).
 // Reference checks of the cards of unselected sets (a missing grid in an SPC set the case control
 // does not select, an EIGR whose NORM = POINT grid does not exist) become warnings, as in Nastran.

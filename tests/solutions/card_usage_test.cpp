@@ -1,4 +1,4 @@
-// Which cards a solution uses (reduction/card_usage.hpp): what the selected subcases need and seflex
+// Which cards a solution uses (solutions/card_usage.hpp): what the selected subcases need and seflex
 // cannot use refuses the deck with an error naming the card, file:line and why; what they do not use
 // is a warning, never a refusal (Nastran runs such decks). Also run under ASan + UBSan.
 #include <gtest/gtest.h>

@@ -12,7 +12,7 @@
 #include <cstdio>
 #include <random>
 
-#include "../mbd/beam_superelement.hpp"
+#include "beam_superelement.hpp"
 #include "seflex/common/so3.hpp"
 #include "seflex/io/model_reader.hpp"
 #include "seflex/mbd/bodies/aic_element.hpp"

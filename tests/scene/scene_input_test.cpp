@@ -3,7 +3,7 @@
 // ASan/UBSan.
 #include <gtest/gtest.h>
 
-#include "../run/scene_fixture.hpp"
+#include "scene_fixture.hpp"
 #include "seflex/scene/scene.hpp"
 
 namespace seflex {

@@ -18,7 +18,7 @@
 #include <new>
 #include <unistd.h>
 
-#include "../run/scene_fixture.hpp"
+#include "scene_fixture.hpp"
 #include "seflex/scene/scene.hpp"
 #include "seflex/scene/solve_scene.hpp"
 

@@ -10,7 +10,7 @@
 #include <cstring>
 #include <random>
 
-#include "../mbd/beam_superelement.hpp"
+#include "beam_superelement.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/scene/scene.hpp"
 #include "seflex/io/sha256.hpp"

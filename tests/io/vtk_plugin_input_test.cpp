@@ -10,7 +10,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "../run/scene_fixture.hpp"
+#include "scene_fixture.hpp"
 
 namespace seflex::test {
 namespace {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "../mbd/beam_superelement.hpp"
+#include "beam_superelement.hpp"
 #include "seflex/io/superelement_file.hpp"
 #include "test_support.hpp"
 

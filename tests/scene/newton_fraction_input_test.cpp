@@ -2,7 +2,7 @@
 // [0, 1) or not a number is refused naming scene.yaml:LINE and the key.
 #include <gtest/gtest.h>
 
-#include "../run/scene_fixture.hpp"
+#include "scene_fixture.hpp"
 #include "seflex/scene/scene.hpp"
 
 namespace seflex {

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # CTest `demo_solar_array` (tests/CMakeLists.txt): runs the solar-array demo end to end at its
 # production settings (scripts/demo.sh: 4 reductions, 4 runs, plots, metrics), reruns sync-beam
-# with 100x stiffer cables and sync-3d at its preview settings, checks the issue's required results (tests/demo/check_demo.py), and
+# with 100x stiffer cables and sync-3d at its preview settings, checks the issue's required results (tests/apps/check_demo.py), and
 # renders the last frame of the sync-3d animation with ParaView's own Python (scripts/pvrender.sh),
 # checking the point and cell counts ParaView read against the FE decks (all grids and elements of
 # the yoke and twice the panel).
-#   tests/demo/run_demo_test.sh SEFLEX OUTDIR
+#   tests/apps/run_demo_test.sh SEFLEX OUTDIR
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 bin="$1"
@@ -25,7 +25,7 @@ sed -e 's/^    inertia: full$/&\n    internal_modes: 2/' -e 's/^  max_step: 2.5e
   && grep -q 'tolerance: {position: 1.0e-4, angle: 1.0e-4}' "$out/sync-3d-preview.yaml" || { echo "FAIL  could not derive the preview scene"; exit 1; }
 "$bin" run "$out/sync-3d-preview.yaml" -o "$out/sync-3d-preview" --force --no-animation > "$out/sync-3d-preview.log" 2>&1 \
   || { cat "$out/sync-3d-preview.log"; exit 1; }
-/usr/bin/python3 "$root/tests/demo/check_demo.py" "$out" "$out/sync-beam-stiff-cables" "$out/sync-3d-preview"
+/usr/bin/python3 "$root/tests/apps/check_demo.py" "$out" "$out/sync-beam-stiff-cables" "$out/sync-3d-preview"
 
 pvd="$out/sync-3d/animation.pvd"
 png="$out/sync-3d/render.png"

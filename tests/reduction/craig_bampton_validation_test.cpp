@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "../reduction/craig_bampton_checks.hpp"
+#include "craig_bampton_checks.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/constraints.hpp"
 #include "seflex/fem/mass_properties.hpp"

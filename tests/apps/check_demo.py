@@ -1,7 +1,7 @@
 #!/usr/bin/python3
-"""Checks of the solar-array demo's results (issue 8), run by tests/demo/run_demo_test.sh.
+"""Checks of the solar-array demo's results (issue 8), run by tests/apps/run_demo_test.sh.
 
-    /usr/bin/python3 tests/demo/check_demo.py OUTDIR [STIFF_CASE_DIR [PREVIEW_DIR]]
+    /usr/bin/python3 tests/apps/check_demo.py OUTDIR [STIFF_CASE_DIR [PREVIEW_DIR]]
 
 Asserts on OUTDIR/metrics.json (scripts/plot_solar_array.py) what the issue requires:
   - every case locks all three hinge lines, and the unsynchronised hinges lock at distinct times

@@ -51,14 +51,14 @@ TEST(NastranBadInput, WrongFieldTypes) {
 }
 
 // References of the cards of case-control sets (SPC, LOAD, METHOD ...) and PARAM GRDPNT's grid are
-// checked when a solution selects them (tests/input/card_usage_test.cpp), not when the deck is read.
+// checked when a solution selects them (tests/solutions/card_usage_test.cpp), not when the deck is read.
 TEST(NastranBadInput, MissingReferences) {
   const std::string d = base_deck();
   EXPECT_TRUE(mentions(read_error(d + "CQUAD4,9,1,1,2,3,77\n"),
                        {"deck.bdf:7: CQUAD4 9, field 7 (G4): references grid 77, which is not defined"}));
   EXPECT_TRUE(mentions(read_error(d + "CQUAD4,9,5,1,2,3,4\n"), {"CQUAD4 9, field 3 (PID): references property 5", "PSHELL"}));
   // the property is there but seflex does not read its card: the element is left out and listed
-  // (every solution refuses it: tests/cards/public_deck_tolerance_test.cpp)
+  // (every solution refuses it: tests/solutions/public_deck_tolerance_test.cpp)
   const fem::Model left_out = test::read_deck(d + "CQUAD4,9,5,1,2,3,4\nPCOMPX,5,,,\n");
   EXPECT_TRUE(left_out.shells.empty());
   bool listed = false;

@@ -1,6 +1,6 @@
 #pragma once
 // FE models built in code for the solution tests (the fem tests' builders, plus a plate).
-#include "../fem/fem_test_util.hpp"
+#include "fem_test_util.hpp"
 
 namespace seflex::test {
 

@@ -1,4 +1,4 @@
-// Cautions of solutions::check_card_usage (reduction/src/modelling_cautions.hpp): what a deck asks
+// Cautions of solutions::check_card_usage (solutions/src/modelling_cautions.hpp): what a deck asks
 // for and seflex computes as written, with a consequence the user is told in a warning: a bar
 // without torsional stiffness (J = 0), plates thick for their mesh, RFORCE's unit. Each message is
 // asserted whole, and each is absent from ordinary decks (the demo meshes, the examples, the

@@ -183,7 +183,7 @@ TEST(Eigensolver, SpectraArpackAndBlockAgreeOnATruss) {
 // 25 in, E = 1e7, I = 0.1, A = 0.1, rho = 0.1, WTMASS = 0.002591, bending in the x-z plane,
 // Nastran's lumped mass (no rotary inertia). The matrices are built by hand here; the frequencies
 // are MYSTRAN's, to 1e-6 relative: its 7 printed digits are good to 4.7e-7 at most, and the deck-driven
-// tests (tests/fem, tests/reduction/normal_modes_test.cpp) measured 2.9e-7 (2026-11-28).
+// tests (tests/fem, tests/solutions/normal_modes_test.cpp) measured 2.9e-7 (2026-11-28).
 TEST(Eigensolver, MystranBarFrequencies) {
   const double EI = 1.0e7 * 0.1, mass_per_length = 0.1 * 0.1 * 0.002591;
   for (auto backend : {EigenBackend::Dense, EigenBackend::Spectra}) {
