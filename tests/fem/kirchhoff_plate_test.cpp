@@ -74,7 +74,7 @@ struct Navier {
 // area rho_h (header). w = sum c_kl phi_k(x/a) phi_l(y/b), phi_k(s) = s^2 (1-s)^2 P_k(2s - 1).
 class ClampedRitz {
  public:
-  ClampedRitz(double a, double b, const Eigen::Matrix3d& D, double rho_h, int terms = 10) : a_(a), b_(b), n_(terms) {
+  ClampedRitz(double a, double b, const Eigen::Matrix3d& D, double rho_h, int terms = 10) : n_(terms) {
     // 1-D integrals of products of phi, phi', phi'' on [0, 1] (polynomials of degree <= 2 (n + 3))
     std::vector<double> xg, wg;
     gauss_legendre(n_ + 6, xg, wg);
@@ -170,7 +170,6 @@ class ClampedRitz {
       w[i] = 1.0 / ((1 - z * z) * dp * dp);  // 2 / ((1 - z^2) P'^2) on [-1, 1], halved
     }
   }
-  double a_, b_;
   int n_;
   Eigen::MatrixXd I_[3][3];
   Eigen::MatrixXd K_, M_;
@@ -343,15 +342,17 @@ TEST(KirchhoffPlate, ClampedRitzReferenceMatchesPublishedValues) {
 // Assertions shared by every mesh series (sizes 8 and 16; `e` from series()): the targets of issue 40
 // (f1 within 2 % at 8 x 8 and 1 % at 16 x 16), the four lowest modes and the centre deflection within
 // 1.5 % and 1 % at 16 x 16 (measured at most 1.41 % and 0.79 % over every case below), and O(h^2):
-// halving h divides the errors by 4; asserted >= 3 (measured 3.6 at least on the distorted meshes).
+// halving h divides the errors by about 4; asserted >= 2.5 (measured, 8 -> 16, at least 3.64 for the
+// frequencies and 3.02 for the deflection: the clamped laminate on the crossed mesh; the clean rate is
+// measured from 16 to 32 on the issue's plate).
 void expect_converged(const std::vector<Errors>& e, const std::string& what) {
   ASSERT_EQ(e.size(), 2u);
   EXPECT_LT(std::abs(e[0].f1), 0.02) << what << " 8 x 8";
   EXPECT_LT(std::abs(e[1].f1), 0.01) << what << " 16 x 16";
   EXPECT_LT(e[1].f, 0.015) << what << " 16 x 16";
   EXPECT_LT(e[1].w, 0.01) << what << " 16 x 16";
-  EXPECT_GT(e[0].f / e[1].f, 3.0) << what;
-  EXPECT_GT(e[0].w / e[1].w, 3.0) << what;
+  EXPECT_GT(e[0].f / e[1].f, 2.5) << what;
+  EXPECT_GT(e[0].w / e[1].w, 2.5) << what;
 }
 
 // The plate of issue 40: CTRIA3 with MID3 blank, both diagonal directions, and CQUAD4, against
