@@ -18,11 +18,11 @@ class Sha256 {
   Sha256& operator=(const Sha256&) = delete;
   void update(const void* data, std::size_t size);
   void update(std::string_view s) { update(s.data(), s.size()); }
-  std::array<std::uint8_t, 32> digest();   ///< finishes the hash; the object must not be updated afterwards
-  std::string hex_digest();                 ///< lowercase hex of digest()
+  std::array<std::uint8_t, 32> digest();  ///< finishes the hash; the object must not be updated afterwards
+  std::string hex_digest();               ///< lowercase hex of digest()
 
  private:
-  alignas(8) unsigned char state_[128];     ///< nettle's struct sha256_ctx (size checked in sha256.cpp)
+  alignas(8) unsigned char state_[128];  ///< nettle's struct sha256_ctx (size checked in sha256.cpp)
 };
 
 /// Hex SHA-256 of a byte string.
