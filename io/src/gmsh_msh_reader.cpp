@@ -15,6 +15,7 @@
 #include <numeric>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <unordered_set>
 #include <utility>
 #include <vector>
@@ -330,6 +331,7 @@ class Reader {
   /// `n` numbers of type T (std::int32_t, std::uint64_t or double), in the file's byte order.
   template <class T>
   void binary(T* out, std::size_t n, const What& what) {
+    if (n == 0) return;  // `out` may be the null data() of an empty vector
     if (n > (s_.size() - pos_) / sizeof(T))
       fail_at(pos_, "the file ends inside " + what.str() + " (" + plural(n, "numbers") + " of " +
                         std::to_string(sizeof(T)) + " bytes, " + std::to_string(s_.size() - pos_) +
@@ -771,18 +773,25 @@ class Reader {
     if (physical < -std::numeric_limits<int>::max() || physical > std::numeric_limits<int>::max())
       throw InputError(where(line, at) + what.str() + ": physical tag " + std::to_string(physical) +
                        "; expected a tag in range");
-    Entity& e = entities_[{t.dim, static_cast<int>(elementary)}];
     const int group = static_cast<int>(std::abs(physical));
+    // The entity and block of the element before, looked up again only when they change.
+    if (!last_ || last_key_ != std::make_tuple(t.dim, static_cast<int>(elementary), t.type)) {
+      last_entity_ = &entities_[{t.dim, static_cast<int>(elementary)}];
+      Collected& b = last_entity_->blocks[t.type];
+      b.type = &t;
+      last_key_ = std::make_tuple(t.dim, static_cast<int>(elementary), t.type);
+      if (&b != last_) last_group_ = -1;  // no copy of an element of another block
+      last_ = &b;
+    }
+    Entity& e = *last_entity_;
     if (group != 0 && std::find(e.physicals.begin(), e.physicals.end(), group) == e.physicals.end())
       e.physicals.push_back(group);
-    Collected& c = e.blocks[t.type];
-    c.type = &t;
+    Collected& c = *last_;
     const std::size_t per = static_cast<std::size_t>(t.nodes);
     // gmsh writes an element once for each physical group of its entity, the copies one after the
     // other with the next numbers: the same element in another group, not a new one.
-    const bool copy = last_ == &c && group != last_group_ && !c.tags.empty() && number == c.tags.back() + 1 &&
+    const bool copy = last_group_ >= 0 && group != last_group_ && !c.tags.empty() && number == c.tags.back() + 1 &&
                       std::equal(nodes, nodes + per, c.nodes.end() - static_cast<long>(per));
-    last_ = &c;
     last_group_ = group;
     if (copy) {
       c.tags.back() = number;  // a third copy follows this one's number
@@ -837,7 +846,8 @@ class Reader {
         fail_at(at, what.str() + ": num-tags is " + std::to_string(head[2]) + "; expected a number of tags >= 0");
       const std::size_t per = 1 + static_cast<std::size_t>(head[2]) + static_cast<std::size_t>(t.nodes);
       const auto n = static_cast<std::size_t>(head[1]);
-      check_count(n, 4 * per, "elements of " + std::to_string(per) + " ints", at, line_, what.str());
+      if (n > (s_.size() - pos_) / (4 * per))  // (the message is built only when needed: a block per element)
+        check_count(n, 4 * per, "elements of " + std::to_string(per) + " ints", at, line_, what.str());
       data.resize(per * n);
       const std::size_t data_at = pos_;
       binary(data.data(), data.size(), what);
@@ -914,7 +924,8 @@ class Reader {
   /// ascending order (the file's order when it is so already, as gmsh writes them).
   void order_by_element_number() {
     for (auto& [key, e] : entities_)
-      for (auto& [type, c] : e.blocks) {
+      for (auto& block : e.blocks) {
+        Collected& c = block.second;  // not a structured binding: clang 14 cannot capture one
         if (std::is_sorted(c.tags.begin(), c.tags.end())) continue;
         const std::size_t per = static_cast<std::size_t>(c.type->nodes);
         std::vector<std::size_t> order(c.tags.size());
@@ -943,8 +954,11 @@ class Reader {
   std::vector<std::size_t> tags_;
   std::vector<double> coords_;
   std::optional<NodeSet> node_set_;
-  const Collected* last_ = nullptr;  ///< format 2: the block of the element before, and its group
-  int last_group_ = 0;
+  // format 2: the entity and block of the element before (key: dimension, entity, type), its group
+  Entity* last_entity_ = nullptr;
+  Collected* last_ = nullptr;
+  std::tuple<int, int, int> last_key_;
+  int last_group_ = -1;
 };
 
 }  // namespace
