@@ -15,25 +15,12 @@
 #include "test_support.hpp"
 
 using namespace seflex;
+using seflex::test::input_error;
 using seflex::test::mentions;
 
 namespace {
 
 std::filesystem::path regression(const std::string& rel) { return test::data_dir() / "fuzz-regressions" / rel; }
-
-template <class F>
-std::string input_error(F&& read) {
-  try {
-    read();
-  } catch (const InputError& e) {
-    return e.what();
-  } catch (const std::exception& e) {
-    ADD_FAILURE() << "not an InputError: " << e.what();
-    return e.what();
-  }
-  ADD_FAILURE() << "read without error";
-  return "";
-}
 
 /// The InputError of reading a regression .msh (copied beside a valid companion file).
 std::string msh_text_error(const std::string& name, const std::string& text) {

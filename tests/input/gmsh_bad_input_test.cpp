@@ -33,16 +33,7 @@ int line_of(const std::string& text, const std::string& what) {
 
 /// The InputError message of reading `mesh` with `options` ("" and a failure if it reads).
 std::string read_error(const std::filesystem::path& mesh, const io::ModelReadOptions& options = {}) {
-  try {
-    io::read_model(mesh, options);
-  } catch (const InputError& e) {
-    return e.what();
-  } catch (const std::exception& e) {
-    ADD_FAILURE() << "not an InputError: " << e.what();
-    return e.what();
-  }
-  ADD_FAILURE() << "read without error: " << mesh;
-  return "";
+  return test::input_error([&] { io::read_model(mesh, options); });
 }
 
 /// The panel with a modified property file.
