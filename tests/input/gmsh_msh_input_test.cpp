@@ -323,14 +323,11 @@ TEST(MshInput, EveryTruncationIsRefused) {
   }
 }
 
-// Every byte set to each of 0x00, 0x01, 0x7F, 0x80, 0xFF, '0', '9', '-', ' ', '\n' and '$': each
-// result reads or is refused with an InputError (never another exception; under the sanitizers in
-// CI, never a memory error either).
+// Every byte set to each of 0x00, 0x80, 0xFF, '9', '-', '\n' and '$': each result reads or is refused
+// with an InputError (never another exception; under the sanitizers in CI, never a memory error
+// either).
 TEST(MshInput, EveryByteChangedIsReadOrRefused) {
-  const std::string values(
-      "\x00\x01\x7f\x80\xff"
-      "09- \n$",
-      11);
+  const std::string values(std::string("\x00\x80\xff", 3) + "9-\n$");
   for (const char* name : kSquares) {
     SCOPED_TRACE(name);
     const std::string full = data(name);
@@ -345,7 +342,7 @@ TEST(MshInput, EveryByteChangedIsReadOrRefused) {
                              "byte " + std::to_string(at) + " set to " + std::to_string(static_cast<unsigned char>(v))))
           ++read;
       }
-    EXPECT_GT(changed, 9 * full.size());
+    EXPECT_GT(changed, 5 * full.size());
     EXPECT_LT(read, changed / 2);  // most changes are refused; those that read are another valid mesh
   }
 }
