@@ -4,7 +4,6 @@
 // between records are allowed); a binary file's numbers are read in the byte order its $MeshFormat
 // declares. Nothing is allocated for a count before the count is checked against the bytes left.
 #include <algorithm>
-#include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -16,7 +15,6 @@
 #include <optional>
 #include <string>
 #include <tuple>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -46,7 +44,7 @@ std::string plural(std::uint64_t n, std::string what) {
   return std::to_string(n) + " " + what;
 }
 
-/// One line of a text record: whitespace-separated numbers, read one after the other.
+/// A line of the file: its text (without the end of line), number and first byte.
 struct Line {
   std::string_view text;
   int number = 0;          ///< 1-based line number
