@@ -150,7 +150,7 @@ TEST(GmshBadInput, EntityInTwoMappedGroups) {
 TEST(GmshBadInput, FilesGmshCannotRead) {
   test::TempDir dir;
   dir.write("g.props.bdf", kSmallProps);
-  // .msh files are read by seflex's reader (tests/input/gmsh_msh_input_test.cpp has the rest).
+  // .msh files are read by seflex's reader (tests/io/gmsh_msh_input_test.cpp has the rest).
   EXPECT_TRUE(mentions(read_error(dir.write("g.msh", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n1\n1 0 0 x\n$EndNodes\n")),
                        {"g.msh:6: $Nodes: node 1 of 1: a coordinate is 'x'; expected a finite real number"}));
   EXPECT_TRUE(mentions(read_error(dir.write("g.msh", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n3\n1 0 0\n")),
