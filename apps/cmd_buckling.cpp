@@ -47,6 +47,7 @@ int run_buckling(seflex::app::Args& args) {
   const auto csv = args.value("csv");
   const auto vtk = args.value("vtk");
   const bool force = args.flag("force");
+  o.ignore_unknown_cards = args.flag("ignore-unknown");
   const seflex::io::ModelReadOptions model_options = seflex::app::model_read_options(args);
   const std::string deck = args.positional("DECK");
   args.finish();
@@ -57,10 +58,9 @@ int run_buckling(seflex::app::Args& args) {
 
   const auto t0 = std::chrono::steady_clock::now();
   const seflex::fem::Model model = seflex::io::read_model(deck, model_options);
-  const auto [preload, buckle] = seflex::reduction::buckling_cases(model);
-  std::vector<red::CaseSelection> cases = {preload};
-  if (buckle.subcase_id != preload.subcase_id) cases.push_back(buckle);
-  seflex::app::check_and_print_card_usage(model, red::check_card_usage(model, red::Solution::Buckling, cases));
+  seflex::app::check_and_print_card_usage(
+      model, red::check_card_usage(model, red::Solution::Buckling, red::buckling_case_list(model), red::kInterfaceNone,
+                                   o.ignore_unknown_cards));
   const seflex::reduction::BucklingSolution s = seflex::reduction::solve_buckling(model, o);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
@@ -101,7 +101,8 @@ int run_buckling(seflex::app::Args& args) {
 }  // namespace
 
 SEFLEX_COMMAND(buckling,
-               "DECK [--count N] [--csv FILE] [--vtk FILE.vtu] [--eigensolver block|spectra|arpack|dense] [--force]",
+               "DECK [--count N] [--csv FILE] [--vtk FILE.vtu] [--eigensolver block|spectra|arpack|dense] [--force] [--ignore-unknown] "
+               "[--symbol NAME=DIR]...",
                "linear buckling (SOL 105): static preload subcase (LOAD), load factors of the METHOD (EIGRL) subcase, "
                "Nastran-style table, CSV of load factors, buckling modes for ParaView",
                run_buckling);

@@ -110,7 +110,8 @@ reduction::NormalModes solve_normal_modes_partitioned(fem::Model& model, const r
   using Clock = std::chrono::steady_clock;
   reduction::NormalModes r;
   r.selection = reduction::select_case(model, options.subcase);
-  reduction::require_usable(model, reduction::check_card_usage(model, reduction::Solution::NormalModes, {r.selection}));
+  reduction::require_usable(model, reduction::check_card_usage(model, reduction::Solution::NormalModes, {r.selection},
+                                                               reduction::kInterfaceNone, options.ignore_unknown_cards));
   const fem::EigenMethod* method = nullptr;
   reduction::EigenOptions eo = eigen_options(model, options, r.selection, method, r.normalization);
 

@@ -38,6 +38,7 @@ namespace seflex::reduction {
 struct BucklingOptions {
   std::optional<int> count;  ///< overrides EIGRL ND
   reduction::EigenBackend backend = reduction::EigenOptions{}.backend;
+  bool ignore_unknown_cards = false;  ///< solve without the cards seflex does not know (check_card_usage)
 };
 
 struct BucklingSolution {
@@ -54,6 +55,10 @@ struct BucklingSolution {
 
 /// The preload and buckling subcases of a deck (the rules above); throws InputError.
 std::pair<reduction::CaseSelection, reduction::CaseSelection> buckling_cases(const fem::Model& model);
+
+/// The subcases a buckling solution runs, for check_card_usage(Buckling): the preload, then the
+/// buckling subcase when it is another one.
+std::vector<reduction::CaseSelection> buckling_case_list(const fem::Model& model);
 
 BucklingSolution solve_buckling(const fem::Model& model, const BucklingOptions& options = {});
 
