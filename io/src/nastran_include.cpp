@@ -131,7 +131,8 @@ IncludeTarget IncludeResolver::resolve(const std::string& name, const std::files
   if (in_local) return {local, {}};
   throw InputError(where + ": the file does not exist; tried " + shown(main) + " (relative to the main deck's folder)" +
                    (one_place ? std::string() : " and " + shown(local) + " (relative to the including file's folder)") +
-                   "; expected a path relative to one of them, an absolute path, or SYMBOL:path");
+                   "; expected a path relative to " + (one_place ? "it" : "one of them") +
+                   ", an absolute path, or SYMBOL:path");
 }
 
 }  // namespace seflex::io::nastran
