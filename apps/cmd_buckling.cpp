@@ -48,6 +48,7 @@ int run_buckling(seflex::app::Args& args) {
   const auto csv = args.value("csv");
   const auto vtk = args.value("vtk");
   const bool force = args.flag("force");
+  o.ignore_unknown_cards = args.flag("ignore-unknown");
   const seflex::io::ModelReadOptions model_options = seflex::app::model_read_options(args);
   const std::string deck = args.positional("DECK");
   args.finish();
@@ -58,10 +59,9 @@ int run_buckling(seflex::app::Args& args) {
 
   const auto t0 = std::chrono::steady_clock::now();
   const seflex::fem::Model model = seflex::io::read_model(deck, model_options);
-  const auto [preload, buckle] = seflex::solutions::buckling_cases(model);
-  std::vector<solutions::CaseSelection> cases = {preload};
-  if (buckle.subcase_id != preload.subcase_id) cases.push_back(buckle);
-  seflex::app::check_and_print_card_usage(model, solutions::check_card_usage(model, solutions::Solution::Buckling, cases));
+  seflex::app::check_and_print_card_usage(
+      model, solutions::check_card_usage(model, solutions::Solution::Buckling, solutions::buckling_case_list(model),
+                                         solutions::kInterfaceNone, o.ignore_unknown_cards));
   const seflex::solutions::BucklingSolution s = seflex::solutions::solve_buckling(model, o);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
@@ -102,7 +102,8 @@ int run_buckling(seflex::app::Args& args) {
 }  // namespace
 
 SEFLEX_COMMAND(buckling,
-               "DECK [--count N] [--csv FILE] [--vtk FILE.vtu] [--eigensolver block|spectra|arpack|dense] [--force]",
+               "DECK [--count N] [--csv FILE] [--vtk FILE.vtu] [--eigensolver block|spectra|arpack|dense] [--force] [--ignore-unknown] "
+               "[--symbol NAME=DIR]...",
                "linear buckling (SOL 105): static preload subcase (LOAD), load factors of the METHOD (EIGRL) subcase, "
                "Nastran-style table, CSV of load factors, buckling modes for ParaView",
                run_buckling);

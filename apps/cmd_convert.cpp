@@ -48,5 +48,5 @@ int run_convert(seflex::app::Args& args) {
 
 }  // namespace
 
-SEFLEX_COMMAND(convert, "MODEL -o DECK [--force] [--properties FILE] [--set NAME=VALUE]...",
+SEFLEX_COMMAND(convert, "MODEL -o DECK [--force] [--properties FILE] [--set NAME=VALUE]... [--symbol NAME=DIR]...",
                "write a model (Nastran deck, gmsh .msh/.geo + property file) as a Nastran bulk-data deck", run_convert);

@@ -14,6 +14,7 @@
 #include "seflex/fem/mass_properties.hpp"
 #include "seflex/fem/model.hpp"
 #include "model_args.hpp"
+#include "usage_warnings.hpp"
 #include "seflex/io/model_reader.hpp"
 #include "seflex/solutions/card_usage.hpp"
 
@@ -161,13 +162,14 @@ int run_info(seflex::app::Args& args) {
   const int grdpnt = args.integer("grdpnt", kUnset);
   args.finish();
   if (seflex::app::is_superelement_file(deck)) {
-    if (grdpnt != kUnset || model_options.properties || !model_options.parameters.empty())
-      throw seflex::app::UsageError(deck + " is a superelement file; --grdpnt, --properties and --set apply to a model");
+    if (grdpnt != kUnset || model_options.properties || !model_options.parameters.empty() || !model_options.symbols.empty())
+      throw seflex::app::UsageError(deck + " is a superelement file; --grdpnt, --properties, --set and --symbol apply to a model");
     seflex::app::print_superelement_info(deck);
     std::fflush(stdout);
     return seflex::app::kOk;
   }
   const seflex::fem::Model m = seflex::io::read_model(deck, model_options);
+  seflex::app::print_read_warnings(m);
   std::printf("deck        %s\n", deck.c_str());
   std::printf("files read  %zu\n", m.files.size());
   for (const auto& f : m.files) std::printf("  %s\n", f.c_str());
@@ -191,7 +193,7 @@ int run_info(seflex::app::Args& args) {
 
 }  // namespace
 
-SEFLEX_COMMAND(info, "DECK [--grdpnt G] | BODY.se",
+SEFLEX_COMMAND(info, "DECK [--grdpnt G] [--symbol NAME=DIR]... | BODY.se",
                "counts of grids, elements and cards, unsupported cards, and mass properties (like Nastran's GPWG; "
                "reference point PARAM GRDPNT or --grdpnt) of a Nastran deck; of a superelement file: provenance, "
                "interfaces, modes, mass properties, inertia invariants, mesh part and truncation report",

@@ -87,6 +87,7 @@ int modes(seflex::app::Args& args, seflex::parallel::Session* session) {
   const auto csv = args.value("csv");
   const auto vtk = args.value("vtk");
   const bool force = args.flag("force");
+  o.ignore_unknown_cards = args.flag("ignore-unknown");
   const seflex::io::ModelReadOptions model_options = seflex::app::model_read_options(args);
   const std::string deck = args.positional("DECK");
   args.finish();
@@ -99,7 +100,8 @@ int modes(seflex::app::Args& args, seflex::parallel::Session* session) {
   seflex::fem::Model model = seflex::io::read_model(deck, model_options);
   seflex::app::check_and_print_card_usage(
       model, seflex::solutions::check_card_usage(model, seflex::solutions::Solution::NormalModes,
-                                                 {seflex::solutions::select_case(model, o.subcase)}));
+                                                 {seflex::solutions::select_case(model, o.subcase)},
+                                                 seflex::solutions::kInterfaceNone, o.ignore_unknown_cards));
   if (session != nullptr) seflex::app::checkpoint(*session);  // every rank read the deck (or stop them all)
   const auto t1 = std::chrono::steady_clock::now();
   seflex::solutions::NormalModes r;
@@ -181,6 +183,7 @@ int run_modes(seflex::app::Args& args) {
 }  // namespace
 
 SEFLEX_COMMAND(modes, "DECK [--count N] [--csv FILE] [--vtk FILE.vtu] [--eigensolver block|spectra|arpack|dense] "
-                      "[--block-size B] [--factorization cholmod|ldlt] [--subcase ID] [--force] [--backend serial|slepc]",
+                      "[--block-size B] [--factorization cholmod|ldlt] [--subcase ID] [--force] [--backend serial|slepc] [--ignore-unknown] "
+                      "[--symbol NAME=DIR]...",
                "normal modes (SOL 103): Nastran-style eigenvalue table, CSV of frequencies, mode shapes for ParaView",
                run_modes);

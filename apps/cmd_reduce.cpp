@@ -173,6 +173,7 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
   const bool no_mesh = args.flag("no-mesh");
   const bool no_stiffening = args.flag("no-stiffening");
   const bool force = args.flag("force");
+  const bool ignore_unknown = args.flag("ignore-unknown");
   const seflex::io::ModelReadOptions model_options = seflex::app::model_read_options(args);
   const std::string model_path = args.positional("MODEL");
   args.finish();
@@ -200,9 +201,10 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
                       : spec_lower == "bset" ? solutions::kInterfaceBset
                       : (spec_lower == "suport" || spec_lower == "support") ? solutions::kInterfaceSuport
                                                                             : solutions::kInterfaceNone;
-  const solutions::CardUsage usage = solutions::check_card_usage(model, solutions::Solution::CraigBampton, {solutions::select_case(model)},
-                                                     o.interface_cards);
+  const solutions::CardUsage usage = solutions::check_card_usage(
+      model, solutions::Solution::CraigBampton, {solutions::select_case(model)}, o.interface_cards, ignore_unknown);
   seflex::app::check_and_print_card_usage(model, usage);
+  o.ignore_unknown_cards = ignore_unknown;
   if (frame) o.frame_node = frame_id(model, *frame);
   if (!std::isnan(fmax))
     o.modes.fmax_hz = fmax;
@@ -316,7 +318,7 @@ int run_reduce(seflex::app::Args& args) {
 SEFLEX_COMMAND(reduce,
                "MODEL --interface IDS|SETS|aset|bset|suport [--modes N | --fmax HZ] [--frame NODE|SET] [--name NAME] "
                "[--compare K] [--eigensolver block|spectra|arpack|dense] [--backend serial|slepc] [--no-mesh] [--no-stiffening] -o FILE.se [--force] "
-               "[--properties FILE] [--set NAME=VALUE]...",
+               "[--properties FILE] [--set NAME=VALUE]... [--symbol NAME=DIR]... [--ignore-unknown]",
                "Craig-Bampton reduction to an absolute-interface-coordinate superelement: constraint modes of all six "
                "dofs of the interface grids plus fixed-interface modes; prints mass properties, the truncation report "
                "and the reduced model's free-free frequencies (--compare K: against the full model's); --no-mesh writes the "

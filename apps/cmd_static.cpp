@@ -81,6 +81,7 @@ int run_static(seflex::app::Args& args) {
     throw UsageError("option --system expects basic or global (each grid's displacement system CD), got '" + system + "'");
   const bool global = system == "global";
   const bool force = args.flag("force");
+  o.ignore_unknown_cards = args.flag("ignore-unknown");
   const seflex::io::ModelReadOptions model_options = seflex::app::model_read_options(args);
   const std::string deck = args.positional("DECK");
   args.finish();
@@ -91,7 +92,9 @@ int run_static(seflex::app::Args& args) {
   const auto t0 = std::chrono::steady_clock::now();
   const seflex::fem::Model model = seflex::io::read_model(deck, model_options);
   const std::vector<solutions::CaseSelection> cases = solutions::select_cases(model, o.subcase);
-  seflex::app::check_and_print_card_usage(model, solutions::check_card_usage(model, solutions::Solution::Statics, cases));
+  seflex::app::check_and_print_card_usage(
+      model, solutions::check_card_usage(model, solutions::Solution::Statics, cases, solutions::kInterfaceNone,
+                                         o.ignore_unknown_cards));
   const std::vector<solutions::StaticSolution> solutions = solutions::solve_statics(model, o);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
@@ -123,7 +126,7 @@ int run_static(seflex::app::Args& args) {
 
 }  // namespace
 
-SEFLEX_COMMAND(static, "DECK [-o results.csv] [--subcase ID] [--system basic|global] [--force]",
+SEFLEX_COMMAND(static, "DECK [-o results.csv] [--subcase ID] [--system basic|global] [--force] [--ignore-unknown] [--symbol NAME=DIR]...",
                "linear statics (SOL 101) of every subcase (or --subcase ID): grid displacements to CSV (basic system, "
                "or --system global: each grid's CD system as Nastran prints them), load and SPC-force resultants",
                run_static);

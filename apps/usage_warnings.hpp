@@ -17,9 +17,18 @@
 
 namespace seflex::app {
 
-/// Print the Unused and Approximated entries of `usage` on stderr (flushed). Returns how many.
+/// Print what the reader chose and says so (Model::read_warnings: an INCLUDE found in two places) on
+/// stderr, one "warning: " line each (flushed). Returns how many.
+inline std::size_t print_read_warnings(const fem::Model& model) {
+  for (const std::string& w : model.read_warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  std::fflush(stderr);
+  return model.read_warnings.size();
+}
+
+/// Print the reader's warnings, then the Unused and Approximated entries of `usage` on stderr
+/// (flushed). Returns how many lines.
 inline std::size_t print_card_usage(const fem::Model& model, const solutions::CardUsage& usage) {
-  std::size_t n = 0;
+  std::size_t n = print_read_warnings(model);
   for (const solutions::CardUse& u : usage.uses) {
     if (u.kind == solutions::CardUse::Kind::Refused) continue;
     const char* prefix = u.kind == solutions::CardUse::Kind::Approximated ? "warning (approximation)" : "warning";

@@ -110,7 +110,8 @@ solutions::NormalModes solve_normal_modes_partitioned(fem::Model& model, const s
   using Clock = std::chrono::steady_clock;
   solutions::NormalModes r;
   r.selection = solutions::select_case(model, options.subcase);
-  solutions::require_usable(model, solutions::check_card_usage(model, solutions::Solution::NormalModes, {r.selection}));
+  solutions::require_usable(model, solutions::check_card_usage(model, solutions::Solution::NormalModes, {r.selection},
+                                                               solutions::kInterfaceNone, options.ignore_unknown_cards));
   const fem::EigenMethod* method = nullptr;
   linalg::EigenOptions eo = eigen_options(model, options, r.selection, method, r.normalization);
 

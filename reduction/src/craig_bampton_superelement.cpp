@@ -237,7 +237,9 @@ se::Superelement reduce_to_superelement(const fem::Model& model, const Superelem
     throw InputError(deck + ": no interface node given; expected at least one GRID id");
 
   // 1. Matrices and constraints.
-  solutions::require_usable(model, solutions::check_card_usage(model, solutions::Solution::CraigBampton, {solutions::select_case(model)}, options.interface_cards));
+  solutions::require_usable(model, solutions::check_card_usage(model, solutions::Solution::CraigBampton,
+                                                               {solutions::select_case(model)}, options.interface_cards,
+                                                               options.ignore_unknown_cards));
   const fem::DofMap dofs = fem::make_dof_map(model);
   fem::ConstraintOptions co = case_constraints(model);
   for (const int id : options.interface_ids)  // boundary dofs: held in the interior problem, never AUTOSPC'd

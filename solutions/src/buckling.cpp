@@ -13,7 +13,9 @@
 #include "seflex/fem/constraints.hpp"
 #include "seflex/fem/finalize.hpp"
 #include "seflex/fem/geometric_stiffness.hpp"
+#include "seflex/solutions/card_usage.hpp"
 #include "seflex/solutions/statics.hpp"
+#include "solution_errors.hpp"
 
 namespace seflex::solutions {
 namespace {
@@ -69,10 +71,19 @@ std::pair<CaseSelection, CaseSelection> buckling_cases(const fem::Model& model) 
                        "(SUBCASE 1 with LOAD and SPC) before the METHOD subcase");
 }
 
+std::vector<CaseSelection> buckling_case_list(const fem::Model& model) {
+  const auto [preload, buckle] = buckling_cases(model);
+  std::vector<CaseSelection> cases = {preload};
+  if (buckle.subcase_id != preload.subcase_id) cases.push_back(buckle);
+  return cases;
+}
+
 BucklingSolution solve_buckling(const fem::Model& model, const BucklingOptions& options) {
   BucklingSolution s;
   std::tie(s.preload, s.buckling) = buckling_cases(model);
   const CaseSelection& bc = s.buckling;
+  require_usable(model, check_card_usage(model, Solution::Buckling, buckling_case_list(model), kInterfaceNone,
+                                         options.ignore_unknown_cards));
 
   // The EIGRL of METHOD (check_card_usage has refused EIGB and undefined methods).
   const fem::EigenMethod* method = nullptr;
@@ -96,6 +107,7 @@ BucklingSolution solve_buckling(const fem::Model& model, const BucklingOptions& 
   // Preload statics.
   solutions::StaticOptions so;
   so.subcase = s.preload.subcase_id ? std::optional<int>(s.preload.subcase_id) : std::nullopt;
+  so.ignore_unknown_cards = options.ignore_unknown_cards;
   const solutions::StaticSolution pre = solutions::solve_static(model, so);
   s.u_preload_g = pre.u_g;
   s.dofs = pre.dofs;
@@ -107,6 +119,7 @@ BucklingSolution solve_buckling(const fem::Model& model, const BucklingOptions& 
   co.mpc_set = bc.mpc;
   co.autospc = fem::autospc_enabled(model);
   const fem::ConstrainedSystem c = fem::apply_constraints(model, g, co);
+  require_free_dofs(model, g, c, Solution::Buckling);
   s.n_free = c.n_free();
   const Eigen::SparseMatrix<double> Kg = fem::assemble_geometric_stiffness(model, g.dofs, pre.u_g);
   const Eigen::SparseMatrix<double> Tt = c.T.transpose();

@@ -50,14 +50,18 @@ class Report {
     const auto key = std::make_tuple(kind, card, reason);
     auto it = index_.find(key);
     if (it == index_.end()) {
+      last_ = uses_.size();
       index_.emplace(key, uses_.size());
       uses_.push_back({kind, card, count, ref, reason});
       return;
     }
+    last_ = it->second;
     CardUse& u = uses_[it->second];
     u.count += count;
     if (std::tie(ref.file, ref.line) < std::tie(u.first.file, u.first.line)) u.first = ref;
   }
+  /// The entry add() made or added to last is about cards seflex does not know.
+  void mark_unknown() { uses_[last_].unknown_card = true; }
   /// An entry about set `sid`: entries with the same (kind, card, before, after) are merged, their
   /// set ids listed between `before` and `after` ("load sets 5, 7 not selected ...").
   void add_set(Kind kind, const std::string& card, const fem::CardRef& ref, const std::string& before, int sid,
@@ -90,14 +94,16 @@ class Report {
     std::string before, after;
   };
   std::vector<CardUse> uses_;
+  std::size_t last_ = 0;
   std::map<std::tuple<Kind, std::string, std::string>, std::size_t> index_;
   std::map<std::tuple<Kind, std::string, std::string>, SetEntry> sets_;
 };
 
 class Classifier {
  public:
-  Classifier(const fem::Model& m, Solution s, const std::vector<CaseSelection>& cases, unsigned interface)
-      : m_(m), s_(s), cases_(cases), interface_(interface) {}
+  Classifier(const fem::Model& m, Solution s, const std::vector<CaseSelection>& cases, unsigned interface,
+             bool ignore_unknown)
+      : m_(m), s_(s), cases_(cases), interface_(interface), ignore_unknown_(ignore_unknown) {}
 
   std::vector<CardUse> run() {
     if (!runs(s_)) {  // info without a SOL seflex runs, convert: what seflex does not model
@@ -534,8 +540,12 @@ class Classifier {
         report_.add(Kind::Unused, u.name, u.first, "not written: seflex does not model it", u.count);
         continue;
       }
-      if (r == nullptr) {
-        report_.add(Kind::Unused, u.name, u.first, "a card seflex does not know; ignored", u.count);
+      if (detail::is_unknown_card(u.name)) {
+        unknown_card(u);
+        continue;
+      }
+      if (r == nullptr) {  // a line of punctuation ('&'): the reader's note, not a card
+        report_.add(Kind::Unused, u.name, u.first, "a line of punctuation, not a card; ignored", u.count);
         continue;
       }
       switch (r->role) {
@@ -570,6 +580,20 @@ class Classifier {
         default: report_.add(Kind::Unused, u.name, u.first, role_phrase(r->role), u.count); break;
       }
     }
+  }
+
+  /// A card seflex does not know: a solution refuses the deck unless asked to go on without it.
+  void unknown_card(const fem::UnsupportedCard& u) {
+    if (runs(s_) && !ignore_unknown_)
+      report_.add(Kind::Refused, u.name, u.first, "a card seflex does not know", u.count);
+    else if (runs(s_))
+      report_.add(Kind::Unused, u.name, u.first, "a card seflex does not know; ignored (--ignore-unknown)", u.count);
+    else
+      report_.add(Kind::Unused, u.name, u.first,
+                  "a card seflex does not know: static, modes, buckling and reduce refuse the deck (--ignore-unknown "
+                  "runs them without it)",
+                  u.count);
+    report_.mark_unknown();
   }
 
   void temperature_cards(const fem::UnsupportedCard& u) {
@@ -678,6 +702,7 @@ class Classifier {
   Solution s_;
   const std::vector<CaseSelection>& cases_;
   unsigned interface_;
+  bool ignore_unknown_;
   Report report_;
   std::multimap<int, const fem::LoadCombination*> load_combos_;
   std::set<int> spc_defined_, mpc_defined_, load_defined_, temp_defined_;
@@ -717,11 +742,11 @@ std::size_t CardUsage::count(CardUse::Kind kind) const {
 }
 
 CardUsage check_card_usage(const fem::Model& model, Solution solution, const std::vector<CaseSelection>& cases,
-                           unsigned interface) {
+                           unsigned interface, bool ignore_unknown_cards) {
   CardUsage out;
   out.solution = solution;
   out.cases = cases;
-  out.uses = Classifier(model, solution, out.cases, interface).run();
+  out.uses = Classifier(model, solution, out.cases, interface, ignore_unknown_cards).run();
   return out;
 }
 
@@ -734,6 +759,27 @@ std::string describe(const fem::Model& model, const CardUse& use) {
 void require_usable(const fem::Model& model, const CardUsage& usage) {
   const std::size_t n = usage.count(CardUse::Kind::Refused);
   if (n == 0) return;
+  std::vector<const CardUse*> unknown;
+  for (const CardUse& u : usage.uses)
+    if (u.kind == CardUse::Kind::Refused && u.unknown_card) unknown.push_back(&u);
+  if (!unknown.empty()) {
+    constexpr std::size_t kListed = 12;
+    std::string list;
+    for (std::size_t k = 0; k < unknown.size() && k < kListed; ++k)
+      list += (k ? ", " : "") + unknown[k]->card + " (" + std::to_string(unknown[k]->count) +
+              (unknown[k]->count == 1 ? " card, at " : " cards, first at ") + fem::where(model, unknown[k]->first).str() + ")";
+    if (unknown.size() > kListed) list += " and " + std::to_string(unknown.size() - kListed) + " more (seflex info lists them)";
+    const std::size_t others = n - unknown.size();
+    throw InputError(fem::where(model, unknown.front()->first),
+                     (unknown.size() == 1 ? std::string("a card seflex does not know: ")
+                                          : std::to_string(unknown.size()) + " kinds of card seflex does not know: ") +
+                         list + "; " + solution_name(usage.solution) +
+                         " does not run on a deck with cards it does not know (MSC Nastran stops on them too): correct "
+                         "or remove them, or give --ignore-unknown to run without them" +
+                         (others ? " (and " + std::to_string(others) + " more problem" + (others > 1 ? "s" : "") +
+                                       ": seflex info lists them)"
+                                 : std::string()));
+  }
   const CardUse& u = usage.uses.front();  // Refused entries come first
   std::string more;
   if (n > 1) more = " (and " + std::to_string(n - 1) + " more problem" + (n > 2 ? "s" : "") + ": seflex info lists them)";

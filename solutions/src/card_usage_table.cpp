@@ -206,6 +206,10 @@ const CardRole* find_card_role(std::string_view name) {
   return it == index.end() ? nullptr : it->second;
 }
 
+bool is_unknown_card(std::string_view name) {
+  return !name.empty() && name.front() != '\'' && name.find(' ') == std::string_view::npos && find_card_role(name) == nullptr;
+}
+
 std::vector<const CardRole*> supported_set_cards() {
   std::vector<const CardRole*> out;
   for (const CardRole& r : kRows)

@@ -53,6 +53,11 @@ struct CardRole {
 /// The row of a card name (upper case), or nullptr for a name the table does not know.
 const CardRole* find_card_role(std::string_view name);
 
+/// A name of Model::unsupported that is a bulk-data card seflex does not know at all: no row in the
+/// table, not a reader's note (a name with a blank: "CQUAD4/CTRIA3 TFLAG a fraction", "... (left
+/// out)") and not a line of punctuation ("'&'").
+bool is_unknown_card(std::string_view name);
+
 /// Every row whose card is supported and whose members() is given (the supported load cards).
 std::vector<const CardRole*> supported_set_cards();
 

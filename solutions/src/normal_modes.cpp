@@ -65,7 +65,7 @@ Eigen::VectorXd NormalModes::cycles() const { return radians() / (2 * std::numbe
 NormalModes solve_normal_modes(const fem::Model& model, const ModesOptions& options) {
   NormalModes r;
   r.selection = select_case(model, options.subcase);
-  require_usable(model, check_card_usage(model, Solution::NormalModes, {r.selection}));
+  require_usable(model, check_card_usage(model, Solution::NormalModes, {r.selection}, kInterfaceNone, options.ignore_unknown_cards));
   const fem::EigenMethod* method = nullptr;
   if (r.selection.method) {
     method = find_method(model, *r.selection.method);
@@ -109,6 +109,7 @@ NormalModes solve_normal_modes(const fem::Model& model, const ModesOptions& opti
   co.fixed_dofs = options.fixed_dofs;
   co.autospc = fem::autospc_enabled(model);
   const fem::ConstrainedSystem c = fem::apply_constraints(model, g, co);
+  require_free_dofs(model, g, c, Solution::NormalModes);
   r.dofs = g.dofs;
   r.n_free = c.n_free();
   std::optional<detail::GuyanReduction> guyan;

@@ -37,7 +37,7 @@ fem::CardRef spcd_ref(const fem::Model& model, int id) {
 
 std::vector<StaticSolution> solve(const fem::Model& model, const std::vector<CaseSelection>& cases,
                                   const StaticOptions& options) {
-  require_usable(model, check_card_usage(model, Solution::Statics, cases));
+  require_usable(model, check_card_usage(model, Solution::Statics, cases, kInterfaceNone, options.ignore_unknown_cards));
   const fem::GlobalMatrices g = fem::assemble(model, fem::assembly_options(model));
   std::vector<StaticSolution> out(cases.size());
   std::vector<bool> done(cases.size(), false);
@@ -50,6 +50,8 @@ std::vector<StaticSolution> solve(const fem::Model& model, const std::vector<Cas
     co.fixed_dofs = suport_dofs(model, g.dofs);
     co.autospc = fem::autospc_enabled(model);
     const fem::ConstrainedSystem c = fem::apply_constraints(model, g, co);
+    require_free_dofs(model, g, c, Solution::Statics);
+    // every dof held by SPCs (require_free_dofs lets statics through): the SPC forces are the answer
     std::unique_ptr<linalg::SparseFactorization> factor;
     double norm_K = 0;
     if (c.n_free() > 0) {

@@ -212,10 +212,11 @@ TEST(CardUsage, CaseControlSelections) {
 }
 
 // Output, optimisation, aero and other solvers' cards, unselected MPC sets and unknown PARAMs: warnings.
+// Cards seflex does not know at all: refused.
 TEST(CardUsage, CardsNoSolutionUsesAreWarnings) {
   const fem::Model m = test::read_deck(deck("SPC = 1\nLOAD = 7\n",
                                             "DESVAR,1,T,1.,0.,2.\nCAERO1,5,6\nPLOTEL,8,1,2\nDEBUG,1,2\n"
-                                            "MPC,4,2,3,1.,3,3,-1.\nPARAM,POST,-1\nPARAM,SOLLIB,SPARSE\nXYZCARD,1\n"));
+                                            "MPC,4,2,3,1.,3,3,-1.\nPARAM,POST,-1\nPARAM,SOLLIB,SPARSE\n"));
   const auto u = usage(m, Solution::Statics);
   EXPECT_FALSE(u.refused());
   EXPECT_TRUE(mentions(find(u, "DESVAR")->reason, {"design optimisation"}));
@@ -225,7 +226,15 @@ TEST(CardUsage, CardsNoSolutionUsesAreWarnings) {
   EXPECT_TRUE(mentions(find(u, "MPC")->reason, {"MPC set 4 not selected"}));
   EXPECT_TRUE(mentions(find(u, "PARAM")->reason, {"parameters seflex does not use: POST, SOLLIB"}));
   EXPECT_EQ(find(u, "PARAM")->count, 2u);
-  EXPECT_TRUE(mentions(find(u, "XYZCARD")->reason, {"a card seflex does not know"}));
+  // a card seflex does not know is refused (tests/input/unknown_cards_test.cpp), unless asked to go on
+  const fem::Model x = test::read_deck(deck("SPC = 1\nLOAD = 7\n", "XYZCARD,1\n"));
+  const reduction::CardUsage refused = usage(x, Solution::Statics);
+  const CardUse* unknown = find(refused, "XYZCARD");
+  EXPECT_EQ(unknown->kind, CardUse::Kind::Refused);
+  EXPECT_TRUE(unknown->unknown_card);
+  const auto ignored = reduction::check_card_usage(x, Solution::Statics, reduction::select_cases(x), reduction::kInterfaceNone, true);
+  EXPECT_FALSE(ignored.refused());
+  EXPECT_TRUE(mentions(find(ignored, "XYZCARD")->reason, {"a card seflex does not know; ignored (--ignore-unknown)"}));
   // inertia relief is refused in statics
   EXPECT_TRUE(mentions(refusal(test::read_deck(deck("SPC = 1\nLOAD = 7\n", "PARAM,INREL,-1\n")), Solution::Statics),
                        {"PARAM INREL", "inertia relief"}));

@@ -37,6 +37,7 @@ namespace seflex::solutions {
 struct BucklingOptions {
   std::optional<int> count;  ///< overrides EIGRL ND
   linalg::EigenBackend backend = linalg::EigenOptions{}.backend;
+  bool ignore_unknown_cards = false;  ///< solve without the cards seflex does not know (check_card_usage)
 };
 
 struct BucklingSolution {
@@ -53,6 +54,10 @@ struct BucklingSolution {
 
 /// The preload and buckling subcases of a deck (the rules above); throws InputError.
 std::pair<solutions::CaseSelection, solutions::CaseSelection> buckling_cases(const fem::Model& model);
+
+/// The subcases a buckling solution runs, for check_card_usage(Buckling): the preload, then the
+/// buckling subcase when it is another one.
+std::vector<solutions::CaseSelection> buckling_case_list(const fem::Model& model);
 
 BucklingSolution solve_buckling(const fem::Model& model, const BucklingOptions& options = {});
 

@@ -6,6 +6,10 @@
 //     solution must not run: require_usable throws InputError naming the card, file:line and why),
 //   - not used by this solution (Unused: an unselected LOAD/SPC/MPC/EIGR set, output, optimisation
 //     or aero cards, loads in normal modes ...: a warning, as Nastran runs such decks), or
+//   - a card seflex does not know (no row in the card table): Refused by every solution, as MSC
+//     Nastran stops on an unknown card (require_usable lists them all, with count and first
+//     file:line, and names --ignore-unknown); Unused ("ignored") when the caller asks to go on
+//     without them (ignore_unknown_cards) and in seflex info, or
 //   - used with an approximation seflex states (Approximated: a warning), or
 //   - used as written, with a consequence a careful user wants to be told (Caution: a warning):
 //     a bar without torsional stiffness (J = 0), a plate thick for its mesh, RFORCE's unit
@@ -65,6 +69,7 @@ struct CardUse {
   std::size_t count = 0;  ///< cards concerned
   fem::CardRef first;     ///< the first of them
   std::string reason;     ///< why, in a phrase ("load set 7 is not selected by any subcase run")
+  bool unknown_card = false;  ///< a card seflex does not know (Refused unless ignore_unknown_cards)
 };
 
 /// Interface cards of a Craig-Bampton reduction (bit mask): those cards are used as the interface.
@@ -79,12 +84,18 @@ struct CardUsage {
 };
 
 /// Classify every card and case-control selection of a finalized model for `solution` run on
-/// `cases`. Never throws for what it finds; `interface` names the CB interface cards.
+/// `cases`. Never throws for what it finds; `interface` names the CB interface cards;
+/// `ignore_unknown_cards`: a solution goes on without the cards seflex does not know (a warning each)
+/// instead of refusing the deck (the command-line option --ignore-unknown).
 CardUsage check_card_usage(const fem::Model& model, Solution solution, const std::vector<CaseSelection>& cases,
-                           unsigned interface = kInterfaceNone);
+                           unsigned interface = kInterfaceNone, bool ignore_unknown_cards = false);
 
-/// Throws InputError for the first Refused entry: "<file:line>: <card>: <reason>; <solution> cannot
-/// run without it" (and how many other cards are refused). Does nothing if none is.
+/// Throws InputError if an entry is Refused. Cards seflex does not know first, all of them in one
+/// message: "<file:line of the first>: N kinds of card seflex does not know: CARD (C cards, first at
+/// file:line), ...; <solution> does not run on a deck with cards it does not know (MSC Nastran stops
+/// on them too): correct or remove them, or give --ignore-unknown to run without them". Otherwise the
+/// first Refused entry: "<file:line>: <card>: <reason>; <solution> cannot run without it" (and how
+/// many other cards are refused). Does nothing if none is.
 void require_usable(const fem::Model& model, const CardUsage& usage);
 
 /// One line per entry: "CARD: N cards, first at file:line: reason", or for a case-control

@@ -36,6 +36,7 @@ struct ModesOptions {
   std::vector<Eigen::Index> fixed_dofs;       ///< extra g-set dofs held at zero (fixed-interface modes)
   bool check_completeness = true;
   bool guyan = true;                          ///< honour ASET/OMIT (false: eigenproblem on the full f-set)
+  bool ignore_unknown_cards = false;          ///< solve without the cards seflex does not know (check_card_usage)
   /// The distributed eigensolver (parallel/, --backend slepc): EigenOptions::external.
   linalg::ExternalEigensolver external;
 };

@@ -30,6 +30,7 @@ namespace seflex::solutions {
 struct StaticOptions {
   std::optional<int> subcase;  ///< solve_static: default the first subcase; solve_statics: default all
   linalg::FactorizationBackend factorization = linalg::kDefaultFactorization;
+  bool ignore_unknown_cards = false;  ///< solve without the cards seflex does not know (check_card_usage)
 };
 
 struct StaticSolution {
@@ -43,7 +44,9 @@ struct StaticSolution {
 };
 
 /// Solve the statics of one subcase of a finalized model. Throws InputError when a card the
-/// subcase needs is not supported or not defined (check_card_usage), or when the constrained
+/// subcase needs is not supported or not defined, or the deck has cards seflex does not know and
+/// ignore_unknown_cards is not set (check_card_usage), when no dof is free (require_free_dofs: no
+/// element, or every dof constrained), or when the constrained
 /// stiffness is singular (the message names a grid and component of the unconstrained rigid-body
 /// motion or mechanism).
 StaticSolution solve_static(const fem::Model& model, const StaticOptions& options = {});
