@@ -9,8 +9,6 @@
 #include <complex>
 #include <limits>
 #include <sstream>
-#include <cstdio>
-#include <cstdlib>
 
 #include "seflex/common/error.hpp"
 #include "seflex/common/so3.hpp"
@@ -79,12 +77,6 @@ class RadauStepper final : public detail::Stepper {
     fnewt_ = st.radau.newton_fraction > 0.0 ? st.radau.newton_fraction
                                              : std::max(10.0 * kRoundoff / tol, std::min(0.03, std::sqrt(tol)));
     for (MatrixXd* m : {&U_, &Up_, &V_, &A_, &R_, &F_, &U_acc_, &V_acc_, &A_acc_}) m->setZero(n_, 3);
-    if (const char* e = std::getenv("RADAU_AA")) aa_depth_ = std::atoi(e);
-    aa_dx_.setZero(3 * n_, std::max(1, aa_depth_));
-    aa_df_.setZero(3 * n_, std::max(1, aa_depth_));
-    Q_.resize(3 * model.rotation_dof_starts.size());
-    w3_.resize(3 * n_);
-    for (int i = 0; i < 3; ++i) w3_.segment(i * n_, n_) = w_;
     for (VectorXd* v : {&r1_, &dw1_, &u_, &cu_, &cv_, &rhs_, &eu_, &ev_, &tmp_}) v->setZero(n_);
     rc_.setZero(n_);
     dwc_.setZero(n_);
@@ -133,10 +125,10 @@ class RadauStepper final : public detail::Stepper {
   detail::StepResult failed(detail::StepResult& out, const std::string& why, double retry_factor) {
     out.converged = false;
     out.why = why;
-    if (std::getenv("RADAU_DEBUG")) std::fprintf(stderr, "t %.6f fail: %s (retry %.3f, caljac %d)\n", state_.t, why.c_str(), retry_factor, (int)caljac_);
-    out.retry_factor = retry_factor;
     reject_ = true;
-    if (!caljac_) need_jacobian_ = true;  // an old Jacobian may be why: a new one for the retry
+    // An old Jacobian may be why: a new one for the retry, which keeps a constant step at its size.
+    out.retry_factor = !caljac_ && !st_.adaptive ? 1.0 : retry_factor;
+    if (!caljac_) need_jacobian_ = true;
     return out;
   }
 
@@ -163,10 +155,6 @@ class RadauStepper final : public detail::Stepper {
 
   // Newton and controller state.
   MatrixXd U_, Up_, V_, A_, R_, F_;  // n x 3: stage increments, their rates, velocities, accelerations, residuals
-  int aa_depth_ = 0, aa_count_ = 0;
-  std::vector<Eigen::Matrix3d> Q_;
-  MatrixXd aa_dx_, aa_df_;
-  VectorXd aa_x_, aa_f_, w3_;
   VectorXd r1_, dw1_, u_;
   VectorXcd rc_, dwc_;
   State stage_[3];
@@ -239,8 +227,7 @@ void RadauStepper::predict(double h) {
   const VectorXd& a0 = state_.vdot;
   // Extrapolate the last step's collocation polynomial (as RADAU5), unless that step was much
   // shorter (cut to a lock crossing: its cubic says little 3 steps ahead): then Taylor's second order.
-  static const int pred = std::getenv("RADAU_PRED") ? std::atoi(std::getenv("RADAU_PRED")) : 0;
-  if (h_acc_ <= 0.0 || h > 3.0 * h_acc_ || pred == 1) {
+  if (h_acc_ <= 0.0 || h > 3.0 * h_acc_) {
     for (int i = 0; i < 3; ++i) {
       const double dt = rk_.c[i] * h;
       U_.col(i) = dt * v0 + (0.5 * dt * dt) * a0;
@@ -291,20 +278,8 @@ detail::StepResult RadauStepper::attempt(double h) {
     return out;
   }
   predict(h);
-  int fresh_stage = -1;  // a stage whose residual at the predictor the Jacobian's assembly gave
   try {
-    if (need_jacobian_) {
-      static const int at = std::getenv("RADAU_JACAT") ? std::atoi(std::getenv("RADAU_JACAT")) : -1;
-      if (at >= 0) {
-        form_stages(h);
-        evaluate_jacobian(stage_[at]);
-        R_.col(at) = data_.residual;
-        for (std::size_t b = 0; b < model_.flexible_bodies.size(); ++b) stage_[at].frames[b] = data_.flex[b].kin.frame;
-        fresh_stage = at;
-      } else {
-        evaluate_jacobian(state_);
-      }
-    }
+    if (need_jacobian_) evaluate_jacobian(state_);
   } catch (const ConvergenceError& e) {
     return failed(out, std::string("the Jacobian at the step's start: ") + e.what(), 0.5);
   }
@@ -318,120 +293,14 @@ detail::StepResult RadauStepper::attempt(double h) {
   double dyno_old = 0.0, thq_old = 0.0;
   const Eigen::Matrix3d& T = rk_.T;
   const Eigen::Matrix3d& Ti = rk_.Tinv;
-  auto fd_debug = [&]() {
-    // Debug: finite-difference Jacobian of the stage residuals against I K + Ainv/h C + (Ainv/h)^2 M.
-    auto resid = [&](Eigen::VectorXd& out) {
-      form_stages(h);
-      out.resize(3 * n_);
-      for (int i = 0; i < 3; ++i) {
-        assemble(model_, stage_[i], data_, opt_residual_);
-        out.segment(i * n_, n_) = data_.residual;
-      }
-    };
-    Eigen::VectorXd r0, rp, rm;
-    MatrixXd Jfd(3 * n_, 3 * n_);
-    const MatrixXd U0 = U_;
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < n_; ++k) {
-        const double e = 1e-7 / std::max(1.0, w_[k] * std::min(st_.tol_position, st_.tol_angle));
-        U_ = U0; U_(k, j) += e; resid(rp);
-        U_ = U0; U_(k, j) -= e; resid(rm);
-        Jfd.col(j * n_ + k) = (rp - rm) / (2 * e);
-      }
-    U_ = U0;
-    const MatrixXd Kd(K_), Cd(C_), Md(M_);
-    const Eigen::Matrix3d Ai = rk_.Ainv / h, Ai2 = Ai * Ai;
-    MatrixXd J(3 * n_, 3 * n_);
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) J.block(i * n_, j * n_, n_, n_) = (i == j ? 1.0 : 0.0) * Kd + Ai(i, j) * Cd + Ai2(i, j) * Md;
-    std::fprintf(stderr, "h %.3e: |J - Jfd| / |Jfd| = %.3e; blocks K-part rel diff:\n", h, (J - Jfd).norm() / Jfd.norm());
-    {
-      resid(r0);
-      const Eigen::VectorXd dU = J.fullPivLu().solve(-r0);
-      const Eigen::Matrix3d& T = rk_.T;
-      const Eigen::Matrix3d& Ti = rk_.Tinv;
-      for (int i = 0; i < 3; ++i) R_.col(i) = r0.segment(i * n_, n_);
-      r1_ = Ti(0, 0) * R_.col(0) + Ti(0, 1) * R_.col(1) + Ti(0, 2) * R_.col(2);
-      rc_.real() = Ti(1, 0) * R_.col(0) + Ti(1, 1) * R_.col(1) + Ti(1, 2) * R_.col(2);
-      rc_.imag() = Ti(2, 0) * R_.col(0) + Ti(2, 1) * R_.col(1) + Ti(2, 2) * R_.col(2);
-      real_.solve_negated(r1_, dw1_);
-      complex_.solve_negated(rc_, dwc_);
-      Eigen::VectorXd mine(3 * n_);
-      for (int i = 0; i < 3; ++i) mine.segment(i * n_, n_) = T(i, 0) * dw1_ + T(i, 1) * dwc_.real() + T(i, 2) * dwc_.imag();
-      // Also the real system alone against a dense solve.
-      const MatrixXd Sd(S_);
-      const Eigen::VectorXd x1 = Sd.fullPivLu().solve(-r1_);
-      const Eigen::MatrixXcd Scd(Sc_);
-      const Eigen::VectorXcd xc = Scd.fullPivLu().solve(-rc_);
-      std::fprintf(stderr, "  newton step: dense %.3e, mine %.3e, diff %.3e; real sys diff %.3e, complex sys diff %.3e\n", dU.norm(), mine.norm(), (dU - mine).norm(), (x1 - dw1_).norm() / x1.norm(), (xc - dwc_).norm() / xc.norm());
-      Eigen::VectorXd r1;
-      U_ = U0;
-      for (int i = 0; i < 3; ++i) U_.col(i) += dU.segment(i * n_, n_);
-      resid(r1);
-      std::fprintf(stderr, "  residual %.3e -> %.3e after a full Newton step\n", r0.norm(), r1.norm());
-      for (double al : {1e-4, 1e-3, 1e-2, 0.1, 0.3, 1.0}) {
-        U_ = U0;
-        for (int i = 0; i < 3; ++i) U_.col(i) += al * dU.segment(i * n_, n_);
-        Eigen::VectorXd ra;
-        resid(ra);
-        const Eigen::VectorXd lin = r0 + al * (Jfd * dU);
-        const Eigen::VectorXd dev = ra - lin;
-        Eigen::Index im; dev.cwiseAbs().maxCoeff(&im);
-        std::fprintf(stderr, "   alpha %.0e: |R - (R0 + a J d)| %.3e (|R| %.3e), worst %s stage %d\n", al, dev.norm(), ra.norm(), model_.dof_labels[im % n_].c_str(), (int)(im / n_));
-      }
-      U_ = U0;
-      {
-        // K, C, M at stage 3 by assembly (matrices) against those of the Jacobian.
-        AssemblyOptions o;
-        o.inertia_velocity_tangent = st_.inertia_velocity_tangent;
-        assemble(model_, stage_[2], data_, o);
-        Eigen::SparseMatrix<double> K3, C3, M3;
-        combine_matrices(model_, data_, 1.0, 0.0, 0.0, nullptr, K3);
-        combine_matrices(model_, data_, 0.0, 1.0, 0.0, nullptr, C3);
-        combine_matrices(model_, data_, 0.0, 0.0, 1.0, nullptr, M3);
-        const double g = rk_.gamma / h;
-        const MatrixXd dK = MatrixXd(K3) - MatrixXd(K_), dC = g * (MatrixXd(C3) - MatrixXd(C_)), dM = g * g * (MatrixXd(M3) - MatrixXd(M_));
-        const MatrixXd S0 = MatrixXd(S_);
-        for (const auto& [name, D] : {std::pair<const char*, const MatrixXd*>{"K", &dK}, {"gC", &dC}, {"g2M", &dM}}) {
-          const MatrixXd P = S0.fullPivLu().solve(*D);
-          const Eigen::VectorXcd e2 = P.eigenvalues();
-          double r2 = 0;
-          for (Eigen::Index k = 0; k < e2.size(); ++k) r2 = std::max(r2, std::abs(e2[k]));
-          Eigen::Index a, b;
-          D->cwiseAbs().maxCoeff(&a, &b);
-          std::fprintf(stderr, "  stage-3 change of %s: rho(S^-1 d) %.3e, largest at (%s, %s) %.3e\n", name, r2, model_.dof_labels[a].c_str(), model_.dof_labels[b].c_str(), (*D)(a, b));
-        }
-      }
-      const MatrixXd E = MatrixXd::Identity(3 * n_, 3 * n_) - J.fullPivLu().solve(Jfd);
-      const Eigen::VectorXcd ev = E.eigenvalues();
-      double rho = 0;
-      for (Eigen::Index k = 0; k < ev.size(); ++k) rho = std::max(rho, std::abs(ev[k]));
-      std::fprintf(stderr, "  spectral radius of I - S^-1 J_fd: %.3e\n", rho);
-      U_ = U0;
-    }
-    for (int i = 0; i < 3; ++i) {
-      const MatrixXd D = J.block(i * n_, i * n_, n_, n_) - Jfd.block(i * n_, i * n_, n_, n_);
-      Eigen::Index r, c;
-      D.cwiseAbs().maxCoeff(&r, &c);
-      std::fprintf(stderr, "  block %d: |D| %.3e |J| %.3e, max at (%s, %s): J %.4e fd %.4e\n", i, D.norm(), J.block(i * n_, i * n_, n_, n_).norm(),
-                   model_.dof_labels[r].c_str(), model_.dof_labels[c].c_str(), J(i * n_ + r, i * n_ + c), Jfd(i * n_ + r, i * n_ + c));
-    }
-  };
   newt_ = 0;
-  aa_count_ = 0;
   for (;;) {
-    if (std::getenv("RADAU_FD") && state_.t > std::atof(std::getenv("RADAU_FD"))) fd_debug();
     if (newt_ >= nit_)
       return failed(out, "no convergence in " + std::to_string(nit_) + " simplified Newton iterations", 0.5);
     form_stages(h);
     out.residual = 0.0;
     try {
       for (int i = 0; i < 3; ++i) {
-        if (i == fresh_stage) {
-          fresh_stage = -1;
-          out.residual = std::max(out.residual, R_.col(i).norm());
-          continue;
-        }
         assemble(model_, stage_[i], data_, opt_residual_);
         ++evaluations_;
         R_.col(i) = data_.residual;
@@ -442,21 +311,6 @@ detail::StepResult RadauStepper::attempt(double h) {
       return failed(out, e.what(), 0.5);
     }
     if (!std::isfinite(out.residual)) return failed(out, "the residual is not finite", 0.5);
-    static const int rotmode = std::getenv("RADAU_ROT") ? std::atoi(std::getenv("RADAU_ROT")) : 0;
-    const bool corot = rotmode != 0;
-    if (rotmode == 1) {
-      // Each Free node's rows in the axes its rotation increment U_i carries along (the stiffness of
-      // the body it moves with rotates with it; the Jacobian is that of the step's start).
-      for (std::size_t q = 0; q < model_.rotation_dof_starts.size(); ++q) {
-        const int r = model_.rotation_dof_starts[q];
-        for (int i = 0; i < 3; ++i) {
-          Eigen::Matrix3d& Q = Q_[3 * q + static_cast<std::size_t>(i)];
-          Q = so3::exp(U_.block<3, 1>(r, i));
-          R_.block<3, 1>(r - 3, i) = Q.transpose() * R_.block<3, 1>(r - 3, i);
-          R_.block<3, 1>(r, i) = Q.transpose() * R_.block<3, 1>(r, i);
-        }
-      }
-    }
     // Transformed residuals: W = T^-1 U, one real and one complex system.
     r1_ = Ti(0, 0) * R_.col(0) + Ti(0, 1) * R_.col(1) + Ti(0, 2) * R_.col(2);
     rc_.real() = Ti(1, 0) * R_.col(0) + Ti(1, 1) * R_.col(1) + Ti(1, 2) * R_.col(2);
@@ -471,15 +325,6 @@ detail::StepResult RadauStepper::attempt(double h) {
       largest = std::max({largest, std::abs(a), std::abs(b), std::abs(c)});
     }
     const double dyno = std::sqrt(sum / (3.0 * n_));
-    if (std::getenv("RADAU_ITER")) {
-      Eigen::Index im = 0;
-      double vm = 0;
-      for (Eigen::Index i = 0; i < n_; ++i) {
-        const double v = std::abs(dw1_[i] * w_[i]) + std::abs(dwc_[i] * w_[i]);
-        if (v > vm) { vm = v; im = i; }
-      }
-      std::fprintf(stderr, "    t %.5f h %.3e it %d dyno %.3e |R| %.3e %.3e %.3e, largest at %s (%.3e)\n", state_.t, h, newt_, dyno, R_.col(0).norm(), R_.col(1).norm(), R_.col(2).norm(), model_.dof_labels[im].c_str(), vm);
-    }
     if (!std::isfinite(dyno)) return failed(out, "the Newton increment is not finite", 0.5);
     // Round-off floor: an increment of 1e-14 of the dofs' scales changes nothing that matters.
     const bool floor = largest * std::min(st_.tol_position, st_.tol_angle) <= 1e-14;
@@ -497,8 +342,7 @@ detail::StepResult RadauStepper::attempt(double h) {
       // Distance to the solution after the remaining iterations, predicted from the rate: too far,
       // and a smaller step (theta ~ h) is the remedy.
       const double dyth = faccon_ * dyno * std::pow(theta_, nit_ - 1 - newt_) / fnewt_;
-      static const bool noabort = std::getenv("RADAU_NOABORT") != nullptr;
-      if (dyth >= 1.0 && !noabort) {
+      if (dyth >= 1.0 && st_.adaptive) {
         const double q = std::clamp(dyth, 1e-4, 20.0);
         std::ostringstream os;
         os.precision(3);
@@ -508,47 +352,7 @@ detail::StepResult RadauStepper::attempt(double h) {
     }
     dyno_old = std::max(dyno, kRoundoff);
     for (int i = 0; i < 3; ++i) F_.col(i) = T(i, 0) * dw1_ + T(i, 1) * dwc_.real() + T(i, 2) * dwc_.imag();
-    if (corot)
-      for (std::size_t q = 0; q < model_.rotation_dof_starts.size(); ++q) {
-        const int r = model_.rotation_dof_starts[q];
-        for (int i = 0; i < 3; ++i) {
-          if (rotmode == 1) {
-            const Eigen::Matrix3d& Q = Q_[3 * q + static_cast<std::size_t>(i)];
-            F_.block<3, 1>(r - 3, i) = Q * F_.block<3, 1>(r - 3, i);
-            F_.block<3, 1>(r, i) = so3::jl_inv(U_.block<3, 1>(r, i)) * (Q * F_.block<3, 1>(r, i));
-          } else {
-            F_.block<3, 1>(r, i) = so3::jl_inv(U_.block<3, 1>(r, i)) * F_.block<3, 1>(r, i);
-          }
-        }
-      }
-    if (aa_depth_ == 0) {
-      U_ += F_;
-    } else {
-      // Anderson acceleration of the fixed-point iteration U <- U + F(U).
-      const int m = std::min(aa_count_, aa_depth_);
-      const Eigen::Map<const VectorXd> x(U_.data(), 3 * n_), f(F_.data(), 3 * n_);
-      if (aa_count_ > 0) {
-        const int slot = (aa_count_ - 1) % aa_depth_;
-        aa_dx_.col(slot) = x - aa_x_;
-        aa_df_.col(slot) = f - aa_f_;
-      }
-      aa_x_ = x;
-      aa_f_ = f;
-      VectorXd xn = x + f;
-      if (m > 0) {
-        Eigen::MatrixXd G(m, m);
-        Eigen::VectorXd b(m);
-        for (int a = 0; a < m; ++a) {
-          b[a] = (aa_df_.col(a).cwiseProduct(w3_)).dot(f.cwiseProduct(w3_));
-          for (int c = 0; c < m; ++c) G(a, c) = (aa_df_.col(a).cwiseProduct(w3_)).dot(aa_df_.col(c).cwiseProduct(w3_));
-        }
-        G.diagonal() *= 1.0 + 1e-10;
-        const Eigen::VectorXd gam = G.ldlt().solve(b);
-        for (int a = 0; a < m; ++a) xn -= gam[a] * (aa_dx_.col(a) + aa_df_.col(a));
-      }
-      ++aa_count_;
-      Eigen::Map<VectorXd>(U_.data(), 3 * n_) = xn;
-    }
+    U_ += F_;
     if (faccon_ * dyno <= fnewt_ || floor) break;
   }
   form_stages(h);  // the stages of the converged increments (not evaluated: the next step starts there)
@@ -630,6 +434,7 @@ void RadauStepper::accept() {
   first_ = false;
   reject_ = false;
   caljac_ = false;
+  if (theta_ > st_.radau.jacobian_theta) need_jacobian_ = true;  // Newton contracted slowly: a new Jacobian
 }
 
 double RadauStepper::step_after_accept(double h, double /*h_wanted*/, double err, bool after_rejection) {
@@ -644,11 +449,7 @@ double RadauStepper::step_after_accept(double h, double /*h_wanted*/, double err
   err_accepted_ = std::max(1e-2, err);
   double h_new = h * q;
   if (after_rejection) h_new = std::min(h_new, h);
-  if (theta_ <= st_.radau.jacobian_theta) {
-    if (h_new >= kKeepLow * h && h_new <= kKeepHigh * h) h_new = h;  // same matrices
-  } else {
-    need_jacobian_ = true;
-  }
+  if (theta_ <= st_.radau.jacobian_theta && h_new >= kKeepLow * h && h_new <= kKeepHigh * h) h_new = h;  // same matrices
   return h_new;
 }
 
@@ -698,14 +499,10 @@ void RadauStepper::sample_at(double t, Sample& out) {
 }  // namespace
 
 RunStats simulate_radau5(const Model& model, State& state, Data& data, const IntegratorSettings& st, Observer* observer) {
-  IntegratorSettings st2 = st;
-  if (const char* e = std::getenv("RADAU_NIT")) st2.radau.newton_max_iterations = std::atoi(e);
-  if (const char* e = std::getenv("RADAU_THET")) st2.radau.jacobian_theta = std::atof(e);
-  if (const char* e = std::getenv("RADAU_FNEWT")) st2.radau.newton_fraction = std::atof(e);
-  detail::validate_settings(st2, state.t);
+  detail::validate_settings(st, state.t);
   initial_accelerations(model, state, data);
-  RadauStepper stepper(model, state, data, st2);
-  RunStats stats = detail::drive_steps(model, st2, stepper, observer);
+  RadauStepper stepper(model, state, data, st);
+  RunStats stats = detail::drive_steps(model, st, stepper, observer);
   stats.jacobians = stepper.jacobians();
   stats.evaluations = stepper.evaluations();
   assemble(model, state, data, AssemblyOptions{false, true, 1.0});  // the caller's `data` belongs to the final state

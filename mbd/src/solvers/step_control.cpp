@@ -8,8 +8,6 @@
 #include <sstream>
 
 #include "seflex/common/error.hpp"
-#include <cstdio>
-#include <cstdlib>
 
 namespace seflex::mbd::detail {
 
@@ -208,7 +206,6 @@ RunStats drive_steps(const Model& model, const IntegratorSettings& st, Stepper& 
     h_event = 0.0;
     event_retries = 0;
     stepper.accept();
-    if (std::getenv("STEP_DEBUG")) std::fprintf(stderr, "STEP %.6f %.4e %d %d\n", stepper.time(), h, r.iterations, (int)was_event_retry);
     ++step;
     ++stats.steps;
     stats.newton_iterations += r.iterations;
