@@ -39,17 +39,6 @@ void check_derivatives(const ForceElement& fe, VectorXd phi, const VectorXd& phi
   }
 }
 
-Model rotor(double tau0, double tau1, double phi_ref, double phi_lock, double k_lock, double c_lock = 0) {
-  ModelBuilder mb;
-  const auto rod = mb.add_superelement(test::rod(1.0, 1.0));
-  const auto g = mb.add_ground("ground", Pose{});
-  const auto h = mb.add_hinge("H", g, Vector3d::UnitZ());
-  mb.add_rigid_body("rod", rod, mb.hinge_child(h), 0, Pose{Matrix3d::Identity(), Vector3d(0.5, 0, 0)});
-  mb.add_force_element("spring", TorsionSpring{h, tau0, tau1, phi_ref, {}, {}});
-  if (k_lock > 0) mb.add_force_element("lock", HingeLock{h, phi_lock, k_lock, c_lock});
-  return mb.build();
-}
-
 }  // namespace
 
 TEST(ForceElements, TorsionSpringLinearAndTable) {
@@ -151,7 +140,7 @@ TEST(ForceElements, LockCrossingTimeIsLocated) {
   const double t_star = std::acos(1 - k * phi_lock / tau0) / w;
   const double phidot_star = tau0 / k * w * std::sin(w * t_star);
   const double phi_eq = (tau0 + k_lock * phi_lock) / (k + k_lock), wl = std::sqrt((k + k_lock) / J);
-  const Model model = rotor(tau0, tau1, phi_ref, phi_lock, k_lock);
+  const Model model = test::spring_rotor(tau0, tau1, phi_ref, phi_lock, k_lock);
   for (bool adaptive : {true, false}) {
     State s = initial_state(model);
     Data data(model);
@@ -193,7 +182,7 @@ TEST(ForceElements, LockCrossingTimeIsLocated) {
 // what remains is the Newton and event-location round-off: measured 1.3e-12 J of 16.5 J; bound 1e-10
 // of the spring work.
 TEST(ForceElements, EnergyBalanceWithSpringAndLock) {
-  const Model model = rotor(13, 8, M_PI / 2, M_PI / 2, 5000);
+  const Model model = test::spring_rotor(13, 8, M_PI / 2, M_PI / 2, 5000);
   State s = initial_state(model);
   Data data(model);
   IntegratorSettings st;

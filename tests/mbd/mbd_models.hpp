@@ -112,4 +112,19 @@ inline mbd::Model pendulum_chain(const ChainOptions& o) {
   return mb.build();
 }
 
+/// A rigid rod (1 m, 1 kg: J = 1/3 kg m^2 about its end) on a ground hinge about z, driven by the
+/// linear torsion spring tau = tau0 + (tau1 - tau0) phi / phi_ref, with a latching lock at phi_lock of
+/// stiffness k_lock (none when k_lock = 0) and damping c_lock.
+inline mbd::Model spring_rotor(double tau0, double tau1, double phi_ref, double phi_lock, double k_lock, double c_lock = 0) {
+  using namespace mbd;
+  ModelBuilder mb;
+  const auto r = mb.add_superelement(rod(1.0, 1.0));
+  const auto g = mb.add_ground("ground", Pose{});
+  const auto h = mb.add_hinge("H", g, Eigen::Vector3d::UnitZ());
+  mb.add_rigid_body("rod", r, mb.hinge_child(h), 0, Pose{Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.5, 0, 0)});
+  mb.add_force_element("spring", TorsionSpring{h, tau0, tau1, phi_ref, {}, {}});
+  if (k_lock > 0) mb.add_force_element("lock", HingeLock{h, phi_lock, k_lock, c_lock});
+  return mb.build();
+}
+
 }  // namespace seflex::test
