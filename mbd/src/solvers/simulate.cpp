@@ -31,7 +31,7 @@ const char* formulation_name(Formulation f) {
 std::string integrator_unavailable(Formulation formulation, IntegratorMethod method) {
   if (formulation == Formulation::Aic || method == IntegratorMethod::GeneralizedAlpha) return {};
   return std::string("integrator.method ") + integrator_method_name(method) + ": the formulation " +
-         formulation_name(formulation) + " integrates with generalized-alpha only";
+         formulation_name(formulation) + " integrates with generalized-alpha only (docs/ffrf.md, Limits)";
 }
 
 SimulationRun simulate(const Model& model, const IntegratorSettings& settings, IntegratorMethod method,
