@@ -135,11 +135,9 @@ TEST(ForceElements, CableLoopPreloadAndSplitTorque) {
 // latch, J phi'' = tau0 - k phi - k_lock (phi - phi_lock): a harmonic oscillation about
 // phi_eq = (tau0 + k_lock phi_lock) / (k + k_lock) at w_l = sqrt((k + k_lock) / J).
 TEST(ForceElements, LockCrossingTimeIsLocated) {
-  const double tau0 = 13, tau1 = 8, phi_ref = M_PI / 2, phi_lock = M_PI / 2, k_lock = 5000, J = 1.0 / 3.0;
-  const double k = (tau0 - tau1) / phi_ref, w = std::sqrt(k / J);
-  const double t_star = std::acos(1 - k * phi_lock / tau0) / w;
-  const double phidot_star = tau0 / k * w * std::sin(w * t_star);
-  const double phi_eq = (tau0 + k_lock * phi_lock) / (k + k_lock), wl = std::sqrt((k + k_lock) / J);
+  const double tau0 = 13, tau1 = 8, phi_ref = M_PI / 2, phi_lock = M_PI / 2, k_lock = 5000;
+  const test::SpringRotorMotion exact(tau0, tau1, phi_ref, phi_lock, k_lock);
+  const double t_star = exact.t_star;
   const Model model = test::spring_rotor(tau0, tau1, phi_ref, phi_lock, k_lock);
   for (bool adaptive : {true, false}) {
     State s = initial_state(model);
@@ -170,8 +168,7 @@ TEST(ForceElements, LockCrossingTimeIsLocated) {
     EXPECT_TRUE(event);
     if (!adaptive) continue;
     // Post-lock oscillation against its closed form.
-    const double tau = s.t - t_star;
-    const double phi_exact = phi_eq + (phi_lock - phi_eq) * std::cos(wl * tau) + phidot_star / wl * std::sin(wl * tau);
+    const double phi_exact = exact.phi_after_latch(s.t);
     EXPECT_NEAR(s.phi[0], phi_exact, 2e-6);
   }
 }

@@ -65,20 +65,6 @@ TEST(Radau5, TableauSatisfiesItsOrderConditions) {
 }
 
 
-/// Highest frequency of the model linearised at its initial state: max sqrt(eig(K, M)).
-double highest_frequency(const Model& model) {
-  State s = initial_state(model);
-  Data data(model);
-  initial_accelerations(model, s, data);
-  assemble(model, s, data, AssemblyOptions{});
-  Eigen::SparseMatrix<double> K, M;
-  combine_matrices(model, data, 1.0, 0.0, 0.0, nullptr, K);
-  combine_matrices(model, data, 0.0, 0.0, 1.0, nullptr, M);
-  const Eigen::MatrixXd Kd = Eigen::MatrixXd(K), Md = Eigen::MatrixXd(M);
-  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(0.5 * (Kd + Kd.transpose()), 0.5 * (Md + Md.transpose()));
-  return std::sqrt(es.eigenvalues().maxCoeff());
-}
-
 /// A two-link flexible pendulum moving in 3-D: H1 about z at the origin, H2 about (0, 1, 1)/sqrt 2 at
 /// the first link's tip, so the second link's and the tip node's rotations do not commute. Links of
 /// 1 m along x (2 beam elements, frame at the middle node), horizontal at t = 0, gravity -y.
@@ -208,11 +194,9 @@ TEST(Radau5, RigidDoublePendulumMatchesReference) {
 // oscillation about phi_eq at w_l = sqrt((k + k_lock) / J). Adaptive steps from 1 ms, and constant
 // steps of 10 ms (the crossing inside a step: the step is redone to end on it).
 TEST(Radau5, LockCrossingIsLocatedToEventTol) {
-  const double tau0 = 13, tau1 = 8, phi_ref = M_PI / 2, phi_lock = M_PI / 2, k_lock = 5000, J = 1.0 / 3.0;
-  const double k = (tau0 - tau1) / phi_ref, w = std::sqrt(k / J);
-  const double t_star = std::acos(1 - k * phi_lock / tau0) / w;
-  const double phidot_star = tau0 / k * w * std::sin(w * t_star);
-  const double phi_eq = (tau0 + k_lock * phi_lock) / (k + k_lock), wl = std::sqrt((k + k_lock) / J);
+  const double tau0 = 13, tau1 = 8, phi_ref = M_PI / 2, phi_lock = M_PI / 2, k_lock = 5000;
+  const test::SpringRotorMotion exact(tau0, tau1, phi_ref, phi_lock, k_lock);
+  const double t_star = exact.t_star;
   const Model model = spring_rotor(tau0, tau1, phi_ref, phi_lock, k_lock);
   for (bool adaptive : {true, false}) {
     State s = initial_state(model);
@@ -232,7 +216,7 @@ TEST(Radau5, LockCrossingIsLocatedToEventTol) {
     EXPECT_GT(rs.event_retries, 0);
     // |phi - phi_lock| <= event_tol (1e-9 rad) at the latch and phi' = 9.9 rad/s there: the time to
     // 1.0e-10 s from the angle (measured: 2.1e-13 s adaptive, 2.3e-11 s with 10 ms steps).
-    EXPECT_LT(err_t, st.event_tol / phidot_star);
+    EXPECT_LT(err_t, st.event_tol / exact.phidot_star);
     bool event = false;
     for (const auto& smp : rec.samples)
       if (smp.event) {
@@ -247,8 +231,7 @@ TEST(Radau5, LockCrossingIsLocatedToEventTol) {
       if (!rec.samples[j].event && !rec.samples[j - 1].event && rec.samples[j].t < st.t_end - 1e-12)
         EXPECT_NEAR(rec.samples[j].t - rec.samples[j - 1].t, 0.01, 1e-12);
     if (!adaptive) continue;
-    const double tau = s.t - t_star;
-    const double phi_exact = phi_eq + (phi_lock - phi_eq) * std::cos(wl * tau) + phidot_star / wl * std::sin(wl * tau);
+    const double phi_exact = exact.phi_after_latch(s.t);
     EXPECT_NEAR(s.phi[0], phi_exact, 1e-10);  // measured 5.3e-12 rad (local error 1e-10)
     std::printf("after the latch: phi %.9f, closed form %.9f (error %.2e rad)\n", s.phi[0], phi_exact, std::abs(s.phi[0] - phi_exact));
   }
