@@ -27,11 +27,11 @@ std::vector<Eigen::Index> unheld_part(const fem::GlobalMatrices& g, const fem::C
   };
   const auto join = [&](Eigen::Index a, Eigen::Index b) { parent[static_cast<std::size_t>(root(dofs.node_of_dof(a)))] = root(dofs.node_of_dof(b)); };
   for (Eigen::Index j = 0; j < g.K.outerSize(); ++j)
-    for (SparseMatrixd::InnerIterator it(g.K, j); it; ++it)
+    for (linalg::SparseMatrixd::InnerIterator it(g.K, j); it; ++it)
       if (it.value() != 0.0) join(it.row(), it.col());
   for (Eigen::Index f = 0; f < c.T.outerSize(); ++f) {
     Eigen::Index first = -1;
-    for (SparseMatrixd::InnerIterator it(c.T, f); it; ++it) first < 0 ? void(first = it.row()) : join(first, it.row());
+    for (linalg::SparseMatrixd::InnerIterator it(c.T, f); it; ++it) first < 0 ? void(first = it.row()) : join(first, it.row());
   }
   const Eigen::Index part = root(start);
   std::vector<Eigen::Index> nodes;
