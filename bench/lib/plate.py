@@ -24,6 +24,12 @@ def boundary(n):
     return [grid_id(i, j, n) for j in range(n + 1) for i in range(n + 1) if i in (0, n) or j in (0, n)]
 
 
+def quads(n):
+    """(element id, its four grids counter-clockwise) of the n x n plate, row by row."""
+    return [(1 + i + n * j, grid_id(i, j, n), grid_id(i, j, n) + 1, grid_id(i, j, n) + n + 2, grid_id(i, j, n) + n + 1)
+            for j in range(n) for i in range(n)]
+
+
 def write_nastran(path, n):
     h = SIDE / n
     with open(path, "w") as f:
@@ -35,12 +41,7 @@ def write_nastran(path, n):
         for j in range(n + 1):
             for i in range(n + 1):
                 out.append("GRID,%d,,%s,%s,0.\n" % (grid_id(i, j, n), real(i * h), real(j * h)))
-        eid = 1
-        for j in range(n):
-            for i in range(n):
-                g = grid_id(i, j, n)
-                out.append("CQUAD4,%d,1,%d,%d,%d,%d\n" % (eid, g, g + 1, g + n + 2, g + n + 1))
-                eid += 1
+        out += ["CQUAD4,%d,1,%d,%d,%d,%d\n" % q for q in quads(n)]
         for g in boundary(n):
             out.append("SPC1,1,123456,%d\n" % g)
         f.write("".join(out))
@@ -56,12 +57,7 @@ def write_calculix(path, n):
             for i in range(n + 1):
                 out.append("%d,%.9g,%.9g,0.\n" % (grid_id(i, j, n), i * h, j * h))
         out.append("*ELEMENT,TYPE=S4,ELSET=PLATE\n")
-        eid = 1
-        for j in range(n):
-            for i in range(n):
-                g = grid_id(i, j, n)
-                out.append("%d,%d,%d,%d,%d\n" % (eid, g, g + 1, g + n + 2, g + n + 1))
-                eid += 1
+        out += ["%d,%d,%d,%d,%d\n" % q for q in quads(n)]
         out.append("*NSET,NSET=EDGE\n")
         b = boundary(n)
         for k in range(0, len(b), 16):
