@@ -228,11 +228,11 @@ TEST(CardUsage, CardsNoSolutionUsesAreWarnings) {
   EXPECT_EQ(find(u, "PARAM")->count, 2u);
   // a card seflex does not know is refused (tests/input/unknown_cards_test.cpp), unless asked to go on
   const fem::Model x = test::read_deck(deck("SPC = 1\nLOAD = 7\n", "XYZCARD,1\n"));
-  const reduction::CardUsage refused = usage(x, Solution::Statics);
+  const solutions::CardUsage refused = usage(x, Solution::Statics);
   const CardUse* unknown = find(refused, "XYZCARD");
   EXPECT_EQ(unknown->kind, CardUse::Kind::Refused);
   EXPECT_TRUE(unknown->unknown_card);
-  const auto ignored = reduction::check_card_usage(x, Solution::Statics, reduction::select_cases(x), reduction::kInterfaceNone, true);
+  const auto ignored = solutions::check_card_usage(x, Solution::Statics, solutions::select_cases(x), solutions::kInterfaceNone, true);
   EXPECT_FALSE(ignored.refused());
   EXPECT_TRUE(mentions(find(ignored, "XYZCARD")->reason, {"a card seflex does not know; ignored (--ignore-unknown)"}));
   // inertia relief is refused in statics
