@@ -52,7 +52,7 @@ using namespace seflex;
 /// Records the swing angle at every output sample: the angle of the chord from the pivot to the
 /// tip node (the lower end) from the downward vertical -y, about z.
 struct SwingAngle final : mbd::Observer {
-  explicit SwingAngle(mbd::NodeIndex tip) : tip(tip) {}
+  explicit SwingAngle(mbd::NodeIndex tip_node) : tip(tip_node) {}
   mbd::NodeIndex tip;
   std::vector<double> t, phi;
   void on_sample(const mbd::Model&, const mbd::Sample& s) override {
