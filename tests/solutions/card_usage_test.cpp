@@ -226,7 +226,7 @@ TEST(CardUsage, CardsNoSolutionUsesAreWarnings) {
   EXPECT_TRUE(mentions(find(u, "MPC")->reason, {"MPC set 4 not selected"}));
   EXPECT_TRUE(mentions(find(u, "PARAM")->reason, {"parameters seflex does not use: POST, SOLLIB"}));
   EXPECT_EQ(find(u, "PARAM")->count, 2u);
-  // a card seflex does not know is refused (tests/input/unknown_cards_test.cpp), unless asked to go on
+  // a card seflex does not know is refused (tests/solutions/unknown_cards_test.cpp), unless asked to go on
   const fem::Model x = test::read_deck(deck("SPC = 1\nLOAD = 7\n", "XYZCARD,1\n"));
   const solutions::CardUsage refused = usage(x, Solution::Statics);
   const CardUse* unknown = find(refused, "XYZCARD");
