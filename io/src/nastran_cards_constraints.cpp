@@ -174,6 +174,29 @@ void parse_suport(const Card& card, ReaderState& st) { dof_pairs(card, st.model.
 void parse_force(const Card& card, ReaderState& st) { point_load(card, st, fem::PointLoad::Kind::Force); }
 void parse_moment(const Card& card, ReaderState& st) { point_load(card, st, fem::PointLoad::Kind::Moment); }
 
+// FORCE1 SID G F G1 G2 (MOMENT1: M); FORCE2 SID G F G1 G2 G3 G4 (MOMENT2: M). The direction, G1 -> G2
+// or (G1 -> G2) x (G3 -> G4), is taken from the grids' positions when the load is applied.
+void parse_force12(const Card& card, ReaderState& st) {
+  const std::string_view name = card.name();
+  fem::PointLoad l;
+  l.kind = name[0] == 'F' ? fem::PointLoad::Kind::Force : fem::PointLoad::Kind::Moment;
+  const bool four = name.back() == '2';
+  l.direction = four ? fem::PointLoad::Direction::FourGrids : fem::PointLoad::Direction::TwoGrids;
+  l.sid = card.id(0, "SID");
+  l.grid = card.id(1, "G");
+  l.scale = card.real(2, l.kind == fem::PointLoad::Kind::Force ? "F" : "M");
+  static const char* names[4] = {"G1", "G2", "G3", "G4"};
+  const std::size_t n = four ? 4 : 2;
+  for (std::size_t k = 0; k < n; ++k) l.g[k] = card.id(3 + k, names[k]);
+  for (std::size_t k = 0; k < n; k += 2)
+    if (l.g[k] == l.g[k + 1])
+      card.fail(4 + k, names[k + 1], "grid " + std::to_string(l.g[k]) + " is also " + names[k] +
+                                         "; expected two distinct grids to give a direction");
+  if (card.used() > 3 + n) card.fail(3 + n, "", card.got(3 + n) + " after " + names[n - 1] + "; expected nothing more");
+  l.ref = card.ref();
+  st.model.point_loads.push_back(l);
+}
+
 // LOAD SID S S1 L1 S2 L2 ...
 void parse_load(const Card& card, ReaderState& st) {
   fem::LoadCombination l;

@@ -103,7 +103,7 @@ TEST(LoadsBadInput, ThermalSelections) {
                         "does not compute the thermal moment of MID4"}));
   // TEMPRB on the shell
   EXPECT_TRUE(mentions(solve_error(deck("TEMP(LOAD) = 7\n", bars_only + "TEMPRB,7,10,30.,30.\n")),
-                       {"TEMPRB 7", "element 10 is not a CBAR, CBEAM, CROD or CONROD"}));
+                       {"TEMPRB 7", "element 10 is not a CBAR, CBEAM, CROD, CTUBE or CONROD"}));
   // a bar without TEMPRB whose grid has no temperature
   EXPECT_TRUE(mentions(solve_error(deck("TEMP(LOAD) = 7\n", "TEMPRB,7,1,30.,30.\nTEMP,7,3,25.\n")),
                        {"CBAR 2", "GRID 2 has no temperature in thermal load set 7"}));

@@ -24,6 +24,7 @@
 // spin about the bar axis has the section's exact polar inertia. With offsets the end masses sit
 // at the bar ends and reach the grids through the rigid links.
 #include <Eigen/Core>
+#include <vector>
 
 #include "seflex/fem/element_common.hpp"
 #include "seflex/fem/material.hpp"
@@ -31,6 +32,13 @@
 #include "seflex/fem/section.hpp"
 
 namespace seflex::fem {
+
+/// A station of a tapered bar: its section at x (fraction of the length from end A).
+struct BarStation {
+  double x = 0;
+  BarSection section;
+  double nsi = 0;
+};
 
 struct BarElement {
   Eigen::Vector3d x_A = Eigen::Vector3d::Zero(), x_B = Eigen::Vector3d::Zero();  ///< grid positions, basic
@@ -41,6 +49,9 @@ struct BarElement {
   ComponentMask pin_A = 0, pin_B = 0;  ///< released element-axis dofs (bit c-1 for component c)
   bool is_beam = false;  ///< CBEAM (lumped mass carries the polar inertia), else CBAR
   double nsi = 0;        ///< PBEAM NSI: non-structural mass moment of inertia per length
+  /// Tapered CBEAM (PBEAM/PBEAML stations): sections at x = 0 .. 1 along the bar, linear between
+  /// them; `section` and `nsi` are end A's. Empty: prismatic.
+  std::vector<BarStation> taper;
 };
 
 /// Element axes as columns in basic (R_BE: x, y, z) and the length between the offset ends.
