@@ -1,10 +1,11 @@
-// CTRIA3: CST membrane + MITC3 plate + drilling penalty (see element_shell_tria3.hpp).
+// CTRIA3: CST membrane + MITC3 (or DKT) plate + drilling penalty (see element_shell_tria3.hpp).
 #include "seflex/fem/element_shell_tria3.hpp"
 
 #include <Eigen/LU>
 #include <algorithm>
 
 #include "model_lookup.hpp"
+#include "seflex/fem/element_plate_dkt.hpp"
 #include "seflex/fem/element_plate_min3.hpp"
 #include "seflex/common/error.hpp"
 
@@ -14,6 +15,7 @@ namespace {
 using Matrix18 = NodeMatrix<3>;
 using Row18 = Eigen::Matrix<double, 1, 18>;
 constexpr int kU = 0, kV = 1, kW = 2, kRx = 3, kRy = 4, kRz = 5;
+constexpr int kPlateDof[3] = {kW, kRx, kRy};  // the plate part's (w, theta_x, theta_y) among a grid's 6
 
 struct Geometry {
   Eigen::Matrix3d R_BL;                // columns e1 e2 e3 in basic
@@ -47,9 +49,14 @@ NodeMatrix<3> tria3_stiffness(const Tria3Element& e, double k6rot, const Mystran
   const Geometry g = geometry(e);
   const ShellSection& sec = e.section;
   const double A = g.area;
+  // No transverse shear flexibility (PSHELL MID3 blank, plies rigid in transverse shear): the DKT's
+  // Kirchhoff bending, which cannot lock, instead of MITC3 with the Kirchhoff penalty, which does.
+  const bool kirchhoff = !mystran && !sec.shear_flexible;
   Matrix18 K = Matrix18::Zero();
 
-  // Membrane (CST) and bending (linear rotations): constant strains and curvatures.
+  // Membrane (CST): constant strains. Bending curvatures (mean over the element, which is all the
+  // coupling with the constant membrane strain needs): MITC3's and MIN3's linear rotations, or the
+  // DKT's.
   Eigen::Matrix<double, 3, 18> Bm = Eigen::Matrix<double, 3, 18>::Zero(), Bb = Eigen::Matrix<double, 3, 18>::Zero();
   for (int i = 0; i < 3; ++i) {
     Bm(0, 6 * i + kU) = g.b[i];
@@ -61,47 +68,69 @@ NodeMatrix<3> tria3_stiffness(const Tria3Element& e, double k6rot, const Mystran
     Bb(2, 6 * i + kRy) = g.c[i];
     Bb(2, 6 * i + kRx) = -g.b[i];
   }
+  auto add_plate = [&K](const PlateMatrix3& Kp) {
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        for (int a = 0; a < 3; ++a)
+          for (int b = 0; b < 3; ++b) K(6 * i + kPlateDof[a], 6 * j + kPlateDof[b]) += Kp(3 * i + a, 3 * j + b);
+  };
+  if (kirchhoff) {
+    const Eigen::Matrix<double, 3, 9> C = dkt_curvature(g.p).mean();
+    Bb.setZero();
+    for (int i = 0; i < 3; ++i)
+      for (int a = 0; a < 3; ++a) Bb.col(6 * i + kPlateDof[a]) = C.col(3 * i + a);
+    add_plate(dkt_stiffness(g.p, sec.D));
+  } else if (mystran) {  // MYSTRAN's MIN3 bending + transverse shear instead of MITC3's
+    add_plate(min3_stiffness(g.p, sec.D, sec.S, mystran->cb_tria));
+  } else {
+    K.noalias() += A * Bb.transpose() * sec.D * Bb;
+  }
   K.noalias() += A * Bm.transpose() * sec.A * Bm;
-  if (!mystran) K.noalias() += A * Bb.transpose() * sec.D * Bb;
   if (!sec.B.isZero(0.0)) {  // membrane-bending coupling
     const Eigen::Matrix<double, 18, 18> Kmb = A * Bm.transpose() * sec.B * Bb;
     K.noalias() += Kmb + Kmb.transpose();
   }
 
-  // MITC3 shear: gamma(x, y) = (a_x - b y, a_y + b x), tangential component at each edge midpoint
-  // tied to the edge's (w_j - w_i)/L + (beta_i + beta_j)/2 . t, beta = (theta_y, -theta_x).
-  Eigen::Matrix3d G;
-  Eigen::Matrix<double, 3, 18> R = Eigen::Matrix<double, 3, 18>::Zero();
-  std::array<Eigen::Vector2d, 3> mid;
-  for (int k = 0; k < 3; ++k) {
-    const int i = k, j = (k + 1) % 3;
-    const Eigen::Vector2d d = g.p[j] - g.p[i];
-    const double L = d.norm();
-    const Eigen::Vector2d t = d / L;
-    mid[k] = 0.5 * (g.p[i] + g.p[j]);
-    G.row(k) << t.x(), t.y(), -mid[k].y() * t.x() + mid[k].x() * t.y();
-    R(k, 6 * j + kW) += 1.0 / L;
-    R(k, 6 * i + kW) -= 1.0 / L;
-    for (int n : {i, j}) {
-      R(k, 6 * n + kRy) += 0.5 * t.x();
-      R(k, 6 * n + kRx) -= 0.5 * t.y();
+  if (!kirchhoff && !mystran) {
+    std::array<Eigen::Vector2d, 3> mid;
+    for (int k = 0; k < 3; ++k) mid[k] = 0.5 * (g.p[k] + g.p[(k + 1) % 3]);
+    // MITC3 shear: gamma(x, y) = (a_x - b y, a_y + b x), tangential component at each edge midpoint
+    // tied to the edge's (w_j - w_i)/L + (beta_i + beta_j)/2 . t, beta = (theta_y, -theta_x).
+    Eigen::Matrix3d G;
+    Eigen::Matrix<double, 3, 18> R = Eigen::Matrix<double, 3, 18>::Zero();
+    for (int k = 0; k < 3; ++k) {
+      const int i = k, j = (k + 1) % 3;
+      const Eigen::Vector2d d = g.p[j] - g.p[i];
+      const double L = d.norm();
+      const Eigen::Vector2d t = d / L;
+      G.row(k) << t.x(), t.y(), -mid[k].y() * t.x() + mid[k].x() * t.y();
+      R(k, 6 * j + kW) += 1.0 / L;
+      R(k, 6 * i + kW) -= 1.0 / L;
+      for (int n : {i, j}) {
+        R(k, 6 * n + kRy) += 0.5 * t.x();
+        R(k, 6 * n + kRx) -= 0.5 * t.y();
+      }
+    }
+    const Eigen::Matrix<double, 3, 18> C = G.inverse() * R;  // (a_x, a_y, b) from the dofs
+    // Shear stabilisation of Lyly, Stenberg & Vihinen (ShellSection::stabilised_shear_stiffness),
+    // h the longest edge; it removes the residual shear locking of the linear triangle in thin plates.
+    double h2 = 0.0;
+    for (int k = 0; k < 3; ++k) h2 = std::max(h2, (g.p[(k + 1) % 3] - g.p[k]).squaredNorm());
+    const Eigen::Matrix2d Ss = sec.stabilised_shear(h2);
+    for (int q = 0; q < 3; ++q) {  // edge-midpoint rule, exact for quadratics
+      const Eigen::Vector2d& x = mid[q];
+      Eigen::Matrix<double, 2, 3> P;
+      P << 1, 0, -x.y(), 0, 1, x.x();
+      const Eigen::Matrix<double, 2, 18> Bs = P * C;
+      K.noalias() += (A / 3.0) * Bs.transpose() * Ss * Bs;
     }
   }
-  const Eigen::Matrix<double, 3, 18> C = G.inverse() * R;  // (a_x, a_y, b) from the dofs
-  // Shear stabilisation of Lyly, Stenberg & Vihinen (ShellSection::stabilised_shear_stiffness),
-  // h the longest edge; it removes the residual shear locking of the linear triangle in thin plates.
-  double h2 = 0.0;
-  for (int k = 0; k < 3; ++k) h2 = std::max(h2, (g.p[(k + 1) % 3] - g.p[k]).squaredNorm());
-  const Eigen::Matrix2d Ss = sec.stabilised_shear(h2);
+  // Drilling: the K6ROT penalty on (theta_z - omega)^2 at the edge midpoints and the Hughes-Brezzi
+  // coupling at the centroid (see element_shell_quad4.hpp).
   const double kd = sec.has_membrane ? k6rot * 1e-6 * sec.drill_Gt : 0.0;
   const double omega_row_scale = 0.5;
-  for (int q = 0; q < 3; ++q) {  // edge-midpoint rule, exact for quadratics
-    const Eigen::Vector2d& x = mid[q];
-    Eigen::Matrix<double, 2, 3> P;
-    P << 1, 0, -x.y(), 0, 1, x.x();
-    const Eigen::Matrix<double, 2, 18> Bs = P * C;
-    if (!mystran) K.noalias() += (A / 3.0) * Bs.transpose() * Ss * Bs;
-    if (kd > 0.0) {
+  if (kd > 0.0) {
+    for (int q = 0; q < 3; ++q) {
       // Linear shape functions at the midpoint of edge (q, q+1): 1/2, 1/2, 0.
       Row18 d = Row18::Zero();
       d(6 * q + kRz) = 0.5;
@@ -113,7 +142,6 @@ NodeMatrix<3> tria3_stiffness(const Tria3Element& e, double k6rot, const Mystran
       K.noalias() += (kd * A / 3.0) * d.transpose() * d;
     }
   }
-  // Hughes-Brezzi drilling coupling at the centroid (see element_shell_quad4.hpp).
   if (sec.has_membrane) {
     Row18 d = Row18::Zero();
     for (int i = 0; i < 3; ++i) {
@@ -122,14 +150,6 @@ NodeMatrix<3> tria3_stiffness(const Tria3Element& e, double k6rot, const Mystran
       d(6 * i + kU) = omega_row_scale * g.c[i];
     }
     K.noalias() += (A * sec.drill_Gt) * d.transpose() * d;
-  }
-  if (mystran) {  // MYSTRAN's MIN3 bending + transverse shear instead of MITC3's
-    const PlateMatrix3 Kp = min3_stiffness(g.p, sec.D, sec.S, mystran->cb_tria);
-    constexpr int dof[3] = {kW, kRx, kRy};
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j)
-        for (int a = 0; a < 3; ++a)
-          for (int b = 0; b < 3; ++b) K(6 * i + dof[a], 6 * j + dof[b]) += Kp(3 * i + a, 3 * j + b);
   }
   K = 0.5 * (K + K.transpose()).eval();
   rotate_local_to_basic<3>(g.R_BL, K);

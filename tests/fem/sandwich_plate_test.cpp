@@ -158,6 +158,7 @@ TEST(SandwichPlate, ModesQuadsWithinOnePercentOfPlateTheory) {
 
 TEST(SandwichPlate, ModesTrianglesWithinOnePercentOfPlateTheory) {
   expect_modes(kSeed, true, 0.01);
+  expect_modes(kSeedNoMid3, true, 0.01);  // the DKT (MITC3 with the Kirchhoff penalty locked here)
   expect_modes(kSoftCore, true, 0.01);
 }
 
@@ -171,6 +172,7 @@ TEST(SandwichPlate, StaticsQuadsWithinOnePercentOfPlateTheory) {
 
 TEST(SandwichPlate, StaticsTrianglesWithinOnePercentOfPlateTheory) {
   expect_static(kSeed, true, 0.01);
+  expect_static(kSeedNoMid3, true, 0.01);
   expect_static(kSoftCore, true, 0.01);
 }
 

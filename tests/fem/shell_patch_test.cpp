@@ -7,6 +7,7 @@
 #include <Eigen/SparseCholesky>
 #include <cmath>
 #include <functional>
+#include <string>
 
 #include "fem_test_util.hpp"
 #include "seflex/fem/assembly.hpp"
@@ -16,13 +17,13 @@ namespace seflex::fem {
 namespace {
 
 // Rectangle 0.24 x 0.12 with four interior nodes; 5 quads, or 10 triangles.
-Model patch_model(bool triangles, double t) {
+Model patch_model(bool triangles, double t, bool shear) {
   Model m;
   const double xy[8][2] = {{0, 0},       {0.24, 0},    {0.24, 0.12}, {0, 0.12},
                            {0.04, 0.02}, {0.18, 0.03}, {0.16, 0.08}, {0.08, 0.08}};
   for (int i = 0; i < 8; ++i) test::add_grid(m, i + 1, xy[i][0], xy[i][1], 0);
   test::add_mat1(m, 1, 1e6, 0.25, 0);
-  test::add_pshell(m, 2, 1, t);
+  test::add_pshell(m, 2, 1, t, shear);
   const int quads[5][4] = {{1, 2, 6, 5}, {2, 3, 7, 6}, {3, 4, 8, 7}, {4, 1, 5, 8}, {5, 6, 7, 8}};
   int id = 1;
   for (const auto& q : quads) {
@@ -40,8 +41,8 @@ using Field = std::function<Eigen::Matrix<double, 6, 1>(double, double)>;
 
 // Prescribe `exact` on the boundary nodes 1-4 (SPC with enforced values), solve, and return the
 // largest error at the interior nodes relative to the largest exact value, and the strain energy.
-std::pair<double, double> run_patch(bool triangles, const Field& exact) {
-  Model m = patch_model(triangles, 0.001);
+std::pair<double, double> run_patch(bool triangles, const Field& exact, bool shear = true) {
+  Model m = patch_model(triangles, 0.001, shear);
   for (int n = 1; n <= 4; ++n) {
     const Grid& g = m.grids[n - 1];
     const auto u = exact(g.x.x(), g.x.y());
@@ -94,7 +95,8 @@ TEST(ShellPatch, MembraneConstantStrain) {
 }
 
 // Bending: w = 1e-3 (x^2 + x y + y^2) / 2, theta_x = dw/dy, theta_y = -dw/dx (Kirchhoff, no shear
-// strain). Curvatures (theta_y,x, -theta_x,y, theta_y,y - theta_x,x) = -1e-3 (1, 1, 1).
+// strain). Curvatures (theta_y,x, -theta_x,y, theta_y,y - theta_x,x) = -1e-3 (1, 1, 1). With MID3 and
+// without (MID3 blank: CTRIA3's DKT, CQUAD4's MITC4 with the Kirchhoff penalty).
 TEST(ShellPatch, BendingConstantCurvature) {
   const Field exact = [](double x, double y) {
     Eigen::Matrix<double, 6, 1> u = Eigen::Matrix<double, 6, 1>::Zero();
@@ -109,11 +111,13 @@ TEST(ShellPatch, BendingConstantCurvature) {
   D *= E * t * t * t / (12 * (1 - nu * nu));
   const Eigen::Vector3d kappa(-1e-3, -1e-3, -1e-3);
   const double energy = 0.5 * area * kappa.dot(D * kappa);
-  for (bool tri : {false, true}) {
-    const auto [err, U] = run_patch(tri, exact);
-    EXPECT_LT(err, 1e-9) << (tri ? "CTRIA3" : "CQUAD4");
-    EXPECT_NEAR(U / energy, 1.0, 1e-9) << (tri ? "CTRIA3" : "CQUAD4");
-  }
+  for (bool shear : {true, false})
+    for (bool tri : {false, true}) {
+      const auto [err, U] = run_patch(tri, exact, shear);
+      const std::string what = std::string(tri ? "CTRIA3" : "CQUAD4") + (shear ? "" : " MID3 blank");
+      EXPECT_LT(err, 1e-9) << what;
+      EXPECT_NEAR(U / energy, 1.0, 1e-9) << what;
+    }
 }
 
 }  // namespace

@@ -21,10 +21,9 @@
 #include <Eigen/Core>
 #include <array>
 
-namespace seflex::fem {
+#include "seflex/fem/plate_matrix.hpp"
 
-using PlateMatrix3 = Eigen::Matrix<double, 9, 9>;  ///< (w, theta_x, theta_y) of corner i at 3 i + 0..2
-using PlateVector3 = Eigen::Matrix<double, 9, 1>;
+namespace seflex::fem {
 
 /// Bending + shear stiffness of MIN3, corners p (counter-clockwise about +z, any origin), bending
 /// stiffness D (M = D kappa) and transverse shear stiffness S (Q = S gamma) in the same axes; cb

@@ -32,7 +32,7 @@ struct ShellSection {
   Eigen::Matrix3d D = Eigen::Matrix3d::Zero();  ///< bending (moment per length per curvature)
   /// Transverse shear stiffness (force per length). With no transverse shear flexibility (PSHELL MID3
   /// blank, plies rigid in transverse shear) a Kirchhoff penalty, 1000 x that of the homogeneous plate
-  /// of the same bending stiffness, harmless with the MITC interpolation (it does not lock).
+  /// of the same bending stiffness: CQUAD4's MITC4 takes it without locking, CTRIA3 bends by the DKT.
   Eigen::Matrix2d S = Eigen::Matrix2d::Zero();
   bool has_membrane = false, has_bending = false;
   bool shear_flexible = false;  ///< S is the physical transverse shear stiffness (not the penalty)
