@@ -39,7 +39,7 @@ void print_model(const seflex::fem::Model& m) {
   row("MPC equations", m.mpcs.size());
   row("loads (FORCE*, MOMENT*)", m.point_loads.size());
   if (const std::size_t n = m.pressure_loads.size() + m.face_loads.size() + m.gravity_loads.size() +
-                            m.rotational_loads.size())
+                            m.rotational_loads.size() + m.grid_pressure_loads.size() + m.scalar_loads.size())
     row("pressure, inertia loads", n);
   if (const std::size_t n = m.bar_line_loads.size()) row("bar loads (PLOAD1)", n);
   if (const std::size_t n = m.enforced_motions.size()) row("enforced motion (SPCD)", n);

@@ -8,7 +8,7 @@
 # decks that list them, and, per deck, the outcome, the first line of the error and those cards, to a
 # CSV.
 #   bench/pynastran_decks.sh SEFLEX PYNASTRAN_GIT_DIR [OUT_CSV] [TIMEOUT_S]
-# e.g. bench/pynastran_decks.sh build/apps/seflex /work/.mirror/SteveDoyle2+pyNastran/repo decks.csv
+# e.g. bench/pynastran_decks.sh build/apps/seflex ~/src/pyNastran decks.csv
 # A bare mirror is read with `git cat-file` file by file (blobs missing from the mirror are skipped
 # and counted).
 set -uo pipefail
@@ -54,7 +54,7 @@ family() {
       BFRIC | BCRPARA | BCSURF | BCPARA | BCONPRP | BCONPRG | BCONECT | BGSET | BGADD | BEDGE | CGAP | PGAP) echo contact ;;
     # output: plot elements and plot control, monitor points, output formats, stress-recovery data
     PLOTEL | PLOTEL3 | PLOTEL4 | PLOTEL6 | PLOTEL8 | PLOTOPT | PLOTG | PLOTE | MONPNT1 | MONPNT2 | MONPNT3 | \
-      MONDSP1 | MONSUM | OUTPUT | OUTRCV | ECHOON | ECHOOFF | PARVEC | "MDLPRM HDF5 (output format)" | \
+      MONDSP1 | MONSUM | OUTPUT | OUTRCV | ECHOON | ECHOOFF | PARVEC | CBARAO | GROUP | "MDLPRM HDF5 (output format)" | \
       "PSHELL Z1/Z2 (fibre distances for stresses, which seflex does not compute: not used)" | \
       "PSOLID STRESS (stress output system; seflex gives no stresses)" | \
       "PBUSH RCV (stress recovery coefficients ignored)") echo output ;;

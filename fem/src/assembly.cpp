@@ -168,7 +168,7 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
                      model.conm2.size());
   conn.ptr.reserve(model.bars.size() + model.rods.size() + model.shells.size() + model.springs.size() + 1);
   for (const Shell& s : model.shells) {
-    const std::string card = s.nnode == 4 ? "CQUAD4" : "CTRIA3";
+    const std::string card = shell_card(s);
     std::int32_t n[4];
     for (int k = 0; k < s.nnode; ++k)
       n[k] = node_of_grid(model, s.g[k], s.ref, card, s.id, std::to_string(k + 4) + " (G" + std::to_string(k + 1) + ")");

@@ -9,7 +9,7 @@ std::vector<std::pair<std::string, std::size_t>> element_counts(const Model& m) 
   std::map<std::string, std::size_t> n;
   for (const auto& b : m.bars) ++n[b.is_beam ? "CBEAM" : "CBAR"];
   for (const auto& r : m.rods) ++n[rod_card(r)];
-  for (const auto& s : m.shells) ++n[s.nnode == 4 ? "CQUAD4" : "CTRIA3"];
+  for (const auto& s : m.shells) ++n[shell_card(s)];
   for (const auto& q : m.shells8) ++n[quadratic_shell_card(q)];
   n["CSHEAR"] += m.shear_panels.size();
   n["CBEND"] += m.bends.size();

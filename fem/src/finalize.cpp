@@ -256,7 +256,7 @@ class Finalizer {
     };
     for (const auto& e : m_.bars) add(e.id, e.ref, e.is_beam ? "CBEAM" : "CBAR");
     for (const auto& e : m_.rods) add(e.id, e.ref, rod_card(e));
-    for (const auto& e : m_.shells) add(e.id, e.ref, e.nnode == 4 ? "CQUAD4" : "CTRIA3");
+    for (const auto& e : m_.shells) add(e.id, e.ref, shell_card(e));
     for (const auto& e : m_.conm2) add(e.id, e.ref, "CONM2");
     for (const auto& e : m_.springs) add(e.id, e.ref, spring_card(e));
     for (const auto& e : m_.bushes) add(e.id, e.ref, "CBUSH");
@@ -393,7 +393,7 @@ class Finalizer {
                                                      "; expected a " + (r.tube ? "PTUBE" : "PROD"));
     }
     for (const auto& s : m_.shells) {
-      const char* card = s.nnode == 4 ? "CQUAD4" : "CTRIA3";
+      const char* card = shell_card(s);
       static const char* gfields[4] = {"field 4 (G1)", "field 5 (G2)", "field 6 (G3)", "field 7 (G4)"};
       for (int k = 0; k < s.nnode; ++k) need_grid(s.g[k], s.ref, card, s.id, gfields[k]);
       if (!m_.shell_prop_index.count(s.pid) && !m_.composite_prop_index.count(s.pid))

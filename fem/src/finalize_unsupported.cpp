@@ -143,7 +143,7 @@ class LeaveOut {
       for (const auto& p : m_.composite_props) s.insert(p.id);
       return s;
     };
-    drop_elements(m_.shells, "shell", shell_ids, [](const Shell& s) { return s.nnode == 4 ? "CQUAD4" : "CTRIA3"; });
+    drop_elements(m_.shells, "shell", shell_ids, [](const Shell& s) { return shell_card(s); });
     drop_elements(m_.shells8, "shell", shell_ids, quadratic_shell_card, [](const QuadraticShell& q) -> const Shell& { return q.shell; });
     // CONROD: its own material
     m_.rods.erase(std::remove_if(m_.rods.begin(), m_.rods.end(),

@@ -91,9 +91,9 @@ Eigen::SparseMatrix<double> assemble_geometric_stiffness(const Model& model, con
     std::int32_t n[4];
     int ids[4] = {s.g[0], s.g[1], s.g[2], s.nnode == 4 ? s.g[3] : 0};
     if (s.nnode == 4)
-      grid_nodes<4>(model, ids, s.ref, "CQUAD4", s.id, 4, n);
+      grid_nodes<4>(model, ids, s.ref, shell_card(s), s.id, 4, n);
     else
-      grid_nodes<3>(model, ids, s.ref, "CTRIA3", s.id, 4, n);
+      grid_nodes<3>(model, ids, s.ref, shell_card(s), s.id, 4, n);
     conn.add(n, n + s.nnode);
     shell_nodes.insert(shell_nodes.end(), n, n + s.nnode);
   }

@@ -42,6 +42,10 @@ class LoadBuilder {
       if (r.sid == sid) found = true, rotation(r, scale);
     for (const BarLineLoad& l : m_.bar_line_loads)
       if (l.sid == sid) found = true, bar_load(l, scale);
+    for (const ScalarLoad& l : m_.scalar_loads)
+      if (l.sid == sid) found = true, scalar_load(l, scale);
+    for (const GridPressureLoad& l : m_.grid_pressure_loads)
+      if (l.sid == sid) found = true, grid_pressure(l, scale);
     // SPCD cards make a load set of enforced displacements (enforced_motion.hpp): no load here
     return found || has_enforced_motion_set(m_, sid);
   }
@@ -93,6 +97,36 @@ class LoadBuilder {
       detail::fail(m_, l.ref, card, l.sid, "5 (G1)",
                    "G1 -> G2 and G3 -> G4 are parallel; expected two directions whose cross product gives the load's");
     return n.normalized();
+  }
+
+  /// SLOAD: on the scalar point, or on T1 (CD system) of a grid of that id.
+  void scalar_load(const ScalarLoad& l, double scale) {
+    const auto dof = find_dof(m_, dofs_, l.point, m_.spoint_index.count(l.point) ? 0 : 1);
+    if (!dof)
+      detail::fail(m_, l.ref, "SLOAD", l.sid, "Si",
+                   "references point " + std::to_string(l.point) + ", which is not defined; expected a scalar point (or a grid: its T1)");
+    p_[*dof] += scale * l.f;
+  }
+
+  /// PLOAD: a triangle's force P A along (G1 -> G2) x (G1 -> G3), a third per grid; a quadrilateral
+  /// as the four triangles 123, 234, 341, 412 with P/2 each (QRG PLOAD remarks).
+  void grid_pressure(const GridPressureLoad& l, double scale) {
+    static const char* fields[4] = {"4 (G1)", "5 (G2)", "6 (G3)", "7 (G4)"};
+    const int n = l.g[3] != 0 ? 4 : 3;
+    std::array<std::uint32_t, 4> gi{};
+    for (int k = 0; k < n; ++k) gi[static_cast<std::size_t>(k)] = detail::grid_index(m_, l.g[static_cast<std::size_t>(k)], l.ref, "PLOAD", l.sid, fields[k]);
+    auto triangle = [&](int a, int b, int c, double p) {
+      const std::uint32_t t[3] = {gi[static_cast<std::size_t>(a)], gi[static_cast<std::size_t>(b)], gi[static_cast<std::size_t>(c)]};
+      const Eigen::Vector3d n2 = (m_.grids[t[1]].x_basic - m_.grids[t[0]].x_basic).cross(m_.grids[t[2]].x_basic - m_.grids[t[0]].x_basic);
+      if (!(n2.norm() > 0.0))
+        detail::fail(m_, l.ref, "PLOAD", l.sid, "", "its grids " + std::to_string(l.g[static_cast<std::size_t>(a)]) + ", " +
+                                                        std::to_string(l.g[static_cast<std::size_t>(b)]) + ", " +
+                                                        std::to_string(l.g[static_cast<std::size_t>(c)]) +
+                                                        " are collinear; expected a triangle or quadrilateral of non-zero area");
+      for (const std::uint32_t g : t) add_grid(g, 1, p * n2 / 6.0, scale, p_);  // P (|n2|/2) n / 3
+    };
+    if (n == 3) return triangle(0, 1, 2, l.p);
+    for (int k = 0; k < 4; ++k) triangle(k, (k + 1) % 4, (k + 2) % 4, 0.5 * l.p);
   }
 
   void bar_load(const BarLineLoad& l, double scale) {
@@ -192,7 +226,7 @@ class LoadBuilder {
   void shell_pressure(const Shell& s, const PressureLoad& l, double scale) {
     if (!mystran_) mystran_ = assembly_options(m_).mystran_plate;
     if (*mystran_) return mystran_pressure(s, l, scale, **mystran_);
-    const char* card = s.nnode == 4 ? "CQUAD4" : "CTRIA3";
+    const char* card = shell_card(s);
     std::array<std::uint32_t, 4> gi{};
     std::array<Eigen::Vector3d, 4> x;
     for (int k = 0; k < s.nnode; ++k) {
@@ -227,7 +261,7 @@ class LoadBuilder {
 
   /// PARAM QUAD4TYP MIN4T: the work-equivalent load of MIN4T / MIN3 (forces and corner moments).
   void mystran_pressure(const Shell& s, const PressureLoad& l, double scale, const MystranPlate& mystran) {
-    const char* card = s.nnode == 4 ? "CQUAD4" : "CTRIA3";
+    const char* card = shell_card(s);
     std::array<std::uint32_t, 4> gi{};
     for (int k = 0; k < s.nnode; ++k)
       gi[k] = detail::grid_index(m_, s.g[k], s.ref, card, s.id, std::to_string(k + 4) + " (G" + std::to_string(k + 1) + ")");

@@ -79,7 +79,7 @@ MassProperties mass_properties(const Model& model, std::optional<int> reference_
         e.section = sec;
         std::uint32_t gi[4];
         for (int k = 0; k < 4; ++k) {
-          gi[k] = detail::grid_index(model, s.g[k], s.ref, "CQUAD4", s.id, "G");
+          gi[k] = detail::grid_index(model, s.g[k], s.ref, shell_card(s), s.id, "G");
           e.x[k] = model.grids[gi[k]].x_basic;
         }
         const auto m = quad4_lumped_masses(e);

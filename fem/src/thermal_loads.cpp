@@ -167,7 +167,7 @@ class ThermalLoads {
   /// shell without TEMPPi), uniform through the thickness, from the section's TREF.
   void shell(const Shell& s, double k6rot, const MystranPlate* mystran) {
     const ShellSection section = make_shell_section(m_, s);
-    const char* card = s.nnode == 4 ? "CQUAD4" : "CTRIA3";
+    const char* card = shell_card(s);
     const bool mid4_expands = pshell_mid4_expands(s);
     if (!section.thermal() && !mid4_expands) return;
     double T = 0;

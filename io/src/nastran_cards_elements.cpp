@@ -58,16 +58,21 @@ void check_distinct(const Card& card, const int* g, std::size_t n, std::size_t f
                                            "; expected distinct grids");
 }
 
+// The two distinct end grids of a line element, in fields first and first + 1.
+void line_ends(const Card& card, std::size_t first, const char* na, const char* nb, int& ga, int& gb) {
+  ga = card.id(first, na);
+  gb = card.id(first + 1, nb);
+  const char* names[2] = {na, nb};
+  const int ends[2] = {ga, gb};
+  check_distinct(card, ends, 2, first, names);
+}
+
 void parse_bar_like(const Card& card, ReaderState& st, bool beam) {
   fem::Bar b;
   b.is_beam = beam;
   b.id = card.id(0, "EID");
   b.pid = card.id_or(1, "PID", 0);  // blank: BAROR/BEAMOR PID, else EID (applied after reading)
-  b.ga = card.id(2, "GA");
-  b.gb = card.id(3, "GB");
-  static const char* names[2] = {"GA", "GB"};
-  const int ends[2] = {b.ga, b.gb};
-  check_distinct(card, ends, 2, 2, names);
+  line_ends(card, 2, "GA", "GB", b.ga, b.gb);
   orientation(card, 4, b.has_g0, b.g0, b.v);
   if (beam && card.kind(7) == FieldKind::Real)
     st.note_unsupported("CBEAM BIT (built-in twist ignored)", card.ref());
@@ -120,6 +125,7 @@ void parse_shell(const Card& card, ReaderState& st, std::uint8_t nnode) {
   static const char* tnames[4] = {"T1", "T2", "T3", "T4"};
   fem::Shell s;
   s.nnode = nnode;
+  s.drilling = card.name() == "CQUADR" || card.name() == "CTRIAR";  // the same fields as CQUAD4 / CTRIA3
   s.id = card.id(0, "EID");
   s.pid = card.id_or(1, "PID", s.id);
   for (std::size_t k = 0; k < nnode; ++k) s.g[k] = card.id(2 + k, gnames[k]);
@@ -185,11 +191,7 @@ void parse_crod(const Card& card, ReaderState& st) {
   r.tube = card.name() == "CTUBE";  // CTUBE EID PID G1 G2: a CROD on a PTUBE
   r.id = card.id(0, "EID");
   r.pid = card.id_or(1, "PID", r.id);
-  r.ga = card.id(2, "G1");
-  r.gb = card.id(3, "G2");
-  static const char* names[2] = {"G1", "G2"};
-  const int ends[2] = {r.ga, r.gb};
-  check_distinct(card, ends, 2, 2, names);
+  line_ends(card, 2, "G1", "G2", r.ga, r.gb);
   if (r.tube && card.used() > 4) card.fail(4, "", card.got(4) + " after G2; expected one tube per CTUBE card");
   r.ref = card.ref();
   st.model.rods.push_back(r);
@@ -199,11 +201,7 @@ void parse_crod(const Card& card, ReaderState& st) {
 void parse_conrod(const Card& card, ReaderState& st) {
   fem::Rod r;
   r.id = card.id(0, "EID");
-  r.ga = card.id(1, "G1");
-  r.gb = card.id(2, "G2");
-  static const char* names[2] = {"G1", "G2"};
-  const int ends[2] = {r.ga, r.gb};
-  check_distinct(card, ends, 2, 1, names);
+  line_ends(card, 1, "G1", "G2", r.ga, r.gb);
   r.inline_property = true;
   r.mid = card.id(3, "MID");
   r.A = card.real(4, "A");
@@ -301,11 +299,7 @@ void parse_cbend(const Card& card, ReaderState& st) {
   fem::Bend b;
   b.id = card.id(0, "EID");
   b.pid = card.id_or(1, "PID", b.id);
-  b.ga = card.id(2, "GA");
-  b.gb = card.id(3, "GB");
-  static const char* names[2] = {"GA", "GB"};
-  const int ends[2] = {b.ga, b.gb};
-  check_distinct(card, ends, 2, 2, names);
+  line_ends(card, 2, "GA", "GB", b.ga, b.gb);
   if (!orientation(card, 4, b.has_g0, b.g0, b.v))
     card.fail(4, "X1/G0", "blank; expected an orientation grid G0 or vector X1 X2 X3 (the plane of the bend)");
   if (b.has_g0 && (b.g0 == b.ga || b.g0 == b.gb)) card.fail(4, "G0", "G0 is an end of the element; expected a third grid");

@@ -145,8 +145,9 @@ void parse_pbarl(const Card& card, ReaderState& st) {
 
 // PBEAM PID MID A(A) I1(A) I2(A) I12(A) J(A) NSM(A) / C1(A) .. F2(A) / [SO X/XB A I1 I2 I12 J NSM /
 //   C1 .. F2]... / K1 K2 S1 S2 NSI(A) NSI(B) CW(A) CW(B) / M1(A) M2(A) M1(B) M2(B) N1(A) N2(A) N1(B) N2(B)
-// seflex models a PBEAM as a prismatic beam with the end-A section (and NSI(A), the non-structural
-// mass moment of inertia per length, in the beam's polar inertia); a taper is reported.
+// A taper (stations or end B differing from end A, NSI(B) differing from NSI(A)) keeps every station
+// (BarProperty::stations); NSI, the non-structural mass moment of inertia per length, goes into the
+// beam's polar inertia.
 void parse_pbeam(const Card& card, ReaderState& st) {
   fem::BarProperty p;
   p.source = fem::BarProperty::Source::PBEAM;

@@ -69,7 +69,8 @@ constexpr CardType kCardTypes[] = {
     {"CRIGD2", parse_crigd2},   {"CRIGD3", parse_crigd3},   {"CRIGDR", parse_crigdr},  {"RROD", parse_rrod},
     {"CTUBE", parse_crod},      {"PTUBE", parse_ptube},     {"GENEL", parse_genel},    {"CSHEAR", parse_cshear},
     {"MDLPRM", parse_mdlprm},   {"PSHEAR", parse_pshear},   {"CBEND", parse_cbend},     {"PBEND", parse_pbend},    {"CQUAD8", parse_shell8},
-    {"CTRIA6", parse_shell8},
+    {"CTRIA6", parse_shell8},   {"CQUADR", parse_cquad4},   {"CTRIAR", parse_ctria3},  {"SLOAD", parse_sload},
+    {"PLOAD", parse_pload},
 };
 constexpr std::size_t kNumCardTypes = sizeof(kCardTypes) / sizeof(kCardTypes[0]);
 

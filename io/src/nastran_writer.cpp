@@ -199,7 +199,7 @@ void write_bar(CardWriter& w, const fem::Bar& b) {
 }
 
 void write_shell(CardWriter& w, const fem::Shell& s) {
-  w.start(s.nnode == 4 ? "CQUAD4" : "CTRIA3").i(s.id).i(s.pid);
+  w.start(fem::shell_card(s)).i(s.id).i(s.pid);
   for (int k = 0; k < s.nnode; ++k) w.i(s.g[k]);
   if (s.theta_is_mcid)
     w.i(s.mcid);
@@ -394,6 +394,8 @@ void write_constraints_and_loads(const fem::Model& m, CardWriter& w) {
     if (l.direction == fem::PointLoad::Direction::FourGrids) w.i(l.g[2]).i(l.g[3]);
     w.end();
   }
+  for (const auto& l : m.scalar_loads) w.start("SLOAD").i(l.sid).i(l.point).r(l.f).end();
+  for (const auto& l : m.grid_pressure_loads) w.start("PLOAD").i(l.sid).r(l.p).i(l.g[0]).i(l.g[1]).i(l.g[2]).id0(l.g[3]).end();
   for (const auto& l : m.pressure_loads) {
     w.start("PLOAD2").i(l.sid).r(l.p);
     if (l.thru)

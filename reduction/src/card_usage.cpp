@@ -281,7 +281,7 @@ class Classifier {
       bool heated = tempd.has_value();
       for (int k = 0; k < sh.nnode; ++k) heated = heated || grid_t.count(sh.g[k]) > 0;
       if (heated)
-        report_.add_set(Kind::Refused, sh.nnode == 4 ? "CQUAD4" : "CTRIA3", sh.ref, "thermal load set", sid,
+        report_.add_set(Kind::Refused, fem::shell_card(sh), sh.ref, "thermal load set", sid,
                         " gives a temperature to shells whose PSHELL MID4 (membrane-bending coupling) has thermal "
                         "expansion, and seflex does not compute the thermal moment of MID4");
     }

@@ -25,6 +25,12 @@ constexpr MembersFn moment1_members = point_load_members<PK::Moment, PD::TwoGrid
 constexpr MembersFn force2_members = point_load_members<PK::Force, PD::FourGrids>;
 constexpr MembersFn moment2_members = point_load_members<PK::Moment, PD::FourGrids>;
 
+void sload_members(const fem::Model& m, MemberList& out) {
+  for (const auto& l : m.scalar_loads) out.push_back({l.sid, l.ref});
+}
+void pload_members(const fem::Model& m, MemberList& out) {
+  for (const auto& l : m.grid_pressure_loads) out.push_back({l.sid, l.ref});
+}
 void pload2_members(const fem::Model& m, MemberList& out) {
   for (const auto& l : m.pressure_loads) out.push_back({l.sid, l.ref});
 }
@@ -73,7 +79,7 @@ const CardRole kRows[] = {
     {"CONM1", R::Structure, Y, nullptr}, {"CBUSH", R::Structure, Y, nullptr}, {"CBUSH1D", R::Structure, N, nullptr},
     {"CBUSH2D", R::Structure, N, nullptr}, {"CHEXA", R::Structure, Y, nullptr}, {"CPENTA", R::Structure, Y, nullptr},
     {"CTETRA", R::Structure, Y, nullptr}, {"CPYRAM", R::Structure, N, nullptr}, {"CQUAD8", R::Structure, Y, nullptr},
-    {"CTRIA6", R::Structure, Y, nullptr}, {"CQUADR", R::Structure, N, nullptr}, {"CTRIAR", R::Structure, N, nullptr},
+    {"CTRIA6", R::Structure, Y, nullptr}, {"CQUADR", R::Structure, Y, nullptr}, {"CTRIAR", R::Structure, Y, nullptr},
     {"CQUAD", R::Structure, N, nullptr}, {"CSHEAR", R::Structure, Y, nullptr}, {"CTUBE", R::Structure, Y, nullptr},
     {"CBEND", R::Structure, Y, nullptr}, {"CBEAM3", R::Structure, N, nullptr}, {"CGAP", R::Structure, N, nullptr},
     {"CFAST", R::Structure, N, nullptr}, {"CWELD", R::Structure, N, nullptr}, {"CSEAM", R::Structure, N, nullptr},
@@ -117,11 +123,11 @@ const CardRole kRows[] = {
     // static loads (selected by LOAD)
     {"FORCE", R::Load, Y, force_members}, {"MOMENT", R::Load, Y, moment_members}, {"LOAD", R::LoadCombination, Y, nullptr},
     {"FORCE1", R::Load, Y, force1_members}, {"FORCE2", R::Load, Y, force2_members}, {"MOMENT1", R::Load, Y, moment1_members},
-    {"MOMENT2", R::Load, Y, moment2_members}, {"PLOAD", R::Load, N, nullptr}, {"PLOAD1", R::Load, Y, pload1_members},
+    {"MOMENT2", R::Load, Y, moment2_members}, {"PLOAD", R::Load, Y, pload_members}, {"PLOAD1", R::Load, Y, pload1_members},
     {"PLOAD2", R::Load, Y, pload2_members}, {"PLOAD4", R::Load, Y, pload4_members}, {"PLOADX1", R::Load, N, nullptr},
     {"GRAV", R::Load, Y, grav_members}, {"RFORCE", R::Load, Y, rforce_members}, {"RFORCE1", R::Load, N, nullptr},
     {"ACCEL", R::Load, N, nullptr}, {"ACCEL1", R::Load, N, nullptr}, {"SPCD", R::Load, Y, spcd_members},
-    {"SLOAD", R::Load, N, nullptr}, {"PLOADB3", R::Load, N, nullptr}, {"PRESAX", R::Load, N, nullptr},
+    {"SLOAD", R::Load, Y, sload_members}, {"PLOADB3", R::Load, N, nullptr}, {"PRESAX", R::Load, N, nullptr},
     {"LSEQ", R::Load, N, nullptr}, {"DEFORM", R::Load, N, nullptr},
     // temperatures (selected by TEMPERATURE)
     {"TEMP", R::TemperatureLoad, Y, temp_members}, {"TEMPD", R::TemperatureLoad, Y, tempd_members},

@@ -13,6 +13,7 @@
 #include <sstream>
 #include <string>
 
+#include "assembly_test_util.hpp"
 #include "nastran_test_util.hpp"
 #include "statics_test_util.hpp"
 #include "seflex/fem/assembly.hpp"
@@ -103,23 +104,13 @@ TEST(Cbend, RefusalsNameCardFieldAndWhatWasExpected) {
   EXPECT_EQ(test::read_error("CBEND,5,7,1,2,,,,1\n"),
             "deck.bdf:1: CBEND 5, field 6 (X1/G0): blank; expected an orientation grid G0 or vector X1 X2 X3 (the plane of the bend)");
   EXPECT_EQ(test::read_error("PBEND,7,3,-1.,1.,1.,1.\n"), "deck.bdf:1: PBEND 7, field 4 (A): got real '-1.'; expected a section property > 0");
-  std::string msg;
-  try {  // GEOM 3 without RB
-    const fem::Model m = test::read_deck(bend_deck("CBEND,5,7,1,2,8,,,3\n", ",,", ""));
-    fem::assemble(m, fem::assembly_options(m));
-  } catch (const InputError& ex) {
-    msg = ex.what();
-  }
-  EXPECT_EQ(msg, "deck.bdf:8: CBEND 5, field 9 (GEOM): GEOM = 3 and PBEND 7 gives no RB; expected the bend radius RB > 0 on the PBEND");
-  msg.clear();
-  try {  // an orientation along the chord
-    const fem::Model m = test::read_deck(bend_deck("CBEND,5,7,1,2,-1.,1.,0.,2\n", ",,", ""));
-    fem::assemble(m, fem::assembly_options(m));
-  } catch (const InputError& ex) {
-    msg = ex.what();
-  }
-  EXPECT_EQ(msg, "deck.bdf:8: CBEND 5, field 6-8 (X1-X3): the orientation is zero or along the chord GA-GB; expected a direction "
-                 "that, with the chord, spans the plane of the arc");
+  // GEOM 3 without RB
+  EXPECT_EQ(test::assembly_error(bend_deck("CBEND,5,7,1,2,8,,,3\n", ",,", "")),
+            "deck.bdf:8: CBEND 5, field 9 (GEOM): GEOM = 3 and PBEND 7 gives no RB; expected the bend radius RB > 0 on the PBEND");
+  // an orientation along the chord
+  EXPECT_EQ(test::assembly_error(bend_deck("CBEND,5,7,1,2,-1.,1.,0.,2\n", ",,", "")),
+            "deck.bdf:8: CBEND 5, field 6-8 (X1-X3): the orientation is zero or along the chord GA-GB; expected a direction "
+            "that, with the chord, spans the plane of the arc");
 }
 
 }  // namespace

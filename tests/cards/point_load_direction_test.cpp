@@ -107,5 +107,33 @@ TEST(PointLoadDirection, RefusalsNameCardFieldAndWhatWasExpected) {
             "deck.bdf:9: MOMENT1 1, field 6 (G2): references GRID 99, which is not defined");
 }
 
+// SLOAD on a scalar point and on a grid (its T1, in the CD system); PLOAD on a triangle (P A along
+// (G1 -> G2) x (G1 -> G3), a third per grid) and on a quadrilateral (the triangles 123, 234, 341, 412
+// with P/2 each: QRG PLOAD remarks), by hand below.
+TEST(PointLoadDirection, SloadAndPload) {
+  const fem::Model m = test::read_deck(kGrids + "SPOINT,30\nSLOAD,1,30,2.5,5,-1.5\n"
+                                                "GRID,21,,0.,0.,0.\nGRID,22,,2.,0.,0.\nGRID,23,,2.,1.,0.\nGRID,24,,0.,3.,0.\n"
+                                                "PLOAD,2,6.,21,22,23\nPLOAD,3,6.,21,22,23,24\n");
+  const fem::DofMap dofs = fem::make_dof_map(m);
+  const Eigen::VectorXd p1 = fem::load_vector(m, dofs, 1);
+  EXPECT_EQ(p1[*fem::find_dof(m, dofs, 30, 0)], 2.5);
+  EXPECT_EQ(p1[*fem::find_dof(m, dofs, 5, 1)], -1.5);  // grid 5's T1 in its CD system 9
+  EXPECT_EQ(p1.cwiseAbs().sum(), 4.0);
+  // triangle 21-22-23: area 1, normal +z: 6 x 1 / 3 = 2 on each grid
+  const Eigen::VectorXd p2 = fem::load_vector(m, dofs, 2);
+  for (const int g : {21, 22, 23}) EXPECT_NEAR(p2[*fem::find_dof(m, dofs, g, 3)], 2.0, 1e-15) << g;
+  // quadrilateral 21-22-23-24 (area 4): triangle areas 123: 1, 234: 1, 341: 3, 412: 3 (all normal +z),
+  // each loaded by P/2 = 3, a third per grid: grid 21 (in 123, 341, 412) 1 + 3 + 3 = 7; 22 (123, 234,
+  // 412) 5; 23 (123, 234, 341) 5; 24 (234, 341, 412) 7; total 24 = P x area
+  const Eigen::VectorXd p3 = fem::load_vector(m, dofs, 3);
+  const double expected[4] = {7, 5, 5, 7};
+  for (int k = 0; k < 4; ++k) EXPECT_NEAR(p3[*fem::find_dof(m, dofs, 21 + k, 3)], expected[k], 1e-14) << 21 + k;
+  std::ostringstream out;
+  io::write_nastran(m, out);
+  const fem::Model back = test::read_deck(out.str(), "converted.bdf");
+  EXPECT_EQ((fem::load_vector(back, fem::make_dof_map(back), 3) - p3).norm(), 0.0);
+  EXPECT_EQ(test::read_error("PLOAD,2,6.,21,22,21\n"), "deck.bdf:1: PLOAD 2, field 6 (G3): grid 21 repeats G1; expected distinct grids");
+}
+
 }  // namespace
 }  // namespace seflex

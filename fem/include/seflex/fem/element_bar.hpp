@@ -1,5 +1,5 @@
 #pragma once
-// CBAR / CBEAM: prismatic 3-D beam between two grids, 12 x 12 on (GA, GB) x (T1 T2 T3 R1 R2 R3),
+// CBAR / CBEAM: 3-D beam between two grids, 12 x 12 on (GA, GB) x (T1 T2 T3 R1 R2 R3),
 // in the basic system.
 //
 // Formulation (exact for a prismatic bar, Przemieniecki, Theory of Matrix Structural Analysis,
@@ -7,7 +7,8 @@
 //   C = int_0^L B(s)^T S^-1 B(s) ds,   section resultants = B(s) * (tip loads),
 // with the section compliance S^-1 = diag(1/EA, 1/(G K1 A), 1/(G K2 A), 1/GJ) and the bending
 // compliance inv(E [I2 -I12; -I12 I1]); K = Gamma^T C^-1 Gamma with Gamma the deformation of B
-// relative to A's rigid motion. Euler-Bernoulli when K1/K2 are blank, Timoshenko otherwise; I12
+// relative to A's rigid motion. A tapered CBEAM integrates C over its stations (section properties
+// linear between them). Euler-Bernoulli when K1/K2 are blank, Timoshenko otherwise; I12
 // couples the two bending planes. The six rigid-body modes are in the null space by construction.
 //
 // Element axes (Nastran): x from offset end A to offset end B; y in the plane of x and the

@@ -95,6 +95,8 @@ struct Model {
   std::vector<DofSetEntry> aset, omit, bset, suport;
   std::vector<PointLoad> point_loads;
   std::vector<PressureLoad> pressure_loads;
+  std::vector<ScalarLoad> scalar_loads;            ///< SLOAD
+  std::vector<GridPressureLoad> grid_pressure_loads;  ///< PLOAD
   std::vector<BarLineLoad> bar_line_loads;         ///< PLOAD1
   std::vector<EnforcedMotion> enforced_motions;    ///< SPCD
   std::vector<FaceLoad> face_loads;         ///< PLOAD4

@@ -26,7 +26,7 @@ struct BarDefaults {  ///< BAROR (and BEAMOR for CBEAM)
   CardRef ref;
 };
 
-/// CBAR or CBEAM (a CBEAM is treated as a prismatic bar with its end-A section).
+/// CBAR or CBEAM (a CBEAM on a tapered PBEAM/PBEAML: BarProperty::stations).
 struct Bar {
   int id = 0, pid = 0;
   int ga = 0, gb = 0;
@@ -53,7 +53,7 @@ struct Rod {  ///< CROD (pid -> PROD), CTUBE (pid -> PTUBE) or CONROD (inline pr
 /// "CROD", "CTUBE" or "CONROD".
 inline const char* rod_card(const Rod& r) { return r.tube ? "CTUBE" : r.inline_property ? "CONROD" : "CROD"; }
 
-/// CQUAD4 (4 grids) or CTRIA3 (3 grids; g[3] = 0).
+/// CQUAD4 or CQUADR (4 grids), CTRIA3 or CTRIAR (3 grids; g[3] = 0).
 struct Shell {
   int id = 0, pid = 0;
   std::array<int, 4> g{};
@@ -88,6 +88,11 @@ struct Bend {
   int geom = 0;                                 ///< 1-4
   CardRef ref;
 };
+
+/// "CQUAD4", "CTRIA3", "CQUADR" or "CTRIAR".
+inline const char* shell_card(const Shell& s) {
+  return s.nnode == 4 ? (s.drilling ? "CQUADR" : "CQUAD4") : (s.drilling ? "CTRIAR" : "CTRIA3");
+}
 
 /// CTRIA6 (3 corners) or CQUAD8 (4 corners) with their mid-side grids: the corner data as a Shell
 /// (PID, THETA/MCID, ZOFFS, TFLAG, corner thicknesses; shell.nnode = 3 or 4) and mid[k] the grid

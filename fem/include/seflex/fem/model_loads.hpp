@@ -38,6 +38,23 @@ inline const char* point_load_card(const PointLoad& l) {
   return names[l.kind == PointLoad::Kind::Moment][static_cast<int>(l.direction)];
 }
 
+/// SLOAD: load F on scalar point S, or on component T1 (in its CD system) of a grid S (MSC QRG SLOAD).
+struct ScalarLoad {
+  int sid = 0, point = 0;
+  double f = 0;
+  CardRef ref;
+};
+
+/// PLOAD: pressure P on the surface of grids G1 G2 G3 (g[3] = 0: a triangle, the force P A along
+/// (G1 -> G2) x (G1 -> G3) split equally over its grids) or G1-G4 (four triangles 123, 234, 341, 412,
+/// each with P/2 as a triangle; QRG PLOAD remarks).
+struct GridPressureLoad {
+  int sid = 0;
+  double p = 0;
+  std::array<int, 4> g{};
+  CardRef ref;
+};
+
 /// PLOAD2: uniform pressure p on CQUAD4/CTRIA3 elements, positive along the element normal (right-hand
 /// rule on the grid order). `thru`: elements = {EID1, EID2} of "EID1 THRU EID2", whose ids that are
 /// not shells are skipped (QRG PLOAD2 remark); otherwise the ids listed, which must be shells.

@@ -65,8 +65,8 @@ void parse_baror(const Card&, ReaderState&);
 void parse_beamor(const Card&, ReaderState&);
 void parse_crod(const Card&, ReaderState&);  ///< CROD and CTUBE
 void parse_conrod(const Card&, ReaderState&);
-void parse_cquad4(const Card&, ReaderState&);
-void parse_ctria3(const Card&, ReaderState&);
+void parse_cquad4(const Card&, ReaderState&);  ///< CQUAD4 and CQUADR
+void parse_ctria3(const Card&, ReaderState&);  ///< CTRIA3 and CTRIAR
 void parse_conm2(const Card&, ReaderState&);
 void parse_celas1(const Card&, ReaderState&);
 void parse_celas2(const Card&, ReaderState&);
@@ -115,6 +115,8 @@ void parse_suport(const Card&, ReaderState&);
 void parse_force(const Card&, ReaderState&);
 void parse_moment(const Card&, ReaderState&);
 void parse_force12(const Card&, ReaderState&);  ///< FORCE1, FORCE2, MOMENT1, MOMENT2
+void parse_sload(const Card&, ReaderState&);
+void parse_pload(const Card&, ReaderState&);
 void parse_load(const Card&, ReaderState&);
 void parse_genel(const Card&, ReaderState&);  ///< nastran_cards_genel.cpp
 // Rigid elements besides RBE2 and RBAR (nastran_cards_rigid.cpp)
