@@ -1,6 +1,6 @@
 // seflex advise SCENE --tol ANGLE_DEG [--node NAME --tol-position M]: the cheapest model of a scene
 // whose hinge angles (and node positions) stay within a tolerance of the finest one over a short
-// horizon, with the evidence (io/advise.hpp).
+// horizon, with the evidence (scene/advise.hpp).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -11,13 +11,13 @@
 #include <vector>
 
 #include "command.hpp"
-#include "seflex/io/advise.hpp"
-#include "seflex/io/scene.hpp"
+#include "seflex/scene/advise.hpp"
+#include "seflex/scene/scene.hpp"
 
 namespace {
 
 using seflex::app::UsageError;
-namespace io = seflex::io;
+namespace scene = seflex::scene;
 
 std::vector<int> mode_list(const std::string& v) {
   std::vector<int> out;
@@ -48,7 +48,7 @@ int run_advise(seflex::app::Args& args) {
   const std::string scene_path = args.positional("SCENE");
   args.finish();
   if (!tol) throw UsageError("missing --tol ANGLE_DEG (the largest acceptable hinge-angle error, degrees)");
-  io::AdviseOptions o;
+  scene::AdviseOptions o;
   o.tolerance = seflex::app::positive_number("tol", *tol, "a number > 0") * std::numbers::pi / 180.0;
   if (t_end) o.t_end = seflex::app::positive_number("t-end", *t_end, "a number > 0");
   if (modes) o.few_modes = mode_list(*modes);
@@ -59,8 +59,8 @@ int run_advise(seflex::app::Args& args) {
     if (n.empty()) throw UsageError("option --node expects a node name (body.grid, e.g. beam.11), got ''");
   o.nodes = nodes;
   if (tol_position) o.position_tolerance = seflex::app::positive_number("tol-position", *tol_position, "a length > 0 (metres)");
-  const io::SceneDescription d = io::read_scene(scene_path);
-  for (const auto& a : alternatives) o.alternatives.push_back(io::read_scene(a));
+  const scene::SceneDescription d = scene::read_scene(scene_path);
+  for (const auto& a : alternatives) o.alternatives.push_back(scene::read_scene(a));
 
   std::printf("seflex advise %s --tol %s", scene_path.c_str(), tol->c_str());
   for (const auto& n : nodes) std::printf(" --node %s", n.c_str());
@@ -68,7 +68,7 @@ int run_advise(seflex::app::Args& args) {
   for (const auto& a : alternatives) std::printf(" --alternative %s", a.c_str());
   std::printf("\n");
   std::fflush(stdout);
-  const io::AdviseReport r = io::advise(d, o);
+  const scene::AdviseReport r = scene::advise(d, o);
   const double deg = 180.0 / std::numbers::pi;
   if (r.horizon_at_lock)
     std::printf("horizon: %.4g s (first lock of the finest model: %s)\n", r.horizon, r.horizon_lock.c_str());
@@ -80,7 +80,7 @@ int run_advise(seflex::app::Args& args) {
   const int w = static_cast<int>(width);
   std::printf("\n%-*s %8s %10s %7s %14s%s  %s\n", w, "variant", "unknowns", "CPU [s]", "steps", "max err [deg]", pos ? "   max pos [m]" : "", "within");
   for (std::size_t i = 0; i < r.rows.size(); ++i) {
-    const io::AdviseRow& row = r.rows[i];
+    const scene::AdviseRow& row = r.rows[i];
     char err[32], perr[32] = "";
     if (row.reference) std::snprintf(err, sizeof err, "(reference)");
     else if (!row.ran) std::snprintf(err, sizeof err, "failed");
@@ -98,7 +98,7 @@ int run_advise(seflex::app::Args& args) {
   std::printf("(unknowns: dofs of the AIC variants; coordinates + Lagrange multipliers of FFRF-LM and rigid-LM)\n");
   for (const auto& row : r.rows)
     if (!row.ran && !row.reference) std::printf("  %s: %s\n", row.name.c_str(), row.failure.c_str());
-  const io::AdviseRow& best = r.rows.at(static_cast<std::size_t>(r.recommended));
+  const scene::AdviseRow& best = r.rows.at(static_cast<std::size_t>(r.recommended));
   std::printf("\nrecommended: %s (%.3g s CPU, %.2fx the finest model's %.3g s; max hinge-angle error %.3g deg <= %s deg",
               best.name.c_str(), best.cpu_seconds, r.rows[0].cpu_seconds > 0 ? best.cpu_seconds / r.rows[0].cpu_seconds : 1.0,
               r.rows[0].cpu_seconds, best.max_error * deg, tol->c_str());
@@ -111,7 +111,7 @@ int run_advise(seflex::app::Args& args) {
          "worst_node_time,within,recommended\n";
     f.precision(10);
     for (std::size_t i = 0; i < r.rows.size(); ++i) {
-      const io::AdviseRow& row = r.rows[i];
+      const scene::AdviseRow& row = r.rows[i];
       f << '"' << row.name << "\"," << row.reference << ',' << row.dofs << ',' << row.multipliers << ',' << row.stiffening << ',' << row.ran << ','
         << row.cpu_seconds << ',' << row.steps << ',' << row.max_error * deg << ',' << row.worst_hinge << ',' << row.worst_time << ','
         << row.max_position_error << ',' << row.worst_node << ',' << row.worst_node_time << ',' << row.within << ','

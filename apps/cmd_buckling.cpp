@@ -7,20 +7,21 @@
 #include <limits>
 #include <string>
 
-#include "seflex/reduction/buckling.hpp"
+#include "seflex/solutions/buckling.hpp"
 #include "command.hpp"
 #include "model_args.hpp"
 #include "seflex/io/model_reader.hpp"
 #include "seflex/io/results_csv.hpp"
 #include "seflex/io/vtk_modes.hpp"
-#include "seflex/reduction/card_usage.hpp"
+#include "seflex/solutions/card_usage.hpp"
 #include "usage_warnings.hpp"
 
 namespace {
 
-namespace red = seflex::reduction;
+namespace linalg = seflex::linalg;
+namespace solutions = seflex::solutions;
 
-void print_table(const seflex::reduction::BucklingSolution& s) {
+void print_table(const seflex::solutions::BucklingSolution& s) {
   std::printf("\n%58s\n", "R E A L   E I G E N V A L U E S");
   std::printf("   (eigenvalue = buckling load factor: the preload times it is the critical load)\n");
   std::printf("   MODE   EXTRACTION    EIGENVALUE     GENERALIZED\n");
@@ -32,21 +33,22 @@ void print_table(const seflex::reduction::BucklingSolution& s) {
 
 int run_buckling(seflex::app::Args& args) {
   using seflex::app::UsageError;
-  seflex::reduction::BucklingOptions o;
+  seflex::solutions::BucklingOptions o;
   constexpr int kAbsent = std::numeric_limits<int>::min();
   if (const int count = args.integer("count", kAbsent); count != kAbsent) {
     if (count < 1) throw UsageError("option --count must be at least 1");
     o.count = count;
   }
-  const std::string solver = args.value_or("eigensolver", std::string(red::to_string(o.backend)));
-  const auto backend = red::parse_eigen_backend(solver);
+  const std::string solver = args.value_or("eigensolver", std::string(linalg::to_string(o.backend)));
+  const auto backend = linalg::parse_eigen_backend(solver);
   if (!backend)
-    throw UsageError("option --eigensolver expects " + std::string(red::eigen_backend_names()) + ", got '" + solver +
+    throw UsageError("option --eigensolver expects " + std::string(linalg::eigen_backend_names()) + ", got '" + solver +
                      "'");
   o.backend = *backend;
   const auto csv = args.value("csv");
   const auto vtk = args.value("vtk");
   const bool force = args.flag("force");
+  o.ignore_unknown_cards = args.flag("ignore-unknown");
   const seflex::io::ModelReadOptions model_options = seflex::app::model_read_options(args);
   const std::string deck = args.positional("DECK");
   args.finish();
@@ -57,20 +59,19 @@ int run_buckling(seflex::app::Args& args) {
 
   const auto t0 = std::chrono::steady_clock::now();
   const seflex::fem::Model model = seflex::io::read_model(deck, model_options);
-  const auto [preload, buckle] = seflex::reduction::buckling_cases(model);
-  std::vector<red::CaseSelection> cases = {preload};
-  if (buckle.subcase_id != preload.subcase_id) cases.push_back(buckle);
-  seflex::app::check_and_print_card_usage(model, red::check_card_usage(model, red::Solution::Buckling, cases));
-  const seflex::reduction::BucklingSolution s = seflex::reduction::solve_buckling(model, o);
+  seflex::app::check_and_print_card_usage(
+      model, solutions::check_card_usage(model, solutions::Solution::Buckling, solutions::buckling_case_list(model),
+                                         solutions::kInterfaceNone, o.ignore_unknown_cards));
+  const seflex::solutions::BucklingSolution s = seflex::solutions::solve_buckling(model, o);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-  std::printf("linear buckling of %s: preload %s", deck.c_str(), red::case_name(s.preload).c_str());
+  std::printf("linear buckling of %s: preload %s", deck.c_str(), solutions::case_name(s.preload).c_str());
   if (s.preload.load) std::printf(" (LOAD %d)", *s.preload.load);
-  std::printf(", load factors of %s (METHOD %d", red::case_name(s.buckling).c_str(), *s.buckling.method);
+  std::printf(", load factors of %s (METHOD %d", solutions::case_name(s.buckling).c_str(), *s.buckling.method);
   if (s.buckling.spc) std::printf(", SPC %d", *s.buckling.spc);
   std::printf(")\n  %zu grids, %ld free dofs, %ld load factors; eigensolver %s, alpha %.3E, %.2f s\n",
               model.grids.size(), static_cast<long>(s.n_free), static_cast<long>(s.load_factors.size()),
-              std::string(red::to_string(s.stats.backend_used)).c_str(), s.alpha, seconds);
+              std::string(linalg::to_string(s.stats.backend_used)).c_str(), s.alpha, seconds);
   if (s.load_factors.size() == 0)
     std::printf("  no positive load factor in the range asked for (the preload may only stiffen the structure)\n");
   print_table(s);
@@ -83,11 +84,11 @@ int run_buckling(seflex::app::Args& args) {
     std::printf("\nwrote %s\n", csv->c_str());
   }
   if (vtk) {
-    red::NormalModes r;
+    solutions::NormalModes r;
     r.selection = s.buckling;
     r.dofs = s.dofs;
     r.n_free = s.n_free;
-    r.normalization = red::ModeNormalization::Max;
+    r.normalization = solutions::ModeNormalization::Max;
     r.eigenvalues = s.load_factors;
     r.shapes_g = s.shapes_g;
     r.generalized_stiffness = s.generalized_stiffness;
@@ -101,7 +102,8 @@ int run_buckling(seflex::app::Args& args) {
 }  // namespace
 
 SEFLEX_COMMAND(buckling,
-               "DECK [--count N] [--csv FILE] [--vtk FILE.vtu] [--eigensolver block|spectra|arpack|dense] [--force]",
+               "DECK [--count N] [--csv FILE] [--vtk FILE.vtu] [--eigensolver block|spectra|arpack|dense] [--force] [--ignore-unknown] "
+               "[--symbol NAME=DIR]...",
                "linear buckling (SOL 105): static preload subcase (LOAD), load factors of the METHOD (EIGRL) subcase, "
                "Nastran-style table, CSV of load factors, buckling modes for ParaView",
                run_buckling);

@@ -8,7 +8,7 @@
 #include "command.hpp"
 #include "model_args.hpp"
 #include "usage_warnings.hpp"
-#include "seflex/reduction/card_usage.hpp"
+#include "seflex/solutions/card_usage.hpp"
 #include "seflex/fem/element_counts.hpp"
 #include "seflex/io/model_reader.hpp"
 #include "seflex/io/nastran_writer.hpp"
@@ -41,11 +41,11 @@ int run_convert(seflex::app::Args& args) {
   std::printf("wrote %s: %zu grids, %zu elements, %zu CONM2, %zu node sets\n", output->c_str(), model.grids.size(), elements,
               model.conm2.size(), model.node_sets.size());
   std::fflush(stdout);
-  seflex::app::print_card_usage(model, seflex::reduction::check_card_usage(model, seflex::reduction::Solution::Convert, {}));
+  seflex::app::print_card_usage(model, seflex::solutions::check_card_usage(model, seflex::solutions::Solution::Convert, {}));
   return seflex::app::kOk;
 }
 
 }  // namespace
 
-SEFLEX_COMMAND(convert, "MODEL -o DECK [--force] [--properties FILE] [--set NAME=VALUE]...",
+SEFLEX_COMMAND(convert, "MODEL -o DECK [--force] [--properties FILE] [--set NAME=VALUE]... [--symbol NAME=DIR]...",
                "write a model (Nastran deck, gmsh .msh/.geo + property file) as a Nastran bulk-data deck", run_convert);

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "seflex/reduction/buckling.hpp"
+#include "seflex/solutions/buckling.hpp"
 #include "command.hpp"
 #include "info_superelement.hpp"
 #include "seflex/fem/element_counts.hpp"
@@ -15,8 +15,9 @@
 #include "seflex/fem/mass_properties.hpp"
 #include "seflex/fem/model.hpp"
 #include "model_args.hpp"
+#include "usage_warnings.hpp"
 #include "seflex/io/model_reader.hpp"
-#include "seflex/reduction/card_usage.hpp"
+#include "seflex/solutions/card_usage.hpp"
 
 namespace {
 
@@ -62,41 +63,41 @@ void print_model(const seflex::fem::Model& m) {
 
 /// What the deck's own solution (its SOL) would use, refuse, approximate and ignore.
 void print_card_usage(const seflex::fem::Model& m) {
-  namespace red = seflex::reduction;
-  const red::Solution sol = red::solution_of_deck(m);
-  std::vector<red::CaseSelection> cases;
-  if (sol == red::Solution::Statics) cases = red::select_cases(m);
-  else if (sol == red::Solution::NormalModes) cases = {red::select_case(m)};
-  else if (sol == red::Solution::Buckling) {
+  namespace solutions = seflex::solutions;
+  const solutions::Solution sol = solutions::solution_of_deck(m);
+  std::vector<solutions::CaseSelection> cases;
+  if (sol == solutions::Solution::Statics) cases = solutions::select_cases(m);
+  else if (sol == solutions::Solution::NormalModes) cases = {solutions::select_case(m)};
+  else if (sol == solutions::Solution::Buckling) {
     try {  // the preload and METHOD subcases `seflex buckling` runs
-      const auto [preload, buckle] = seflex::reduction::buckling_cases(m);
+      const auto [preload, buckle] = seflex::solutions::buckling_cases(m);
       cases = {preload};
       if (buckle.subcase_id != preload.subcase_id) cases.push_back(buckle);
     } catch (const seflex::InputError& e) {
       std::printf("\nbuckling (SOL 105) cannot run: %s\n", e.what());
-      cases = red::select_cases(m);
+      cases = solutions::select_cases(m);
     }
   }
-  const red::CardUsage usage = red::check_card_usage(m, sol, cases);
-  if (sol == red::Solution::Info)
+  const solutions::CardUsage usage = solutions::check_card_usage(m, sol, cases);
+  if (sol == solutions::Solution::Info)
     std::printf("\ncard use (no SOL seflex runs in the executive control: cards seflex does not model are listed)\n");
   else
-    std::printf("\ncard use by %s, the deck's SOL%s\n", red::solution_name(sol),
-                sol == red::Solution::Buckling ? " (run it with: seflex buckling DECK)" : "");
+    std::printf("\ncard use by %s, the deck's SOL%s\n", solutions::solution_name(sol),
+                sol == solutions::Solution::Buckling ? " (run it with: seflex buckling DECK)" : "");
   if (usage.uses.empty()) {
     std::printf("  every card is used\n");
     return;
   }
-  const std::pair<red::CardUse::Kind, const char*> groups[] = {
-      {red::CardUse::Kind::Refused, "refused (the solution stops with an error)"},
-      {red::CardUse::Kind::Approximated, "read with an approximation (warning)"},
-      {red::CardUse::Kind::Caution, "computed as written, with a consequence to check (warning)"},
-      {red::CardUse::Kind::Unused, "not used (warning)"}};
+  const std::pair<solutions::CardUse::Kind, const char*> groups[] = {
+      {solutions::CardUse::Kind::Refused, "refused (the solution stops with an error)"},
+      {solutions::CardUse::Kind::Approximated, "read with an approximation (warning)"},
+      {solutions::CardUse::Kind::Caution, "computed as written, with a consequence to check (warning)"},
+      {solutions::CardUse::Kind::Unused, "not used (warning)"}};
   for (const auto& [kind, title] : groups) {
     if (usage.count(kind) == 0) continue;
     std::printf("  %s\n", title);
     for (const auto& u : usage.uses)
-      if (u.kind == kind) std::printf("    %s\n", red::describe(m, u).c_str());
+      if (u.kind == kind) std::printf("    %s\n", solutions::describe(m, u).c_str());
   }
 }
 
@@ -141,13 +142,14 @@ int run_info(seflex::app::Args& args) {
   const int grdpnt = args.integer("grdpnt", kUnset);
   args.finish();
   if (seflex::app::is_superelement_file(deck)) {
-    if (grdpnt != kUnset || model_options.properties || !model_options.parameters.empty())
-      throw seflex::app::UsageError(deck + " is a superelement file; --grdpnt, --properties and --set apply to a model");
+    if (grdpnt != kUnset || model_options.properties || !model_options.parameters.empty() || !model_options.symbols.empty())
+      throw seflex::app::UsageError(deck + " is a superelement file; --grdpnt, --properties, --set and --symbol apply to a model");
     seflex::app::print_superelement_info(deck);
     std::fflush(stdout);
     return seflex::app::kOk;
   }
   const seflex::fem::Model m = seflex::io::read_model(deck, model_options);
+  seflex::app::print_read_warnings(m);
   std::printf("deck        %s\n", deck.c_str());
   std::printf("files read  %zu\n", m.files.size());
   for (const auto& f : m.files) std::printf("  %s\n", f.c_str());
@@ -171,7 +173,7 @@ int run_info(seflex::app::Args& args) {
 
 }  // namespace
 
-SEFLEX_COMMAND(info, "DECK [--grdpnt G] | BODY.se",
+SEFLEX_COMMAND(info, "DECK [--grdpnt G] [--symbol NAME=DIR]... | BODY.se",
                "counts of grids, elements and cards, unsupported cards, and mass properties (like Nastran's GPWG; "
                "reference point PARAM GRDPNT or --grdpnt) of a Nastran deck; of a superelement file: provenance, "
                "interfaces, modes, mass properties, inertia invariants, mesh part and truncation report",

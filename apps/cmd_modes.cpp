@@ -10,22 +10,22 @@
 #include "distributed_run.hpp"
 #include "model_args.hpp"
 #include "usage_warnings.hpp"
-#include "seflex/reduction/card_usage.hpp"
+#include "seflex/solutions/card_usage.hpp"
 #include "seflex/io/model_reader.hpp"
 #include "seflex/io/results_csv.hpp"
 #include "seflex/io/vtk_modes.hpp"
-#include "seflex/reduction/normal_modes.hpp"
+#include "seflex/solutions/normal_modes.hpp"
 
 namespace {
 
-using seflex::reduction::EigenBackend;
-using seflex::reduction::FactorizationBackend;
+using seflex::linalg::EigenBackend;
+using seflex::linalg::FactorizationBackend;
 
-const char* normalization_name(seflex::reduction::ModeNormalization n) {
+const char* normalization_name(seflex::solutions::ModeNormalization n) {
   switch (n) {
-    case seflex::reduction::ModeNormalization::Mass: return "MASS";
-    case seflex::reduction::ModeNormalization::Max: return "MAX";
-    case seflex::reduction::ModeNormalization::Point: return "POINT";
+    case seflex::solutions::ModeNormalization::Mass: return "MASS";
+    case seflex::solutions::ModeNormalization::Max: return "MAX";
+    case seflex::solutions::ModeNormalization::Point: return "POINT";
   }
   return "?";
 }
@@ -37,7 +37,7 @@ int session_size([[maybe_unused]] const seflex::parallel::Session* session) {
   return 1;
 }
 
-void print_table(const seflex::reduction::NormalModes& r) {
+void print_table(const seflex::solutions::NormalModes& r) {
   const Eigen::VectorXd rad = r.radians(), hz = r.cycles();
   std::printf("\n%58s\n", "R E A L   E I G E N V A L U E S");
   if (r.guyan)
@@ -56,7 +56,7 @@ void print_table(const seflex::reduction::NormalModes& r) {
 /// (--backend slepc: SLEPc eigensolver, stdout and files from rank 0 only).
 int modes(seflex::app::Args& args, seflex::parallel::Session* session) {
   using seflex::app::UsageError;
-  seflex::reduction::ModesOptions o;
+  seflex::solutions::ModesOptions o;
   constexpr int kAbsent = std::numeric_limits<int>::min();
   if (session != nullptr) {
     for (const char* serial_only : {"eigensolver", "block-size", "factorization"})
@@ -71,22 +71,23 @@ int modes(seflex::app::Args& args, seflex::parallel::Session* session) {
     if (count < 1) throw UsageError("option --count must be at least 1");
     o.count = count;
   }
-  const std::string solver = args.value_or("eigensolver", std::string(seflex::reduction::to_string(o.backend)));
-  const auto backend = seflex::reduction::parse_eigen_backend(solver);
-  if (!backend) throw UsageError("option --eigensolver expects " + std::string(seflex::reduction::eigen_backend_names()) + ", got '" + solver + "'");
+  const std::string solver = args.value_or("eigensolver", std::string(seflex::linalg::to_string(o.backend)));
+  const auto backend = seflex::linalg::parse_eigen_backend(solver);
+  if (!backend) throw UsageError("option --eigensolver expects " + std::string(seflex::linalg::eigen_backend_names()) + ", got '" + solver + "'");
   o.backend = *backend;
   if (const int block = args.integer("block-size", kAbsent); block != kAbsent) {
     if (block < 1) throw UsageError("option --block-size must be at least 1");
     o.block_size = block;
   }
-  const std::string fact = args.value_or("factorization", std::string(seflex::reduction::to_string(o.factorization)));
-  const auto factorization = seflex::reduction::parse_factorization_backend(fact);
+  const std::string fact = args.value_or("factorization", std::string(seflex::linalg::to_string(o.factorization)));
+  const auto factorization = seflex::linalg::parse_factorization_backend(fact);
   if (!factorization) throw UsageError("option --factorization expects cholmod or ldlt, got '" + fact + "'");
   o.factorization = *factorization;
   if (const int subcase = args.integer("subcase", kAbsent); subcase != kAbsent) o.subcase = subcase;
   const auto csv = args.value("csv");
   const auto vtk = args.value("vtk");
   const bool force = args.flag("force");
+  o.ignore_unknown_cards = args.flag("ignore-unknown");
   const seflex::io::ModelReadOptions model_options = seflex::app::model_read_options(args);
   const std::string deck = args.positional("DECK");
   args.finish();
@@ -98,17 +99,18 @@ int modes(seflex::app::Args& args, seflex::parallel::Session* session) {
   const auto t0 = std::chrono::steady_clock::now();
   seflex::fem::Model model = seflex::io::read_model(deck, model_options);
   seflex::app::check_and_print_card_usage(
-      model, seflex::reduction::check_card_usage(model, seflex::reduction::Solution::NormalModes,
-                                                 {seflex::reduction::select_case(model, o.subcase)}));
+      model, seflex::solutions::check_card_usage(model, seflex::solutions::Solution::NormalModes,
+                                                 {seflex::solutions::select_case(model, o.subcase)},
+                                                 seflex::solutions::kInterfaceNone, o.ignore_unknown_cards));
   if (session != nullptr) seflex::app::checkpoint(*session);  // every rank read the deck (or stop them all)
   const auto t1 = std::chrono::steady_clock::now();
-  seflex::reduction::NormalModes r;
+  seflex::solutions::NormalModes r;
   std::string assembly;  // how a distributed run assembled (the summary line)
 #ifdef SEFLEX_HAVE_MPI
   if (session != nullptr) {
     // Elements partitioned by METIS, each rank assembling its own, unless constraints need the whole model.
     const seflex::parallel::Backend& plugin = seflex::app::parallel_backend();
-    const auto refusal = plugin.partition_refusal(model, seflex::reduction::select_case(model, o.subcase).mpc);
+    const auto refusal = plugin.partition_refusal(model, seflex::solutions::select_case(model, o.subcase).mpc);
     if (!refusal) {
       seflex::parallel::PartitionStats p;
       r = plugin.solve_normal_modes_partitioned(model, o, &p);
@@ -121,7 +123,7 @@ int modes(seflex::app::Args& args, seflex::parallel::Session* session) {
     }
   }
 #endif
-  if (assembly.empty() || assembly.rfind("replicated", 0) == 0) r = seflex::reduction::solve_normal_modes(model, o);
+  if (assembly.empty() || assembly.rfind("replicated", 0) == 0) r = seflex::solutions::solve_normal_modes(model, o);
   const auto t2 = std::chrono::steady_clock::now();
   const auto seconds = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };
 
@@ -136,7 +138,7 @@ int modes(seflex::app::Args& args, seflex::parallel::Session* session) {
     std::printf("  Guyan reduction to the a-set: %ld a-set dofs (%s), %ld omitted dofs condensed statically\n",
                 static_cast<long>(r.guyan->a_dofs), r.guyan->from_aset ? "ASET/ASET1" : "all but OMIT/OMIT1",
                 static_cast<long>(r.guyan->o_dofs));
-  const bool slepc = r.stats.backend_used == seflex::reduction::EigenBackend::Slepc;
+  const bool slepc = r.stats.backend_used == seflex::linalg::EigenBackend::Slepc;
   const std::string on = slepc ? "mumps (" + std::to_string(session_size(session)) + " MPI ranks)"
                                : std::string(to_string(o.factorization));
   std::printf("  eigensolver %s on %s, shift %.6E, %ld solved columns, %d %s runs%s\n",
@@ -181,6 +183,7 @@ int run_modes(seflex::app::Args& args) {
 }  // namespace
 
 SEFLEX_COMMAND(modes, "DECK [--count N] [--csv FILE] [--vtk FILE.vtu] [--eigensolver block|spectra|arpack|dense] "
-                      "[--block-size B] [--factorization cholmod|ldlt] [--subcase ID] [--force] [--backend serial|slepc]",
+                      "[--block-size B] [--factorization cholmod|ldlt] [--subcase ID] [--force] [--backend serial|slepc] [--ignore-unknown] "
+                      "[--symbol NAME=DIR]...",
                "normal modes (SOL 103): Nastran-style eigenvalue table, CSV of frequencies, mode shapes for ParaView",
                run_modes);

@@ -17,7 +17,7 @@
 #include "info_superelement.hpp"
 #include "model_args.hpp"
 #include "usage_warnings.hpp"
-#include "seflex/reduction/card_usage.hpp"
+#include "seflex/solutions/card_usage.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/common/version.hpp"
 #include "seflex/io/model_reader.hpp"
@@ -30,6 +30,8 @@ namespace {
 
 using seflex::app::UsageError;
 namespace red = seflex::reduction;
+namespace linalg = seflex::linalg;
+namespace solutions = seflex::solutions;
 
 std::string lower(std::string s) {
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -171,6 +173,7 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
   const bool no_mesh = args.flag("no-mesh");
   const bool no_stiffening = args.flag("no-stiffening");
   const bool force = args.flag("force");
+  const bool ignore_unknown = args.flag("ignore-unknown");
   const seflex::io::ModelReadOptions model_options = seflex::app::model_read_options(args);
   const std::string model_path = args.positional("MODEL");
   args.finish();
@@ -182,8 +185,8 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
   if (!std::isnan(fmax) && !(fmax > 0 && std::isfinite(fmax)))
     throw UsageError("option --fmax expects a frequency > 0 (Hz)");
   if (compare != kAbsent && compare < 1) throw UsageError("option --compare expects a number of elastic modes >= 1");
-  const auto backend = red::parse_eigen_backend(solver);
-  if (!backend) throw UsageError("option --eigensolver expects " + std::string(red::eigen_backend_names()) + ", got '" + solver + "'");
+  const auto backend = linalg::parse_eigen_backend(solver);
+  if (!backend) throw UsageError("option --eigensolver expects " + std::string(linalg::eigen_backend_names()) + ", got '" + solver + "'");
   const bool writer = seflex::app::writes_files(session);
   if (writer && !force && std::filesystem::exists(*out))  // before the work, not after it
     throw seflex::InputError(seflex::SourceRef{*out, 0},
@@ -194,13 +197,14 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
   red::SuperelementOptions o;
   o.interface_ids = interface_ids(model, *spec);
   const std::string spec_lower = lower(*spec);
-  o.interface_cards = spec_lower == "aset" ? red::kInterfaceAset
-                      : spec_lower == "bset" ? red::kInterfaceBset
-                      : (spec_lower == "suport" || spec_lower == "support") ? red::kInterfaceSuport
-                                                                            : red::kInterfaceNone;
-  const red::CardUsage usage = red::check_card_usage(model, red::Solution::CraigBampton, {red::select_case(model)},
-                                                     o.interface_cards);
+  o.interface_cards = spec_lower == "aset" ? solutions::kInterfaceAset
+                      : spec_lower == "bset" ? solutions::kInterfaceBset
+                      : (spec_lower == "suport" || spec_lower == "support") ? solutions::kInterfaceSuport
+                                                                            : solutions::kInterfaceNone;
+  const solutions::CardUsage usage = solutions::check_card_usage(
+      model, solutions::Solution::CraigBampton, {solutions::select_case(model)}, o.interface_cards, ignore_unknown);
   seflex::app::check_and_print_card_usage(model, usage);
+  o.ignore_unknown_cards = ignore_unknown;
   if (frame) o.frame_node = frame_id(model, *frame);
   if (!std::isnan(fmax))
     o.modes.fmax_hz = fmax;
@@ -219,7 +223,7 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
     o.stiffening_ranks = session->size();
     o.sum_stiffening = plugin.sum_over_ranks;
     // Elements partitioned by METIS, each rank assembling its own, unless constraints need the whole model.
-    if (const auto refusal = plugin.partition_refusal(model, red::select_case(model).mpc)) {
+    if (const auto refusal = plugin.partition_refusal(model, solutions::select_case(model).mpc)) {
       assembly = "replicated on every rank (" + *refusal + ")";
     } else {
       assembly = "partitioned by METIS over " + std::to_string(session->size()) + " ranks";
@@ -248,8 +252,8 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
   seflex::se::Superelement s = red::reduce_to_superelement(model, o, &info);
   const auto t2 = std::chrono::steady_clock::now();
   s.source_file = model_path;
-  for (const red::CardUse& u : usage.uses)
-    if (u.kind != red::CardUse::Kind::Refused) s.source_warnings.push_back(red::describe(model, u));
+  for (const solutions::CardUse& u : usage.uses)
+    if (u.kind != solutions::CardUse::Kind::Refused) s.source_warnings.push_back(solutions::describe(model, u));
   s.source_hash = source_hash(model);
   s.created = iso_utc_now();
   s.seflex_version = seflex::kVersion;
@@ -314,7 +318,7 @@ int run_reduce(seflex::app::Args& args) {
 SEFLEX_COMMAND(reduce,
                "MODEL --interface IDS|SETS|aset|bset|suport [--modes N | --fmax HZ] [--frame NODE|SET] [--name NAME] "
                "[--compare K] [--eigensolver block|spectra|arpack|dense] [--backend serial|slepc] [--no-mesh] [--no-stiffening] -o FILE.se [--force] "
-               "[--properties FILE] [--set NAME=VALUE]...",
+               "[--properties FILE] [--set NAME=VALUE]... [--symbol NAME=DIR]... [--ignore-unknown]",
                "Craig-Bampton reduction to an absolute-interface-coordinate superelement: constraint modes of all six "
                "dofs of the interface grids plus fixed-interface modes; prints mass properties, the truncation report "
                "and the reduced model's free-free frequencies (--compare K: against the full model's); --no-mesh writes the "

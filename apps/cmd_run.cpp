@@ -1,5 +1,5 @@
 // seflex run SCENE -o OUTDIR: simulate the mechanism of a scene file (docs/scenes.md) and write its
-// time histories, events, poses, animation and summary (io/run_output.hpp) as the run goes.
+// time histories, events, poses, animation and summary (scene/run_output.hpp) as the run goes.
 #include <unistd.h>
 
 #include <algorithm>
@@ -13,9 +13,9 @@
 
 #include "command.hpp"
 #include "seflex/common/error.hpp"
-#include "seflex/io/run_output.hpp"
-#include "seflex/io/scene.hpp"
-#include "seflex/io/solve_scene.hpp"
+#include "seflex/scene/run_output.hpp"
+#include "seflex/scene/scene.hpp"
+#include "seflex/scene/solve_scene.hpp"
 #include "seflex/io/superelement_file.hpp"
 #include "seflex/mbd/solvers/integrator.hpp"
 #include "seflex/mbd/state.hpp"
@@ -24,12 +24,13 @@ namespace {
 
 using seflex::app::UsageError;
 namespace io = seflex::io;
+namespace scene = seflex::scene;
 namespace mbd = seflex::mbd;
 
 /// Forwards to the run output and draws a progress bar on stderr (only when it is a terminal).
 class Progress : public mbd::Observer {
  public:
-  explicit Progress(io::RunOutput& out) : out_(out), tty_(isatty(STDERR_FILENO) != 0) {}
+  explicit Progress(scene::RunOutput& out) : out_(out), tty_(isatty(STDERR_FILENO) != 0) {}
   ~Progress() override { done(); }
   void on_sample(const mbd::Model& m, const mbd::Sample& s) override { out_.on_sample(m, s); }
   bool stop_requested() const override { return out_.stop_requested(); }
@@ -52,7 +53,7 @@ class Progress : public mbd::Observer {
   }
 
  private:
-  io::RunOutput& out_;
+  scene::RunOutput& out_;
   bool tty_;
   bool drawn_ = false;
   std::chrono::steady_clock::time_point last_{};
@@ -75,16 +76,17 @@ int run_run(seflex::app::Args& args) {
     throw UsageError("option --inertia expects simplified or full, got '" + *inertia + "'");
   if (fidelity && *fidelity != "rigid" && *fidelity != "flexible")
     throw UsageError("option --fidelity expects rigid or flexible, got '" + *fidelity + "'");
-  io::Formulation formulation = io::Formulation::Aic;
-  if (formulation_arg == "ffrf-lm") formulation = io::Formulation::FfrfLm;
-  else if (formulation_arg == "rigid-lm" || formulation_arg == "rigid") formulation = io::Formulation::RigidLm;
+  mbd::Formulation formulation = mbd::Formulation::Aic;
+  if (formulation_arg == "ffrf-lm") formulation = mbd::Formulation::FfrfLm;
+  else if (formulation_arg == "rigid-lm" || formulation_arg == "rigid") formulation = mbd::Formulation::RigidLm;
   else if (formulation_arg != "aic")
     throw UsageError("option --formulation expects aic, ffrf-lm or rigid-lm (also: rigid), got '" + formulation_arg + "'");
-  io::RunOutput::check_folder(*out, force);  // before the work, not after it
+  scene::RunOutput::check_folder(*out, force);  // before the work, not after it
 
-  io::SceneDescription d = io::read_scene(scene_path);
-  if (formulation != io::Formulation::Aic && d.method != io::IntegratorMethod::GeneralizedAlpha)
-    throw UsageError("option --formulation " + formulation_arg + " integrates with generalized-alpha only; the scene asks for integrator.method rk4");
+  scene::SceneDescription d = scene::read_scene(scene_path);
+  if (!mbd::integrator_unavailable(formulation, d.method).empty())
+    throw UsageError("option --formulation " + formulation_arg + " integrates with generalized-alpha only; the scene asks for integrator.method " +
+                     mbd::integrator_method_name(d.method));
   if (t_end) d.integrator.t_end = seflex::app::positive_number("t-end", *t_end, "a time > 0 in seconds");
   if (step) {
     d.integrator.h_initial = seflex::app::positive_number("step", *step, "a time > 0 in seconds");
@@ -92,17 +94,17 @@ int run_run(seflex::app::Args& args) {
   }
   for (auto& b : d.bodies) {
     if (inertia) b.inertia = *inertia == "full" ? mbd::InertiaModel::Full : mbd::InertiaModel::Simplified;
-    if (fidelity) b.fidelity = *fidelity == "rigid" ? io::Fidelity::Rigid : io::Fidelity::Flexible;
+    if (fidelity) b.fidelity = *fidelity == "rigid" ? scene::Fidelity::Rigid : scene::Fidelity::Flexible;
   }
   const auto t0 = std::chrono::steady_clock::now();
   const std::clock_t c0 = std::clock();
   // The mesh part of the superelement files serves the animation only; without it a run reads the
   // dynamics (reduced matrices, inertia and stiffening invariants). The floating-frame baseline takes
   // its inertia from the invariants too (and may sum over the FE nodes of a small mesh that is read).
-  io::SceneBuildOptions bo;
+  scene::SceneBuildOptions bo;
   bo.keep_mesh = !no_animation && d.output.animation_interval;
-  bo.full_inertia_everywhere = formulation == io::Formulation::FfrfLm;
-  const io::Scene scene = io::build_scene(d, bo);
+  bo.full_inertia_everywhere = formulation == mbd::Formulation::FfrfLm;
+  const scene::Scene scene = scene::build_scene(d, bo);
   std::uint64_t se_bytes = 0;
   bool meshless = false, with_mesh = false;
   std::set<const seflex::se::Superelement*> counted;  // bodies that share a file share its copy
@@ -121,18 +123,18 @@ int run_run(seflex::app::Args& args) {
     std::printf("  note: a superelement without its mesh part (seflex reduce --no-mesh) is not drawn in the animation\n");
   std::fflush(stdout);
 
-  io::RunOutputOptions oo;
+  scene::RunOutputOptions oo;
   oo.folder = *out;
   oo.overwrite = force;
   oo.animation = !no_animation;
-  io::RunOutput output(scene, oo);
+  scene::RunOutput output(scene, oo);
   Progress progress(output);
-  io::RunEnd end;
-  end.formulation = io::formulation_name(formulation);
+  scene::RunEnd end;
+  end.formulation = mbd::formulation_name(formulation);
   const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   const auto cpu_seconds = [&] { return static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC; };
   try {
-    const io::SceneRun r = io::solve_scene(scene, d.integrator, formulation, &progress);
+    const mbd::SimulationRun r = scene::solve_scene(scene, d.integrator, formulation, &progress);
     end.stats = r.run;
     if (r.ffrf) {
       end.coordinates = r.ffrf->coordinates;

@@ -2,7 +2,7 @@
 // displacements of every grid to a CSV file (basic system, or each grid's displacement system with
 // --system global as Nastran prints them), and a short summary per subcase (largest displacement,
 // load and SPC-force resultants). Cards the deck holds that statics does not use are reported as
-// warnings; cards it needs and seflex cannot use refuse the deck (reduction/card_usage.hpp).
+// warnings; cards it needs and seflex cannot use refuse the deck (solutions/card_usage.hpp).
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -15,27 +15,27 @@
 #include "usage_warnings.hpp"
 #include "seflex/io/model_reader.hpp"
 #include "seflex/io/results_csv.hpp"
-#include "seflex/reduction/card_usage.hpp"
-#include "seflex/reduction/grid_results.hpp"
-#include "seflex/reduction/statics.hpp"
+#include "seflex/solutions/card_usage.hpp"
+#include "seflex/solutions/grid_results.hpp"
+#include "seflex/solutions/statics.hpp"
 
 namespace {
 
-namespace red = seflex::reduction;
+namespace solutions = seflex::solutions;
 
 void print_resultant(const char* what, const Eigen::Matrix<double, 6, 1>& r) {
   std::printf("  %-22s %13.6E %13.6E %13.6E %13.6E %13.6E %13.6E\n", what, r(0), r(1), r(2), r(3), r(4), r(5));
 }
 
 /// Per-grid rows of a g-set vector: basic components, or each grid's CD components (global).
-red::GridTable grid_rows(const seflex::fem::Model& model, const red::StaticSolution& s, bool global) {
-  if (!global) return red::grid_vectors_basic(model, s.dofs, s.u_g);
-  red::GridTable t(static_cast<Eigen::Index>(model.grids.size()), 6);
+solutions::GridTable grid_rows(const seflex::fem::Model& model, const solutions::StaticSolution& s, bool global) {
+  if (!global) return solutions::grid_vectors_basic(model, s.dofs, s.u_g);
+  solutions::GridTable t(static_cast<Eigen::Index>(model.grids.size()), 6);
   for (Eigen::Index i = 0; i < t.rows(); ++i) t.row(i) = s.u_g.segment<6>(6 * i).transpose();
   return t;
 }
 
-void print_summary(const seflex::fem::Model& model, const red::StaticSolution& s, const red::GridTable& u,
+void print_summary(const seflex::fem::Model& model, const solutions::StaticSolution& s, const solutions::GridTable& u,
                    const char* system) {
   std::printf("\n%s", s.selection.subcase_id ? ("subcase " + std::to_string(s.selection.subcase_id)).c_str() : "case");
   if (!s.selection.label.empty()) std::printf(" (%s)", s.selection.label.c_str());
@@ -62,8 +62,8 @@ void print_summary(const seflex::fem::Model& model, const red::StaticSolution& s
                 model.grids[static_cast<std::size_t>(r_max)].id, r(3), r(4), r(5), system);
   }
   std::printf("  resultants (basic axes, about the origin)   FX            FY            FZ            MX            MY            MZ\n");
-  const auto applied = red::resultant_basic(model, s.dofs, s.p_g);
-  const auto reaction = red::resultant_basic(model, s.dofs, s.q_g);
+  const auto applied = solutions::resultant_basic(model, s.dofs, s.p_g);
+  const auto reaction = solutions::resultant_basic(model, s.dofs, s.q_g);
   print_resultant("applied load", applied);
   print_resultant("SPC forces", reaction);
   print_resultant("sum", applied + reaction);
@@ -71,7 +71,7 @@ void print_summary(const seflex::fem::Model& model, const red::StaticSolution& s
 
 int run_static(seflex::app::Args& args) {
   using seflex::app::UsageError;
-  red::StaticOptions o;
+  solutions::StaticOptions o;
   constexpr int kAbsent = std::numeric_limits<int>::min();
   if (const int subcase = args.integer("subcase", kAbsent); subcase != kAbsent) o.subcase = subcase;
   auto out = args.value("-o");
@@ -81,6 +81,7 @@ int run_static(seflex::app::Args& args) {
     throw UsageError("option --system expects basic or global (each grid's displacement system CD), got '" + system + "'");
   const bool global = system == "global";
   const bool force = args.flag("force");
+  o.ignore_unknown_cards = args.flag("ignore-unknown");
   const seflex::io::ModelReadOptions model_options = seflex::app::model_read_options(args);
   const std::string deck = args.positional("DECK");
   args.finish();
@@ -90,15 +91,17 @@ int run_static(seflex::app::Args& args) {
 
   const auto t0 = std::chrono::steady_clock::now();
   const seflex::fem::Model model = seflex::io::read_model(deck, model_options);
-  const std::vector<red::CaseSelection> cases = red::select_cases(model, o.subcase);
-  seflex::app::check_and_print_card_usage(model, red::check_card_usage(model, red::Solution::Statics, cases));
-  const std::vector<red::StaticSolution> solutions = red::solve_statics(model, o);
+  const std::vector<solutions::CaseSelection> cases = solutions::select_cases(model, o.subcase);
+  seflex::app::check_and_print_card_usage(
+      model, solutions::check_card_usage(model, solutions::Solution::Statics, cases, solutions::kInterfaceNone,
+                                         o.ignore_unknown_cards));
+  const std::vector<solutions::StaticSolution> solutions = solutions::solve_statics(model, o);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   const bool several = solutions.size() > 1;
   const Eigen::Index ng = static_cast<Eigen::Index>(model.grids.size()), c0 = several ? 2 : 1;
   Eigen::MatrixXd rows(ng * static_cast<Eigen::Index>(solutions.size()), c0 + 6);
-  std::vector<red::GridTable> tables;
+  std::vector<solutions::GridTable> tables;
   for (std::size_t k = 0; k < solutions.size(); ++k) {
     tables.push_back(grid_rows(model, solutions[k], global));
     for (Eigen::Index i = 0; i < ng; ++i) {
@@ -123,7 +126,7 @@ int run_static(seflex::app::Args& args) {
 
 }  // namespace
 
-SEFLEX_COMMAND(static, "DECK [-o results.csv] [--subcase ID] [--system basic|global] [--force]",
+SEFLEX_COMMAND(static, "DECK [-o results.csv] [--subcase ID] [--system basic|global] [--force] [--ignore-unknown] [--symbol NAME=DIR]...",
                "linear statics (SOL 101) of every subcase (or --subcase ID): grid displacements to CSV (basic system, "
                "or --system global: each grid's CD system as Nastran prints them), load and SPC-force resultants",
                run_static);

@@ -10,7 +10,7 @@
 #include "command.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/common/version.hpp"
-#include "seflex/reduction/blas_threads.hpp"
+#include "seflex/linalg/blas_threads.hpp"
 
 namespace seflex::app {
 
@@ -135,7 +135,7 @@ int main(int argc, char** argv) {
   using namespace seflex::app;
   // OpenBLAS's workers, started when the library was loaded, would spin 0.13 s of CPU waiting for
   // work; the reduction's first multithreaded call starts them again (blas_threads.hpp).
-  seflex::reduction::release_idle_blas_threads();
+  seflex::linalg::release_idle_blas_threads();
   if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h" || std::string(argv[1]) == "help") {
     print_help();
     return argc < 2 ? kUsage : kOk;

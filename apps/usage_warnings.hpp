@@ -1,9 +1,9 @@
 #pragma once
-// Printing what reduction::check_card_usage found, the same way in every command:
+// Printing what solutions::check_card_usage found, the same way in every command:
 //
-//   const auto usage = reduction::check_card_usage(model, reduction::Solution::Statics, cases);
+//   const auto usage = solutions::check_card_usage(model, solutions::Solution::Statics, cases);
 //   seflex::app::print_card_usage(model, usage);   // "warning: ..." lines on stderr
-//   reduction::require_usable(model, usage);       // InputError (exit 3) if a needed card is unsupported
+//   solutions::require_usable(model, usage);       // InputError (exit 3) if a needed card is unsupported
 //
 // One line per card and reason: "warning: CARD: N cards, first at file:line: reason". Approximated
 // entries say "warning (approximation)"; Caution entries (the deck is computed as written, with a
@@ -13,17 +13,26 @@
 #include <string>
 
 #include "seflex/fem/model.hpp"
-#include "seflex/reduction/card_usage.hpp"
+#include "seflex/solutions/card_usage.hpp"
 
 namespace seflex::app {
 
-/// Print the Unused and Approximated entries of `usage` on stderr (flushed). Returns how many.
-inline std::size_t print_card_usage(const fem::Model& model, const reduction::CardUsage& usage) {
-  std::size_t n = 0;
-  for (const reduction::CardUse& u : usage.uses) {
-    if (u.kind == reduction::CardUse::Kind::Refused) continue;
-    const char* prefix = u.kind == reduction::CardUse::Kind::Approximated ? "warning (approximation)" : "warning";
-    std::fprintf(stderr, "%s: %s\n", prefix, reduction::describe(model, u).c_str());
+/// Print what the reader chose and says so (Model::read_warnings: an INCLUDE found in two places) on
+/// stderr, one "warning: " line each (flushed). Returns how many.
+inline std::size_t print_read_warnings(const fem::Model& model) {
+  for (const std::string& w : model.read_warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  std::fflush(stderr);
+  return model.read_warnings.size();
+}
+
+/// Print the reader's warnings, then the Unused and Approximated entries of `usage` on stderr
+/// (flushed). Returns how many lines.
+inline std::size_t print_card_usage(const fem::Model& model, const solutions::CardUsage& usage) {
+  std::size_t n = print_read_warnings(model);
+  for (const solutions::CardUse& u : usage.uses) {
+    if (u.kind == solutions::CardUse::Kind::Refused) continue;
+    const char* prefix = u.kind == solutions::CardUse::Kind::Approximated ? "warning (approximation)" : "warning";
+    std::fprintf(stderr, "%s: %s\n", prefix, solutions::describe(model, u).c_str());
     ++n;
   }
   std::fflush(stderr);
@@ -31,9 +40,9 @@ inline std::size_t print_card_usage(const fem::Model& model, const reduction::Ca
 }
 
 /// print_card_usage, then require_usable: the usual start of a command that runs a solution.
-inline void check_and_print_card_usage(const fem::Model& model, const reduction::CardUsage& usage) {
+inline void check_and_print_card_usage(const fem::Model& model, const solutions::CardUsage& usage) {
   print_card_usage(model, usage);
-  reduction::require_usable(model, usage);
+  solutions::require_usable(model, usage);
 }
 
 }  // namespace seflex::app

@@ -17,7 +17,7 @@
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/constraints.hpp"
 #include "seflex/io/nastran.hpp"
-#include "seflex/reduction/sparse_factorization.hpp"
+#include "seflex/linalg/sparse_factorization.hpp"
 
 namespace {
 
@@ -67,15 +67,15 @@ int main(int argc, char** argv) {
     const fem::Model model = io::read_nastran(deck);
     const fem::GlobalMatrices g = fem::assemble(model, fem::assembly_options(model));
     const fem::ConstrainedSystem c = fem::apply_constraints(model, g, model.case_control.global.spc);
-    const reduction::SparseMatrixd K = c.K_ff.triangularView<Eigen::Lower>();
-    const reduction::SparseMatrixd K2 = 1.5 * K;
+    const linalg::SparseMatrixd K = c.K_ff.triangularView<Eigen::Lower>();
+    const linalg::SparseMatrixd K2 = 1.5 * K;
     const Eigen::MatrixXd B = Eigen::MatrixXd::Random(K.rows(), 20);
-    for (auto backend : {reduction::FactorizationBackend::Cholmod, reduction::FactorizationBackend::EigenLdlt}) {
-      if (backend == reduction::FactorizationBackend::EigenLdlt && K.rows() > skip_ldlt_above) continue;
+    for (auto backend : {linalg::FactorizationBackend::Cholmod, linalg::FactorizationBackend::EigenLdlt}) {
+      if (backend == linalg::FactorizationBackend::EigenLdlt && K.rows() > skip_ldlt_above) continue;
       std::vector<double> tf, tr, t1, t20;
       double nnz = 0;
       for (int r = 0; r < repeat; ++r) {
-        auto f = reduction::make_factorization(backend);
+        auto f = linalg::make_factorization(backend);
         tf.push_back(seconds([&] { f->factorize(K); }));
         tr.push_back(seconds([&] { f->factorize(K2); }));
         Eigen::MatrixXd x1 = B.col(0), x20 = B;
@@ -84,7 +84,7 @@ int main(int argc, char** argv) {
         nnz = f->stats().factor_nonzeros;
       }
       std::printf("%10ld %8s | %12.4g %10.3f %10.3f %10.4f %10.4f | %s\n", static_cast<long>(K.rows()),
-                  std::string(reduction::to_string(backend)).c_str(), nnz, median(tf), median(tr), median(t1), median(t20),
+                  std::string(linalg::to_string(backend)).c_str(), nnz, median(tf), median(tr), median(t1), median(t20),
                   deck.c_str());
       std::fflush(stdout);
     }

@@ -30,16 +30,10 @@ nice_level="${SEFLEX_FUZZ_NICE:-15}"
 case "$build" in /*) ;; *) build="$root/$build" ;; esac
 
 if [ "${SEFLEX_FUZZ_NO_BUILD:-0}" != 1 ]; then
-  if [ ! -f "$build/CMakeCache.txt" ]; then
-    args=()  # the same configuration as the sanitizer stage of scripts/bootstrap.sh test
-    command -v ninja >/dev/null 2>&1 && args=(-G Ninja)
-    command -v ccache >/dev/null 2>&1 && args+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
-    cmake -S . -B "$build" "${args[@]}" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
-      -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSEFLEX_FUZZ=ON -DSEFLEX_BUILD_BENCH=OFF -DSEFLEX_BUILD_EXAMPLES=OFF -DSEFLEX_MPI=OFF
-  fi
-  export CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1  # as scripts/bootstrap.sh: hits across checkouts
-  grep -q '^SEFLEX_FUZZ:BOOL=ON' "$build/CMakeCache.txt" ||
-    { echo "fuzz.sh: $build is not configured with -DSEFLEX_FUZZ=ON" >&2; exit 2; }
+  # the configuration of the sanitizer stage of scripts/bootstrap.sh test (its functions, sourced)
+  source scripts/bootstrap.sh
+  bootstrap_tools
+  configure_fuzz "$build"
   cmake --build "$build" -j "$jobs" --target fuzz_all seflex
 fi
 

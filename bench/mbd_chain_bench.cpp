@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "../tests/mbd/beam_superelement.hpp"  // test-only beam Craig-Bampton builder (until reduction/ has one)
+#include "../tests/support/beam_superelement.hpp"  // test-only beam Craig-Bampton builder (until reduction/ has one)
 #include "seflex/mbd/ffrf/ffrf.hpp"
 #include "seflex/mbd/solvers/integrator.hpp"
 

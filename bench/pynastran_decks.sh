@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
-# How many of the public decks in pyNastran's models/ folder `seflex info` reads (issue 14), and how
-# many of them carry no unsupported structural card (issue 43): every .bdf/.dat/.nas file under
-# models/ of a pyNastran checkout or bare mirror, run through `seflex info` with a time limit; prints
-# the count by outcome (exit 0 = read, unsupported cards listed; 3 = refused with an input error;
-# anything else = crash or hang), the count of decks read whose unsupported cards all belong to the
-# families a structural reduction may ignore (below), the other unsupported cards by the number of
-# decks that list them, and, per deck, the outcome, the first line of the error and those cards, to a
-# CSV.
-#   bench/pynastran_decks.sh SEFLEX PYNASTRAN_GIT_DIR [OUT_CSV] [TIMEOUT_S]
-# e.g. bench/pynastran_decks.sh build/apps/seflex ~/src/pyNastran decks.csv
+# How many of the public decks in pyNastran's models/ folder `seflex info` reads, or `seflex static`
+# solves (issues 14, 40), and how many of those read carry no unsupported structural card (issue
+# 43): every .bdf/.dat/.nas file under models/ of a pyNastran checkout or bare mirror, run through
+# `seflex COMMAND` with a time limit; prints the count by outcome (exit 0 = read or solved; 3 =
+# refused with an input error; 4 = not converged; anything else = crash or hang) and, per deck, the
+# outcome and the first line of the error, to a CSV. With `info`, also the count of decks read whose
+# unsupported cards all belong to the families a structural reduction may ignore (below), the other
+# unsupported cards by the number of decks that list them, and those cards per deck in the CSV.
+#   bench/pynastran_decks.sh SEFLEX PYNASTRAN_GIT_DIR [OUT_CSV] [TIMEOUT_S] [COMMAND]
+# COMMAND: info (default) or static (each deck solved in a scratch copy; results thrown away).
+# e.g. bench/pynastran_decks.sh build/apps/seflex pyNastran/.git decks.csv 60 static
 # A bare mirror is read with `git cat-file` file by file (blobs missing from the mirror are skipped
 # and counted).
 set -uo pipefail
@@ -16,6 +17,11 @@ seflex="$(realpath "$1")"
 git_dir="$2"
 out="${3:-pynastran-decks.csv}"
 limit="${4:-60}"
+command="${5:-info}"
+case "$command" in
+  info|static) ;;
+  *) echo "pynastran_decks.sh: COMMAND is info or static, got '$command'" >&2; exit 2 ;;
+esac
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 
@@ -76,25 +82,31 @@ while read -r _ type obj path; do
   git --git-dir="$git_dir" cat-file blob "$obj" > "$tmp/$path" 2> /dev/null || { rm -f "$tmp/$path"; missing=$((missing + 1)); }
 done < <(git --git-dir="$git_dir" ls-tree -r HEAD models)
 echo "deck,outcome,exit,message,structural_unsupported,other_solutions_unsupported" > "$out"
-declare -A count=([read]=0 [refused]=0 [crash]=0 [timeout]=0)
+declare -A count=([read]=0 [refused]=0 [unconverged]=0 [crash]=0 [timeout]=0)
 declare -A blocking=()  # structural unsupported card -> number of decks listing it
 clean=0             # only the six families above
 clean_with_other=0  # and other solutions' data
 while IFS= read -r deck; do
   rel="${deck#"$tmp"/}"
-  msg=$(cd "$(dirname "$deck")" && timeout "$limit" "$seflex" info "$(basename "$deck")" 2>&1 > "$tmp/info.txt")
+  if [ "$command" = static ]; then
+    msg=$(cd "$(dirname "$deck")" && timeout "$limit" "$seflex" static "$(basename "$deck")" -o "$tmp/static.csv" --force 2>&1 > /dev/null)
+  else
+    msg=$(cd "$(dirname "$deck")" && timeout "$limit" "$seflex" info "$(basename "$deck")" 2>&1 > "$tmp/info.txt")
+  fi
   rc=$?
-  msg=$(head -1 <<< "$msg")
+  # the first line that is not a warning (the error), else the first line
+  msg=$( (grep -v '^warning' <<< "$msg" | grep -m1 .) || head -1 <<< "$msg")
   case "$rc" in
     0) outcome=read ;;
     3) outcome=refused ;;
+    4) outcome=unconverged ;;
     124) outcome=timeout ;;
     *) outcome=crash ;;
   esac
   count[$outcome]=$((count[$outcome] + 1))
   structural=""
   other=""
-  if [ "$outcome" = read ]; then
+  if [ "$command" = info ] && [ "$outcome" = read ]; then
     # "  NAME    COUNT   first at FILE:LINE" lines after the "unsupported cards" heading
     while IFS= read -r card; do
       case "$(family "$card")" in
@@ -107,11 +119,13 @@ while IFS= read -r deck; do
   fi
   printf '%s,%s,%s,"%s","%s","%s"\n' "$rel" "$outcome" "$rc" "${msg//\"/\'}" "${structural//\"/\'}" "${other//\"/\'}" >> "$out"
 done < <(find "$tmp/models" -type f \( -iname '*.bdf' -o -iname '*.dat' -o -iname '*.nas' \) | sort)
-total=$((count[read] + count[refused] + count[crash] + count[timeout]))
-echo "# seflex info on pyNastran models/ at $commit ($(date -I)): $total decks ($missing files missing from the mirror)"
-echo "read (exit 0): ${count[read]}  refused (exit 3): ${count[refused]}  crash: ${count[crash]}  timeout (${limit} s): ${count[timeout]}"
-echo "read with no unsupported card but aero, dynamic loading and damping, optimisation, heat transfer, contact and output: $clean"
-echo "  ... with other solutions' data (nonlinear control, temperature-dependent materials, DMAP sets) ignorable too: $clean_with_other"
-echo "structural unsupported cards, by number of decks read that list them:"
-for card in "${!blocking[@]}"; do printf '%5d  %s\n' "${blocking[$card]}" "$card"; done | sort -k1,1nr -k2 | head -40
+total=$((count[read] + count[refused] + count[unconverged] + count[crash] + count[timeout]))
+echo "# seflex $command on pyNastran models/ at $commit ($(date -I)): $total decks ($missing files missing from the mirror)"
+echo "$([ "$command" = static ] && echo solved || echo read) (exit 0): ${count[read]}  refused (exit 3): ${count[refused]}  not converged (exit 4): ${count[unconverged]}  crash: ${count[crash]}  timeout (${limit} s): ${count[timeout]}"
+if [ "$command" = info ]; then
+  echo "read with no unsupported card but aero, dynamic loading and damping, optimisation, heat transfer, contact and output: $clean"
+  echo "  ... with other solutions' data (nonlinear control, temperature-dependent materials, DMAP sets) ignorable too: $clean_with_other"
+  echo "structural unsupported cards, by number of decks read that list them:"
+  for card in "${!blocking[@]}"; do printf '%5d  %s\n' "${blocking[$card]}" "$card"; done | sort -k1,1nr -k2 | head -40
+fi
 echo "per deck: $out"

@@ -39,6 +39,13 @@ add_library(seflex::gmsh INTERFACE IMPORTED)
 target_include_directories(seflex::gmsh INTERFACE ${GMSH_INCLUDE_DIR})
 target_link_libraries(seflex::gmsh INTERFACE ${CMAKE_DL_LIBS})
 
+# nettle (nettle-dev): SHA-256 of superelement files and of the models they come from (io/src/sha256.cpp)
+find_path(NETTLE_INCLUDE_DIR nettle/sha2.h REQUIRED)
+find_library(NETTLE_LIBRARY nettle REQUIRED)
+add_library(seflex::nettle INTERFACE IMPORTED)
+target_include_directories(seflex::nettle INTERFACE ${NETTLE_INCLUDE_DIR})
+target_link_libraries(seflex::nettle INTERFACE ${NETTLE_LIBRARY})
+
 # VTK 9 (libvtk9-dev): only what the XML writers need, linked by the VTK plugin alone (io/vtk_plugin/,
 # libseflex_vtk.so, loaded by io at the first .vtu written) and by the tests that read VTK files back
 find_package(VTK 9 REQUIRED COMPONENTS CommonCore CommonDataModel IOXML)

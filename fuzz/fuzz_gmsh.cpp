@@ -1,15 +1,13 @@
-// Fuzzes the gmsh mesh reader (io/gmsh.hpp): a .msh file (format 2 or 4, text or binary) read by
-// libgmsh, then seflex's part - physical groups, element types, node numbering, the companion
-// property file's `$seflex group` directives (io/gmsh_directives.cpp) and its bulk data.
+// Fuzzes the gmsh mesh reader (io/gmsh.hpp): a .msh file (format 2.2, 4.0 or 4.1, text or binary)
+// read by seflex's own MSH reader (io/src/gmsh_msh_reader.cpp), then seflex's part - physical groups,
+// element types, node numbering, the companion property file's `$seflex group` directives
+// (io/gmsh_directives.cpp) and its bulk data. libgmsh is not involved: it only reads .geo scripts.
 // Input: the .msh bytes, optionally followed by a line "$seflex-fuzz-props" and the companion file's
 // text (the default is a valid one naming groups "plate" (PSHELL) and "edges" (PBAR)). Both are
-// written to the harness's private scratch folder; only .msh is read (never .geo, whose language can
-// run programs: gmsh would parse any file not starting with $MeshFormat as a script, so the reader
-// refuses those first - io/src/gmsh_msh_check.cpp). INCLUDE in the companion part is rejected when a
+// written to the harness's private scratch folder. INCLUDE in the companion part is rejected when a
 // '/' or '\' appears in it.
 // Accepted outcomes: the model reads, or InputError. Seeds: tests/data/gmsh/*.msh and meshes made by
-// bench/fuzz.sh; dictionary fuzz/dict/gmsh.dict. Findings inside libgmsh itself (not instrumented)
-// show as crashes or leaks with gmsh frames: see docs/reliability.md.
+// bench/fuzz.sh; dictionary fuzz/dict/gmsh.dict.
 #include <cstddef>
 #include <cstdint>
 #include <string>

@@ -1,4 +1,4 @@
-// Fuzzes the scene reader and model builder (io/scene.hpp): YAML syntax (yaml-cpp), keys, values,
+// Fuzzes the scene reader and model builder (scene/scene.hpp): YAML syntax (yaml-cpp), keys, values,
 // references between bodies, hinges, springs, dampers, cables, locks, drives, loads, integrator and
 // output settings (parse_scene), then build_scene: loading the superelement files, placing bodies,
 // merging interface nodes, building the mbd::Model. The scene is never run.
@@ -16,7 +16,7 @@
 
 #include "fuzz_support.hpp"
 #include "seflex/io/nastran.hpp"
-#include "seflex/io/scene.hpp"
+#include "seflex/scene/scene.hpp"
 #include "seflex/io/superelement_file.hpp"
 #include "seflex/reduction/craig_bampton_superelement.hpp"
 
@@ -57,10 +57,10 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   seflex::fuzz::run([&] {
-    const seflex::io::SceneDescription d = seflex::io::parse_scene(text, seflex::fuzz::scratch_dir() / "scene.yaml");
+    const seflex::scene::SceneDescription d = seflex::scene::parse_scene(text, seflex::fuzz::scratch_dir() / "scene.yaml");
     for (const auto& b : d.bodies)
       if (!in_scratch(b.superelement)) return;
-    seflex::io::build_scene(d);
+    seflex::scene::build_scene(d);
   });
   return 0;
 }

@@ -21,7 +21,7 @@ packages=(
   g++ cmake make ninja-build pkg-config git ccache
   clang clang-14 libclang-rt-14-dev llvm-14
   libeigen3-dev libspectra-dev libarpack2-dev libmetis-dev libsuitesparse-dev libopenblas-dev
-  libgmsh-dev gmsh libvtk9-dev libyaml-cpp-dev libgtest-dev
+  libgmsh-dev gmsh libvtk9-dev libyaml-cpp-dev libgtest-dev nettle-dev
   python3 python3-numpy python3-scipy python3-matplotlib
   paraview xvfb xauth
   petsc-dev slepc-dev mpi-default-dev mpi-default-bin

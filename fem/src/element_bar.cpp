@@ -62,7 +62,7 @@ BarStation station_at(const BarElement& e, double x) {
 
 /// Calls f(s, ds, station) at the Gauss points along the bar: each interval between stations in
 /// four parts of 8 points (the flexibility's integrand, 1/A and 1/I of linear A and I, is rational:
-/// relative error below 1e-14 for an area tapering 4 to 1, tests/cards/tapered_beam_test.cpp).
+/// relative error below 1e-14 for an area tapering 4 to 1, tests/solutions/tapered_beam_test.cpp).
 template <class F>
 void along_taper(const BarElement& e, double L, F f) {
   for (std::size_t k = 1; k < e.taper.size(); ++k)
@@ -415,7 +415,7 @@ BarElement make_bar_element(const Model& model, const Bar& bar) {
     }
     // PBEAML: the dimensions vary linearly between stations (QRG), the section properties do not:
     // 32 sub-intervals, each section from the interpolated dimensions (linear properties between
-    // them: 1.4e-4 of a tip deflection for a tube whose radius tapers 3 to 2, tests/cards/tapered_beam_test.cpp)
+    // them: 1.4e-4 of a tip deflection for a tube whose radius tapers 3 to 2, tests/solutions/tapered_beam_test.cpp)
     const BarProperty::Station& a = p.stations[k - 1];
     constexpr int kParts = 32;
     for (int j = 1; j <= kParts; ++j) {

@@ -491,7 +491,7 @@ class Finalizer {
   }
 
   /// Set cards (SPC, MPC, loads) are checked where a solution selects them (fem::spc_set_dofs,
-  /// fem::load_vector, the MPC elimination; reduction::check_card_usage warns about the unselected
+  /// fem::load_vector, the MPC elimination; solutions::check_card_usage warns about the unselected
   /// ones, as Nastran does): here only what makes the deck itself ambiguous - duplicate and clashing
   /// set ids - and the dof sets that are not selected by case control (ASET, OMIT, BSET, SUPORT).
   void check_constraints_and_loads() {
@@ -521,7 +521,7 @@ class Finalizer {
   }
 
   /// EIGR/EIGRL ids must be unique; what a method references (NORM = POINT grid) and what the case
-  /// control selects are checked when a solution uses them (reduction::check_card_usage).
+  /// control selects are checked when a solution uses them (solutions::check_card_usage).
   void check_solution_control() {
     std::unordered_map<int, CardRef> methods;
     for (const auto& e : m_.eigen_methods) {

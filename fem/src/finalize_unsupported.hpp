@@ -6,7 +6,7 @@
 namespace seflex::fem::detail {
 
 /// Leave out, and list in model.unsupported under a name ending in "(left out)", which
-/// reduction::check_card_usage refuses in every solution (role Structure):
+/// solutions::check_card_usage refuses in every solution (role Structure):
 ///   - a PBAR/PBARL/PBEAM/PBEAML/PROD/PSOLID (or CONROD) whose MID is not a MAT1 but a MAT2, a MAT8 or
 ///     a material card seflex lists as unsupported (MAT4, MAT10, MATHP ...) with no MAT1 of that id;
 ///   - a PSHELL or PCOMP/PCOMPG with a MID of an unsupported material card (and no MAT1/MAT2/MAT8 of that id);

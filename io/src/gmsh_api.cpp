@@ -30,6 +30,7 @@ struct Functions {
   decltype(&::gmshLoggerStop) logger_stop = nullptr;
   decltype(&::gmshLoggerGet) logger_get = nullptr;
   decltype(&::gmshOpen) open = nullptr;
+  decltype(&::gmshWrite) write = nullptr;
   decltype(&::gmshModelGetDimension) model_get_dimension = nullptr;
   decltype(&::gmshModelMeshGenerate) mesh_generate = nullptr;
   decltype(&::gmshModelMeshGetElementTypes) mesh_get_element_types = nullptr;
@@ -72,6 +73,7 @@ void load_once() {
   bind(lib, f.logger_stop, "gmshLoggerStop");
   bind(lib, f.logger_get, "gmshLoggerGet");
   bind(lib, f.open, "gmshOpen");
+  bind(lib, f.write, "gmshWrite");
   bind(lib, f.model_get_dimension, "gmshModelGetDimension");
   bind(lib, f.mesh_generate, "gmshModelMeshGenerate");
   bind(lib, f.mesh_get_element_types, "gmshModelMeshGetElementTypes");
@@ -186,6 +188,11 @@ int logger_get(std::vector<std::string>& log) {
 int open(const std::string& file) {
   int ierr = 0;
   g_fn.open(file.c_str(), &ierr);
+  return ierr;
+}
+int write(const std::string& file) {
+  int ierr = 0;
+  g_fn.write(file.c_str(), &ierr);
   return ierr;
 }
 int model_get_dimension(int& dim) {

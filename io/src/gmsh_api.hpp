@@ -28,6 +28,7 @@ int logger_start();
 int logger_stop();
 int logger_get(std::vector<std::string>& log);
 int open(const std::string& file);
+int write(const std::string& file);
 int model_get_dimension(int& dim);
 int mesh_generate(int dim);
 int mesh_get_element_types(std::vector<int>& types);

@@ -472,6 +472,7 @@ fem::Model read_gmsh(const std::filesystem::path& mesh_path, const ModelReadOpti
   const gmsh::Directives directives = gmsh::parse_directives(nastran::load_text(props, ""), props.string());
   NastranReadOptions nastran_options;
   nastran_options.finalize = false;
+  nastran_options.symbols = options.symbols;
   fem::Model model = read_nastran(props, nastran_options);
   const gmsh::MeshData mesh = gmsh::load_gmsh_mesh(mesh_path, options.parameters);
   const auto mesh_file = static_cast<std::uint32_t>(model.files.size());

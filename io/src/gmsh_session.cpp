@@ -1,11 +1,12 @@
-// The gmsh library behind one function: the only file of seflex that calls gmsh (through its C API,
-// loaded at the first read: gmsh_api.hpp). gmsh is a process-wide singleton (one current model, global options): a Session initialises it
+// The gmsh library (gmsh_mesh.hpp: library::read, library::write_msh) and load_gmsh_mesh, which
+// gives it .geo files and every other file to seflex's own reader (read_msh): the only file of seflex
+// that calls gmsh (through its C API, loaded at the first use: gmsh_api.hpp). gmsh is a process-wide singleton (one current model, global options): a Session initialises it
 // quietly (General.Terminal = 0, messages to the logger), is held by one read at a time, and always
 // finalises it, also when the read throws.
 // General.AbortOnError = 0: gmsh then reports errors only to its logger, where they are read after
 // every call. With gmsh's API default (throw from inside the call) a syntax error thrown out of the
 // .geo parser leaves the parser in a broken state, and the next read in the process fails with a
-// bogus "line 0: syntax error" (gmsh 4.8; tests/input/gmsh_bad_input_test.cpp).
+// bogus "line 0: syntax error" (gmsh 4.8; tests/io/gmsh_bad_input_test.cpp).
 #include <algorithm>
 #include <cstdio>
 #include <mutex>
@@ -13,7 +14,6 @@
 #include <vector>
 
 #include "gmsh_api.hpp"
-#include "gmsh_msh_check.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/io/gmsh_mesh.hpp"
 #include "seflex/io/nastran_lines.hpp"
@@ -151,6 +151,20 @@ void apply_parameters(const Session& session, const std::filesystem::path& path,
   }
 }
 
+/// Open `path` (parameters applied), and mesh a .geo file that holds no mesh up to its dimension.
+void open_model(const Session& session, const std::filesystem::path& path, const std::string& file,
+                const std::vector<GmshParameter>& parameters) {
+  checked(session, file, "gmsh cannot read it", [&] { return api::open(path.string()); });
+  if (!parameters.empty()) apply_parameters(session, path, file, parameters);
+  std::vector<int> types;
+  checked(session, file, "gmsh cannot list its elements", [&] { return api::mesh_get_element_types(types); });
+  if (types.empty() && lower_extension(path) == ".geo") {
+    int dim = 0;
+    checked(session, file, "gmsh cannot read its dimension", [&] { return api::model_get_dimension(dim); });
+    if (dim > 0) checked(session, file, "gmsh cannot mesh it", [&] { return api::mesh_generate(dim); });
+  }
+}
+
 ElementBlock element_block(const Session& session, const std::string& file, int type, int entity,
                            std::vector<std::size_t>&& nodes) {
   ElementBlock b;
@@ -164,41 +178,26 @@ ElementBlock element_block(const Session& session, const std::string& file, int 
 
 }  // namespace
 
-const char* dimension_name(int dim) {
-  switch (dim) {
-    case 0: return "point";
-    case 1: return "curve";
-    case 2: return "surface";
-    default: return "volume";
-  }
+MeshData load_gmsh_mesh(const std::filesystem::path& path, const std::vector<GmshParameter>& parameters) {
+  const std::string file = path.string();
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(file + ": no such file; expected a gmsh .msh or .geo file");
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(file + ": not a regular file; expected a gmsh .msh or .geo file");
+  if (lower_extension(path) == ".geo") return library::read(path, parameters);
+  if (!parameters.empty())
+    throw InputError(file + ": parameter '" + parameters.front().name +
+                     "' given for a mesh file; expected parameters only for a .geo file, which gmsh meshes");
+  return read_msh(path);
 }
 
-MeshData load_gmsh_mesh(const std::filesystem::path& path, const std::vector<GmshParameter>& parameters) {
+namespace library {
+
+MeshData read(const std::filesystem::path& path, const std::vector<GmshParameter>& parameters) {
   MeshData mesh;
   mesh.file = path.string();
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(mesh.file + ": no such file; expected a gmsh .msh or .geo file");
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw InputError(mesh.file + ": not a regular file; expected a gmsh .msh or .geo file");
-  const bool geo = lower_extension(path) == ".geo";
-  if (!parameters.empty() && !geo)
-    throw InputError(mesh.file + ": parameter '" + parameters.front().name +
-                     "' given for a mesh file; expected parameters only for a .geo file, which gmsh meshes");
-
-  if (!geo) check_msh_counts(path, mesh.file);  // before gmsh trusts them (gmsh_msh_check.hpp)
-
-  Session session;
   const std::string& file = mesh.file;
-  checked(session, file, "gmsh cannot read it", [&] { return api::open(path.string()); });
-  if (!parameters.empty()) apply_parameters(session, path, file, parameters);
-  std::vector<int> types;
-  checked(session, file, "gmsh cannot list its elements", [&] { return api::mesh_get_element_types(types); });
-  if (types.empty() && geo) {
-    int dim = 0;
-    checked(session, file, "gmsh cannot read its dimension", [&] { return api::model_get_dimension(dim); });
-    if (dim > 0) checked(session, file, "gmsh cannot mesh it", [&] { return api::mesh_generate(dim); });
-  }
-
+  Session session;
+  open_model(session, path, file, parameters);
   checked(session, file, "gmsh cannot list its nodes", [&] { return api::mesh_get_nodes(mesh.node_tags, mesh.coords); });
   {
     std::vector<int> all_types;
@@ -232,5 +231,28 @@ MeshData load_gmsh_mesh(const std::filesystem::path& path, const std::vector<Gms
   }
   return mesh;
 }
+
+void write_msh(const std::filesystem::path& model, const std::vector<GmshParameter>& parameters, const std::filesystem::path& out,
+               double version, bool binary) {
+  const std::string file = model.string();
+  Session session;
+  open_model(session, model, file, parameters);
+  api::option_set_number("Mesh.MshFileVersion", version);
+  api::option_set_number("Mesh.Binary", binary ? 1 : 0);
+  checked(session, file, "gmsh cannot write " + out.string(), [&] { return api::write(out.string()); });
+}
+
+std::vector<LibraryElementType> element_types(int last) {
+  Session session;
+  std::vector<LibraryElementType> types;
+  for (int type = 1; type <= last; ++type) {
+    LibraryElementType t;
+    t.type = type;
+    if (api::mesh_get_element_properties(type, t.name, t.dim, t.order, t.nodes) == 0 && !t.name.empty()) types.push_back(std::move(t));
+  }
+  return types;
+}
+
+}  // namespace library
 
 }  // namespace seflex::io::gmsh

@@ -48,6 +48,7 @@ fem::Model read_model(const std::filesystem::path& path, const ModelReadOptions&
   nastran_options.finalize = false;
   std::string text;  // the deck, read once (a 1M-element deck is 100 MB)
   nastran_options.main_text = &text;
+  nastran_options.symbols = options.symbols;
   fem::Model model = read_nastran(path, nastran_options);
   const gmsh::Directives directives =
       has_directive(text) ? gmsh::parse_directives(text, path.string()) : gmsh::Directives{};

@@ -14,6 +14,7 @@
 #include "seflex/io/nastran_case_control.hpp"
 #include "seflex/io/nastran_lines.hpp"
 
+#include "nastran_include.hpp"
 #include "nastran_replication.hpp"
 
 namespace seflex::io {
@@ -152,17 +153,34 @@ bool stray_mark(std::string_view f) {
   return true;
 }
 
-/// Continuation marker without its first character, upper case, for comparing: Nastran matches
-/// columns 2-8 of field 10 with columns 2-8 of the continuation's field 1 (the first column holds '+'
-/// or '*' on the continuation, any character in field 10: "CORD1" continues as "+ORD1").
-std::string marker_key(std::string_view m) {
-  if (!m.empty()) m.remove_prefix(1);
-  return upper(trim(m));
+/// Do the continuation markers of field 10 of a line and field 1 of the line after it match? MSC's
+/// rule (QRG, "Format of Bulk Data Entries", continuation entries): columns 2-8 of field 10 are
+/// compared with columns 2-8 of the continuation's field 1; column 1 is not compared (it holds '+',
+/// '*' or a blank on the continuation, anything in field 10): ` MRBRG1` (column 73 blank) is
+/// continued by `+MRBRG1` or `*MRBRG1`, `CORD1` by `+ORD1` (a101x.dat). `field10` and `field1` are
+/// the columns as written on a fixed-field line, the field's text on a free-field one (blanks around
+/// commas are not significant: the text starts in the field's first column). Any case; blanks at
+/// either end of columns 2-8 do not count; a marker that is blank in columns 2-8 matches any (field
+/// 10 may be left blank). As seflex compared markers before, text counted from the first character
+/// that is not blank is accepted too (a right-justified `     +C1` continued by `+C1`): only the
+/// line's position makes it a continuation here, the markers are a check.
+bool continuation_markers_match(std::string_view field10, std::string_view field1) {
+  const auto columns_2_8 = [](std::string_view f) { return f.empty() ? std::string() : upper(trim(f.substr(1))); };
+  const std::string a = columns_2_8(field10), b = columns_2_8(field1);
+  return a.empty() || b.empty() || a == b || columns_2_8(trim(field10)) == columns_2_8(trim(field1));
+}
+
+/// The line, from its first character that is not blank, starts with `word` (INCLUDE and ENDDATA may
+/// be indented; they are never continuations).
+bool starts_with_keyword(std::string_view text, std::string_view word) {
+  const std::size_t first = text.find_first_not_of(' ');
+  return first != std::string_view::npos && starts_with_word(text.substr(first), word);
 }
 
 class DeckReader {
  public:
-  DeckReader(fem::Model& model) : model_(model), state_(model), case_control_(model) {}
+  DeckReader(fem::Model& model, const std::filesystem::path& main_dir, const std::vector<NastranSymbol>& symbols)
+      : model_(model), state_(model), case_control_(model), includes_(main_dir, symbols) {}
 
   void read_main(std::string text, const std::string& name, const std::filesystem::path& dir,
                  const std::filesystem::path& canonical) {
@@ -218,7 +236,7 @@ class DeckReader {
         part_line(src, line);
         continue;
       }
-      if (starts_with_word(line.text, "INCLUDE")) {
+      if (starts_with_keyword(line.text, "INCLUDE")) {
         include(src, cursor, line, stack);
         continue;
       }
@@ -251,7 +269,7 @@ class DeckReader {
   /// INCLUDE 'file' (quotes optional; a quoted name may continue over lines).
   void include(const Source& src, LineCursor& cursor, const Line& line, std::vector<std::filesystem::path>& stack) {
     const std::string where = location(src.name, line.number);
-    std::string_view rest = trim(line.text.substr(7));
+    std::string_view rest = trim(trim(line.text).substr(7));
     std::string name;
     if (!rest.empty() && (rest[0] == '\'' || rest[0] == '"')) {
       const char quote = rest[0];
@@ -281,8 +299,9 @@ class DeckReader {
     if (stack.size() >= kMaxIncludeDepth)
       throw InputError(where + ": INCLUDE " + quote_field(name) + ": includes nested more than " +
                        std::to_string(kMaxIncludeDepth) + " deep; expected fewer levels (a cycle?)");
-    std::filesystem::path path(name);
-    if (path.is_relative()) path = src.dir / path;
+    const IncludeTarget target = includes_.resolve(name, src.dir, where + ": INCLUDE " + quote_field(name));
+    const std::filesystem::path& path = target.path;
+    if (!target.warning.empty()) model_.read_warnings.push_back(target.warning);
     std::error_code ec;
     std::filesystem::path canonical = std::filesystem::weakly_canonical(path, ec);
     if (ec) canonical = path.lexically_normal();
@@ -293,9 +312,6 @@ class DeckReader {
         throw InputError(where + ": INCLUDE " + quote_field(name) + " is an include cycle (" + chain +
                          canonical.filename().string() + "); expected each file to be included at most once per chain");
       }
-    if (!std::filesystem::exists(path, ec))
-      throw InputError(where + ": INCLUDE " + quote_field(name) + ": file " + path.string() +
-                       " does not exist; expected a path relative to the including file's folder, or absolute");
     std::string text = load_text(path, where + ": INCLUDE " + quote_field(name));
     Source& inc = add_source(std::move(text), path.lexically_normal().string(), path.parent_path());
     stack.push_back(canonical);
@@ -326,16 +342,20 @@ class DeckReader {
            !trim(line.text.substr(0, line.text.find(','))).empty();
   }
 
-  /// Field 1 of a line is blank, '+...' or '*...': it continues the card before it.
+  /// The line continues the card before it: its first column is '+' or '*'; on a fixed-field line,
+  /// a blank (columns 2-8 then hold the continuation marker, if any: QRG, "Format of Bulk Data
+  /// Entries"; OptiStruct's bulk data guidelines say the same); on a free-field line, field 1 is
+  /// blank (",..."), or the line is indented_free. INCLUDE and ENDDATA lines never are.
   static bool is_continuation(const Line& line) {
     const char c = line.text[0];
     if (c == '+' || c == '*') return true;
     if (line.free) return trim(line.text.substr(0, line.text.find(','))).empty() || indented_free(line);
-    return trim(line.text.substr(0, std::min<std::size_t>(8, line.text.size()))).empty();
+    return c == ' ' && !starts_with_keyword(line.text, "INCLUDE") && !starts_with_keyword(line.text, "ENDDATA");
   }
 
   /// Split one physical line of a card: data fields into fields_/nfields, field 1 and the
-  /// continuation marker (field 10) returned.
+  /// continuation marker (field 10) returned: on a fixed-field line, the marker's eight columns as
+  /// written (continuation_markers_match compares columns), elsewhere the field's text.
   void split_line(const Source& src, const Line& line, bool first, std::string_view& field1, std::string_view& marker,
                   std::size_t& n) {
     if (line.free) {
@@ -374,6 +394,7 @@ class DeckReader {
       n = large ? 4 : 8;
       overflow_.clear();  // a long free-field line before must not lend its fields to this card
       split_fixed(line.text, n, field1, fields_.data(), marker);
+      marker = line.text.size() > 72 ? line.text.substr(72, 8) : std::string_view();
     }
   }
 
@@ -411,6 +432,10 @@ class DeckReader {
     }
     if (is_begin_super(line.text)) {
       part_line(src, line);
+      return;
+    }
+    if (starts_with_keyword(line.text, "ENDDATA")) {  // indented too (columns 1-8 would cut it)
+      done_ = true;
       return;
     }
     if (is_continuation(line))
@@ -462,7 +487,7 @@ class DeckReader {
     Line next;
     while (cursor.next(next)) {
       if (next.blank()) continue;
-      if (starts_with_word(next.text, "INCLUDE") || !is_continuation(next)) {
+      if (!is_continuation(next)) {
         cursor.push_back(next);
         break;
       }
@@ -472,11 +497,12 @@ class DeckReader {
                          "); expected a blank field 1: start the line with a comma");
       std::string_view cont1, cont_marker;
       split_line(src, next, false, cont1, cont_marker, n);
-      const std::string a = marker_key(marker), b = marker_key(cont1);
-      if (!a.empty() && !b.empty() && a != b)
+      const std::string_view columns1 = next.free ? cont1 : next.text.substr(0, std::min<std::size_t>(8, next.text.size()));
+      if (!continuation_markers_match(marker, columns1))
         throw InputError(location(src.name, next.number) + ": continuation " + quote_field(cont1) + " does not match " +
-                         quote_field(marker) + " in field 10 of the line before (" + card.label() +
-                         "); expected matching continuation markers, or blank ones");
+                         quote_field(trim(marker)) + " in field 10 of the line before (" + card.label() +
+                         "); expected matching continuation markers (the same text in columns 2-8 of both; the first "
+                         "column is not compared), or a blank one");
       append_line(card, n, next.number);
       marker = cont_marker;
     }
@@ -561,6 +587,7 @@ class DeckReader {
   fem::Model& model_;
   nastran::ReaderState state_;
   CaseControlReader case_control_;
+  IncludeResolver includes_;
   std::vector<std::unique_ptr<Source>> sources_;
   Section section_ = Section::Bulk;
   bool done_ = false;
@@ -598,7 +625,7 @@ fem::Model read_nastran(const std::filesystem::path& path, const NastranReadOpti
   std::filesystem::path canonical = std::filesystem::weakly_canonical(path, ec);
   if (ec) canonical = path.lexically_normal();
   fem::Model model;
-  nastran::DeckReader reader(model);
+  nastran::DeckReader reader(model, path.parent_path(), options.symbols);
   reader.read_main(std::move(text), path.string(), path.parent_path(), canonical);
   if (options.main_text) *options.main_text = reader.take_main_text();
   if (options.finalize) fem::finalize(model);
@@ -610,7 +637,7 @@ fem::Model read_nastran_text(std::string_view text, const std::string& name, con
   std::string copy(text);
   if (copy.find('\t') != std::string::npos) nastran::expand_tabs(copy);
   fem::Model model;
-  nastran::DeckReader reader(model);
+  nastran::DeckReader reader(model, dir, options.symbols);
   reader.read_main(std::move(copy), name, dir, dir / name);
   if (options.main_text) *options.main_text = reader.take_main_text();
   if (options.finalize) fem::finalize(model);

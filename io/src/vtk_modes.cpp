@@ -11,7 +11,7 @@
 
 #include "seflex/common/error.hpp"
 #include "seflex/io/results_csv.hpp"
-#include "seflex/reduction/grid_results.hpp"
+#include "seflex/solutions/grid_results.hpp"
 #include "vtk_writer.hpp"
 
 namespace seflex::io {
@@ -54,7 +54,7 @@ class MeshCells {
 };
 
 /// Three columns of `table` from first_column on, point after point.
-std::vector<double> vector_values(const reduction::GridTable& table, int first_column) {
+std::vector<double> vector_values(const solutions::GridTable& table, int first_column) {
   std::vector<double> out;
   out.reserve(static_cast<std::size_t>(3 * table.rows()));
   for (Eigen::Index i = 0; i < table.rows(); ++i)
@@ -65,7 +65,7 @@ std::vector<double> vector_values(const reduction::GridTable& table, int first_c
 }  // namespace
 
 void write_mode_shapes_vtu(const std::filesystem::path& path, const fem::Model& model,
-                           const reduction::NormalModes& modes, bool overwrite) {
+                           const solutions::NormalModes& modes, bool overwrite) {
   check_writable(path, overwrite);
   MeshCells cells(model);
   const auto n_points = static_cast<std::int64_t>(model.grids.size());
@@ -127,7 +127,7 @@ void write_mode_shapes_vtu(const std::filesystem::path& path, const fem::Model& 
   for (Eigen::Index k = 0; k < m; ++k) {
     char tag[32];
     std::snprintf(tag, sizeof tag, "mode_%0*d", std::max(width, 2), static_cast<int>(k + 1));
-    const reduction::GridTable shape = reduction::grid_vectors_basic(model, modes.dofs, modes.shapes_g.col(k));
+    const solutions::GridTable shape = solutions::grid_vectors_basic(model, modes.dofs, modes.shapes_g.col(k));
     for (int part = 0; part < 2; ++part) {
       names.push_back(std::string(tag) + (part == 0 ? "_displacement" : "_rotation"));
       values.push_back(vector_values(shape, 3 * part));

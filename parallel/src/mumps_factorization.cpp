@@ -11,12 +11,12 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-class MumpsFactorization final : public reduction::SparseFactorization {
+class MumpsFactorization final : public linalg::SparseFactorization {
  public:
-  reduction::FactorizationBackend backend() const override { return reduction::FactorizationBackend::Mumps; }
+  linalg::FactorizationBackend backend() const override { return linalg::FactorizationBackend::Mumps; }
   bool positive_definite_only() const override { return true; }
 
-  void factorize(const reduction::SparseMatrixd& A) override {
+  void factorize(const linalg::SparseMatrixd& A) override {
     const auto t0 = Clock::now();
     A_.reset();
     F_.reset();
@@ -73,16 +73,16 @@ class MumpsFactorization final : public reduction::SparseFactorization {
   }
 
   std::optional<Eigen::Index> negative_pivots() const override { return std::nullopt; }
-  const reduction::FactorizationStats& stats() const override { return stats_; }
+  const linalg::FactorizationStats& stats() const override { return stats_; }
 
  private:
   detail::OwnedMat A_, F_;
-  reduction::FactorizationStats stats_;
+  linalg::FactorizationStats stats_;
 };
 
 }  // namespace
 
-std::unique_ptr<reduction::SparseFactorization> make_mumps_factorization() {
+std::unique_ptr<linalg::SparseFactorization> make_mumps_factorization() {
   return std::make_unique<MumpsFactorization>();
 }
 

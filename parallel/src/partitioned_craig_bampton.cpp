@@ -149,7 +149,7 @@ reduction::CraigBamptonBasis craig_bampton_partitioned(const PartitionedSystem& 
     for (Eigen::Index k = 0; k < nl; ++k)
       for (Eigen::Index q = 0; q < local_i; ++q) Y_local(interior_p[static_cast<std::size_t>(q)] - lo, k) = xa[(nb + k) * xlda + q];
     SEFLEX_PETSC(MatDenseRestoreArrayRead(x.get(), &xa));
-    reduction::FactorizationStats& fs = cb.stats.interior_factorization;
+    linalg::FactorizationStats& fs = cb.stats.interior_factorization;
     fs.rows = ni;
     fs.factor_nonzeros = detail::mumps_factor_nonzeros(F.get());
     fs.symbolic_analyses = fs.numeric_factorizations = fs.solve_calls = 1;
@@ -166,16 +166,16 @@ reduction::CraigBamptonBasis craig_bampton_partitioned(const PartitionedSystem& 
   const std::optional<double> lambda_max =
       options.fmax_hz ? std::optional<double>(std::pow(2.0 * 3.14159265358979323846 * *options.fmax_hz, 2)) : std::nullopt;
   if (ni > 0 && !(options.modes && *options.modes == 0)) {
-    reduction::EigenOptions eo;
+    linalg::EigenOptions eo;
     auto solve = [&](std::optional<int> count, std::optional<double> limit) {
       eo.count = count;
       eo.lambda_max = limit;
-      reduction::EigenSolution s = detail::solve_pencil(K_ii.get(), M_ii.get(), eo);
+      linalg::EigenSolution s = detail::solve_pencil(K_ii.get(), M_ii.get(), eo);
       cb.stats.eigen = s.stats;
       ++cb.stats.eigen_solutions;
       return s;
     };
-    reduction::EigenSolution sol;
+    linalg::EigenSolution sol;
     if (options.modes) {
       sol = solve(static_cast<int>(std::min<Eigen::Index>(*options.modes + options.extra_modes, ni)), std::nullopt);
     } else {

@@ -10,12 +10,12 @@
 #include "seflex/fem/constraints.hpp"
 #include "seflex/parallel/partitioned_system.hpp"
 #include "seflex/parallel/slepc_eigensolver.hpp"
-#include "seflex/reduction/card_usage.hpp"
+#include "seflex/solutions/card_usage.hpp"
 
 namespace seflex::parallel {
 namespace {
 
-using reduction::ModeNormalization;
+using solutions::ModeNormalization;
 
 SourceRef deck(const fem::Model& model) { return SourceRef{model.files.empty() ? std::string() : model.files.front(), 0}; }
 
@@ -29,8 +29,8 @@ double lambda_of_hz(double f) {
 }
 
 /// The eigenproblem options and normalisation the case control asks for (as solve_normal_modes).
-reduction::EigenOptions eigen_options(const fem::Model& model, const reduction::ModesOptions& options,
-                                      const reduction::CaseSelection& selection, const fem::EigenMethod*& method,
+linalg::EigenOptions eigen_options(const fem::Model& model, const solutions::ModesOptions& options,
+                                      const solutions::CaseSelection& selection, const fem::EigenMethod*& method,
                                       ModeNormalization& norm) {
   method = nullptr;
   if (selection.method) {
@@ -43,7 +43,7 @@ reduction::EigenOptions eigen_options(const fem::Model& model, const reduction::
     throw InputError(deck(model), "case control selects no METHOD (EIGRL/EIGR) for normal modes; add METHOD = <sid> "
                                   "or give the number of modes with --count");
   }
-  reduction::EigenOptions eo;
+  linalg::EigenOptions eo;
   eo.count = options.count;
   norm = ModeNormalization::Mass;
   if (method == nullptr) return eo;
@@ -105,14 +105,15 @@ Eigen::VectorXd quadratic_forms(Mat A, const PartitionedSystem& s, const Eigen::
 
 }  // namespace
 
-reduction::NormalModes solve_normal_modes_partitioned(fem::Model& model, const reduction::ModesOptions& options,
+solutions::NormalModes solve_normal_modes_partitioned(fem::Model& model, const solutions::ModesOptions& options,
                                                       PartitionStats* stats) {
   using Clock = std::chrono::steady_clock;
-  reduction::NormalModes r;
-  r.selection = reduction::select_case(model, options.subcase);
-  reduction::require_usable(model, reduction::check_card_usage(model, reduction::Solution::NormalModes, {r.selection}));
+  solutions::NormalModes r;
+  r.selection = solutions::select_case(model, options.subcase);
+  solutions::require_usable(model, solutions::check_card_usage(model, solutions::Solution::NormalModes, {r.selection},
+                                                               solutions::kInterfaceNone, options.ignore_unknown_cards));
   const fem::EigenMethod* method = nullptr;
-  reduction::EigenOptions eo = eigen_options(model, options, r.selection, method, r.normalization);
+  linalg::EigenOptions eo = eigen_options(model, options, r.selection, method, r.normalization);
 
   const auto t0 = Clock::now();
   fem::ConstraintOptions co;
@@ -133,10 +134,10 @@ reduction::NormalModes solve_normal_modes_partitioned(fem::Model& model, const r
   r.dofs = s.dofs;
   r.n_free = s.n_free();
 
-  reduction::EigenSolution e;
+  linalg::EigenSolution e;
   try {
     e = slepc_eigenproblem_partitioned(s, eo);
-  } catch (const reduction::FactorizationError&) {
+  } catch (const linalg::FactorizationError&) {
     throw InputError(deck(model), "normal modes: K - sigma M is singular: a motion of some dof has neither stiffness "
                                   "nor mass after the constraints (a massless mechanism or rigid-body motion; MUMPS "
                                   "does not say which dof); constrain it (SPC/SPC1, GRID PS), give it mass (CONM2, "

@@ -19,11 +19,11 @@ void check(PetscErrorCode ierr, const char* what) {
 namespace {
 
 /// Row `i` of the upper triangle of A + beta B: column i of the lower triangles (rows >= i), merged.
-void upper_row(const reduction::SparseMatrixd& A, const reduction::SparseMatrixd* B, double beta, PetscInt i,
+void upper_row(const linalg::SparseMatrixd& A, const linalg::SparseMatrixd* B, double beta, PetscInt i,
                std::vector<PetscInt>& cols, std::vector<PetscScalar>& vals) {
   cols.clear();
   vals.clear();
-  reduction::SparseMatrixd::InnerIterator a(A, i);
+  linalg::SparseMatrixd::InnerIterator a(A, i);
   while (a && a.row() < i) ++a;
   if (B == nullptr) {
     for (; a; ++a) {
@@ -32,7 +32,7 @@ void upper_row(const reduction::SparseMatrixd& A, const reduction::SparseMatrixd
     }
     return;
   }
-  reduction::SparseMatrixd::InnerIterator b(*B, i);
+  linalg::SparseMatrixd::InnerIterator b(*B, i);
   while (b && b.row() < i) ++b;
   while (a || b) {
     if (b && (!a || b.row() < a.row())) {
@@ -54,7 +54,7 @@ void upper_row(const reduction::SparseMatrixd& A, const reduction::SparseMatrixd
 
 }  // namespace
 
-void make_upper_sbaij(const reduction::SparseMatrixd& A, const reduction::SparseMatrixd* B, double beta, Mat* out) {
+void make_upper_sbaij(const linalg::SparseMatrixd& A, const linalg::SparseMatrixd* B, double beta, Mat* out) {
   SEFLEX_DEMAND(A.cols() == A.rows() && A.isCompressed(), "make_upper_sbaij: A must be square and compressed");
   SEFLEX_DEMAND(B == nullptr || (B->rows() == A.rows() && B->cols() == A.cols() && B->isCompressed()),
                 "make_upper_sbaij: B must match A and be compressed");
@@ -134,11 +134,11 @@ void throw_if_factor_failed(Mat F, const char* what) {
   (void)MatMumpsGetInfog(F, 1, &infog1);
   (void)MatMumpsGetInfog(F, 2, &infog2);
   if (e == MAT_FACTOR_NOERROR)
-    throw reduction::FactorizationError(reduction::FactorizationError::Kind::NotPositiveDefinite, -1,
+    throw linalg::FactorizationError(linalg::FactorizationError::Kind::NotPositiveDefinite, -1,
                                         std::string(what) + ": MUMPS Cholesky found " + std::to_string(negative) +
                                             " negative pivot(s): the matrix is not positive definite");
-  throw reduction::FactorizationError(
-      reduction::FactorizationError::Kind::NotPositiveDefinite, -1,
+  throw linalg::FactorizationError(
+      linalg::FactorizationError::Kind::NotPositiveDefinite, -1,
       std::string(what) + ": MUMPS Cholesky failed (INFOG(1) = " + std::to_string(infog1) + ", INFOG(2) = " +
           std::to_string(infog2) + "): the matrix is not positive definite");
 }

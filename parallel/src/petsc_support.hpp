@@ -5,7 +5,7 @@
 #include <Eigen/Core>
 #include <string>
 
-#include "seflex/reduction/sparse_factorization.hpp"
+#include "seflex/linalg/sparse_factorization.hpp"
 
 namespace seflex::parallel::detail {
 
@@ -43,7 +43,7 @@ struct PetscPencil {
 /// A + beta B (both n x n symmetric, lower triangles read; B may be null) as a distributed MATSBAIJ
 /// (upper triangle, block size 1) on PETSC_COMM_WORLD: each rank inserts its own block of rows
 /// (PETSc's default contiguous split). Every rank passes the same A and B.
-void make_upper_sbaij(const reduction::SparseMatrixd& A, const reduction::SparseMatrixd* B, double beta, Mat* out);
+void make_upper_sbaij(const linalg::SparseMatrixd& A, const linalg::SparseMatrixd* B, double beta, Mat* out);
 
 /// Allgathers the rows [ranges[r], ranges[r+1]) that rank r holds in `local` (column-major, rows x k,
 /// leading dimension lda) into `full` (n x k) on every rank.
@@ -52,7 +52,7 @@ void allgather_rows(const PetscInt* ranges, const double* local, PetscInt lda, E
 /// Factor nonzeros MUMPS reports for F (INFOG(29)); 0 if unknown.
 double mumps_factor_nonzeros(Mat F);
 
-/// Throws reduction::FactorizationError if the numeric factorisation F failed (not positive definite).
+/// Throws linalg::FactorizationError if the numeric factorisation F failed (not positive definite).
 void throw_if_factor_failed(Mat F, const char* what);
 
 }  // namespace seflex::parallel::detail

@@ -18,7 +18,7 @@
 namespace seflex::parallel {
 namespace {
 
-using reduction::SparseMatrixd;
+using linalg::SparseMatrixd;
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
@@ -84,13 +84,13 @@ void allreduce_sum(double* data, int count) {
 }
 
 /// One shift-invert Krylov-Schur solution at sigma on the distributed K and M (K's pattern holds M's).
-reduction::EigenSolution solve_shifted(Mat K, Mat Mp, double sigma, double lambda_infinite,
-                                       const reduction::EigenOptions& options) {
+linalg::EigenSolution solve_shifted(Mat K, Mat Mp, double sigma, double lambda_infinite,
+                                       const linalg::EigenOptions& options) {
   PetscInt n = 0;
   SEFLEX_PETSC(MatGetSize(K, &n, nullptr));
-  reduction::EigenSolution solution;
-  reduction::EigenStats& stats = solution.stats;
-  stats.backend_used = reduction::EigenBackend::Slepc;
+  linalg::EigenSolution solution;
+  linalg::EigenStats& stats = solution.stats;
+  stats.backend_used = linalg::EigenBackend::Slepc;
   stats.shift = sigma;
 
   // A = K - sigma M (positive definite) and M, distributed by rows; M x = theta A x, theta = 1/(lambda - sigma).
@@ -271,17 +271,17 @@ reduction::EigenSolution solve_shifted(Mat K, Mat Mp, double sigma, double lambd
 
 namespace detail {
 
-reduction::EigenSolution solve_pencil(Mat K, Mat M, const reduction::EigenOptions& options) {
+linalg::EigenSolution solve_pencil(Mat K, Mat M, const linalg::EigenOptions& options) {
   const std::vector<double> ratios = diagonal_ratios(K, M);
   const double lambda_infinite = kInfiniteRatio * (ratios.empty() ? 0.0 : *std::max_element(ratios.begin(), ratios.end()));
   const double sigma = options.shift ? *options.shift : default_shift(ratios);
-  reduction::EigenSolution s = solve_shifted(K, M, sigma, lambda_infinite, options);
+  linalg::EigenSolution s = solve_shifted(K, M, sigma, lambda_infinite, options);
   if (options.shift) return s;
   // Zero eigenvalues (free-free, mechanisms with mass) with a tiny sigma leave K - sigma M nearly
   // singular: the zero modes come poorly M-orthogonal and the others inaccurate. Solve again at a
   // shift scaled by the lowest nonzero eigenvalue found, as the serial backends calibrate theirs
   // (eigensolver.hpp), until the shift settles.
-  reduction::EigenStats spent;
+  linalg::EigenStats spent;
   for (int pass = 1; pass < kCalibrationPasses; ++pass) {
     const Eigen::VectorXd& lambda = s.eigenvalues;
     if (lambda.size() == 0) break;
@@ -307,16 +307,16 @@ reduction::EigenSolution solve_pencil(Mat K, Mat M, const reduction::EigenOption
 
 }  // namespace detail
 
-reduction::EigenSolution slepc_eigenproblem(const SparseMatrixd& K, const SparseMatrixd& M,
-                                            const reduction::EigenOptions& options) {
+linalg::EigenSolution slepc_eigenproblem(const SparseMatrixd& K, const SparseMatrixd& M,
+                                            const linalg::EigenOptions& options) {
   SEFLEX_DEMAND(K.rows() == K.cols() && M.rows() == M.cols() && K.rows() == M.rows(),
                 "eigenproblem: K and M must be square and of the same size");
   SEFLEX_DEMAND(options.count.has_value() || options.lambda_max.has_value(),
                 "eigenproblem: give a mode count or an upper frequency bound");
   SEFLEX_DEMAND(!options.count || *options.count >= 0, "eigenproblem: negative mode count");
   if (K.rows() == 0 || (options.count && *options.count == 0)) {
-    reduction::EigenSolution empty;
-    empty.stats.backend_used = reduction::EigenBackend::Slepc;
+    linalg::EigenSolution empty;
+    empty.stats.backend_used = linalg::EigenBackend::Slepc;
     empty.eigenvalues.resize(0);
     empty.vectors.resize(K.rows(), 0);
     empty.backward_errors.resize(0);
@@ -334,20 +334,20 @@ reduction::EigenSolution slepc_eigenproblem(const SparseMatrixd& K, const Sparse
   return detail::solve_pencil(Kp.get(), Mp.get(), options);
 }
 
-reduction::EigenSolution slepc_eigenproblem_partitioned(const PartitionedSystem& system, const reduction::EigenOptions& options) {
+linalg::EigenSolution slepc_eigenproblem_partitioned(const PartitionedSystem& system, const linalg::EigenOptions& options) {
   SEFLEX_DEMAND(options.count.has_value() || options.lambda_max.has_value(),
                 "eigenproblem: give a mode count or an upper frequency bound");
   SEFLEX_DEMAND(!options.count || *options.count >= 0, "eigenproblem: negative mode count");
   const Eigen::Index n = system.n_free();
   if (n == 0 || (options.count && *options.count == 0)) {
-    reduction::EigenSolution empty;
-    empty.stats.backend_used = reduction::EigenBackend::Slepc;
+    linalg::EigenSolution empty;
+    empty.stats.backend_used = linalg::EigenBackend::Slepc;
     empty.eigenvalues.resize(0);
     empty.vectors.resize(n, 0);
     empty.backward_errors.resize(0);
     return empty;
   }
-  reduction::EigenSolution s = detail::solve_pencil(system.pencil().K.get(), system.pencil().M.get(), options);
+  linalg::EigenSolution s = detail::solve_pencil(system.pencil().K.get(), system.pencil().M.get(), options);
   Eigen::MatrixXd f(n, s.vectors.cols());  // rows from the partition numbering back to the f-set's
   for (Eigen::Index p = 0; p < n; ++p) f.row(system.p_to_f[static_cast<std::size_t>(p)]) = s.vectors.row(p);
   s.vectors = std::move(f);

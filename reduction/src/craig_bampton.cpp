@@ -7,7 +7,7 @@
 #include <cmath>
 #include <string>
 
-#include "block_lanczos.hpp"
+#include "seflex/linalg/block_lanczos.hpp"
 #include "seflex/common/error.hpp"
 
 namespace seflex::reduction {
@@ -19,20 +19,20 @@ constexpr double kMasslessFraction = 1e-12;  // M's eigenvalues below this fract
 /// Columns `cols` and rows `rows` of the symmetric A (both triangles stored), as a sparse matrix.
 /// row_pos / col_pos map an f index to its position in the block (-1 = not in it); rows must be
 /// numbered increasingly with f so that each column stays sorted. lower_only keeps row >= column.
-SparseMatrixd extract_block(const SparseMatrixd& A, const std::vector<Eigen::Index>& rows,
+linalg::SparseMatrixd extract_block(const linalg::SparseMatrixd& A, const std::vector<Eigen::Index>& rows,
                             const std::vector<Eigen::Index>& row_pos, const std::vector<Eigen::Index>& cols,
                             bool lower_only) {
   const auto nc = static_cast<Eigen::Index>(cols.size()), nr = static_cast<Eigen::Index>(rows.size());
-  SparseMatrixd B(nr, nc);
+  linalg::SparseMatrixd B(nr, nc);
   std::vector<int> count(static_cast<std::size_t>(nc), 0);
   for (Eigen::Index c = 0; c < nc; ++c)
-    for (SparseMatrixd::InnerIterator it(A, cols[static_cast<std::size_t>(c)]); it; ++it) {
+    for (linalg::SparseMatrixd::InnerIterator it(A, cols[static_cast<std::size_t>(c)]); it; ++it) {
       const Eigen::Index r = row_pos[static_cast<std::size_t>(it.row())];
       if (r >= 0 && (!lower_only || r >= c)) ++count[static_cast<std::size_t>(c)];
     }
   B.reserve(count);
   for (Eigen::Index c = 0; c < nc; ++c)
-    for (SparseMatrixd::InnerIterator it(A, cols[static_cast<std::size_t>(c)]); it; ++it) {
+    for (linalg::SparseMatrixd::InnerIterator it(A, cols[static_cast<std::size_t>(c)]); it; ++it) {
       const Eigen::Index r = row_pos[static_cast<std::size_t>(it.row())];
       if (r >= 0 && (!lower_only || r >= c)) B.insert(r, c) = it.value();
     }
@@ -51,7 +51,7 @@ void demand_valid_request(const CraigBamptonOptions& options, const std::vector<
   SEFLEX_DEMAND(!boundary.empty(), "Craig-Bampton: empty boundary set");
 }
 
-CraigBamptonBasis craig_bampton(const SparseMatrixd& K_ff, const SparseMatrixd& M_ff,
+CraigBamptonBasis craig_bampton(const linalg::SparseMatrixd& K_ff, const linalg::SparseMatrixd& M_ff,
                                 const std::vector<Eigen::Index>& boundary, const CraigBamptonOptions& options) {
   const Eigen::Index n = K_ff.rows();
   SEFLEX_DEMAND(K_ff.cols() == n && M_ff.rows() == n && M_ff.cols() == n,
@@ -80,13 +80,13 @@ CraigBamptonBasis craig_bampton(const SparseMatrixd& K_ff, const SparseMatrixd& 
 
   // Boundary rows of K (dense n_b x n_b) and the coupling K_ib (sparse n_i x n_b).
   const Eigen::MatrixXd K_bb = Eigen::MatrixXd(extract_block(K_ff, boundary, bpos, boundary, false));
-  const SparseMatrixd K_ib = extract_block(K_ff, cb.interior, ipos, boundary, false);
+  const linalg::SparseMatrixd K_ib = extract_block(K_ff, cb.interior, ipos, boundary, false);
 
   // Constraint modes: Psi_i = -K_ii^-1 K_ib, one factorisation, one block solve. The factor of
   // K_ii stays for the fixed-interface modes (block Lanczos at shift 0).
   Eigen::MatrixXd Psi_i = -Eigen::MatrixXd(K_ib);
-  SparseMatrixd K_ii, M_ii;
-  auto factor = options.factorization_maker ? options.factorization_maker() : make_factorization(options.factorization);
+  linalg::SparseMatrixd K_ii, M_ii;
+  auto factor = options.factorization_maker ? options.factorization_maker() : linalg::make_factorization(options.factorization);
   if (ni > 0) {
     K_ii = extract_block(K_ff, cb.interior, ipos, cb.interior, true);
     M_ii = extract_block(M_ff, cb.interior, ipos, cb.interior, true);
@@ -116,17 +116,17 @@ CraigBamptonBasis craig_bampton(const SparseMatrixd& K_ff, const SparseMatrixd& 
   const std::optional<double> lambda_max =
       options.fmax_hz ? std::optional<double>(std::pow(2.0 * 3.14159265358979323846 * *options.fmax_hz, 2))
                       : std::nullopt;
-  const Eigen::Index finite = ni > 0 ? detail::mass_rank_bound(M_ii) : 0;
+  const Eigen::Index finite = ni > 0 ? linalg::detail::mass_rank_bound(M_ii) : 0;
   const Eigen::Index want = options.modes ? std::min<Eigen::Index>(*options.modes + options.extra_modes, finite) : 0;
   bool done = ni == 0 || (options.modes && want == 0);
   if (!done && ni >= options.block_lanczos_min_size) {
-    detail::BlockLanczosOptions bo;
+    linalg::detail::BlockLanczosOptions bo;
     if (options.modes)
       bo.count = want;
     else
       bo.lambda_max = lambda_max;
     bo.extra = options.extra_modes;
-    if (auto r = detail::block_lanczos_lowest(*factor, M_ii, bo)) {
+    if (auto r = linalg::detail::block_lanczos_lowest(*factor, M_ii, bo)) {
       cb.stats.block_solves = r->block_solves;
       cb.stats.krylov_basis = r->basis_size;
       X = std::move(r->vectors);
@@ -136,19 +136,19 @@ CraigBamptonBasis craig_bampton(const SparseMatrixd& K_ff, const SparseMatrixd& 
   }
   factor.reset();
   if (!done) {  // small interiors (dense), or more modes than a block Krylov basis holds: restarted Lanczos
-    EigenOptions eo;
+    linalg::EigenOptions eo;
     eo.backend = options.backend;
     eo.factorization = options.factorization;
     eo.external = options.external;
     auto solve = [&](std::optional<int> count, std::optional<double> limit) {
       eo.count = count;
       eo.lambda_max = limit;
-      EigenSolution s = solve_eigenproblem(K_ii, M_ii, eo);
+      linalg::EigenSolution s = linalg::solve_eigenproblem(K_ii, M_ii, eo);
       cb.stats.eigen = s.stats;
       ++cb.stats.eigen_solutions;
       return s;
     };
-    EigenSolution sol;
+    linalg::EigenSolution sol;
     if (options.modes) {
       sol = solve(static_cast<int>(want), std::nullopt);
     } else {

@@ -18,8 +18,8 @@
 #include "seflex/fem/constraints.hpp"
 #include "seflex/fem/element_solid.hpp"
 #include "seflex/fem/finalize.hpp"
-#include "seflex/reduction/card_usage.hpp"
-#include "seflex/reduction/case_selection.hpp"
+#include "seflex/solutions/card_usage.hpp"
+#include "seflex/solutions/case_selection.hpp"
 #include "seflex/reduction/stiffening.hpp"
 
 namespace seflex::reduction {
@@ -34,7 +34,7 @@ std::string deck_name(const fem::Model& model) { return model.files.empty() ? st
 /// The constraints of the case control (first SUBCASE, else the global selections: SPC and MPC
 /// sets), as the solutions use them.
 fem::ConstraintOptions case_constraints(const fem::Model& model) {
-  const CaseSelection sel = select_case(model);
+  const solutions::CaseSelection sel = solutions::select_case(model);
   fem::ConstraintOptions o;
   o.spc_set = sel.spc;
   o.mpc_set = sel.mpc;
@@ -233,13 +233,13 @@ Eigen::VectorXd reduced_eigenvalues(const se::Superelement& body, int count) {
   return small_pencil_eigenvalues(body.K, body.M, count);
 }
 
-Eigen::VectorXd full_model_eigenvalues(const fem::Model& model, int count, EigenBackend backend) {
+Eigen::VectorXd full_model_eigenvalues(const fem::Model& model, int count, linalg::EigenBackend backend) {
   const fem::GlobalMatrices g = fem::assemble(model, fem::assembly_options(model));
   const fem::ConstrainedSystem c = fem::apply_constraints(model, g, case_constraints(model));
-  EigenOptions eo;
+  linalg::EigenOptions eo;
   eo.count = count;
   eo.backend = backend;
-  return solve_eigenproblem(c.K_ff, c.M_ff, eo).eigenvalues;
+  return linalg::solve_eigenproblem(c.K_ff, c.M_ff, eo).eigenvalues;
 }
 
 se::Superelement reduce_to_superelement(const fem::Model& model, const SuperelementOptions& options,
@@ -252,7 +252,9 @@ se::Superelement reduce_to_superelement(const fem::Model& model, const Superelem
     throw InputError(deck + ": no interface node given; expected at least one GRID id");
 
   // 1. Matrices and constraints.
-  require_usable(model, check_card_usage(model, Solution::CraigBampton, {select_case(model)}, options.interface_cards));
+  solutions::require_usable(model, solutions::check_card_usage(model, solutions::Solution::CraigBampton,
+                                                               {solutions::select_case(model)}, options.interface_cards,
+                                                               options.ignore_unknown_cards));
   const fem::DofMap dofs = fem::make_dof_map(model);
   fem::ConstraintOptions co = case_constraints(model);
   for (const int id : options.interface_ids)  // boundary dofs: held in the interior problem, never AUTOSPC'd
@@ -263,7 +265,7 @@ se::Superelement reduce_to_superelement(const fem::Model& model, const Superelem
   inf.spc_set = co.spc_set.value_or(0);
   inf.mpc_set = co.mpc_set.value_or(0);
   fem::ConstrainedSystem c = fem::apply_constraints(model, g, co);
-  g.K = SparseMatrixd();  // not needed any more (memory of large models)
+  g.K = linalg::SparseMatrixd();  // not needed any more (memory of large models)
   for (const fem::DofStatus s : c.status) {
     inf.autospc_dofs += s == fem::DofStatus::AutoSpc;
     inf.dependent_dofs += s == fem::DofStatus::Dependent;
@@ -340,7 +342,7 @@ se::Superelement reduce_to_superelement(const fem::Model& model, const Superelem
   CraigBamptonBasis cb;
   try {
     cb = partitioned ? options.basis(boundary, cbo) : craig_bampton(c.K_ff, c.M_ff, boundary, cbo);
-  } catch (const FactorizationError& e) {
+  } catch (const linalg::FactorizationError& e) {
     std::vector<char> is_b(static_cast<std::size_t>(c.n_free()), 0);
     for (Eigen::Index f : boundary) is_b[static_cast<std::size_t>(f)] = 1;
     Eigen::Index k = -1, f = 0;
@@ -357,7 +359,7 @@ se::Superelement reduce_to_superelement(const fem::Model& model, const Superelem
                      "expected every part to be held by the interface (check connectivity or add an interface node)");
   }
   inf.stats = cb.stats;
-  c.K_ff = SparseMatrixd();
+  c.K_ff = linalg::SparseMatrixd();
 
   // Constraint-mode columns in basic components: q_cd = blockdiag(A^T) q_basic.
   const auto nb = static_cast<Eigen::Index>(boundary.size());
@@ -393,7 +395,7 @@ se::Superelement reduce_to_superelement(const fem::Model& model, const Superelem
   s.p_BoCm_B = rm.cg - X_f;
   s.I_Cm_B = rm.I_cg;
   s.truncation = truncation_report(cb, c.M_ff, interface_rigid_modes(s));
-  c.M_ff = SparseMatrixd();
+  c.M_ff = linalg::SparseMatrixd();
 
   if (stiffening) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -452,9 +454,9 @@ se::Superelement reduce_to_superelement(const fem::Model& model, const Superelem
         for (int k = 0; k < 6; ++k)
           if (B(r, k) != 0) t.emplace_back(6 * i + r, 6 * i + k, B(r, k));
     }
-    SparseMatrixd A(6 * ng, g.dofs.size());
+    linalg::SparseMatrixd A(6 * ng, g.dofs.size());
     A.setFromTriplets(t.begin(), t.end());
-    s.M_fe = A * g.M * SparseMatrixd(A.transpose());
+    s.M_fe = A * g.M * linalg::SparseMatrixd(A.transpose());
     s.M_fe.prune(0.0, 0.0);
   }
   // 6. Inertia invariants (the full inertia without the mesh), then the mesh part if it is wanted.

@@ -12,8 +12,8 @@ namespace {
 
 /// z with (M_ii z)_i = B_i for B_i in the range of M_ii: a Cholesky solve on the interior dofs
 /// whose mass diagonal is positive (a psd M has zero rows and columns where its diagonal is zero).
-Eigen::MatrixXd solve_interior_mass(const SparseMatrixd& M_ff, const std::vector<Eigen::Index>& interior,
-                                    const Eigen::MatrixXd& B_i, FactorizationBackend backend) {
+Eigen::MatrixXd solve_interior_mass(const linalg::SparseMatrixd& M_ff, const std::vector<Eigen::Index>& interior,
+                                    const Eigen::MatrixXd& B_i, linalg::FactorizationBackend backend) {
   const auto n = M_ff.rows();
   std::vector<Eigen::Index> pos(static_cast<std::size_t>(n), -1), keep;
   for (std::size_t r = 0; r < interior.size(); ++r)
@@ -25,16 +25,16 @@ Eigen::MatrixXd solve_interior_mass(const SparseMatrixd& M_ff, const std::vector
   std::vector<Eigen::Triplet<double>> t;
   for (Eigen::Index c = 0; c < nk; ++c) {
     const Eigen::Index f = interior[static_cast<std::size_t>(keep[static_cast<std::size_t>(c)])];
-    for (SparseMatrixd::InnerIterator it(M_ff, f); it; ++it) {
+    for (linalg::SparseMatrixd::InnerIterator it(M_ff, f); it; ++it) {
       const Eigen::Index r = pos[static_cast<std::size_t>(it.row())];
       if (r >= c) t.emplace_back(r, c, it.value());
     }
   }
-  SparseMatrixd A(nk, nk);
+  linalg::SparseMatrixd A(nk, nk);
   A.setFromTriplets(t.begin(), t.end());
   Eigen::MatrixXd rhs(nk, B_i.cols());
   for (Eigen::Index c = 0; c < nk; ++c) rhs.row(c) = B_i.row(keep[static_cast<std::size_t>(c)]);
-  auto factor = make_factorization(backend);
+  auto factor = linalg::make_factorization(backend);
   factor->factorize(A);
   factor->solve_in_place(rhs);
   Eigen::MatrixXd z = Eigen::MatrixXd::Zero(B_i.rows(), B_i.cols());
@@ -44,7 +44,7 @@ Eigen::MatrixXd solve_interior_mass(const SparseMatrixd& M_ff, const std::vector
 
 }  // namespace
 
-se::TruncationReport truncation_report(const CraigBamptonBasis& cb, const SparseMatrixd& M_ff,
+se::TruncationReport truncation_report(const CraigBamptonBasis& cb, const linalg::SparseMatrixd& M_ff,
                                        const Eigen::MatrixXd& R_b) {
   SEFLEX_DEMAND(R_b.rows() == cb.Psi.cols() && R_b.cols() == 6, "truncation report: R_b must be n_b x 6");
   SEFLEX_DEMAND(M_ff.rows() == cb.Psi.rows(), "truncation report: M does not match the basis");
@@ -66,7 +66,7 @@ se::TruncationReport truncation_report(const CraigBamptonBasis& cb, const Sparse
     coupling.row(r) = MR_i.row(r) - MRi_full.row(cb.interior[static_cast<std::size_t>(r)]);
   Eigen::MatrixXd z = R_i;
   if (ni > 0 && coupling.cwiseAbs().maxCoeff() > 1e-14 * MR_i.cwiseAbs().maxCoeff())
-    z = solve_interior_mass(M_ff, cb.interior, MR_i, kDefaultFactorization);
+    z = solve_interior_mass(M_ff, cb.interior, MR_i, linalg::kDefaultFactorization);
 
   const Eigen::MatrixXd L = cb.Phi.transpose() * MR;  // m x 6 participation factors
   for (int d = 0; d < 6; ++d) {

@@ -1,4 +1,4 @@
-// The cautions of reduction::check_card_usage (a bar without torsional stiffness, plates thick for
+// The cautions of solutions::check_card_usage (a bar without torsional stiffness, plates thick for
 // their mesh, RFORCE's unit) reach the user as warnings on stderr from every command, with count and
 // first file:line, and seflex info lists them in their own group; the commands still run.
 #include <gtest/gtest.h>

@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "../run/scene_fixture.hpp"
+#include "scene_fixture.hpp"
 #include "seflex/io/model_reader.hpp"
 #include "seflex/io/sha256.hpp"
 #include "seflex/io/superelement_file.hpp"
@@ -122,7 +122,7 @@ TEST(InfoSuperelementCli, RefusesDamagedFilesAndDeckOptions) {
   ASSERT_EQ(test::run_seflex("reduce " + q(yoke()) + " --interface 1,5 --no-mesh -o " + q(se_path)).exit_code, 0);
   const auto opt = test::run_seflex("info " + q(se_path) + " --grdpnt 2");
   EXPECT_EQ(opt.exit_code, 2);
-  EXPECT_TRUE(has(opt.err, "is a superelement file; --grdpnt, --properties and --set apply to a model")) << opt.err;
+  EXPECT_TRUE(has(opt.err, "is a superelement file; --grdpnt, --properties, --set and --symbol apply to a model")) << opt.err;
   std::string bytes = test::read_file(se_path);
   bytes[bytes.size() / 2] ^= 0x01;
   const auto bad = tmp.write("bad.se", bytes);

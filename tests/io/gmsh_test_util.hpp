@@ -12,7 +12,7 @@
 #include "seflex/fem/constraints.hpp"
 #include "seflex/fem/finalize.hpp"
 #include "seflex/fem/model.hpp"
-#include "seflex/reduction/eigensolver.hpp"
+#include "seflex/linalg/eigensolver.hpp"
 #include "test_support.hpp"
 
 namespace seflex::test {
@@ -23,9 +23,9 @@ inline std::filesystem::path meshes_dir() { return source_dir() / "meshes"; }
 inline Eigen::VectorXd free_frequencies(const fem::Model& m, int count) {
   const fem::GlobalMatrices g = fem::assemble(m, fem::assembly_options(m));
   const fem::ConstrainedSystem c = fem::apply_constraints(m, g, std::nullopt);
-  reduction::EigenOptions o;
+  linalg::EigenOptions o;
   o.count = count;
-  const reduction::EigenSolution s = reduction::solve_eigenproblem(c.K_ff, c.M_ff, o);
+  const linalg::EigenSolution s = linalg::solve_eigenproblem(c.K_ff, c.M_ff, o);
   return s.eigenvalues.cwiseMax(0.0).cwiseSqrt() / (2.0 * M_PI);
 }
 
@@ -34,9 +34,9 @@ inline Eigen::VectorXd free_frequencies(const fem::Model& m, int count) {
 inline std::vector<double> out_of_plane_frequencies(const fem::Model& m, int count, int search) {
   const fem::GlobalMatrices g = fem::assemble(m, fem::assembly_options(m));
   const fem::ConstrainedSystem c = fem::apply_constraints(m, g, std::nullopt);
-  reduction::EigenOptions o;
+  linalg::EigenOptions o;
   o.count = search;
-  const reduction::EigenSolution s = reduction::solve_eigenproblem(c.K_ff, c.M_ff, o);
+  const linalg::EigenSolution s = linalg::solve_eigenproblem(c.K_ff, c.M_ff, o);
   std::vector<double> f;
   for (Eigen::Index k = 0; k < s.eigenvalues.size() && static_cast<int>(f.size()) < count; ++k) {
     const Eigen::VectorXd phi = s.vectors.col(k);

@@ -2,6 +2,8 @@
 // free field, continuations, comments, tabs, CRLF, sections, INCLUDE, ENDDATA, unsupported cards.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cstdlib>
 #include <fstream>
 
 #include "nastran_test_util.hpp"
@@ -287,5 +289,206 @@ TEST(NastranFormat, MixedFormatsGiveTheSameModelAsSmallField) {
     EXPECT_EQ(m->spcs.size(), 2u);
     ASSERT_EQ(m->point_loads.size(), 1u);
     EXPECT_EQ(m->point_loads[0].n, Eigen::Vector3d(0, 0, -1));
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Continuation markers: MSC's rule (QRG, "Format of Bulk Data Entries", continuation entries)
+// compares columns 2-8 of field 10 with columns 2-8 of the continuation's field 1, whose column 1
+// holds '+' (small field), '*' (large field) or a blank. Every combination below gives the CONM2 of
+// ExplicitAndImplicitContinuations (I11, I22, I33 = 1, 2, 3).
+
+namespace {
+
+/// I11, I22, I33 of the one CONM2 of the deck.
+std::array<double, 3> conm2_inertia(const std::string& card_lines) {
+  const fem::Model m = read_deck(base_deck() + card_lines);
+  EXPECT_EQ(m.conm2.size(), 1u) << card_lines;
+  if (m.conm2.size() != 1) return {};
+  return {m.conm2[0].I11, m.conm2[0].I22, m.conm2[0].I33};
+}
+
+const std::array<double, 3> k123 = {1.0, 2.0, 3.0};
+
+}  // namespace
+
+TEST(NastranFormat, ContinuationMarkersCompareColumnsTwoToEight) {
+  // field 10 of the first line: as written (blank column 73 first), "+MRBRG1", or another first character
+  const auto first = [&](const std::string& field10) { return fixed_line({"CONM2", "101", "1", "", "2.0"}, 8, field10); };
+  const std::string data = "1.              2.                      3.";  // I11 I21 I22 I31 I32 I33, 8 columns each
+  struct Case {
+    const char* field10;
+    const char* field1;  // the continuation's columns 1-8
+  };
+  const Case valid[] = {
+      {" MRBRG1", "+MRBRG1"},  // the deck: column 73 blank, continued with '+'
+      {" MRBRG1", " MRBRG1"},  // a blank first column on the continuation
+      {"+MRBRG1", " MRBRG1"},
+      {"XMRBRG1", "+MRBRG1"},  // any first character in field 10
+      {"+MRBRG1", "+mrbrg1"},  // any case
+      // forms seflex read before, unchanged
+      {"+C1", "+C1"},
+      {"CORD1", "+ORD1"},      // a101x.dat
+      {"     +C1", "+C1"},     // right-justified in field 10
+      {"", "+ANY"},            // a blank field 10
+      {"+A", "+"},             // a bare '+'
+      {"+A", ""},              // a blank field 1
+  };
+  for (const Case& c : valid) {
+    std::string cont = c.field1;
+    cont.resize(8, ' ');
+    EXPECT_EQ(conm2_inertia(first(c.field10) + cont + data + "\n"), k123) << c.field10 << " / " << c.field1;
+  }
+  // a large-field continuation ('*', four 16-column fields a line) after field 10 " MRBRG1"
+  EXPECT_EQ(conm2_inertia(first(" MRBRG1") + fixed_line({"*MRBRG1", "1.", "", "2.", ""}, 16) + fixed_line({"*", "", "3."}, 16)),
+            k123);
+  // a large-field first line: field 10 in columns 73-80 as well
+  EXPECT_EQ(conm2_inertia(fixed_line({"CONM2*", "101", "1", "", "2.0"}, 16, " MRBRG1") + fixed_line({"*MRBRG1"}, 16) +
+                          "+       " + data + "\n"),
+            k123);
+  // free field: a field's text starts in its first column (blanks around commas do not count)
+  EXPECT_EQ(conm2_inertia("CONM2,101,1,,2.0,,,,,+F1\n+F1,1.,,2.,,,3.\n"), k123);
+  EXPECT_EQ(conm2_inertia("CONM2,101,1,,2.0,,,,, +F1\n*F1,1.,,2.,\n*,,3.\n"), k123);
+  EXPECT_EQ(conm2_inertia("CONM2,101,1,,2.0,,,,,XF1\n+F1,1.,,2.,,,3.\n"), k123);
+  EXPECT_EQ(conm2_inertia("CONM2,101,1,,2.0\n,1.,,2.,,,3.\n"), k123);
+}
+
+TEST(NastranFormat, ContinuationMarkersThatDifferInColumnsTwoToEightAreAnError) {
+  const auto first = [](const std::string& field10) { return fixed_line({"CONM2", "101", "1", "", "2.0"}, 8, field10); };
+  EXPECT_EQ(read_error(base_deck() + first(" MRBRG1") + fixed_line({"+MRBRG2", "1.", "", "2.", "", "", "3."})),
+            "deck.bdf:8: continuation '+MRBRG2' does not match 'MRBRG1' in field 10 of the line before (CONM2 101); "
+            "expected matching continuation markers (the same text in columns 2-8 of both; the first column is not "
+            "compared), or a blank one");
+  EXPECT_TRUE(mentions(read_error(base_deck() + first("+A") + " B      1.\n"), {"deck.bdf:8: continuation 'B' does not match '+A'"}));
+  EXPECT_TRUE(mentions(read_error(base_deck() + first("+A") + fixed_line({"*B", "1."}, 16)),
+                       {"deck.bdf:8: continuation '*B' does not match '+A'"}));
+  // free field: "MRBRG1" has "RBRG1" in columns 2-8, "+MRBRG1" has "MRBRG1"
+  EXPECT_TRUE(mentions(read_error(base_deck() + "CONM2,101,1,,2.0,,,,,MRBRG1\n+MRBRG1,1.,,2.,,,3.\n"),
+                       {"deck.bdf:8: continuation '+MRBRG1' does not match 'MRBRG1'"}));
+}
+
+TEST(NastranFormat, BlankFirstColumnContinuesTheCardBefore) {
+  // " C1" in columns 1-8 is a continuation (column 1 blank), not a card named C1
+  const fem::Model m = read_deck(base_deck() + fixed_line({"CONM2", "101", "1", "", "2.0"}, 8, "+C1") + " C1     " +
+                                 "1.              2.                      3.\n");
+  ASSERT_EQ(m.conm2.size(), 1u);
+  EXPECT_EQ(m.conm2[0].I33, 3.0);
+  EXPECT_TRUE(m.unsupported.empty());
+  // INCLUDE and ENDDATA may be indented; they are not continuations
+  test::TempDir dir;
+  dir.write("grid.bdf", "GRID,5,,2.,0.,0.\n");
+  const fem::Model n = io::read_nastran(dir.write("main.bdf", base_deck() + "   INCLUDE 'grid.bdf'\n  ENDDATA\nGRID,6,,3.,0.,0.\n"));
+  EXPECT_EQ(n.grids.size(), 5u);  // 1-4 and 5; GRID 6 is after ENDDATA
+}
+
+// ---------------------------------------------------------------------------------------------
+// INCLUDE as MSC Nastran finds the file (io/src/nastran_include.hpp)
+
+TEST(NastranFormat, NestedIncludePathsAreRelativeToTheMainDeckFirst) {
+  // Satellite_V02's layout: JOBS/QS/job.dat includes ../../INCLUDE/part.dat, which includes
+  // ../../BULK/grids.blk meaning JOBS/QS/../../BULK (the main deck's folder), not INCLUDE/../../BULK
+  test::TempDir dir;
+  dir.write("BULK/grids.blk", "GRID,1,,0.,0.,0.\nGRID,2,,1.,0.,0.\n");
+  dir.write("INCLUDE/part.dat", "INCLUDE '../../BULK/grids.blk'\nINCLUDE 'local.blk'\n");
+  dir.write("INCLUDE/local.blk", "GRID,3,,2.,0.,0.\n");  // found beside the including file only
+  const auto main = dir.write("JOBS/QS/job.dat", "INCLUDE '../../INCLUDE/part.dat'\nCROD,1,1,1,2\nPROD,1,1,1.\nMAT1,1,1.,,0.3\n");
+  const fem::Model m = io::read_nastran(main);
+  EXPECT_EQ(m.grids.size(), 3u);
+  EXPECT_TRUE(m.read_warnings.empty());
+  ASSERT_EQ(m.files.size(), 4u);
+  EXPECT_EQ(std::filesystem::path(m.files[2]).lexically_normal(), (dir.path() / "BULK/grids.blk").lexically_normal());
+  EXPECT_EQ(std::filesystem::path(m.files[3]).lexically_normal(), (dir.path() / "INCLUDE/local.blk").lexically_normal());
+}
+
+TEST(NastranFormat, IncludeFoundInBothFoldersReadsTheMainDecksAndSaysSo) {
+  test::TempDir dir;
+  dir.write("sub/inner.bdf", "INCLUDE 'grids.bdf'\n");
+  dir.write("grids.bdf", "GRID,1,,0.,0.,0.\n");      // beside the main deck: read
+  dir.write("sub/grids.bdf", "GRID,1,,9.,0.,0.\n");  // beside the including file: differs
+  const auto main = dir.write("main.bdf", "INCLUDE 'sub/inner.bdf'\n");
+  const fem::Model m = io::read_nastran(main);
+  ASSERT_EQ(m.grids.size(), 1u);
+  EXPECT_EQ(m.grids[0].x.x(), 0.0);
+  const std::string d = dir.path().string();
+  ASSERT_EQ(m.read_warnings.size(), 1u);
+  EXPECT_EQ(m.read_warnings[0], d + "/sub/inner.bdf:1: INCLUDE 'grids.bdf': read " + d +
+                                    "/grids.bdf (relative to the main deck's folder, as MSC Nastran reads it); " + d +
+                                    "/sub/grids.bdf (relative to the including file's folder) exists too and differs");
+  // the same content in both places: nothing to say
+  dir.write("sub/grids.bdf", "GRID,1,,0.,0.,0.\n");
+  EXPECT_TRUE(io::read_nastran(main).read_warnings.empty());
+}
+
+TEST(NastranFormat, IncludeNotFoundNamesEveryPlaceTried) {
+  test::TempDir dir;
+  dir.write("sub/inner.bdf", "INCLUDE 'missing.bdf'\n");
+  const auto main = dir.write("main.bdf", "GRID,1,,0.,0.,0.\nINCLUDE 'sub/inner.bdf'\n");
+  const std::string d = dir.path().string();
+  try {
+    io::read_nastran(main);
+    FAIL() << "read";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), d + "/sub/inner.bdf:1: INCLUDE 'missing.bdf': the file does not exist; tried " + d +
+                                         "/missing.bdf (relative to the main deck's folder) and " + d +
+                                         "/sub/missing.bdf (relative to the including file's folder); expected a path "
+                                         "relative to one of them, an absolute path, or SYMBOL:path");
+  }
+}
+
+TEST(NastranFormat, IncludeLogicalSymbols) {
+  test::TempDir dir;
+  dir.write("data/bulk/grids.bdf", "GRID,1,,0.,0.,0.\n");
+  dir.write("data/inc/part.dat", "INCLUDE 'BULKDIR:/\n      grids.bdf'\n");  // a symbolic name split over two lines
+  const auto main = dir.write("job/main.bdf", "INCLUDE 'incdir:part.dat'\n");
+  const std::string d = dir.path().string();
+  io::NastranReadOptions o;
+  // a value may use a symbol given before it ($NAME or ${NAME}); names in any case
+  o.symbols = {{"DATA", d + "/data"}, {"BulkDir", "${DATA}/bulk"}, {"INCDIR", "$DATA/inc"}};
+  EXPECT_EQ(io::read_nastran(main, o).grids.size(), 1u);
+  // from the environment when no symbol is given
+  ::setenv("SEFLEX_TEST_INCDIR", (d + "/data/inc").c_str(), 1);
+  ::setenv("SEFLEX_TEST_DATA_DIR", (d + "/data").c_str(), 1);
+  const auto env_main = dir.write("job/env.bdf", "INCLUDE 'SEFLEX_TEST_INCDIR:part.dat'\n");
+  o.symbols = {{"BULKDIR", "$SEFLEX_TEST_DATA_DIR/bulk"}};  // an environment variable inside a value
+  EXPECT_EQ(io::read_nastran(env_main, o).grids.size(), 1u);
+  const auto error = [&](const std::string& text, const io::NastranReadOptions& opt) {
+    try {
+      io::read_nastran(dir.write("job/bad.bdf", text), opt);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("read");
+  };
+  const std::string bad = d + "/job/bad.bdf:1: INCLUDE ";
+  EXPECT_EQ(error("INCLUDE 'NOSUCHSYMBOL_X:a.bdf'\n", {}),
+            bad + "'NOSUCHSYMBOL_X:a.bdf': logical symbol NOSUCHSYMBOL_X is not defined; expected --symbol "
+                  "NOSUCHSYMBOL_X=DIR (MSC Nastran: symbol=NOSUCHSYMBOL_X=DIR in an rc file) or an environment variable "
+                  "NOSUCHSYMBOL_X");
+  EXPECT_EQ(error("INCLUDE 'C:\\models\\a.bdf'\n", {}),
+            bad + "'C:/models/a.bdf': 'C:' is a Windows drive; expected a path on this machine, or the drive mapped to "
+                  "a folder: --symbol C=DIR");
+  io::NastranReadOptions drive;
+  drive.symbols = {{"C", d + "/data"}};
+  EXPECT_EQ(error("INCLUDE 'C:\\bulk\\grids.bdf'\n", drive), "read");
+  o.symbols = {{"INCDIR", d + "/data/inc"}};
+  EXPECT_EQ(error("INCLUDE 'INCDIR:nothing.dat'\n", o),
+            bad + "'INCDIR:nothing.dat': the file does not exist; tried " + d + "/data/inc/nothing.dat (logical symbol "
+                  "INCDIR = " + d + "/data/inc)");
+  io::NastranReadOptions undefined;
+  undefined.symbols = {{"X", "$SEFLEX_NO_SUCH_VARIABLE/y"}};
+  EXPECT_EQ(error("GRID,1,,0.,0.,0.\n", undefined),
+            "logical symbol X=$SEFLEX_NO_SUCH_VARIABLE/y: $SEFLEX_NO_SUCH_VARIABLE is neither a logical symbol given "
+            "before it nor an environment variable");
+  ::unsetenv("SEFLEX_TEST_INCDIR");
+  ::unsetenv("SEFLEX_TEST_DATA_DIR");
+  // --symbol's parser
+  EXPECT_EQ(io::parse_nastran_symbol("A_1=/x=y").value, "/x=y");
+  for (const char* text : {"noequals", "=x", "1A=x", "A B=x"}) {
+    try {
+      io::parse_nastran_symbol(text);
+      ADD_FAILURE() << text;
+    } catch (const InputError& e) {
+      EXPECT_TRUE(mentions(e.what(), {"expected NAME=FOLDER"})) << text;
+    }
   }
 }

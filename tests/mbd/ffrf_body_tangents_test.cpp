@@ -17,7 +17,7 @@
 #include <cstdlib>
 #include <iostream>
 
-#include "../reduction/fem_models.hpp"
+#include "fem_models.hpp"
 #include "ffrf/ffrf_detail.hpp"
 #include "mbd_models.hpp"
 #include "pendulum_reference.hpp"

@@ -13,7 +13,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "../reduction/fem_models.hpp"
+#include "fem_models.hpp"
 #include "mbd_models.hpp"
 #include "seflex/mbd/bodies/aic_element.hpp"
 #include "seflex/mbd/ffrf/ffrf.hpp"

@@ -8,7 +8,7 @@
 #include <limits>
 #include <string>
 
-#include "../reduction/fem_models.hpp"
+#include "fem_models.hpp"
 #include "plates.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/constraints.hpp"
@@ -17,7 +17,7 @@
 #include "seflex/parallel/partitioned_modes.hpp"
 #include "seflex/parallel/partitioned_system.hpp"
 #include "seflex/parallel/session.hpp"
-#include "seflex/reduction/normal_modes.hpp"
+#include "seflex/solutions/normal_modes.hpp"
 
 namespace seflex::parallel {
 Session& test_session();  // main.cpp's
@@ -87,7 +87,7 @@ TEST(PartitionedAssembly, MixedElementsDeckMatchesSerial) {
   const fem::Model m = io::read_model(deck("mystran_mixed_cbar_crod_cquad4_ctria3_celas_modes/ALL-ELEM-TEST-GIV.DAT"));
   expect_real_split(m, 2);
   fem::ConstraintOptions co;
-  co.spc_set = reduction::select_case(m).spc;
+  co.spc_set = solutions::select_case(m).spc;
   co.autospc = fem::autospc_enabled(m);
   expect_serial_matrices(m, co);
 }
@@ -130,9 +130,9 @@ TEST(PartitionedAssembly, OneRanksBadElementStopsEveryRank) {
 /// bound of that norm (the Rayleigh quotients of the unit vectors). It only matters for the lowest modes of a fine
 /// mesh: on the 100k-dof plate it is 9.8e-4 (rad/s)^2, 4.9e-7 of the first eigenvalue, where the serial backends
 /// differ among themselves by 0.9e-8 to 1.5e-8 (CHOLMOD against LDLT) and the distributed one from them by 1.6e-8.
-double eigenvalue_round_off(fem::Model m, const reduction::ModesOptions& o) {
+double eigenvalue_round_off(fem::Model m, const solutions::ModesOptions& o) {
   fem::ConstraintOptions co;
-  co.spc_set = reduction::select_case(m, o.subcase).spc;
+  co.spc_set = solutions::select_case(m, o.subcase).spc;
   co.autospc = fem::autospc_enabled(m);
   const fem::GlobalMatrices g = fem::assemble(m, fem::assembly_options(m));
   const fem::ConstrainedSystem c = fem::apply_constraints(m, g, co);
@@ -144,12 +144,12 @@ double eigenvalue_round_off(fem::Model m, const reduction::ModesOptions& o) {
 
 /// The distributed modes against the serial ones: eigenvalues to `tol` relative (or to the round-off floor
 /// above where that is larger), phi^T K phi = lambda phi^T M phi, the same generalised masses.
-void expect_modes_match_serial(fem::Model m, reduction::ModesOptions o, double tol) {
+void expect_modes_match_serial(fem::Model m, solutions::ModesOptions o, double tol) {
   const double floor = eigenvalue_round_off(m, o);
-  const reduction::NormalModes serial = reduction::solve_normal_modes(m, o);
+  const solutions::NormalModes serial = solutions::solve_normal_modes(m, o);
   PartitionStats st;
-  const reduction::NormalModes part = solve_normal_modes_partitioned(m, o, &st);
-  EXPECT_EQ(part.stats.backend_used, reduction::EigenBackend::Slepc);
+  const solutions::NormalModes part = solve_normal_modes_partitioned(m, o, &st);
+  EXPECT_EQ(part.stats.backend_used, linalg::EigenBackend::Slepc);
   EXPECT_LT(st.local_elements, st.total_elements);
   ASSERT_EQ(part.eigenvalues.size(), serial.eigenvalues.size());
   ASSERT_GT(serial.eigenvalues.size(), 0);
@@ -175,7 +175,7 @@ void expect_modes_match_serial(fem::Model m, reduction::ModesOptions o, double t
 }
 
 TEST(PartitionedModes, ClampedPlateMatchesSerial) {
-  reduction::ModesOptions o;
+  solutions::ModesOptions o;
   o.count = 20;
   expect_modes_match_serial(clamped_plate(41, 40), o, 1e-9);  // 10,086 free dofs
 }
@@ -183,7 +183,7 @@ TEST(PartitionedModes, ClampedPlateMatchesSerial) {
 // The 100k-dof plate of issue 16 (100,620 free dofs): 1e-9 relative from the 7th mode up; the first six
 // are held to the round-off floor of the pencil (eigenvalue_round_off), which 1e-9 of them is below.
 TEST(PartitionedModes, HundredThousandDofPlateMatchesSerial) {
-  reduction::ModesOptions o;
+  solutions::ModesOptions o;
   o.count = 20;
   expect_modes_match_serial(clamped_plate(130, 128), o, 1e-9);
 }
@@ -191,7 +191,7 @@ TEST(PartitionedModes, HundredThousandDofPlateMatchesSerial) {
 TEST(PartitionedModes, FreePlateMatchesSerial) {
   fem::Model m = test::quad_plate(24, 16, 0.6, 0.4, 0.003, 7.0e10, 0.33, 2700);
   test::finalize_for_test(m);
-  reduction::ModesOptions o;
+  solutions::ModesOptions o;
   o.count = 14;
   expect_modes_match_serial(m, o, 1e-9);  // six rigid-body modes
 }
@@ -199,7 +199,7 @@ TEST(PartitionedModes, FreePlateMatchesSerial) {
 class PartitionedDeck : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(PartitionedDeck, EigenvaluesMatchSerial) {
-  expect_modes_match_serial(io::read_model(deck(GetParam())), reduction::ModesOptions{}, 1e-9);
+  expect_modes_match_serial(io::read_model(deck(GetParam())), solutions::ModesOptions{}, 1e-9);
 }
 
 INSTANTIATE_TEST_SUITE_P(Decks, PartitionedDeck,

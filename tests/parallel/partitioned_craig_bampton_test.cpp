@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "../reduction/fem_models.hpp"
+#include "fem_models.hpp"
 #include "plates.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/constraints.hpp"
@@ -86,7 +86,7 @@ void expect_same_reduction(int nx, int ny, reduction::CraigBamptonOptions opt, i
     // componentwise backward error of 1e-10: |r| <= 1e-10 (|K| |y| + |F|), row by row.
     const Eigen::MatrixXd R = c.K_ff * dist.static_responses - opt.interior_loads;
     const Eigen::MatrixXd bound =
-        reduction::SparseMatrixd(c.K_ff.cwiseAbs()) * dist.static_responses.cwiseAbs() + opt.interior_loads.cwiseAbs();
+        linalg::SparseMatrixd(c.K_ff.cwiseAbs()) * dist.static_responses.cwiseAbs() + opt.interior_loads.cwiseAbs();
     for (Eigen::Index f = 0; f < c.n_free(); ++f)
       for (int k = 0; k < load_cases; ++k)
         if (on_b[static_cast<std::size_t>(f)]) {

@@ -1,6 +1,6 @@
 #pragma once
 // The plate the distributed-backend tests share.
-#include "../reduction/fem_models.hpp"
+#include "fem_models.hpp"
 
 namespace seflex::test {
 

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <string>
 
-#include "../reduction/fem_models.hpp"
+#include "fem_models.hpp"
 #include "plates.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/constraints.hpp"
@@ -16,15 +16,15 @@
 #include "seflex/parallel/session.hpp"
 #include "seflex/parallel/slepc_eigensolver.hpp"
 #include "seflex/reduction/craig_bampton.hpp"
-#include "seflex/reduction/normal_modes.hpp"
+#include "seflex/solutions/normal_modes.hpp"
 
 namespace seflex::parallel {
 Session& test_session();  // main.cpp's
 namespace {
 
-using reduction::EigenBackend;
-using reduction::ModesOptions;
-using reduction::NormalModes;
+using linalg::EigenBackend;
+using solutions::ModesOptions;
+using solutions::NormalModes;
 
 /// Eigenvalues equal to `tol` relative to each one; rigid-body ones (|lambda| below 1e-6 of the
 /// largest) to `tol` of the largest, since a zero has no relative accuracy.
@@ -50,7 +50,7 @@ void expect_mass_orthonormal(const fem::Model& model, const NormalModes& r, doub
   const Eigen::VectorXd d = G.diagonal();
   G = d.cwiseSqrt().cwiseInverse().asDiagonal() * G * d.cwiseSqrt().cwiseInverse().asDiagonal();
   EXPECT_LE((G - Eigen::MatrixXd::Identity(G.rows(), G.cols())).cwiseAbs().maxCoeff(), tol);
-  if (r.normalization == reduction::ModeNormalization::Mass) {
+  if (r.normalization == solutions::ModeNormalization::Mass) {
     EXPECT_LE((d.array() - 1.0).abs().maxCoeff(), tol);
   }
 }
@@ -61,9 +61,9 @@ TEST(SlepcBackend, TenThousandDofPlateMatchesSerial) {
   const fem::Model m = clamped_plate(41, 40);  // 42 x 41 grids, 41 clamped: 10,086 free dofs
   ModesOptions o;
   o.count = 20;
-  const NormalModes serial = reduction::solve_normal_modes(m, o);
+  const NormalModes serial = solutions::solve_normal_modes(m, o);
   o.external = slepc_eigenproblem;
-  const NormalModes slepc = reduction::solve_normal_modes(m, o);
+  const NormalModes slepc = solutions::solve_normal_modes(m, o);
   EXPECT_EQ(slepc.n_free, 10086);
   EXPECT_EQ(slepc.stats.backend_used, EigenBackend::Slepc);
   expect_same_eigenvalues(serial.eigenvalues, slepc.eigenvalues, 1e-9);
@@ -87,9 +87,9 @@ TEST(SlepcBackend, FreePlateFindsSixRigidBodyModes) {
   test::finalize_for_test(m);
   ModesOptions o;
   o.count = 14;
-  const NormalModes serial = reduction::solve_normal_modes(m, o);
+  const NormalModes serial = solutions::solve_normal_modes(m, o);
   o.external = slepc_eigenproblem;
-  const NormalModes slepc = reduction::solve_normal_modes(m, o);
+  const NormalModes slepc = solutions::solve_normal_modes(m, o);
   expect_same_eigenvalues(serial.eigenvalues, slepc.eigenvalues, 1e-9);
   int rigid = 0;
   for (Eigen::Index k = 0; k < 14; ++k) rigid += slepc.cycles()(k) < 1e-4 * slepc.cycles()(6);
@@ -103,9 +103,9 @@ TEST_P(ValidationDeck, EigenvaluesMatchSerial) {
   const std::string deck = std::string(SEFLEX_TEST_DATA) + "/validation/" + GetParam();
   const fem::Model m = io::read_model(deck);
   ModesOptions o;
-  const NormalModes serial = reduction::solve_normal_modes(m, o);
+  const NormalModes serial = solutions::solve_normal_modes(m, o);
   o.external = slepc_eigenproblem;
-  const NormalModes slepc = reduction::solve_normal_modes(m, o);
+  const NormalModes slepc = solutions::solve_normal_modes(m, o);
   ASSERT_GT(serial.eigenvalues.size(), 0);
   expect_same_eigenvalues(serial.eigenvalues, slepc.eigenvalues, 1e-9);
   expect_mass_orthonormal(m, slepc, 1e-10);
@@ -165,15 +165,15 @@ TEST(SlepcBackend, MechanismIsAFactorizationError) {
   // Two grids joined by nothing in rotation: K singular, lumped mass without rotary inertia.
   fem::Model m = test::quad_plate(2, 2, 0.6, 0.4, 0.003, 7.0e10, 0.33, 2700);
   test::finalize_for_test(m);
-  reduction::EigenOptions eo;
+  linalg::EigenOptions eo;
   eo.count = 4;
   const fem::GlobalMatrices g = fem::assemble(m, fem::assembly_options(m));
-  reduction::SparseMatrixd K = g.K, M = g.M;
+  linalg::SparseMatrixd K = g.K, M = g.M;
   K.coeffRef(0, 0) = -1.0;  // indefinite: no Cholesky
   for (Eigen::Index j = 0; j < M.outerSize(); ++j)
-    for (reduction::SparseMatrixd::InnerIterator it(M, j); it; ++it) it.valueRef() = 0;
+    for (linalg::SparseMatrixd::InnerIterator it(M, j); it; ++it) it.valueRef() = 0;
   M.coeffRef(0, 0) = 1;
-  EXPECT_THROW((void)slepc_eigenproblem(K, M, eo), reduction::FactorizationError);
+  EXPECT_THROW((void)slepc_eigenproblem(K, M, eo), linalg::FactorizationError);
 }
 
 }  // namespace

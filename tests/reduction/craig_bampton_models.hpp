@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "../fem/fem_test_util.hpp"
+#include "fem_test_util.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/constraints.hpp"
 

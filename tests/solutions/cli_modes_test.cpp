@@ -11,7 +11,7 @@
 
 #include <sstream>
 
-#include "../fem/laminate_reference.hpp"
+#include "laminate_reference.hpp"
 #include "nastran_test_util.hpp"
 #include "solution_decks.hpp"
 #include "test_support.hpp"
@@ -128,7 +128,7 @@ TEST(ModesCli, KrylovBackendsAgreeOnAFreePlate) {
 // (PCOMP in large field, MAT8 with a continuation), 0.2 x 0.3 m, 20 x 20 CQUAD4; the four lowest
 // frequencies against the Navier solution of lamination theory (Reddy, Mechanics of Laminated
 // Composite Plates and Shells, 2nd ed., ch. 5; D from the textbook sums of
-// tests/fem/laminate_reference.hpp), within 1 % (tests/fem/composite_plate_test.cpp has the same
+// tests/support/laminate_reference.hpp), within 1 % (tests/fem/composite_plate_test.cpp has the same
 // plate through the library: -0.26, -0.52, -0.21, +0.48 %).
 TEST(ModesCli, CrossPlyPcompPlateMatchesNavier) {
   using namespace fem::test::clt;

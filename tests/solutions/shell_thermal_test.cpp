@@ -23,7 +23,7 @@
 #include "nastran_test_util.hpp"
 #include "statics_test_util.hpp"
 #include "seflex/fem/loads.hpp"
-#include "seflex/reduction/statics.hpp"
+#include "seflex/solutions/statics.hpp"
 #include "test_support.hpp"
 
 namespace seflex {
@@ -79,7 +79,7 @@ TEST(ShellThermalLoad, FreePlateExpandsWithoutStress) {
   for (const bool tria : {false, true}) {
     const fem::Model m =
         test::read_deck(plate(n, 0.3, 0.2, tria, 0.2, "SPC = 1\nTEMPERATURE(LOAD) = 5\n", kAluminium + "SPC1,1,123456,1\nTEMPD,5,120.\n"));
-    const auto s = reduction::solve_static(m);
+    const auto s = solutions::solve_static(m);
     const double e = alpha * 100.0;
     for (const auto& g : m.grids) {
       EXPECT_NEAR(u(m, s, g.id, 1), e * g.x_basic.x(), 1e-12) << (tria ? "CTRIA3" : "CQUAD4") << " grid " << g.id;
@@ -100,7 +100,7 @@ TEST(ShellThermalLoad, ClampedPlateCarriesThePlaneStressThermalForce) {
   for (const bool tria : {false, true}) {
     const fem::Model m = test::read_deck(
         plate(n, a, b, tria, 0.0, "SPC = 1\nTEMP(LOAD) = 5\n", kAluminium + spc + "TEMPD,5," + num(tref + dT) + "\n"));
-    const auto s = reduction::solve_static(m);
+    const auto s = solutions::solve_static(m);
     const double N = E * alpha * dT * t / (1.0 - nu);
     double right = 0, top = 0, interior = 0;
     for (int j = 0; j <= n; ++j)
@@ -127,7 +127,7 @@ TEST(ShellThermalLoad, OrthotropicPshellExpandsAlongItsMaterialAxes) {
             "MAT8,8,140.e9,10.e9,.3,5.e9,,,1600.,+M\n+M,-0.5e-6,30.e-6,-10.\nPSHELL,1,8,1.e-3,8\n"
             "SPC1,1,123456,1\nTEMPD,5,40.\n"),
       ",90."));
-  const auto s = reduction::solve_static(m);
+  const auto s = solutions::solve_static(m);
   for (const auto& g : m.grids) {
     EXPECT_NEAR(u(m, s, g.id, 1), a2 * dT * g.x_basic.x(), 1e-13) << g.id;
     EXPECT_NEAR(u(m, s, g.id, 2), a1 * dT * g.x_basic.y(), 1e-13) << g.id;
@@ -156,7 +156,7 @@ TEST(ShellThermalLoad, UnsymmetricCrossPlyCurlsAsLaminationTheory) {
               "PCOMP,1,,,,,170.,,,+P\n+P,8,0.125e-3,0.,,8,0.125e-3,90.\n"
               "SPC1,1,123456,1\nTEMPD,5,20.\n"),
         ",0"));
-    const auto s = reduction::solve_static(m);
+    const auto s = solutions::solve_static(m);
     const double den = 1.0 - nu12 * nu12 * E2 / E1;
     const double Q11 = E1 / den, Q22 = E2 / den, Q12 = nu12 * E2 / den;
     (void)G12;
@@ -187,7 +187,7 @@ TEST(ShellThermalLoad, UnsymmetricCrossPlyCurlsAsLaminationTheory) {
 TEST(ShellThermalLoad, ElementTemperatureIsTheMeanOfItsGrids) {
   const fem::Model m = test::read_deck(plate(1, 0.1, 0.1, false, 0.0, "SPC = 1\nTEMP = 5\n",
                                              kAluminium + "SPC1,1,123456,1\nTEMP,5,2,120.,3,120.\nTEMPD,5,40.\n"));
-  const auto s = reduction::solve_static(m);
+  const auto s = solutions::solve_static(m);
   EXPECT_NEAR(u(m, s, 2, 1) / (alpha * (80.0 - tref) * 0.1), 1.0, 1e-9);
   EXPECT_NEAR(u(m, s, 4, 2) / (alpha * (80.0 - tref) * 0.1), 1.0, 1e-9);
 }
@@ -198,7 +198,7 @@ TEST(ShellThermalLoad, Mid4WithThermalExpansionIsRefused) {
                                              "MAT1,1,7.e10,,0.3,2700.,2.3e-5,20.\nMAT1,4,7.e9,,0.3,0.,1.e-5,20.\n"
                                              "PSHELL,1,1,2.e-3,1,,1,,,+P\n+P,,,4\nSPC1,1,123456,1\nTEMPD,5,120.\n"));
   try {
-    reduction::solve_static(m);
+    solutions::solve_static(m);
     ADD_FAILURE() << "expected an InputError";
   } catch (const InputError& e) {
     const std::string msg = e.what();
@@ -234,7 +234,7 @@ TEST(ShellThermalLoad, GridWithoutTemperatureIsRefused) {
   const fem::Model m = test::read_deck(
       plate(1, 0.1, 0.1, false, 0.0, "SPC = 1\nTEMP = 5\n", kAluminium + "SPC1,1,123456,1\nTEMP,5,1,50.,2,50.,3,50.\n"));
   try {
-    reduction::solve_static(m);
+    solutions::solve_static(m);
     ADD_FAILURE() << "expected an InputError";
   } catch (const InputError& e) {
     const std::string msg = e.what();

@@ -12,7 +12,7 @@
 #include "statics_test_util.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/loads.hpp"
-#include "seflex/reduction/statics.hpp"
+#include "seflex/solutions/statics.hpp"
 
 namespace seflex {
 namespace {
@@ -22,7 +22,7 @@ constexpr double kPi = 3.14159265358979323846;
 using test::num;
 
 constexpr auto u = test::displacement;
-double p(const fem::Model& m, const reduction::StaticSolution& s, int g, int c) {
+double p(const fem::Model& m, const solutions::StaticSolution& s, int g, int c) {
   return s.p_g[*fem::find_dof(m, s.dofs, g, c)];
 }
 
@@ -49,7 +49,7 @@ TEST(GravityLoad, CantileverUnderOwnWeight) {
   const int n = 20;
   const double L = 2.0, E = 7e10, A = 1e-4, I = 3e-8, rho = 2700, g = 9.81;
   const fem::Model m = test::read_deck(gravity_cantilever(n, "LOAD = 3\n", "GRAV,3,,9.81,0.,0.,-1.\n"));
-  const auto s = reduction::solve_static(m);
+  const auto s = solutions::solve_static(m);
   const double me = rho * A * L / n;
   double w_lumped = 0;
   for (int i = 1; i <= n; ++i) {
@@ -72,20 +72,20 @@ TEST(GravityLoad, CantileverUnderOwnWeight) {
 TEST(GravityLoad, SystemsCombinationsAndWtmass) {
   const std::string base = "GRAV,3,,9.81,0.,0.,-1.\n";
   const fem::Model ref = test::read_deck(gravity_cantilever(4, "LOAD = 3\n", base));
-  const auto r = reduction::solve_static(ref);
+  const auto r = solutions::solve_static(ref);
   // CORD2R 9: e3 = basic x, e1 = basic z; N = (-0.5, 0, 0) * A = 19.62 -> 9.81 along -z basic
   const std::string cord = "CORD2R,9,,0.,0.,0.,1.,0.,0.,+C\n+C,0.,0.,1.\n";
   const fem::Model rot = test::read_deck(gravity_cantilever(4, "LOAD = 4\n", cord + "GRAV,4,9,19.62,-0.5,0.,0.\n"));
-  EXPECT_LE((reduction::solve_static(rot).u_g - r.u_g).norm(), 1e-12 * r.u_g.norm());
+  EXPECT_LE((solutions::solve_static(rot).u_g - r.u_g).norm(), 1e-12 * r.u_g.norm());
   // LOAD 10 = 2 * (1.5 GRAV 3 - 1 FORCE 8): superposition
   const std::string combo = base + "FORCE,8,5,,100.,0.,1.,0.\nLOAD,10,2.,1.5,3,-1.,8\n";
   const fem::Model c = test::read_deck(gravity_cantilever(4, "SUBCASE 1\nLOAD = 10\nSUBCASE 2\nLOAD = 8\n", combo));
-  const auto cs = reduction::solve_statics(c);
+  const auto cs = solutions::solve_statics(c);
   ASSERT_EQ(cs.size(), 2u);
   EXPECT_LE((cs[0].u_g - (3.0 * r.u_g - 2.0 * cs[1].u_g)).norm(), 1e-12 * cs[0].u_g.norm());
   // WTMASS halves the load
   const fem::Model w = test::read_deck(gravity_cantilever(4, "LOAD = 3\n", base + "PARAM,WTMASS,0.5\n"));
-  EXPECT_LE((reduction::solve_static(w).u_g - 0.5 * r.u_g).norm(), 1e-12 * r.u_g.norm());
+  EXPECT_LE((solutions::solve_static(w).u_g - 0.5 * r.u_g).norm(), 1e-12 * r.u_g.norm());
 }
 
 // A CONM2 with an offset: the gravity load at its grid is m g and the moment of m g about the grid
@@ -93,7 +93,7 @@ TEST(GravityLoad, SystemsCombinationsAndWtmass) {
 TEST(GravityLoad, OffsetMassGivesItsMoment) {
   const fem::Model m =
       test::read_deck(gravity_cantilever(2, "LOAD = 3\n", "GRAV,3,,2.,0.,0.,-1.\nCONM2,50,3,,4.,0.,0.3,0.\n"));
-  const auto s = reduction::solve_static(m);
+  const auto s = solutions::solve_static(m);
   const double me = 2700 * 1e-4 * 1.0;  // element mass, half of it at the tip
   EXPECT_NEAR(p(m, s, 3, 3), -(4.0 + 0.5 * me) * 2.0, 1e-12);
   // moment of the force (0, 0, -8) at (0, 0.3, 0) from the grid: (0.3 * -8, 0, 0)
@@ -117,7 +117,7 @@ TEST(RotationalLoad, SpinningRodAxialForce) {
   for (int i = 1; i <= n; ++i)
     d += "CONROD," + std::to_string(i) + "," + std::to_string(i) + "," + std::to_string(i + 1) + ",1,1.e-4\n";
   const fem::Model m = test::read_deck(d + "ENDDATA\n");
-  const auto s = reduction::solve_static(m);
+  const auto s = solutions::solve_static(m);
   const double h = L / n, mi = rho * A * h;
   double worst_discrete = 0, worst_continuous = 0;
   for (int j = 1; j <= n; ++j) {  // element j between grids j and j + 1
@@ -194,7 +194,7 @@ TEST(PressureLoad, SimplySupportedPlateMatchesNavier) {
       d += "CQUAD4," + std::to_string(e++) + ",1," + std::to_string(id(i, j)) + "," + std::to_string(id(i + 1, j)) +
            "," + std::to_string(id(i + 1, j + 1)) + "," + std::to_string(id(i, j + 1)) + "\n";
   const fem::Model m = test::read_deck(d + "ENDDATA\n");
-  const auto s = reduction::solve_static(m);
+  const auto s = solutions::solve_static(m);
   const double D = E * t * t * t / (12 * (1 - nu * nu));
   const double kGt = 5.0 / 6.0 * E / (2 * (1 + nu)) * t;
   double sum = 0, shear = 0;
@@ -267,7 +267,7 @@ TEST(ThermalLoad, FreeBarExpandsAndBendsAsTheory) {
   const fem::Model m = test::read_deck(thermal_bar("SPC1,1,123456,1\n",
                                                    "TEMPRB,7,1,20.,70.,30.,30.,-10.,-10.\n"
                                                    "TEMPRB,7,2,70.,120.,30.,30.,-10.,-10.\n"));
-  const auto s = reduction::solve_static(m);
+  const auto s = solutions::solve_static(m);
   const double al = 1.2e-5, L = 2.0;
   EXPECT_NEAR(u(m, s, 3, 1) / (al * 50.0 * L), 1.0, 1e-9);  // mean T - TREF = 50
   EXPECT_NEAR(u(m, s, 3, 2) / (-al * 30 * L * L / 2), 1.0, 1e-9);
@@ -284,7 +284,7 @@ TEST(ThermalLoad, FreeBarExpandsAndBendsAsTheory) {
 TEST(ThermalLoad, ClampedBarReactionAndGridTemperatures) {
   const std::string spc = "SPC1,1,123456,1,3\n";
   const fem::Model m = test::read_deck(thermal_bar(spc, "TEMP,7,2,80.\nTEMPD,7,80.\n"));
-  const auto s = reduction::solve_static(m);
+  const auto s = solutions::solve_static(m);
   const double N = 2e11 * 1e-3 * 1.2e-5 * 60.0;
   EXPECT_NEAR(s.q_g[*fem::find_dof(m, s.dofs, 1, 1)] / N, 1.0, 1e-9);
   EXPECT_NEAR(s.q_g[*fem::find_dof(m, s.dofs, 3, 1)] / -N, 1.0, 1e-9);
@@ -293,7 +293,7 @@ TEST(ThermalLoad, ClampedBarReactionAndGridTemperatures) {
   const fem::Model r = test::read_deck(
       "SOL 101\nCEND\nSPC = 1\nTEMP = 4\nBEGIN BULK\nMAT1,1,2.e11,,0.3,7800.,1.2e-5,20.\nGRID,1,,0.,0.,0.\n"
       "GRID,2,,0.,3.,0.,,13456\nCONROD,1,1,2,1,1.e-3\nSPC1,1,123456,1\nTEMP,4,1,10.,2,50.\nENDDATA\n");
-  EXPECT_NEAR(u(r, reduction::solve_static(r), 2, 2) / (1.2e-5 * 10.0 * 3.0), 1.0, 1e-9);  // mean 30 - 20
+  EXPECT_NEAR(u(r, solutions::solve_static(r), 2, 2) / (1.2e-5 * 10.0 * 3.0), 1.0, 1e-9);  // mean 30 - 20
 }
 
 }  // namespace

@@ -14,7 +14,7 @@
 #include <sstream>
 
 #include "seflex/io/nastran.hpp"
-#include "seflex/reduction/statics.hpp"
+#include "seflex/solutions/statics.hpp"
 #include "test_support.hpp"
 
 namespace seflex {
@@ -91,9 +91,9 @@ std::map<int, Compared> compare(const fem::Model& model, const std::string& stem
   std::map<int, Compared> out;
   EXPECT_FALSE(disp.empty()) << stem;
   for (const auto& [sc, table] : disp) {
-    reduction::StaticOptions o;
+    solutions::StaticOptions o;
     if (!model.case_control.subcases.empty()) o.subcase = sc;
-    const auto s = reduction::solve_static(model, o);
+    const auto s = solutions::solve_static(model, o);
     out[sc].displacement = table_error(model, s.dofs, s.u_g, table);
     // no OLOAD table for the subcase: NaN, which fails every comparison made with it
     out[sc].load = load.count(sc) ? table_error(model, s.dofs, s.p_g, load.at(sc)) : std::numeric_limits<double>::quiet_NaN();
@@ -133,7 +133,7 @@ TEST(ValidationStaticLoads, BarRforceOffsetMatchesMystranWithNastransUnit) {
     EXPECT_LT(e.displacement, 1e-6) << "subcase " << sc;
   }
   const fem::Model as_written = deck("BAR-RFORCE-OFFSET");
-  const auto s = reduction::solve_static(as_written);
+  const auto s = solutions::solve_static(as_written);
   const double r = s.u_g[*fem::find_dof(as_written, s.dofs, 101, 2)];
   EXPECT_NEAR(r / (4.0e-4 * 4 * M_PI * M_PI), 1.0, 1e-12);  // closed form; measured 2.2e-16 (2026-11-28)
 }
@@ -169,9 +169,9 @@ TEST(ValidationStaticLoads, Pload2ForcesAreMystransMomentsAreNastrans) {
   ASSERT_EQ(oload.size(), 9u);  // the loaded grids
   ASSERT_EQ(disp.size(), 13u);
   const fem::Model m = deck("ALL-ELEM-TEST");
-  reduction::StaticOptions o;
+  solutions::StaticOptions o;
   o.subcase = 91;
-  const auto s = reduction::solve_static(m, o);
+  const auto s = solutions::solve_static(m, o);
   double fmax = 0;
   for (const auto& [g, v] : oload) {
     fmax = std::max(fmax, std::abs(v[2]));
@@ -193,7 +193,7 @@ TEST(ValidationStaticLoads, Pload2ForcesAreMystransMomentsAreNastrans) {
   }
   text.replace(at, text.find('\n', at) + 1 - at, cards);
   const fem::Model with_moments = io::read_nastran_text(text, "ALL-ELEM-TEST.DAT");
-  const auto sm = reduction::solve_static(with_moments, o);
+  const auto sm = solutions::solve_static(with_moments, o);
   EXPECT_LT(table_error(with_moments, sm.dofs, sm.u_g, disp), 1e-3);
 }
 
@@ -206,7 +206,7 @@ TEST(ValidationStaticLoads, Pload2ThruOnAThickPlate) {
   const Table oload = mystran_tables(answer, "A P P L I E D    F O R C E S").at(1);
   ASSERT_EQ(oload.size(), 25u);  // the 5 x 5 grids of the quarter plate
   const fem::Model m = deck("AQ3U2S004");
-  const auto s = reduction::solve_static(m);
+  const auto s = solutions::solve_static(m);
   for (const auto& [g, v] : oload)
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(s.p_g[*fem::find_dof(m, s.dofs, g, c + 1)], v[c], 1e-15) << g;
   const double e = table_error(m, s.dofs, s.u_g, mystran_tables(answer, "D I S P L A C E M E N T S").at(1));

@@ -1,7 +1,5 @@
 #pragma once
 // The InputError message of assembling a deck that reads (element checks made at assembly).
-#include <gtest/gtest.h>
-
 #include <string>
 
 #include "nastran_test_util.hpp"
@@ -12,13 +10,7 @@ namespace seflex::test {
 /// The InputError message of assembling the deck ("" and a test failure if it assembles).
 inline std::string assembly_error(const std::string& deck) {
   const fem::Model m = read_deck(deck);
-  try {
-    fem::assemble(m, fem::assembly_options(m));
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "assembled without error";
-  return "";
+  return input_error([&] { fem::assemble(m, fem::assembly_options(m)); });
 }
 
 }  // namespace seflex::test

@@ -47,18 +47,25 @@ inline fem::Model read_deck(const std::string& text, const std::string& name = "
   return io::read_nastran_text(text, name);
 }
 
-/// The InputError message reading `text` gives ("" and a test failure if it reads).
-inline std::string read_error(const std::string& text, const std::string& name = "deck.bdf") {
+/// The InputError message of `read()` ("" and a test failure if it returns; the message and a test
+/// failure if it throws anything else).
+template <class F>
+std::string input_error(F&& read) {
   try {
-    io::read_nastran_text(text, name);
+    read();
   } catch (const InputError& e) {
     return e.what();
   } catch (const std::exception& e) {
     ADD_FAILURE() << "not an InputError: " << e.what();
     return e.what();
   }
-  ADD_FAILURE() << "read without error:\n" << text;
+  ADD_FAILURE() << "read without error";
   return "";
+}
+
+/// The InputError message reading `text` gives ("" and a test failure if it reads).
+inline std::string read_error(const std::string& text, const std::string& name = "deck.bdf") {
+  return input_error([&] { io::read_nastran_text(text, name); });
 }
 
 /// Every part appears in the message.

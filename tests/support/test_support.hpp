@@ -73,19 +73,24 @@ struct RunResult {
   std::string out, err;
 };
 
-/// Run `seflex <args>` (args already shell-quoted as needed); captures stdout and stderr.
-inline RunResult run_seflex(const std::string& args, const std::filesystem::path& cwd = {}) {
+/// Run the shell command `command` (quoted as needed) in `cwd`; captures stdout and stderr.
+inline RunResult run_command(const std::string& command, const std::filesystem::path& cwd = {}) {
   TempDir tmp;
   const auto out = tmp / "stdout.txt", err = tmp / "stderr.txt";
   std::ostringstream cmd;
   if (!cwd.empty()) cmd << "cd '" << cwd.string() << "' && ";
-  cmd << "'" << seflex_bin().string() << "' " << args << " >'" << out.string() << "' 2>'" << err.string() << "'";
+  cmd << "{ " << command << "; } >'" << out.string() << "' 2>'" << err.string() << "'";
   const int status = std::system(cmd.str().c_str());
   RunResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
   r.out = read_file(out);
   r.err = read_file(err);
   return r;
+}
+
+/// Run `seflex <args>` (args already shell-quoted as needed); captures stdout and stderr.
+inline RunResult run_seflex(const std::string& args, const std::filesystem::path& cwd = {}) {
+  return run_command("'" + seflex_bin().string() + "' " + args, cwd);
 }
 
 }  // namespace seflex::test

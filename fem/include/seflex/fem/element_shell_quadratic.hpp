@@ -15,7 +15,7 @@
 //   (eight parameters) from its tangential component at the two Gauss points of each edge and its
 //   two means over the element. Both are free of shear locking and of spurious modes, converge at
 //   the optimal order (deflection error O(h^3), energy O(h^4) on smooth problems: measured in
-//   tests/cards/shell_quadratic_test.cpp), and so take the Kirchhoff penalty of a section without
+//   tests/solutions/shell_quadratic_test.cpp), and so take the Kirchhoff penalty of a section without
 //   transverse shear flexibility (PSHELL MID3 blank; section.hpp) without locking. Bending and
 //   the shear energy by 3 x 3 Gauss (quadrilateral) or the 7-point degree-5 rule (triangle).
 // - Membrane: the same nine-node (CQUAD8) or six-node (CTRIA6) interpolation of u, v; the section's

@@ -20,7 +20,7 @@ namespace seflex::fem {
 ///   the PARAM values seflex uses (WTMASS > 0, GRDPNT a grid, COUPMASS, K6ROT);
 /// - check components: 1-6 on grids, 0 on scalar points.
 /// Cards that belong to a set the case control selects (SPC, MPC, FORCE, MOMENT, LOAD, EIGR/EIGRL,
-/// DMIG) are checked when a solution selects them, and reduction::check_card_usage warns about the
+/// DMIG) are checked when a solution selects them, and solutions::check_card_usage warns about the
 /// problems of the unselected ones: as Nastran, a deck is not refused for a set it does not use.
 /// Throws InputError naming file:line, card, id, field and what was expected. Idempotent.
 void finalize(Model& model);

@@ -64,7 +64,7 @@
 //               eps_T dV (element_solid.hpp: solid_thermal_load).
 // Grid temperatures give a bar/rod T = mean of its two grids and no gradient. A new element type
 // with a thermal expansion coefficient must either get its thermal load here or be refused
-// (reduction::check_card_usage), never be skipped silently.
+// (solutions::check_card_usage), never be skipped silently.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 

@@ -111,6 +111,10 @@ struct Model {
   std::vector<Param> params;
 
   std::vector<UnsupportedCard> unsupported;  ///< in order of first appearance
+  /// What the reader chose where a deck could be read two ways, one sentence each starting with
+  /// file:line (an INCLUDE found relative to both the main deck's and the including file's folder,
+  /// two different files: which one was read). Every command prints them as warnings.
+  std::vector<std::string> read_warnings;
   /// Number of cards of each name the reader accepted (e.g. "GRID" -> 18), for reports.
   std::map<std::string, std::size_t> card_counts;
 

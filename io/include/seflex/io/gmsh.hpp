@@ -1,5 +1,6 @@
 #pragma once
-// gmsh meshes (.msh format 2 or 4, or .geo meshed on the fly) + a companion bulk-data file -> fem::Model.
+// gmsh meshes (.msh format 2.2 or 4, read by seflex's own reader; or .geo scripts, meshed on the fly
+// by the gmsh library) + a companion bulk-data file -> fem::Model.
 //
 //   fem::Model m = seflex::io::read_gmsh("meshes/panel.geo");   // uses meshes/panel.props.bdf
 //
@@ -16,8 +17,9 @@
 // Every physical group of points is a node set; every group of curves or surfaces needs a mapping.
 // docs/gmsh-input.md has the full rules (numbering, errors) and a complete example.
 //
-// gmsh is a process-wide singleton: reads are serialised, and a read from inside a read (same thread)
-// is an InvariantError. gmsh prints nothing; its messages are kept and quoted in errors.
+// The gmsh library (.geo files only) is a process-wide singleton: its reads are serialised, and one
+// from inside another (same thread) is an InvariantError. It prints nothing; its messages are kept and
+// quoted in errors.
 #include <filesystem>
 
 #include "seflex/fem/model.hpp"

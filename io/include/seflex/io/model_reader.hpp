@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "seflex/fem/model.hpp"
+#include "seflex/io/nastran.hpp"
 
 namespace seflex::io {
 
@@ -36,6 +37,9 @@ struct ModelReadOptions {
   std::vector<GmshParameter> parameters;
   /// Run fem::finalize (ids, references, coordinate systems).
   bool finalize = true;
+  /// Logical symbols for INCLUDE names `NAME:path` (NastranReadOptions::symbols), in the deck and in
+  /// a gmsh model's property file.
+  std::vector<NastranSymbol> symbols;
 };
 
 /// True if `path` is read as a gmsh model (.msh or .geo, any case).

@@ -1,5 +1,7 @@
 #pragma once
-// SHA-256 (FIPS 180-4) for file integrity (superelement files) and source-model hashes.
+// SHA-256 (FIPS 180-4) for file integrity (superelement files) and source-model hashes, computed by
+// nettle (Debian's nettle-dev; io/src/sha256.cpp), which uses the x86 SHA extensions where the CPU
+// has them.
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -11,24 +13,16 @@ namespace seflex::io {
 
 class Sha256 {
  public:
-  /// Hardware: the x86 SHA extensions where the CPU has them (about 10x the portable code), else the
-  /// portable code. Portable: always the portable code (the tests compare the two).
-  enum class Implementation { Hardware, Portable };
-  explicit Sha256(Implementation impl = Implementation::Hardware);
-  /// True when this machine runs the SHA extensions path.
-  static bool hardware_available();
+  Sha256();
+  Sha256(const Sha256&) = delete;
+  Sha256& operator=(const Sha256&) = delete;
   void update(const void* data, std::size_t size);
   void update(std::string_view s) { update(s.data(), s.size()); }
-  std::array<std::uint8_t, 32> digest();   ///< finishes the hash; the object must not be updated afterwards
-  std::string hex_digest();                 ///< lowercase hex of digest()
+  std::array<std::uint8_t, 32> digest();  ///< finishes the hash; the object must not be updated afterwards
+  std::string hex_digest();               ///< lowercase hex of digest()
 
  private:
-  void blocks(const std::uint8_t* p, std::size_t count);  ///< compresses count 64-byte blocks
-  std::array<std::uint32_t, 8> h_;
-  std::array<std::uint8_t, 64> buf_{};
-  std::size_t buf_len_ = 0;
-  std::uint64_t total_ = 0;
-  bool hardware_;
+  alignas(8) unsigned char state_[128];  ///< nettle's struct sha256_ctx (size checked in sha256.cpp)
 };
 
 /// Hex SHA-256 of a byte string.

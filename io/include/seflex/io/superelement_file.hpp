@@ -87,4 +87,8 @@ void drop_mesh(se::Superelement& se);
 /// Serialise to bytes (what save_superelement writes).
 std::string serialize_superelement(const se::Superelement& se);
 
+/// The superelement with only its first `modes` fixed-interface modes (exact truncation of the
+/// Craig-Bampton basis: K, M, Phi_f, recovery and the inertia invariants lose the trailing columns).
+se::Superelement keep_internal_modes(const se::Superelement& s, int modes);
+
 }  // namespace seflex::io

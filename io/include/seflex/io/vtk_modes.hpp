@@ -17,13 +17,13 @@
 #include <filesystem>
 
 #include "seflex/fem/model.hpp"
-#include "seflex/reduction/normal_modes.hpp"
+#include "seflex/solutions/normal_modes.hpp"
 
 namespace seflex::io {
 
 /// Write the modes of `modes` (computed from `model`) to `path`. Throws InputError if the file
 /// exists and !overwrite, or cannot be written.
 void write_mode_shapes_vtu(const std::filesystem::path& path, const fem::Model& model,
-                           const reduction::NormalModes& modes, bool overwrite = false);
+                           const solutions::NormalModes& modes, bool overwrite = false);
 
 }  // namespace seflex::io

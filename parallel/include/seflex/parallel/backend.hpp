@@ -24,9 +24,9 @@
 #include "seflex/parallel/partitioned_system.hpp"
 #include "seflex/parallel/session.hpp"
 #include "seflex/reduction/craig_bampton.hpp"
-#include "seflex/reduction/eigensolver.hpp"
-#include "seflex/reduction/normal_modes.hpp"
-#include "seflex/reduction/sparse_factorization.hpp"
+#include "seflex/linalg/eigensolver.hpp"
+#include "seflex/solutions/normal_modes.hpp"
+#include "seflex/linalg/sparse_factorization.hpp"
 
 namespace seflex::parallel {
 
@@ -40,11 +40,11 @@ struct Backend {
   std::uint64_t fingerprint = 0;
   /// Initialises MPI, PETSc and SLEPc (Session's constructor); throws InvariantError if that fails.
   std::unique_ptr<Session> (*open_session)() = nullptr;
-  reduction::EigenSolution (*slepc_eigenproblem)(const reduction::SparseMatrixd& K, const reduction::SparseMatrixd& M,
-                                                 const reduction::EigenOptions& options) = nullptr;
-  std::unique_ptr<reduction::SparseFactorization> (*make_mumps_factorization)() = nullptr;
+  linalg::EigenSolution (*slepc_eigenproblem)(const linalg::SparseMatrixd& K, const linalg::SparseMatrixd& M,
+                                                 const linalg::EigenOptions& options) = nullptr;
+  std::unique_ptr<linalg::SparseFactorization> (*make_mumps_factorization)() = nullptr;
   std::optional<std::string> (*partition_refusal)(const fem::Model& model, std::optional<int> mpc_set) = nullptr;
-  reduction::NormalModes (*solve_normal_modes_partitioned)(fem::Model& model, const reduction::ModesOptions& options,
+  solutions::NormalModes (*solve_normal_modes_partitioned)(fem::Model& model, const solutions::ModesOptions& options,
                                                            PartitionStats* stats) = nullptr;
   /// The command reads the result's data members only; the plugin's deleter destroys it.
   std::shared_ptr<PartitionedSystem> (*assemble_partitioned)(fem::Model& model, const fem::ConstraintOptions& options,
@@ -59,8 +59,8 @@ struct Backend {
 inline std::uint64_t backend_fingerprint() {
   return size_fingerprint({sizeof(Backend), sizeof(Session), sizeof(PartitionStats), sizeof(PartitionedSystem),
                            sizeof(fem::Model), sizeof(fem::ConstraintOptions), sizeof(fem::GlobalMatrices),
-                           sizeof(reduction::EigenOptions), sizeof(reduction::EigenSolution), sizeof(reduction::ModesOptions),
-                           sizeof(reduction::NormalModes), sizeof(reduction::CraigBamptonOptions),
+                           sizeof(linalg::EigenOptions), sizeof(linalg::EigenSolution), sizeof(solutions::ModesOptions),
+                           sizeof(solutions::NormalModes), sizeof(reduction::CraigBamptonOptions),
                            sizeof(reduction::CraigBamptonBasis), sizeof(std::string), sizeof(Eigen::Index)});
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// Normal modes (reduction::solve_normal_modes: same case-control selections, EIGRL/EIGR fields,
+// Normal modes (solutions::solve_normal_modes: same case-control selections, EIGRL/EIGR fields,
 // normalisation and result) with K and M assembled by element partition (partitioned_system.hpp) and
 // solved by the distributed SLEPc backend (slepc_eigensolver.hpp): no rank holds the whole K or M.
 // The mode shapes are gathered on every rank (g-set x m), as the replicated path does.
@@ -11,7 +11,7 @@
 #include <cstddef>
 
 #include "seflex/fem/model.hpp"
-#include "seflex/reduction/normal_modes.hpp"
+#include "seflex/solutions/normal_modes.hpp"
 
 namespace seflex::parallel {
 
@@ -22,7 +22,7 @@ struct PartitionStats {
   double seconds_assembly = 0;  ///< partition, element matrices, constraints, PETSc assembly
 };
 
-reduction::NormalModes solve_normal_modes_partitioned(fem::Model& model, const reduction::ModesOptions& options,
+solutions::NormalModes solve_normal_modes_partitioned(fem::Model& model, const solutions::ModesOptions& options,
                                                       PartitionStats* stats = nullptr);
 
 }  // namespace seflex::parallel

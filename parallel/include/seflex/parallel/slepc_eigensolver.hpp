@@ -1,6 +1,6 @@
 #pragma once
 // Distributed generalised eigensolution K x = lambda M x on PETSc + SLEPc (docs/distributed.md):
-// the reduction::ExternalEigensolver of `seflex modes/reduce --backend slepc`.
+// the linalg::ExternalEigensolver of `seflex modes/reduce --backend slepc`.
 //
 // Method
 // - Every rank passes the same K and M (n x n, symmetric, lower triangles read); each rank copies its
@@ -16,18 +16,18 @@
 //   (K, M) in their span, X^T K X and X^T M X summed from each rank's rows of the distributed
 //   products (M-orthonormal vectors): the same EigenSolution as the serial backends, on every rank.
 // Collective on PETSC_COMM_WORLD; needs a parallel::Session.
-// Throws reduction::FactorizationError if MUMPS finds A not positive definite (column unknown: -1),
+// Throws linalg::FactorizationError if MUMPS finds A not positive definite (column unknown: -1),
 // ConvergenceError if Krylov-Schur stops short of the wanted pairs, InvariantError on PETSc failures.
 #include "seflex/parallel/partitioned_system.hpp"
-#include "seflex/reduction/eigensolver.hpp"
+#include "seflex/linalg/eigensolver.hpp"
 
 namespace seflex::parallel {
 
-reduction::EigenSolution slepc_eigenproblem(const reduction::SparseMatrixd& K, const reduction::SparseMatrixd& M,
-                                            const reduction::EigenOptions& options);
+linalg::EigenSolution slepc_eigenproblem(const linalg::SparseMatrixd& K, const linalg::SparseMatrixd& M,
+                                            const linalg::EigenOptions& options);
 
 /// The same method on the matrices of a partitioned assembly (nothing replicated but the gathered
 /// vectors): vectors n_free x m in the serial f numbering (PartitionedSystem::f_to_g), on every rank.
-reduction::EigenSolution slepc_eigenproblem_partitioned(const PartitionedSystem& system, const reduction::EigenOptions& options);
+linalg::EigenSolution slepc_eigenproblem_partitioned(const PartitionedSystem& system, const linalg::EigenOptions& options);
 
 }  // namespace seflex::parallel

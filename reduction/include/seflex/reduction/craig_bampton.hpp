@@ -22,8 +22,8 @@
 #include <optional>
 #include <vector>
 
-#include "seflex/reduction/eigensolver.hpp"
-#include "seflex/reduction/sparse_factorization.hpp"
+#include "seflex/linalg/eigensolver.hpp"
+#include "seflex/linalg/sparse_factorization.hpp"
 #include "seflex/superelement/superelement.hpp"
 
 namespace seflex::reduction {
@@ -37,13 +37,13 @@ struct CraigBamptonOptions {
   /// the factor of K_ii the constraint modes made (one factorisation in all, BLAS-3 solves); smaller
   /// ones, and requests beyond its basis limit, from solve_eigenproblem with `backend`.
   Eigen::Index block_lanczos_min_size = 2000;
-  EigenBackend backend = EigenBackend::Spectra;
-  FactorizationBackend factorization = kDefaultFactorization;
+  linalg::EigenBackend backend = linalg::EigenBackend::Spectra;
+  linalg::FactorizationBackend factorization = linalg::kDefaultFactorization;
   /// Distributed backends (parallel/, SEFLEX_MPI): when set, K_ii is factorised by an object it makes
   /// (instead of make_factorization(factorization)) and the fixed-interface eigenproblems that do not
   /// use that factor go to `external` (EigenOptions::external).
-  FactorizationMaker factorization_maker;
-  ExternalEigensolver external;
+  linalg::FactorizationMaker factorization_maker;
+  linalg::ExternalEigensolver external;
   /// Loads (n_f x k, f-set rows) whose static response with the boundary held, K_ii^-1 F_i, is
   /// returned in CraigBamptonBasis::static_responses: one more block solve with the factor of K_ii
   /// (the inertia load cases of the geometric-stiffness invariants, stiffening.hpp).
@@ -53,8 +53,8 @@ struct CraigBamptonOptions {
 /// Figures of the work done.
 struct CraigBamptonStats {
   Eigen::Index n_free = 0, n_boundary = 0, n_interior = 0;
-  FactorizationStats interior_factorization;  ///< of K_ii (constraint modes)
-  EigenStats eigen;                           ///< of the (last) solve_eigenproblem run, if any
+  linalg::FactorizationStats interior_factorization;  ///< of K_ii (constraint modes)
+  linalg::EigenStats eigen;                           ///< of the (last) solve_eigenproblem run, if any
   int eigen_solutions = 0;                    ///< solve_eigenproblem runs (0 with block Lanczos)
   int block_solves = 0;                       ///< block Lanczos: block solves with the factor of K_ii
   Eigen::Index krylov_basis = 0;              ///< block Lanczos: basis size at convergence
@@ -80,7 +80,7 @@ void demand_valid_request(const CraigBamptonOptions& options, const std::vector<
 /// Throws InvariantError for bad options or indices (empty, out of range, repeated),
 /// FactorizationError if K_ii is singular (the boundary does not hold the interior: the column
 /// names the f-dof), ConvergenceError if the eigensolver fails.
-CraigBamptonBasis craig_bampton(const SparseMatrixd& K_ff, const SparseMatrixd& M_ff,
+CraigBamptonBasis craig_bampton(const linalg::SparseMatrixd& K_ff, const linalg::SparseMatrixd& M_ff,
                                 const std::vector<Eigen::Index>& boundary, const CraigBamptonOptions& options);
 
 /// What the kept fixed-interface modes retain ("model no more than a scene needs").
@@ -92,7 +92,7 @@ CraigBamptonBasis craig_bampton(const SparseMatrixd& K_ff, const SparseMatrixd& 
 /// lumped mass matrix: the interior's own rigid-body mass and inertia). A direction without
 /// interior mass counts as fully kept (1). Frequencies come from the basis (first neglected 0 if
 /// none was computed).
-se::TruncationReport truncation_report(const CraigBamptonBasis& basis, const SparseMatrixd& M_ff,
+se::TruncationReport truncation_report(const CraigBamptonBasis& basis, const linalg::SparseMatrixd& M_ff,
                                        const Eigen::MatrixXd& R_b);
 
 /// Eigenvalues (ascending, (rad/s)^2) of a small dense pencil (K, M), K and M positive

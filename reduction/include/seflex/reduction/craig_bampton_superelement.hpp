@@ -62,6 +62,7 @@ struct SuperelementOptions {
   /// Compute the geometric-stiffness invariants (stiffening.hpp; with either backend: the partitioned
   /// `basis` below solves the inertia load cases on its factor, CraigBamptonOptions::interior_loads).
   bool stiffening = true;
+  bool ignore_unknown_cards = false;  ///< reduce without the cards seflex does not know (check_card_usage)
   /// The distributed backend's partitioned assembly (parallel/, `reduce --backend slepc`): when both
   /// are set, step 1 takes the g-set matrices from `assemble` (M whole; K only as far as
   /// apply_constraints needs it: each grid's diagonal block, enough when no dof is dependent) and
@@ -108,6 +109,6 @@ Eigen::VectorXd reduced_eigenvalues(const se::Superelement& body, int count);
 /// Lowest `count` eigenvalues of the full FE model with the constraints `reduce_to_superelement`
 /// applies (case-control SPC and MPC, rigid elements, AUTOSPC), for comparison with the reduced model.
 Eigen::VectorXd full_model_eigenvalues(const fem::Model& model, int count,
-                                       EigenBackend backend = EigenBackend::Spectra);
+                                       linalg::EigenBackend backend = linalg::EigenBackend::Spectra);
 
 }  // namespace seflex::reduction

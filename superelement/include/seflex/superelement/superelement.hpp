@@ -58,7 +58,7 @@ struct Superelement {
   std::string source_hash;          ///< SHA-256 (hex) of the source model's bytes (all included files)
   std::string created;              ///< ISO-8601 UTC time of the reduction
   /// Warnings `seflex reduce` printed about the source model (cards the reduction did not use or
-  /// read with an approximation; reduction/card_usage.hpp), one line each; shown again by export.
+  /// read with an approximation; solutions/card_usage.hpp), one line each; shown again by export.
   std::vector<std::string> source_warnings;
 
   // ---- frame and interfaces

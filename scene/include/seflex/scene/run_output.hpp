@@ -1,0 +1,104 @@
+#pragma once
+// Results of a `seflex run`, written as the run goes (history and poses flushed at least every
+// 0.2 s of wall time and at the end, events.csv at every event; a run that stops early, on an error or
+// an exception, leaves everything it computed; one killed leaves all but its last 0.2 s):
+//   history.csv   t; per hinge H: H.phi_deg, H.rate_deg_s (driven: H.drive_torque); per force element E: E.torque (cable
+//                 loops: E.force, E.tension1, E.tension2, E.torque.<hinge> per hinge), locks also
+//                 E.latched; E_kinetic, E_elastic, E_spring, E_gravity, E_total; newton_iterations
+//                 (all accepted steps so far), step_size (last accepted step)
+//   events.csv    t,kind,name,detail (locks latching at the located time, stop rule, rejections, errors)
+//   poses.csv     t,body,R00..R22,px,py,pz,q0.. per sample and body: floating-frame pose and local
+//                 elastic coordinates (rigid bodies: no q) - enough to re-animate the FE meshes
+//   animation.pvd + animation/*.vtu  deformed FE meshes at the scene's animation interval
+//   summary.txt, summary.json        written by finish()
+// It also carries the scene's stop rule (integrator.stop.after_all_locked) as stop_requested().
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "seflex/scene/scene.hpp"
+#include "seflex/io/vtk_animation.hpp"
+#include "seflex/mbd/solvers/integrator.hpp"
+#include "seflex/mbd/output.hpp"
+
+namespace seflex::scene {
+
+struct RunOutputOptions {
+  std::filesystem::path folder;
+  bool overwrite = false;  ///< replace the results of an earlier run in `folder`
+  bool animation = true;   ///< write the VTK series (if the scene asks for one)
+};
+
+/// How a run ended, for the summary.
+struct RunEnd {
+  bool ok = true;
+  std::string message;               ///< failure diagnosis (or a note)
+  double wall_seconds = 0.0;
+  double cpu_seconds = 0.0;          ///< process CPU time over the same span (building the scene, integrating, writing)
+  std::string formulation = "aic";   ///< which solver ran (mbd::formulation_name)
+  int coordinates = -1;              ///< unknowns of a multiplier formulation (-1: the model's dofs)
+  int multipliers = 0;               ///< its Lagrange multipliers
+  std::optional<mbd::RunStats> stats;  ///< absent when the solver threw (counts then come from the samples)
+};
+
+class RunOutput : public mbd::Observer {
+ public:
+  /// The files a run writes into its folder (checked by check_folder, removed before an overwrite).
+  static const std::vector<std::string>& result_files();
+  /// Throws InputError if `folder` holds results of an earlier run and !overwrite, or is a file.
+  static void check_folder(const std::filesystem::path& folder, bool overwrite);
+
+  /// Creates the folder, removes earlier results (overwrite), opens the files and writes the headers.
+  RunOutput(const Scene& scene, const RunOutputOptions& options);
+  RunOutput(const RunOutput&) = delete;
+  RunOutput& operator=(const RunOutput&) = delete;
+  ~RunOutput() override;
+
+  void on_sample(const mbd::Model& model, const mbd::Sample& sample) override;
+  void on_progress(double t, double t_end) override;
+  bool stop_requested() const override;
+
+  /// One line of events.csv.
+  void event(double t, const std::string& kind, const std::string& name, const std::string& detail);
+  /// Write summary.txt and summary.json (and the rejection summary to events.csv).
+  void finish(const RunEnd& end);
+
+  double t_last() const { return t_last_; }
+  long samples() const { return samples_; }
+  const std::filesystem::path& folder() const { return folder_; }
+
+ private:
+  void write_history(const mbd::Model& model, const mbd::Sample& s);
+  void write_poses(const mbd::Sample& s);
+  void write_animation(const mbd::Sample& s);
+  void track_locks(const mbd::Model& model, const mbd::Sample& s);
+  /// Write and flush the buffered rows of history and poses if kFlushInterval has passed since the
+  /// last time or kBufferBytes are waiting (the demo run made 5,700 write calls with a flush per
+  /// sample, and a poses row longer than the stream's buffer is a write call of its own).
+  void flush_if_due();
+  void write_out();
+  static constexpr std::chrono::milliseconds kFlushInterval{200};
+  static constexpr std::size_t kBufferBytes = 1 << 20;
+
+  const Scene& scene_;
+  std::filesystem::path folder_;
+  std::ofstream history_, events_, poses_;
+  std::string history_buf_, poses_buf_;  ///< rows not yet written (write_out)
+  std::chrono::steady_clock::time_point last_flush_ = std::chrono::steady_clock::now();
+  std::unique_ptr<io::PvdSeries> animation_;
+  double next_animation_ = 0.0;
+  int max_q_ = 0;
+  long samples_ = 0, steps_ = 0, newton_ = 0;
+  double t_last_ = 0.0, t_progress_ = 0.0;
+  std::vector<int> lock_elements_;              ///< force-element indices of the locks
+  std::vector<std::optional<double>> t_latch_;  ///< per lock
+  std::vector<double> peak_after_latch_;        ///< per lock, max |torque| once latched
+  std::optional<double> all_locked_at_;
+  bool stop_announced_ = false;
+};
+
+}  // namespace seflex::scene

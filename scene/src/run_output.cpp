@@ -1,0 +1,337 @@
+#include "seflex/scene/run_output.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+namespace seflex::scene {
+
+namespace {
+
+constexpr double kRad2Deg = 180.0 / M_PI;
+
+/// out += the shortest text that reads back as the same double.
+void append_number(std::string& out, double x) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, x);
+  out.append(buf, r.ptr);
+}
+
+std::string num(double x) {
+  std::string s;
+  append_number(s, x);
+  return s;
+}
+
+/// out += "," + num(x), without a temporary.
+void append_field(std::string& out, double x) {
+  out += ',';
+  append_number(out, x);
+}
+
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
+  return q + "\"";
+}
+
+std::string json_string(const std::string& s) {
+  std::string q = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') q += std::string("\\") + c;
+    else if (c == '\n') q += "\\n";
+    else if (static_cast<unsigned char>(c) < 0x20) q += ' ';
+    else q += c;
+  }
+  return q + "\"";
+}
+
+std::string json_number(double x) { return std::isfinite(x) ? num(x) : "null"; }
+
+const mbd::CableLoop* as_cable(const mbd::ForceElement& e) { return std::get_if<mbd::CableLoop>(&e); }
+
+/// Cable tensions T1, T2 of a loop at the hinge angles of a sample (cable_loop.hpp).
+std::pair<double, double> tensions(const mbd::CableLoop& c, const mbd::Sample& s) {
+  double e = 0.0;
+  for (auto h : c.hinges_a) e += c.r_a / static_cast<double>(c.hinges_a.size()) * s.hinges[static_cast<std::size_t>(h.value)].phi;
+  for (auto h : c.hinges_b) e -= c.r_b / static_cast<double>(c.hinges_b.size()) * s.hinges[static_cast<std::size_t>(h.value)].phi;
+  return {std::max(0.0, c.preload + c.k * e), std::max(0.0, c.preload - c.k * e)};
+}
+
+std::ofstream open(const std::filesystem::path& p) {
+  std::ofstream f(p, std::ios::binary | std::ios::trunc);
+  if (!f) throw InputError(SourceRef{p.string(), 0}, "cannot be written");
+  return f;
+}
+
+}  // namespace
+
+const std::vector<std::string>& RunOutput::result_files() {
+  static const std::vector<std::string> files{"history.csv", "events.csv", "poses.csv", "summary.txt", "summary.json",
+                                              "animation.pvd", "animation"};
+  return files;
+}
+
+void RunOutput::check_folder(const std::filesystem::path& folder, bool overwrite) {
+  namespace fs = std::filesystem;
+  if (fs::exists(folder) && !fs::is_directory(folder))
+    throw InputError(SourceRef{folder.string(), 0}, "is a file; expected an output folder");
+  if (overwrite || !fs::exists(folder)) return;
+  for (const auto& f : result_files())
+    if (fs::exists(folder / f))
+      throw InputError(SourceRef{folder.string(), 0}, "holds the results of an earlier run (" + f +
+                                                          "); refusing to overwrite them (use --force to replace them)");
+}
+
+RunOutput::RunOutput(const Scene& scene, const RunOutputOptions& o) : scene_(scene), folder_(o.folder) {
+  namespace fs = std::filesystem;
+  check_folder(folder_, o.overwrite);
+  std::error_code ec;
+  fs::create_directories(folder_, ec);
+  if (!fs::is_directory(folder_)) throw InputError(SourceRef{folder_.string(), 0}, "cannot create the output folder");
+  for (const auto& f : result_files()) fs::remove_all(folder_ / f, ec);
+  const mbd::Model& m = scene.model;
+
+  history_ = open(folder_ / "history.csv");
+  history_ << "t";
+  for (const auto& h : m.hinges) {
+    history_ << "," << h.name << ".phi_deg," << h.name << ".rate_deg_s";
+    if (h.drive) history_ << "," << h.name << ".drive_torque";
+  }
+  for (std::size_t i = 0; i < m.force_elements.size(); ++i) {
+    const auto& fe = m.force_elements[i];
+    if (const auto* c = as_cable(fe.element)) {
+      history_ << "," << fe.name << ".force," << fe.name << ".tension1," << fe.name << ".tension2";
+      for (auto h : c->hinges_a) history_ << "," << fe.name << ".torque." << m.hinge(h).name;
+      for (auto h : c->hinges_b) history_ << "," << fe.name << ".torque." << m.hinge(h).name;
+    } else {
+      history_ << "," << fe.name << ".torque";
+    }
+    if (std::holds_alternative<mbd::HingeLock>(fe.element)) {
+      history_ << "," << fe.name << ".latched";
+      lock_elements_.push_back(static_cast<int>(i));
+    }
+  }
+  history_ << ",E_kinetic,E_elastic,E_spring,E_gravity,E_total,newton_iterations,step_size\n";
+  history_.flush();
+  t_latch_.assign(lock_elements_.size(), std::nullopt);
+  peak_after_latch_.assign(lock_elements_.size(), 0.0);
+
+  events_ = open(folder_ / "events.csv");
+  events_ << "t,kind,name,detail\n";
+  if (scene.description.stop_after_all_locked && lock_elements_.empty())
+    event(0.0, "warning", "after_all_locked", "the scene has no locks; the stop rule never applies");
+  events_.flush();
+
+  for (const auto& s : scene.superelements) max_q_ = std::max(max_q_, s->size());
+  poses_ = open(folder_ / "poses.csv");
+  poses_ << "t,body,R00,R01,R02,R10,R11,R12,R20,R21,R22,px,py,pz";
+  for (int k = 0; k < max_q_; ++k) poses_ << ",q" << k;
+  poses_ << "\n";
+  poses_.flush();
+
+  if (o.animation && scene.description.output.animation_interval) {
+    std::vector<const se::Superelement*> bodies;
+    for (const auto& s : scene.superelements) bodies.push_back(s.get());
+    animation_ = std::make_unique<io::PvdSeries>(folder_, "animation", bodies, true);
+  }
+}
+
+RunOutput::~RunOutput() { write_out(); }  // a run that ends by an exception keeps its rows
+
+void RunOutput::on_sample(const mbd::Model& model, const mbd::Sample& s) {
+  ++samples_;
+  t_last_ = s.t;
+  steps_ = s.step;
+  newton_ = s.newton_iterations;
+  track_locks(model, s);
+  write_history(model, s);
+  write_poses(s);
+  write_animation(s);
+  flush_if_due();
+}
+
+void RunOutput::track_locks(const mbd::Model& model, const mbd::Sample& s) {
+  bool all = !lock_elements_.empty();
+  for (std::size_t k = 0; k < lock_elements_.size(); ++k) {
+    const auto i = static_cast<std::size_t>(lock_elements_[k]);
+    const mbd::ElementSample& e = s.elements[i];
+    if (e.latched && !t_latch_[k]) {
+      t_latch_[k] = e.t_latch;
+      const auto& l = std::get<mbd::HingeLock>(model.force_elements[i].element);
+      std::ostringstream os;
+      os << "latched at phi = " << s.hinges[static_cast<std::size_t>(l.hinge.value)].phi * kRad2Deg << " deg (lock angle "
+         << l.phi_lock * kRad2Deg << " deg), rate " << s.hinges[static_cast<std::size_t>(l.hinge.value)].phidot * kRad2Deg
+         << " deg/s";
+      event(e.t_latch, "lock", model.force_elements[i].name, os.str());
+    }
+    if (e.latched) peak_after_latch_[k] = std::max(peak_after_latch_[k], std::abs(e.value));
+    all = all && e.latched;
+  }
+  if (all && !all_locked_at_) {
+    all_locked_at_ = s.t;
+    if (scene_.description.stop_after_all_locked)
+      event(s.t, "stop", "after_all_locked",
+            "all locks latched; the run ends " + num(*scene_.description.stop_after_all_locked) + " s later");
+  }
+}
+
+void RunOutput::write_history(const mbd::Model& m, const mbd::Sample& s) {
+  std::string& row = history_buf_;  // rows are appended to the buffer that write_out empties
+  append_number(row, s.t);
+  for (std::size_t i = 0; i < s.hinges.size(); ++i) {
+    const mbd::HingeSample& h = s.hinges[i];
+    append_field(row, h.phi * kRad2Deg);
+    append_field(row, h.phidot * kRad2Deg);
+    if (m.hinges[i].drive) append_field(row, h.drive_torque);
+  }
+  for (std::size_t i = 0; i < m.force_elements.size(); ++i) {
+    const mbd::ElementSample& e = s.elements[i];
+    append_field(row, e.value);
+    if (const auto* c = as_cable(m.force_elements[i].element)) {
+      const auto [T1, T2] = tensions(*c, s);
+      append_field(row, T1);
+      append_field(row, T2);
+      for (double tau : e.hinge_torques) append_field(row, tau);
+    }
+    if (std::holds_alternative<mbd::HingeLock>(m.force_elements[i].element)) row += e.latched ? ",1" : ",0";
+  }
+  const mbd::Energies& E = s.energy;
+  for (double x : {E.kinetic, E.elastic, E.spring, E.gravity, E.total()}) append_field(row, x);
+  row += ',';
+  row += std::to_string(s.newton_iterations);
+  append_field(row, s.step_size);
+  row += '\n';
+}
+
+void RunOutput::write_poses(const mbd::Sample& s) {
+  const auto& d = scene_.description;
+  std::string& row = poses_buf_;
+  for (std::size_t b = 0; b < d.bodies.size(); ++b) {
+    const SceneBodyRef& r = scene_.bodies[b];
+    const mbd::Pose& X = r.rigid ? s.rigid[static_cast<std::size_t>(r.index)].frame : s.flexible[static_cast<std::size_t>(r.index)].frame;
+    append_number(row, s.t);
+    row += ',';
+    row += csv_field(d.bodies[b].name);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) append_field(row, X.R(i, j));
+    for (int i = 0; i < 3; ++i) append_field(row, X.p(i));
+    int nq = 0;
+    if (!r.rigid) {
+      const Eigen::VectorXd& xi = s.flexible[static_cast<std::size_t>(r.index)].xi;
+      for (Eigen::Index k = 0; k < xi.size(); ++k) append_field(row, xi(k));
+      nq = static_cast<int>(xi.size());
+    }
+    for (int k = nq; k < max_q_; ++k) row += ',';
+    row += '\n';
+  }
+}
+
+void RunOutput::flush_if_due() {
+  const auto now = std::chrono::steady_clock::now();
+  if (now - last_flush_ < kFlushInterval && history_buf_.size() + poses_buf_.size() < kBufferBytes) return;
+  write_out();
+  last_flush_ = now;
+}
+
+void RunOutput::write_out() {
+  history_ << history_buf_;
+  poses_ << poses_buf_;
+  history_buf_.clear();  // keeps its capacity
+  poses_buf_.clear();
+  history_.flush();
+  poses_.flush();
+}
+
+void RunOutput::write_animation(const mbd::Sample& s) {
+  if (!animation_) return;
+  const double dt = *scene_.description.output.animation_interval;
+  if (animation_->steps_written() > 0 && s.t < next_animation_ - 1e-9 * std::max(1.0, std::abs(s.t))) return;
+  std::vector<io::BodySnapshot> snaps;
+  for (const SceneBodyRef& r : scene_.bodies) {
+    io::BodySnapshot b;
+    const mbd::Pose& X = r.rigid ? s.rigid[static_cast<std::size_t>(r.index)].frame : s.flexible[static_cast<std::size_t>(r.index)].frame;
+    b.R_WB = X.R;
+    b.p_WBo = X.p;
+    if (!r.rigid) b.q = s.flexible[static_cast<std::size_t>(r.index)].xi;
+    snaps.push_back(std::move(b));
+  }
+  animation_->write_step(s.t, snaps);
+  if (animation_->steps_written() == 1) next_animation_ = s.t;
+  while (next_animation_ <= s.t + 1e-9 * std::max(1.0, std::abs(s.t))) next_animation_ += dt;
+}
+
+void RunOutput::on_progress(double t, double) {
+  t_progress_ = t;
+  const auto& stop = scene_.description.stop_after_all_locked;
+  if (stop && all_locked_at_ && !stop_announced_ && t >= *all_locked_at_ + *stop - 1e-12 * std::max(1.0, t)) {
+    stop_announced_ = true;
+    event(t, "stop", "after_all_locked", "run ended " + num(*stop) + " s after the last lock latched");
+  }
+}
+
+bool RunOutput::stop_requested() const { return stop_announced_; }
+
+void RunOutput::event(double t, const std::string& kind, const std::string& name, const std::string& detail) {
+  events_ << num(t) << "," << csv_field(kind) << "," << csv_field(name) << "," << csv_field(detail) << "\n";
+  events_.flush();
+}
+
+void RunOutput::finish(const RunEnd& end) {
+  write_out();
+  const mbd::Model& m = scene_.model;
+  const long steps = end.stats ? end.stats->steps : steps_;
+  const long newton = end.stats ? end.stats->newton_iterations : newton_;
+  const long rej_err = end.stats ? end.stats->rejected_error : -1, rej_newton = end.stats ? end.stats->rejected_newton : -1;
+  if (end.stats && rej_err + rej_newton > 0)
+    event(t_last_, "integrator", "rejected_steps",
+          std::to_string(rej_err) + " steps rejected by the error estimate, " + std::to_string(rej_newton) +
+              " retried after Newton failed, " + std::to_string(end.stats->event_retries) + " redone to land on lock crossings");
+  if (!end.ok) event(t_last_, "error", "run", end.message);
+  for (std::size_t k = 0; k < lock_elements_.size(); ++k)
+    if (!t_latch_[k]) event(t_last_, "warning", m.force_elements[static_cast<std::size_t>(lock_elements_[k])].name, "never latched");
+
+  std::ofstream js = open(folder_ / "summary.json");
+  js << "{\n  \"scene\": " << json_string(scene_.description.file.string()) << ",\n  \"title\": "
+     << json_string(scene_.description.title) << ",\n  \"status\": " << (end.ok ? "\"ok\"" : "\"failed\"")
+     << ",\n  \"message\": " << json_string(end.message) << ",\n  \"final_t\": " << json_number(t_last_)
+     << ",\n  \"run_time_s\": " << json_number(end.wall_seconds) << ",\n  \"cpu_time_s\": " << json_number(end.cpu_seconds)
+     << ",\n  \"steps\": " << steps
+     << ",\n  \"rejected_steps\": " << (end.stats ? std::to_string(rej_err + rej_newton) : "null")
+     << ",\n  \"newton_iterations\": " << newton << ",\n  \"formulation\": " << json_string(end.formulation)
+     << ",\n  \"dofs\": " << (end.coordinates >= 0 ? end.coordinates : m.num_dofs) << ",\n  \"multipliers\": " << end.multipliers
+     << ",\n  \"locks\": {";
+  for (std::size_t k = 0; k < lock_elements_.size(); ++k) {
+    js << (k ? "," : "") << "\n    " << json_string(m.force_elements[static_cast<std::size_t>(lock_elements_[k])].name)
+       << ": {\"t_latch\": " << (t_latch_[k] ? json_number(*t_latch_[k]) : "null")
+       << ", \"peak_abs_torque_after_latch\": " << (t_latch_[k] ? json_number(peak_after_latch_[k]) : "null") << "}";
+  }
+  js << (lock_elements_.empty() ? "}" : "\n  }") << "\n}\n";
+  js.flush();
+
+  std::ofstream tx = open(folder_ / "summary.txt");
+  tx << "seflex run " << scene_.description.file.string() << "\n" << scene_.description.title << "\n\n";
+  tx << "status          " << (end.ok ? "ok" : "FAILED") << "\n";
+  if (!end.message.empty()) tx << "message         " << end.message << "\n";
+  tx << "final time      " << t_last_ << " s\nrun time        " << end.wall_seconds << " s\nCPU time        " << end.cpu_seconds << " s\n";
+  tx << "model           " << scene_.description.bodies.size() << " bodies, " << m.hinges.size() << " hinges, "
+     << m.force_elements.size() << " force elements, " << m.num_dofs << " dofs\n";
+  tx << "formulation     " << end.formulation;
+  if (end.coordinates >= 0) tx << ": " << end.coordinates << " coordinates, " << end.multipliers << " multipliers";
+  tx << "\nsteps           " << steps;
+  if (end.stats) tx << " accepted, " << rej_err << " rejected (error), " << rej_newton << " retried (Newton)";
+  tx << "\nNewton          " << newton << " iterations";
+  if (steps > 0) tx << " (" << static_cast<double>(newton) / static_cast<double>(steps) << " per step)";
+  tx << "\n";
+  if (!lock_elements_.empty()) tx << "\nlock                      t_latch [s]   peak |torque| after latching [N m]\n";
+  for (std::size_t k = 0; k < lock_elements_.size(); ++k) {
+    tx << "  " << m.force_elements[static_cast<std::size_t>(lock_elements_[k])].name;
+    for (std::size_t pad = m.force_elements[static_cast<std::size_t>(lock_elements_[k])].name.size(); pad < 24; ++pad) tx << ' ';
+    if (t_latch_[k]) tx << num(*t_latch_[k]) << "   " << num(peak_after_latch_[k]) << "\n";
+    else tx << "never latched\n";
+  }
+  tx.flush();
+}
+
+}  // namespace seflex::scene

@@ -1,0 +1,332 @@
+// What pyNastran's public decks (models/, issue 14) write and seflex reads: bulk data replication
+// ('=', '==', '*x', '=n'), part superelements (BEGIN SUPER: skipped, listed, refused by solutions),
+// SUBCASE = n, continuation markers matched on columns 2-8, PARAM in the case control over the bulk
+// data, TFLAG as a real, COSMIC's CBAR flag F, MAT1 NU above 0.5, fluid grids and PFLUID solids,
+// rigid elements numbered apart, elements on properties or materials seflex does not model (left
+// out, listed, refused by solutions), SPOINT twice and implied by scalar elements, 0 for "none" in
+// PA/PB/PS, PSOLID STRESS as an integer, indented free-field continuations (ADAPT).
+// Each tolerance: what is read (numbers), what is listed, and where a solution refuses, the message.
+#include <gtest/gtest.h>
+
+#include "nastran_test_util.hpp"
+#include "seflex/fem/finalize.hpp"
+#include "seflex/solutions/card_usage.hpp"
+#include "seflex/solutions/statics.hpp"
+
+namespace seflex {
+namespace {
+
+using test::mentions;
+using test::read_deck;
+using test::read_error;
+
+const fem::UnsupportedCard* listed(const fem::Model& m, const std::string& name) {
+  for (const auto& u : m.unsupported)
+    if (u.name == name) return &u;
+  return nullptr;
+}
+
+/// The error a linear statics run gives (require_usable), "" if it would run.
+std::string statics_refusal(const fem::Model& m) {
+  const auto cases = solutions::select_cases(m);
+  try {
+    solutions::require_usable(m, solutions::check_card_usage(m, solutions::Solution::Statics, cases));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+/// A statics deck: a clamped CBAR (grids 1, 2) with a tip force, and `more` bulk data.
+std::string statics_deck(const std::string& more, const std::string& case_control = "") {
+  return "SOL 101\nCEND\nSPC = 1\nLOAD = 7\n" + case_control +
+         "BEGIN BULK\nMAT1,1,7.e10,,0.3,2700.\nPBAR,1,1,1.e-4,2.e-8,2.e-8,4.e-8\n"
+         "GRID,1,,0.,0.,0.\nGRID,2,,1.,0.,0.\nCBAR,1,1,1,2,0.,1.,0.\nSPC1,1,123456,1\nFORCE,7,2,0,1.,0.,0.,1.\n" +
+         more + "ENDDATA\n";
+}
+
+// ---------------------------------------------------------------------------------------------
+// Replication (MSC QRG, "Format of Bulk Data Entries"; decks mne7a, dbxdra7, v10111, superelement)
+
+TEST(PublicDecks, ReplicationMakesTheSameCardsAsWrittenOut) {
+  // mne7a_model1.dat: "GRID, 1,, 0.0, 0.0, 0.0" / "=,*11,,*.10,==" / "=9": 11 grids 11 apart, x += 0.1
+  const fem::Model r = read_deck("GRID, 1,, 0.0, 0.0, 0.0\n=,*11,,*.10,==\n=9\n");
+  ASSERT_EQ(r.grids.size(), 11u);
+  for (std::size_t k = 0; k < 11; ++k) {
+    EXPECT_EQ(r.grids[k].id, 1 + 11 * static_cast<int>(k));
+    double x = 0.0;  // the same sums in the same order as the reader's
+    for (std::size_t j = 0; j < k; ++j) x += 0.1;
+    EXPECT_EQ(r.grids[k].x.x(), x) << k;
+    EXPECT_EQ(r.grids[k].x.y(), 0.0);
+  }
+  EXPECT_NEAR(r.grids[10].x.x(), 1.0, 1e-15);
+  // '*(x)' with parentheses, '=' per field, '==' copying the rest, fixed format; the element lines too
+  const std::string fixed = test::fixed_line({"GRID", "101", "", "48.97", "-78.87", "0.", "", "3"}) +
+                            "=       *(1)    =       =       *(12.5) ==\n=(2)\n"
+                            "CROD,11,5,101,102\n=,*(1),=,*(1),*(1)\n"
+                            "PROD,5,1,1.e-4\nMAT1,1,7.e10,,0.3\n";
+  const fem::Model f = read_deck(fixed);
+  ASSERT_EQ(f.grids.size(), 4u);
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_EQ(f.grids[k].id, 101 + static_cast<int>(k));
+    EXPECT_EQ(f.grids[k].x.x(), 48.97);
+    EXPECT_NEAR(f.grids[k].x.y(), -78.87 + 12.5 * static_cast<double>(k), 1e-12);
+    EXPECT_EQ(f.grids[k].ps, 0b100);  // component 3, copied by '=='
+  }
+  ASSERT_EQ(f.rods.size(), 2u);
+  EXPECT_EQ(f.rods[1].id, 12);
+  EXPECT_EQ(f.rods[1].pid, 5);
+  EXPECT_EQ(f.rods[1].ga, 102);
+  EXPECT_EQ(f.rods[1].gb, 103);
+}
+
+TEST(PublicDecks, ReplicationIncrementsABlankFieldFromZeroAndDropsFieldsAfterTheLine) {
+  // dbxdra7.bdf: a blank CD incremented by *(1) gives CD = 1 (the grids before it have CD = 1)
+  const fem::Model m = read_deck("CORD2R,1,,0.,0.,0.,0.,0.,1.,\n,1.,0.,0.\n"
+                                 "GRID,123,,25.,-60.4,0.,,456\n=,*(1),=,=,*(14.8),=,*(1)\n");
+  ASSERT_EQ(m.grids.size(), 2u);
+  EXPECT_EQ(m.grids[0].cd, 0);
+  EXPECT_EQ(m.grids[1].cd, 1);
+  EXPECT_EQ(m.grids[1].ps, 0);  // PS not on the '=' line: left out
+  EXPECT_NEAR(m.grids[1].x.y(), -45.6, 1e-12);
+}
+
+TEST(PublicDecks, ReplicationErrorsNameTheLineAndTheField) {
+  EXPECT_TRUE(mentions(read_error("=,*1,=\n"), {"deck.bdf:1: replication '=' without a card before it"}));
+  EXPECT_TRUE(mentions(read_error("GRID,1,,0.,0.,0.\n=3\n"),
+                       {"deck.bdf:2: replication '=3' does not follow a '=' replication line"}));
+  EXPECT_TRUE(mentions(read_error("GRID,1,,0.,0.,0.\n=,*1.5,=,=\n"),
+                       {"deck.bdf:2: replication of GRID 1, field 2: '*1.5' increments '1'; expected an integer increment"}));
+  EXPECT_TRUE(mentions(read_error("GRID,1,,0.,0.,0.\n=,*a\n"), {"deck.bdf:2: replication of GRID 1, field 2: got '*a'"}));
+  EXPECT_TRUE(mentions(read_error("GRID,1,,0.,0.,0.\n=,*1,=\n=(0)\n"), {"deck.bdf:3: replication '=(0)'", "1 <= n"}));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Part superelements (see101*, flyswatter, elafor_4)
+
+TEST(PublicDecks, PartSuperelementsAreSkippedListedAndRefusedBySolutions) {
+  const std::string part = "BEGIN SUPER = 1\nGRID,1,,5.,5.,5.\nCBAR,99,1,1,2,0.,1.,0.\nGRID,77,,0.,0.,0.\n"
+                           "begin bulk super=2\nINCLUDE 'not_there.bdf'\nGRID,78,,0.,0.,0.\n";
+  const fem::Model m = read_deck(statics_deck(part));
+  ASSERT_EQ(m.grids.size(), 2u);  // the residual's grids only: the parts' ids are not seen
+  EXPECT_EQ(m.grids[0].x.x(), 0.0);
+  EXPECT_EQ(m.bars.size(), 1u);
+  const auto* u = listed(m, "BEGIN SUPER");
+  ASSERT_NE(u, nullptr);
+  EXPECT_EQ(u->count, 2u);
+  EXPECT_EQ(u->first.line, 13u);
+  EXPECT_TRUE(mentions(statics_refusal(m), {"deck.bdf:13: BEGIN SUPER", "superelement partitioning of the bulk data is not supported"}));
+  // without parts the same deck runs
+  EXPECT_EQ(statics_refusal(read_deck(statics_deck(""))), "");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Case control and continuations
+
+TEST(PublicDecks, SubcaseWithAnEqualsSign) {
+  // ZONA's decks (aero/zona/ztran.bdf): "SUBCASE = 1"
+  const fem::Model m = read_deck("SOL 101\nCEND\nSUBCASE = 3\n  LOAD = 7\nBEGIN BULK\nGRID,1,,0.,0.,0.\nENDDATA\n");
+  ASSERT_EQ(m.case_control.subcases.size(), 1u);
+  EXPECT_EQ(m.case_control.subcases[0].id, 3);
+}
+
+TEST(PublicDecks, ContinuationMarkersMatchOnColumnsTwoToEight) {
+  // plate_with_circular_hole/a101x.dat: field 10 "CORD1", continuation "+ORD1"
+  const std::string deck = test::fixed_line({"CORD2C", "1", "", "0.", "0.", "0.", "0.", "0.", "1."}, 8, "CORD1") +
+                           test::fixed_line({"+ORD1", "1.", "0.", "0."}) + "GRID,1,1,2.,90.,3.\n";
+  const fem::Model m = read_deck(deck);
+  ASSERT_EQ(m.coords.size(), 1u);
+  EXPECT_NEAR(m.grids[0].x_basic.x(), 0.0, 1e-12);
+  EXPECT_NEAR(m.grids[0].x_basic.y(), 2.0, 1e-12);
+  EXPECT_NEAR(m.grids[0].x_basic.z(), 3.0, 1e-12);
+  // columns 2-8 that differ are still an error
+  const std::string bad = test::fixed_line({"CORD2C", "1", "", "0.", "0.", "0.", "0.", "0.", "1."}, 8, "+CORD1") +
+                          test::fixed_line({"+CORD2", "1.", "0.", "0."});
+  EXPECT_TRUE(mentions(read_error(bad), {"deck.bdf:2: continuation '+CORD2' does not match '+CORD1'"}));
+}
+
+TEST(PublicDecks, IndentedFreeFieldContinuations) {
+  // ADAPT (p-elements, other/cc508a.bdf): "        errtol=.1,PART=TIP,ELSET=1" continues the card
+  const fem::Model m = read_deck("GRID,1,,0.,0.,0.\nADAPT,  101,    ,    , 210\n        errtol=.1,PART=TIP,ELSET=1\n"
+                                 "        206, 207\nGRID,2,,1.,0.,0.\n");
+  EXPECT_EQ(m.grids.size(), 2u);
+  ASSERT_NE(listed(m, "ADAPT"), nullptr);
+  EXPECT_EQ(listed(m, "ADAPT")->count, 1u);
+  // on a card seflex reads, which field the first one is would be a guess: an error
+  EXPECT_TRUE(mentions(read_error("GRID,1,,0.,0.,0.\nGRID,2,,1.,0.,0.\nRBE2,9,1,123456,2,\n        3, 4\n"),
+                       {"deck.bdf:4: free-field continuation of RBE2 9 with data in columns 1-8", "start the line with a comma"}));
+}
+
+TEST(PublicDecks, FreeFieldTrailingCommaLargeFieldNameAndAFixedCardAfterALongLine) {
+  // conedg01e.bdf: "CORD2R, 5, , 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, +C1," continued by "+C1, ..."
+  const fem::Model m = read_deck("CORD2R, 5, , 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, +C1,\n+C1, 0.0, 1.0, 0.0\nGRID,1,5,1.,2.,3.\n");
+  ASSERT_EQ(m.coords.size(), 1u);
+  EXPECT_EQ(m.coords[0].abc[7], 1.0);
+  EXPECT_NEAR(m.grids[0].x_basic.x(), -2.0, 1e-12);  // x' = basic y: (1, 2, 3) in 5 is (-2, 1, 3)
+  EXPECT_NEAR(m.grids[0].x_basic.y(), 1.0, 1e-12);
+  // se_test_n11.asm: "CORD2R *" (a blank before the large-field '*')
+  const fem::Model l = read_deck(test::fixed_line({"CORD2R *", "5", "", "0.", "0."}, 16) +
+                                 test::fixed_line({"*", "0.", "0.", "0.", "1."}, 16) + test::fixed_line({"*", "0.", "1.", "0."}, 16) +
+                                 "GRID,1,5,1.,2.,3.\n");
+  ASSERT_EQ(l.coords.size(), 1u);
+  EXPECT_NEAR(l.grids[0].x_basic.x(), -2.0, 1e-12);
+  // tb5pfstt.bdf: the fields of a long free-field line must not go to a fixed-format card after it
+  const fem::Model t = read_deck("GRID,1,,0.,0.,0.\nPFASTT,1000,K,51,61,10251,,,,1,2\nTEMPD    111     20.\n");
+  ASSERT_EQ(t.default_temperatures.size(), 1u);
+  EXPECT_EQ(t.default_temperatures[0].sid, 111);
+  EXPECT_EQ(t.default_temperatures[0].t, 20.0);
+}
+
+TEST(PublicDecks, CaseControlParamTakesPrecedenceOverTheBulkData) {
+  // flyswatter.bdf: PARAM,WTMASS,.00259 in the case control, param,wtmass,.002588 in the bulk data
+  const fem::Model m = read_deck(statics_deck("PARAM,WTMASS,.002588\n", "PARAM,WTMASS,.00259\n"));
+  EXPECT_EQ(fem::param_number(m, "WTMASS", 1.0), 0.00259);
+  const auto* u = listed(m, "PARAM in the bulk data overridden by the case control");
+  ASSERT_NE(u, nullptr);
+  EXPECT_EQ(u->first.line, 14u);
+  // a parameter seflex does not use may differ between subcases (htrussx.bdf: PARAM,EST)
+  EXPECT_NO_THROW(read_deck("SOL 101\nCEND\nSUBCASE 1\nPARAM,EST,1\nSUBCASE 2\nPARAM,EST,-1\nBEGIN BULK\nGRID,1,,0.,0.,0.\nENDDATA\n"));
+  // one it uses may not
+  EXPECT_TRUE(mentions(read_error("PARAM,WTMASS,.1\nPARAM,WTMASS,.2\nGRID,1,,0.,0.,0.\n"),
+                       {"deck.bdf:2: PARAM WTMASS: a second value (the first, at deck.bdf:1, differs)"}));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Field forms
+
+TEST(PublicDecks, TflagWrittenAsAReal) {
+  const std::string shells = test::base_deck();
+  // ha145z.bdf: TFLAG 0.0 -> 0 (listed); dbxdra2.bdf: .63 (a thickness a column to the left?) -> refused
+  const fem::Model zero = read_deck(shells + "CQUAD4,1,1,1,2,3,4\n,,,0.0,.1,.2,.3,.4\n");
+  EXPECT_EQ(zero.shells[0].tflag, 0);
+  EXPECT_EQ(zero.shells[0].t[3], 0.4);
+  EXPECT_NE(listed(zero, "CQUAD4/CTRIA3 TFLAG written as a real (0. or 1.)"), nullptr);
+  const fem::Model one = read_deck(shells + "CQUAD4,1,1,1,2,3,4\n,,,1.,.5,.5,.5,.5\n");
+  EXPECT_EQ(one.shells[0].tflag, 1);
+  const fem::Model frac = read_deck(statics_deck("PSHELL,2,1,0.002,1\nGRID,3,,1.,1.,0.\nGRID,4,,0.,1.,0.\n"
+                                                 "CQUAD4,5,2,1,2,3,4\n,,,.63,.67,,.53\n"));
+  EXPECT_NE(listed(frac, "CQUAD4/CTRIA3 TFLAG a fraction"), nullptr);
+  EXPECT_EQ(frac.shells[0].t[0], 0.67);
+  EXPECT_TRUE(mentions(statics_refusal(frac), {"deck.bdf:16: CQUAD4/CTRIA3 TFLAG a fraction"}));
+  EXPECT_TRUE(mentions(read_error(shells + "CQUAD4,1,1,1,2,3,4\n,,,2,.1,.2,.3,.4\n"), {"field 4 (TFLAG): got integer '2'; expected 0, 1 or blank"}));
+}
+
+TEST(PublicDecks, CosmicOrientationFlagInTheOfftField) {
+  // pt145.bdf: "CBAR 1 1 1 2 .0 .0 1.0 1" (COSMIC: F = 1, X1-X3 a vector)
+  const fem::Model m = read_deck("MAT1,1,7.e10,,0.3\nPBAR,1,1,1.e-4,2.e-8,2.e-8\nGRID,1,,0.,0.,0.\nGRID,2,,1.,0.,0.\n"
+                                 "GRID,3,,0.,0.,1.\nCBAR,1,1,1,2,.0,.0,1.0,1\nCBAR,2,1,1,2,3,,,2\n");
+  EXPECT_EQ(m.bars[0].offt, "GGG");
+  EXPECT_EQ(m.bars[0].v.z(), 1.0);
+  EXPECT_EQ(m.bars[1].offt, "GGG");
+  EXPECT_EQ(m.bars[1].g0, 3);
+  ASSERT_NE(listed(m, "CBAR/CBEAM/BAROR field 9 as COSMIC's orientation flag F (read as OFFT blank)"), nullptr);
+  EXPECT_EQ(listed(m, "CBAR/CBEAM/BAROR field 9 as COSMIC's orientation flag F (read as OFFT blank)")->count, 2u);
+  // F = 2 says G0, but X1-X3 is a vector: an error
+  EXPECT_TRUE(mentions(read_error("GRID,1,,0.,0.,0.\nGRID,2,,1.,0.,0.\nCBAR,1,1,1,2,.0,.0,1.0,2\n"),
+                       {"deck.bdf:3: CBAR 1, field 9 (OFFT): got integer '2'", "COSMIC's flag F: 1 with a vector X1-X3, 2 with G0"}));
+}
+
+TEST(PublicDecks, ZeroForNoPinFlagsOrPermanentConstraints) {
+  const fem::Model m = read_deck("MAT1,1,7.e10,,0.3\nPBAR,1,1,1.e-4,2.e-8,2.e-8\nGRID,1,,0.,0.,0.,,0\nGRID,2,,1.,0.,0.\n"
+                                 "CBAR,1,1,1,2,0.,1.,0.\n,0,0\n");
+  EXPECT_EQ(m.grids[0].ps, 0);
+  EXPECT_EQ(m.bars[0].pa, 0);
+  EXPECT_EQ(m.bars[0].pb, 0);
+}
+
+TEST(PublicDecks, PsolidStressAsAnInteger) {
+  // gpst17.bdf: PSOLID 10 ... STRESS = 1 (GAUSS)
+  const fem::Model m = read_deck("MAT1,1,7.e10,,0.3\nPSOLID,10,1,,,1\n");
+  EXPECT_EQ(m.solid_props[0].stress, "1");
+  EXPECT_TRUE(mentions(read_error("MAT1,1,7.e10,,0.3\nPSOLID,10,1,,,5\n"), {"PSOLID 10, field 6 (STRESS): got integer '5'; expected 0/GRID, 1/GAUSS or blank"}));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Read for seflex info, refused by solutions
+
+TEST(PublicDecks, PoissonRatioAboveOneHalfIsListedAndRefused) {
+  // freedlm.bdf: MAT1 3 2.06+7 580000. 16.7586 (NU = E/2G - 1 of an equivalent plate material)
+  const fem::Model m = read_deck(statics_deck("MAT1,3,2.06+7,580000.,16.7586\n"));
+  EXPECT_EQ(m.mat1[1].nu, 16.7586);
+  EXPECT_TRUE(mentions(statics_refusal(m), {"deck.bdf:13: MAT1 NU above 0.5", "seflex does not model MAT1 NU above 0.5"}));
+  EXPECT_TRUE(mentions(read_error("MAT1,7,2.1+11,,-1.\n"), {"MAT1 7, field 5 (NU): got real '-1.'; expected -1 < NU <= 0.5"}));
+}
+
+TEST(PublicDecks, FluidGridsAreListedAndRefused) {
+  const fem::Model m = read_deck(statics_deck("GRID,3,,0.,1.,0.,-1\n"));
+  EXPECT_EQ(m.grids[2].cd, 0);
+  EXPECT_TRUE(mentions(statics_refusal(m), {"deck.bdf:13: GRID CD = -1 (fluid)"}));
+  const fem::Model g = read_deck("GRDSET,,,,,,-1\nGRID,3,,0.,1.,0.\n");
+  ASSERT_NE(listed(g, "GRID CD = -1 (fluid)"), nullptr);
+  EXPECT_TRUE(mentions(read_error("GRID,3,,0.,1.,0.,-2\n"), {"GRID 3, field 7 (CD): got integer '-2'; expected a coordinate system id >= 0, blank or -1"}));
+}
+
+TEST(PublicDecks, RigidElementsAreNumberedApart) {
+  // aerobeam.bdf: CONM2 111 and RBAR 111; dbxdra7.bdf: CBEAM 1001 and RBAR 1001
+  const std::string base = "MAT1,1,7.e10,,0.3\nPBAR,1,1,1.e-4,2.e-8,2.e-8\nGRID,1,,0.,0.,0.\nGRID,2,,1.,0.,0.\n"
+                           "CBAR,5,1,1,2,0.,1.,0.\nCONM2,6,2,,1.\n";
+  const fem::Model m = read_deck(base + "RBAR,5,1,2,123456\nRBE2,6,1,123,2\n");
+  EXPECT_EQ(m.rbars.size(), 1u);
+  EXPECT_EQ(m.rbe2.size(), 1u);
+  EXPECT_TRUE(mentions(read_error(base + "RBAR,5,1,2,123456\nRBE2,5,1,123,2\n"),
+                       {"deck.bdf:8: RBE2 5, field 2 (EID): duplicate rigid element id, first defined at deck.bdf:7 (RBAR)"}));
+  EXPECT_TRUE(mentions(read_error(base + "CROD,6,1,1,2\n"), {"CROD 6, field 2 (EID): duplicate element id"}));
+}
+
+TEST(PublicDecks, ElementsOnUnsupportedMaterialsOrPropertiesAreLeftOutAndRefused) {
+  const std::string hexa = "GRID,11,,0.,0.,1.\nGRID,12,,1.,0.,1.\nGRID,13,,1.,1.,1.\nGRID,14,,0.,1.,1.\n"
+                           "GRID,15,,0.,0.,2.\nGRID,16,,1.,0.,2.\nGRID,17,,1.,1.,2.\nGRID,18,,0.,1.,2.\n"
+                           "CHEXA,40,4,11,12,13,14,15,16,\n,17,18\n";
+  // htflw47.bdf: PSOLID on a MAT4 (heat transfer only)
+  const fem::Model heat = read_deck(statics_deck(hexa + "PSOLID,4,9\nMAT4,9,204.\n"));
+  EXPECT_TRUE(heat.solids.empty());
+  EXPECT_TRUE(heat.solid_props.empty());
+  ASSERT_NE(listed(heat, "PSOLID on MAT4 (left out)"), nullptr);
+  ASSERT_NE(listed(heat, "CHEXA on PSOLID on MAT4 (left out)"), nullptr);
+  EXPECT_EQ(listed(heat, "CHEXA on PSOLID on MAT4 (left out)")->first.line, 21u);
+  EXPECT_TRUE(mentions(statics_refusal(heat), {"deck.bdf:21: CHEXA on PSOLID on MAT4 (left out)", "seflex does not model"}));
+  // the bar stays: its mass is still there for seflex info
+  EXPECT_EQ(heat.bars.size(), 1u);
+  // nx/composite_solids: CHEXA on a PCOMPS
+  const fem::Model pcomps = read_deck(statics_deck(hexa + "PCOMPS,4,,,,,,,\n,1,1,.5,0.\n"));
+  EXPECT_TRUE(pcomps.solids.empty());
+  EXPECT_NE(listed(pcomps, "CHEXA on PCOMPS (left out)"), nullptr);
+  // fsi.bdf: a fluid PSOLID (FCTN = PFLUID) on a MAT10
+  const fem::Model fluid = read_deck(statics_deck(hexa + "PSOLID,4,9,,,,,PFLUID\nMAT10,9,,1.2,340.\n"));
+  EXPECT_TRUE(fluid.solids.empty());
+  EXPECT_NE(listed(fluid, "PSOLID FCTN = PFLUID"), nullptr);
+  EXPECT_NE(listed(fluid, "CHEXA on PSOLID FCTN = PFLUID (left out)"), nullptr);
+  // bwb: a PBEAML on a MAT8
+  const fem::Model beam = read_deck(statics_deck("MAT8,8,1.e10,1.e9,.3,1.e9\nPBEAML,3,8,,ROD\n,.01\nCBEAM,3,3,1,2,0.,1.,0.\n"));
+  EXPECT_EQ(beam.bars.size(), 1u);
+  EXPECT_EQ(beam.bars[0].id, 1);
+  EXPECT_NE(listed(beam, "PBEAML on MAT8 (left out)"), nullptr);
+  EXPECT_NE(listed(beam, "CBEAM on PBEAML on MAT8 (left out)"), nullptr);
+  EXPECT_TRUE(mentions(statics_refusal(beam), {"PBEAML on MAT8 (left out)"}));
+  // contact/model1_sim1-solution_1.bdf: a CTETRA with some of its mid-edge grids (G5 = 0 and G7-G10
+  // blank: straight edges; tests/fem/solid_partial_test.cpp): read, used by solutions
+  const fem::Model tetra = read_deck(statics_deck(hexa.substr(0, hexa.find("CHEXA")) + "PSOLID,4,1\nCTETRA,41,4,11,12,13,15,0,17\n"));
+  ASSERT_EQ(tetra.solids.size(), 1u);
+  EXPECT_EQ(tetra.solids[0].nnode, 5);
+  EXPECT_EQ(tetra.solids[0].g[4], 17);
+  EXPECT_EQ(tetra.solids[0].missing_mid, 0b111101);
+  EXPECT_TRUE(tetra.unsupported.empty());
+  EXPECT_EQ(statics_refusal(tetra), "");
+  // a MID or PID that no card defines is still an error
+  EXPECT_TRUE(mentions(read_error(hexa + "PSOLID,4,9\n"), {"PSOLID 4, field 3 (MID): references MAT1 9, which is not defined"}));
+  EXPECT_TRUE(mentions(read_error(hexa), {"CHEXA 40, field 3 (PID): references property 4, which is not defined"}));
+}
+
+TEST(PublicDecks, ScalarPointsTwiceOrImpliedByScalarElements) {
+  // freq_sine/good_sine.dat: SPOINT 1000 twice; dbxdra2.bdf: CELAS3 on a point no SPOINT lists
+  const fem::Model m = read_deck("SPOINT,1000\nSPOINT,1000,1001\nPELAS,1,100.\nCELAS3,5,1,0,1302\nCELAS4,6,50.,1302,1303\n");
+  ASSERT_EQ(m.spoints.size(), 4u);
+  EXPECT_EQ(m.spoints[2].id, 1302);
+  EXPECT_EQ(m.spoints[3].id, 1303);
+  EXPECT_NE(listed(m, "SPOINT id given twice (one scalar point kept)"), nullptr);
+  // a grid id on CELAS3 is still an error
+  EXPECT_TRUE(mentions(read_error("GRID,7,,0.,0.,0.\nPELAS,1,100.\nCELAS3,5,1,7\n"), {"deck.bdf:3: CELAS3 5, field 4 (S1): references point 7, which is not an SPOINT; expected a scalar point (it is a GRID: use CELAS1 or CELAS2)"}));
+}
+
+}  // namespace
+}  // namespace seflex
