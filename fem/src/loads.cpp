@@ -219,7 +219,7 @@ class LoadBuilder {
       const std::string kind = other_element(eid);
       detail::fail(m_, l.ref, "PLOAD2", l.sid, "EID",
                    "element " + std::to_string(eid) + (kind.empty() ? " is not defined" : " is a " + kind) +
-                       "; expected a CQUAD4, CTRIA3, CQUAD8 or CTRIA6");
+                       "; expected a shell: CQUAD4, CTRIA3, CQUADR, CTRIAR, CQUAD8 or CTRIA6");
     }
   }
 

@@ -86,6 +86,24 @@ TEST(Cbend, ShearFactorsAddTheShearFlexibility) {
   EXPECT_NEAR(d.z(), Fz * R * kPi / 2 / (K2 * G * A), 1e-10 * std::abs(Fz * R * kPi / 2 / (K2 * G * A)));
 }
 
+// A nearly straight bend (GEOM 1 with the orientation (0.5, 1e6, 0) of pyNastran's randvar2.bdf:
+// radius 1e6 chords) is the straight cantilever, loaded along each axis in turn: F L / EA,
+// F L^3 / 3 E I1 (in the plane of the bend), F L^3 / 3 E I2, to O(L / R) and the digits the far
+// centre costs. (Loaded together, the in-plane force moves the tip along the chord by the sagitta's
+// coupling, Fy L^2 h / E I1 with h = L^2 / 8R: 1e-3 of the axial displacement.)
+TEST(Cbend, NearlyStraightBendIsTheStraightCantilever) {
+  const double L = 1.0, F = 30.0;
+  const double expected[3] = {F * L / (E * A), F * L * L * L / (3 * E * I1), F * L * L * L / (3 * E * I2)};
+  for (int k = 0; k < 3; ++k) {
+    const std::string load = k == 0 ? "1.,0.,0." : k == 1 ? "0.,1.,0." : "0.,0.,1.";
+    const fem::Model m = test::read_deck(
+        "SOL 101\nCEND\nSPC = 1\nLOAD = 2\nBEGIN BULK\nMAT1,3," + num(E) + ",," + num(nu) + "\nPBEND,7,3," + num(A) + "," + num(I1) +
+        "," + num(I2) + "," + num(J) + "\nCBEND,5,7,1,2,.5,1.+6,,1\nGRID,1,,0.,0.,0.\nGRID,2,," + num(L) +
+        ",0.,0.\nSPC1,1,123456,1\nFORCE,2,2,," + num(F) + "," + load + "\nENDDATA\n");
+    EXPECT_NEAR(tip(m)[k], expected[k], 1e-8 * expected[k]) << k;  // measured 1.1e-10, 5e-14, 2.5e-13
+  }
+}
+
 TEST(Cbend, RigidBodyModesAndMass) {
   const fem::Model m = test::read_deck(bend_deck("CBEND,5,7,1,2,9,,,1\n", ",,\n,,,,,,,,\n,,,0.3", ""));
   const fem::BendElement e = fem::make_bend_element(m, m.bends[0]);
