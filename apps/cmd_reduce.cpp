@@ -5,9 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <string>
 #include <vector>
@@ -19,10 +17,9 @@
 #include "usage_warnings.hpp"
 #include "seflex/solutions/card_usage.hpp"
 #include "seflex/common/error.hpp"
-#include "seflex/common/version.hpp"
 #include "seflex/io/model_reader.hpp"
 #include "seflex/io/results_csv.hpp"
-#include "seflex/io/sha256.hpp"
+#include "seflex/io/provenance.hpp"
 #include "seflex/io/superelement_file.hpp"
 #include "seflex/reduction/craig_bampton_superelement.hpp"
 
@@ -77,27 +74,6 @@ int frame_id(const seflex::fem::Model& model, const std::string& spec) {
         seflex::SourceRef{model.files.empty() ? std::string() : model.files[0], 0},
         "node set '" + spec + "' holds " + std::to_string(set.size()) + " nodes; expected one for --frame");
   return set.front();
-}
-
-std::string iso_utc_now() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
-
-/// SHA-256 of every file the model was read from, concatenated in reading order.
-std::string source_hash(const seflex::fem::Model& model) {
-  seflex::io::Sha256 h;
-  for (const std::string& file : model.files) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw seflex::InputError(seflex::SourceRef{file, 0}, "cannot be read again to hash it");
-    char buf[1 << 16];
-    while (in.read(buf, sizeof buf) || in.gcount() > 0) h.update(buf, static_cast<std::size_t>(in.gcount()));
-  }
-  return h.hex_digest();
 }
 
 void print_vector(const char* label, const Eigen::Vector3d& v) {
@@ -251,12 +227,7 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
   red::SuperelementInfo info;
   seflex::se::Superelement s = red::reduce_to_superelement(model, o, &info);
   const auto t2 = std::chrono::steady_clock::now();
-  s.source_file = model_path;
-  for (const solutions::CardUse& u : usage.uses)
-    if (u.kind != solutions::CardUse::Kind::Refused) s.source_warnings.push_back(solutions::describe(model, u));
-  s.source_hash = source_hash(model);
-  s.created = iso_utc_now();
-  s.seflex_version = seflex::kVersion;
+  seflex::io::record_source(s, model, model_path);  // the rest of the provenance is the library's
   const std::size_t mesh_nodes = s.fe_node_ids.size(), mesh_cells = s.cells.size();
   if (no_mesh) seflex::io::drop_mesh(s);
 

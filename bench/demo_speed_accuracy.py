@@ -25,8 +25,8 @@ import argparse, json, os, re, resource, shutil, subprocess, sys, tempfile, time
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import study  # noqa: E402  (the study's scene editing and error measures)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # bench/: the shared helpers in bench/lib/
+from lib import measures, runs  # noqa: E402  (scene editing and the studies' error measures)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 REAL_TIME_FACTOR = 20.0  # issue 12: at least 20x faster than real time in CPU time
@@ -47,10 +47,10 @@ def run(binary, scene, folder):
 def errors(folder, summary, ref_folder, ref_summary):
     r = dict(folder=folder, status=summary["status"], locks=summary["locks"])
     ref = dict(folder=ref_folder, status=ref_summary["status"], locks=ref_summary["locks"])
-    e = study.errors_solar(r, ref) if any(l["t_latch"] is not None for l in ref_summary["locks"].values()) else {}
-    h0 = study.read_history(os.path.join(ref_folder, "history.csv"))
-    h = study.read_history(os.path.join(folder, "history.csv"))
-    L0, L = study.lines_of(h0), study.lines_of(h)
+    e = measures.errors_solar(r, ref) if any(l["t_latch"] is not None for l in ref_summary["locks"].values()) else {}
+    h0 = runs.read_history(os.path.join(ref_folder, "history.csv"))
+    h = runs.read_history(os.path.join(folder, "history.csv"))
+    L0, L = measures.lines_of(h0), measures.lines_of(h)
     g = h0["t"][h0["t"] <= h["t"][-1]]
     e["angle_run_deg"] = max(float(np.max(np.abs(np.interp(g, h["t"], L[n]) - np.interp(g, h0["t"], L0[n])))) for n in L0)
     return e
@@ -87,10 +87,10 @@ def main():
         with open(os.path.join(ROOT, "examples", "solar_array", "sync-3d.yaml")) as f:
             base = f.read()
         if a.quick:
-            base = study.edit_scene(base, t_end=0.5)
+            base = runs.edit_scene(base, t_end=0.5)
 
         def scene(tol, max_step, name, modes=None):
-            text = study.edit_scene(base, tol=tol, max_step=max_step)
+            text = runs.edit_scene(base, tol=tol, max_step=max_step)
             if modes is not None:
                 text, k = re.subn(r"(\n    inertia: full\n)", rf"\1    internal_modes: {modes}\n", text)
                 if k != 3:

@@ -25,8 +25,8 @@ import sys
 import tempfile
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plate_modes_vs_calculix import write_nastran  # noqa: E402  (the same plate decks)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # bench/: the shared helpers in bench/lib/
+from lib.plate import write_nastran  # noqa: E402  (the same plate decks as bench/plate_modes_vs_calculix.py)
 
 
 def run(cmd, env):

@@ -2,7 +2,7 @@
 // Eigen SimplicialLDLT (both METIS-ordered), the measurement that chose the default
 // (docs/benchmarks.md, docs/solvers.md).
 //
-//   bench/plate_modes_vs_calculix.py --sizes 40,129,408 --decks-only --keep /tmp/plates
+//   bench/plate_modes_vs_calculix.py --sizes 40,129,408 --decks-only --only seflex --keep /tmp/plates
 //   build/bench/factorization_backends [--repeat 3] [--skip-ldlt-above N] /tmp/plates/n40/plate.bdf ...
 //
 // For each deck: K_ff of the clamped plate (fem assembly and constraints), then per backend the

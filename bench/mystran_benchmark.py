@@ -6,7 +6,8 @@ publishes its test decks (TestRuns/<Eigen|Static>/<Sparse|Banded>/Current/*.DAT)
 answers (TestRuns/.../Archive/*.arc: MYSTRAN's ANS output, the F06 tables of the results).
 The decks are fetched data: unpack the zip outside the repository and point --decks at it:
 
-    git -C /work/.mirror/MYSTRANsolver+MYSTRAN_Benchmark/repo show \\
+    git clone https://github.com/MYSTRANsolver/MYSTRAN_Benchmark /tmp/MYSTRAN_Benchmark
+    git -C /tmp/MYSTRAN_Benchmark show \\
         HEAD:Archive/Benchmark_Runs_12.0/MYSTRAN_12.0_TestRuns.zip > /tmp/mystran.zip
     mkdir -p /work/data/mystran && cd /work/data/mystran && unzip -q /tmp/mystran.zip
     bench/mystran_benchmark.py --decks /work/data/mystran/TestRuns/Eigen/Sparse \\

@@ -36,8 +36,8 @@ import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(ROOT, "bench"))
-from plate_modes_vs_calculix import ccx_frequencies, real, seflex_frequencies  # noqa: E402
+sys.path.insert(0, os.path.join(ROOT, "bench"))  # bench/: the shared helpers in bench/lib/
+from lib.plate import ccx_frequencies, real, seflex_frequencies  # noqa: E402
 
 
 def fields(line):

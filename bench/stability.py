@@ -15,8 +15,9 @@ import argparse, os, re, shutil, subprocess, sys, time, json
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from study import edit_scene, save_figure, spinup_lag  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # bench/: the shared helpers in bench/lib/
+from lib.runs import edit_scene, save_figure  # noqa: E402
+from lib.measures import spinup_lag  # noqa: E402
 
 
 def run(binary, text, folder, extra=()):

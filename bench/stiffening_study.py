@@ -17,13 +17,14 @@ CPU time: summary.json cpu_time_s; dofs: summary.json dofs.
       [--pieces 1,2,4,5,8,10] [--rates 6,12] [--elements 40] [--timeout 300]
 
 Writes OUT/stiffening/stiffening-study.csv (every run), OUT/stiffening/stiffening-table.md (the tables of the
-doc) and the chart OUT/stiffening-vs-superelements.png (copied to --img). bench/study.py calls it (not with
+doc) and the chart OUT/stiffening-vs-superelements.png (copied to --img). bench/study.py runs it (not with
 --quick / --no-stiffening-study).
 """
-import argparse, csv, json, os, shutil, subprocess, sys, time
+import argparse, csv, json, os, shutil, sys, time
 import numpy as np
 
-from study import sh  # bench/study.py: run a command, (exit code, output), None on --timeout
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # bench/: the shared helpers in bench/lib/
+from lib.runs import sh  # noqa: E402  (run a command: exit code and output, None on --timeout)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 L = 10.0

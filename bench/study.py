@@ -28,41 +28,11 @@ superelements with and without stiffening against the independent corotational r
 import argparse, csv, json, os, re, resource, shutil, subprocess, sys, time
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # bench/: the shared helpers in bench/lib/
+from lib.runs import edit_scene, save_figure, sh  # noqa: E402
+from lib.measures import errors_solar, errors_spinup, spinup_lag  # noqa: E402
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-
-
-def sh(cmd, timeout=None):
-    try:
-        r = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
-    except subprocess.TimeoutExpired:
-        return None, f"killed after {timeout:g} s (--timeout)"
-    return r.returncode, r.stdout + r.stderr
-
-
-def read_history(path):
-    with open(path) as f:
-        rows = list(csv.reader(f))
-    names = rows[0]
-    data = np.array([[float(x) if x else np.nan for x in r] for r in rows[1:]])
-    return {n: data[:, i] for i, n in enumerate(names)}
-
-
-def edit_scene(text, tol=None, method=None, step=None, stop=None, t_end=None, max_step=None):
-    if tol is not None:
-        text = re.sub(r"tolerance: \{position: [^,]+, angle: [^}]+\}", f"tolerance: {{position: {tol:g}, angle: {tol:g}}}", text)
-    if stop is not None:
-        text = re.sub(r"stop: \{after_all_locked: [^}]+\}", f"stop: {{after_all_locked: {stop:g}}}", text)
-    if method == "rk4":
-        text = re.sub(r"method: generalized-alpha\n", "", text)
-        text = re.sub(r"integrator: \{", "integrator: {method: rk4, ", text) if "integrator: {" in text else text.replace("integrator:\n", "integrator:\n  method: rk4\n")
-        text = re.sub(r"step: [0-9.eE+-]+", f"step: {step:g}", text, count=1)
-    if t_end is not None:
-        text = re.sub(r"t_end: [0-9.eE+-]+", f"t_end: {t_end:g}", text, count=1)
-    if max_step is not None:
-        text, k = re.subn(r"max_step: [0-9.eE+-]+", f"max_step: {max_step:g}", text, count=1)
-        if not k:
-            raise SystemExit("edit_scene: the scene has no max_step to change")
-    return text
 
 
 class Study:
@@ -94,75 +64,6 @@ class Study:
         self.rows.append(r)
         print(f"  {case:8s} {formulation:16s} {variant:22s} {r['status']:6s} {r['cpu_s']:8.3f} s  {r['steps']:6d} steps", flush=True)
         return r
-
-
-def lines_of(hist):
-    """Hinge-line angles [deg]: 3D hinge pairs HLna/HLnb averaged into HLn."""
-    out = {}
-    for k, v in hist.items():
-        m = re.match(r"(.+?)([ab]?)\.phi_deg$", k)
-        if m and k.endswith(".phi_deg"):
-            out.setdefault(m.group(1), []).append(v)
-    return {k: np.mean(v, axis=0) for k, v in out.items()}
-
-
-def lock_lines(locks):
-    """Per hinge line: first latch time, sum of the peak torques (3D: two locks share a line)."""
-    out = {}
-    for name, l in locks.items():
-        line = re.sub(r"^lock\.", "", name)
-        line = re.sub(r"(HL\d)[ab]$", r"\1", line)
-        t, p = out.get(line, (None, 0.0))
-        if l["t_latch"] is not None:
-            t = l["t_latch"] if t is None else min(t, l["t_latch"])
-            p += l["peak_abs_torque_after_latch"]
-        out[line] = (t, p)
-    return out
-
-
-def spinup_lag(folder):
-    h = read_history(os.path.join(folder, "history.csv"))
-    t_h, hub = h["t"], np.radians(h["hub.phi_deg"])
-    with open(os.path.join(folder, "poses.csv")) as f:
-        rows = list(csv.reader(f))[1:]
-    t = np.array([float(r[0]) for r in rows])
-    ang = np.unwrap(np.array([np.arctan2(float(r[5]), float(r[2])) for r in rows]))  # R10, R00
-    return t, np.degrees(ang - np.interp(t, t_h, hub))
-
-
-def errors_spinup(r, ref):
-    if r["status"] != "ok":
-        return dict(angle_err_deg=np.inf)
-    t0, l0 = ref
-    t, l = spinup_lag(r["folder"])
-    T = min(t[-1], t0[-1])
-    g = t0[t0 <= T]
-    return dict(angle_err_deg=float(np.max(np.abs(np.interp(g, t, l) - np.interp(g, t0, l0)))), ref_scale_deg=float(np.max(np.abs(l0))))
-
-
-def errors_solar(r, ref_r):
-    if r["status"] != "ok":
-        return dict(angle_err_deg=np.inf, lock_time_err_s=np.inf, lock_torque_rel_err=np.inf)
-    h0, h = read_history(os.path.join(ref_r["folder"], "history.csv")), read_history(os.path.join(r["folder"], "history.csv"))
-    L0, L = lines_of(h0), lines_of(h)
-    k0, k = lock_lines(ref_r["locks"]), lock_lines(r["locks"])
-    T = max(t for t, _ in k0.values() if t is not None)  # up to the reference's last lock
-    g = h0["t"][h0["t"] <= T]
-    ang = max(float(np.max(np.abs(np.interp(g, h["t"], L[n]) - np.interp(g, h0["t"], L0[n])))) for n in L0 if n in L)
-    lt = max(abs((k[n][0] if k.get(n, (None,))[0] is not None else np.inf) - k0[n][0]) for n in k0)
-    lq = max(abs(k[n][1] - k0[n][1]) / k0[n][1] if n in k else np.inf for n in k0)
-    return dict(angle_err_deg=ang, lock_time_err_s=lt, lock_torque_rel_err=lq)
-
-
-def save_figure(fig, out, name, img, cmd):
-    """Save a chart with the command that made it under out/ (and a copy in img/ if given)."""
-    fig.text(0.01, 0.01, cmd, fontsize=6)
-    fig.tight_layout(rect=(0, 0.03, 1, 1))
-    png = os.path.join(out, name)
-    fig.savefig(png, dpi=110)
-    if img:
-        shutil.copy(png, img)
-    return png
 
 
 def pareto(points):
@@ -257,10 +158,13 @@ def main():
     if a.quick or a.no_stiffening_study:
         st.notes.append("stiffening study: skipped (" + ("--quick" if a.quick else "--no-stiffening-study") + ")")
     else:
-        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-        import stiffening_study
+        # Its own script, run as a program (the scripts never import each other).
         print("stiffening study (bench/stiffening_study.py):", flush=True)
-        stiffening_study.run_study(a.bin, a.out, a.img, cmd=cmd)
+        extra = ["--img", a.img] if a.img else []
+        r = subprocess.run([sys.executable, os.path.join(ROOT, "bench", "stiffening_study.py"), "--bin", a.bin, "--out", a.out,
+                            "--timeout", f"{a.timeout:g}", *extra])
+        if r.returncode:
+            sys.exit(f"study: bench/stiffening_study.py failed ({r.returncode})")
 
     # Solar array (the demo's scenes and reductions).
     have_solar = os.path.exists(os.path.join(ROOT, "examples", "solar_array", "sync-3d.yaml"))

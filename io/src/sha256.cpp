@@ -41,15 +41,19 @@ std::string sha256_hex(std::string_view data) {
   return h.hex_digest();
 }
 
-std::string sha256_file_hex(const std::filesystem::path& path) {
+void update_from_file(Sha256& h, const std::filesystem::path& path, const char* why) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(SourceRef{path.string(), 0}, "cannot open file to hash it");
-  Sha256 h;
+  if (!in) throw InputError(SourceRef{path.string(), 0}, why);
   std::array<char, 1 << 16> buf;
   while (in) {
     in.read(buf.data(), buf.size());
     h.update(buf.data(), static_cast<std::size_t>(in.gcount()));
   }
+}
+
+std::string sha256_file_hex(const std::filesystem::path& path) {
+  Sha256 h;
+  update_from_file(h, path);
   return h.hex_digest();
 }
 

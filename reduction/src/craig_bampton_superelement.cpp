@@ -252,9 +252,10 @@ se::Superelement reduce_to_superelement(const fem::Model& model, const Superelem
     throw InputError(deck + ": no interface node given; expected at least one GRID id");
 
   // 1. Matrices and constraints.
-  solutions::require_usable(model, solutions::check_card_usage(model, solutions::Solution::CraigBampton,
-                                                               {solutions::select_case(model)}, options.interface_cards,
-                                                               options.ignore_unknown_cards));
+  const solutions::CardUsage usage = solutions::check_card_usage(
+      model, solutions::Solution::CraigBampton, {solutions::select_case(model)}, options.interface_cards,
+      options.ignore_unknown_cards);
+  solutions::require_usable(model, usage);
   const fem::DofMap dofs = fem::make_dof_map(model);
   fem::ConstraintOptions co = case_constraints(model);
   for (const int id : options.interface_ids)  // boundary dofs: held in the interior problem, never AUTOSPC'd
@@ -379,6 +380,8 @@ se::Superelement reduce_to_superelement(const fem::Model& model, const Superelem
   se::Superelement s;
   s.name = options.name;
   s.seflex_version = kVersion;
+  for (const solutions::CardUse& u : usage.uses)  // the warnings about the deck, kept with the file
+    if (u.kind != solutions::CardUse::Kind::Refused) s.source_warnings.push_back(solutions::describe(model, u));
   s.frame_node_id = model.grids[frame].id;
   s.p_OBo = X_f;
   for (std::size_t gi : interface_index) {

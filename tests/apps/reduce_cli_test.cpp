@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include "seflex/fem/assembly.hpp"
+#include "seflex/io/model_reader.hpp"
 #include "seflex/io/nastran.hpp"
+#include "seflex/io/provenance.hpp"
 #include "seflex/io/sha256.hpp"
 #include "seflex/io/superelement_file.hpp"
 #include "seflex/reduction/craig_bampton_superelement.hpp"
@@ -99,6 +101,48 @@ TEST(ReduceCli, ExportDmigAndOp4) {
       << again.err;
   EXPECT_EQ(test::read_file(tmp / "yoke.op4"), op4);
   EXPECT_EQ(test::run_seflex("export " + q(se_path) + " --op4 " + q(tmp / "yoke.op4") + " --force").exit_code, 0);
+}
+
+// The provenance is the library's: `seflex reduce` and a library caller (read_model,
+// reduce_to_superelement, record_source, save_superelement) with the same deck and options write the
+// same file, byte for byte, once `created` (the time of each call, 20 characters) is set alike. The
+// deck has an INCLUDE (the hash covers both files) and a load a reduction does not use (a warning
+// stored in the file).
+TEST(ReduceCli, TheLibraryWritesTheSameFileAsTheCommand) {
+  test::TempDir dir;
+  dir.write("arm.bdf",
+            "SOL 103\nCEND\nBEGIN BULK\nINCLUDE 'grids.bdf'\n"
+            "MAT1,1,7.0E10,,0.3,2700.\nPBAR,10,1,1.0E-4,1.0E-9,1.0E-9,2.0E-9\n"
+            "CBAR,1,10,1,2,0.,0.,1.\nCBAR,2,10,2,3,0.,0.,1.\nCBAR,3,10,3,4,0.,0.,1.\nCBAR,4,10,4,5,0.,0.,1.\n"
+            "FORCE,7,3,,1.0,0.,0.,1.\nENDDATA\n");
+  dir.write("grids.bdf", "GRID,1,,0.,0.,0.\nGRID,2,,0.25,0.,0.\nGRID,3,,0.5,0.,0.\nGRID,4,,0.75,0.,0.\nGRID,5,,1.,0.,0.\n");
+  const std::string deck = (dir / "arm.bdf").string();  // the same path for both (the warnings name it)
+  const auto r = test::run_seflex("reduce " + q(deck) + " --interface 1,5 --modes 3 --name arm -o cmd.se", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+
+  const fem::Model model = io::read_model(deck);
+  reduction::SuperelementOptions o;
+  o.interface_ids = {1, 5};
+  o.modes.modes = 3;
+  o.modes.backend = linalg::EigenBackend::Spectra;  // the command's default --eigensolver
+  o.name = "arm";
+  se::Superelement s = reduction::reduce_to_superelement(model, o);
+  const se::Superelement c = io::load_superelement(dir / "cmd.se");
+  io::record_source(s, model, deck, c.created);
+  io::save_superelement(s, dir / "lib.se");
+
+  ASSERT_EQ(s.source_warnings.size(), 1u);
+  EXPECT_NE(s.source_warnings[0].find("FORCE: 1 card, first at"), std::string::npos) << s.source_warnings[0];
+  EXPECT_EQ(s.source_hash, io::sha256_hex(test::read_file(dir / "arm.bdf") + test::read_file(dir / "grids.bdf")));
+  EXPECT_EQ(c.source_file, deck);
+  EXPECT_EQ(c.source_warnings, s.source_warnings);
+  const std::string cmd = test::read_file(dir / "cmd.se"), lib = test::read_file(dir / "lib.se");
+  EXPECT_EQ(cmd.size(), lib.size());
+  EXPECT_TRUE(cmd == lib) << "the two files differ first at byte "
+                          << std::distance(cmd.begin(), std::mismatch(cmd.begin(), cmd.end(), lib.begin(), lib.end()).first);
+  // created is the one field that differs between two calls: the current time, ISO 8601 UTC
+  EXPECT_EQ(io::iso_utc_now().size(), 20u);
+  EXPECT_EQ(c.created.size(), 20u);
 }
 
 }  // namespace

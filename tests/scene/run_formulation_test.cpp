@@ -6,7 +6,7 @@
 
 #include "scene_fixture.hpp"
 #include "seflex/io/superelement_file.hpp"
-#include "seflex/reduction/inertia_invariants.hpp"
+#include "seflex/superelement/inertia_invariants.hpp"
 
 namespace seflex::test {
 namespace {
@@ -85,7 +85,7 @@ TEST(RunFormulation, FloatingFrameAndRigidMatchAic) {
 TEST(RunFormulation, FloatingFrameRunsWithoutTheMesh) {
   TempDir dir;
   se::Superelement s = write_link(dir, "link.se", 2);
-  s.invariants = reduction::compute_inertia_invariants(s);
+  s.invariants = se::compute_inertia_invariants(s);
   io::drop_mesh(s);
   io::save_superelement(s, dir / "nomesh.se", io::SaveOptions{true});
   std::string text = scene_text("flexible");

@@ -31,4 +31,7 @@ std::string sha256_hex(std::string_view data);
 /// Hex SHA-256 of a file's bytes; throws InputError if it cannot be read.
 std::string sha256_file_hex(const std::filesystem::path& path);
 
+/// Adds a file's bytes to h; throws InputError naming the file with `why` if it cannot be opened.
+void update_from_file(Sha256& h, const std::filesystem::path& path, const char* why = "cannot open file to hash it");
+
 }  // namespace seflex::io

@@ -90,8 +90,10 @@ struct SuperelementInfo {
   double seconds_stiffening = 0;    ///< the geometric-stiffness invariants (0 when not computed)
 };
 
-/// Reduce a finalized model. Fills every field of se::Superelement except the provenance ones the
-/// caller knows (source_file, source_hash, created). Throws InputError for a bad interface or
+/// Reduce a finalized model. Fills every field of se::Superelement, of the provenance the version and
+/// the warnings about the deck's cards (source_warnings), but not what only a reader of the files
+/// knows: source_file, source_hash and created (io::record_source, seflex/io/provenance.hpp, fills
+/// them as `seflex reduce` does). Throws InputError for a bad interface or
 /// frame node (naming the node and why: missing, a scalar point, SPC'd, an RBE2 dependent,
 /// without stiffness in a component, listed twice) and for an interior the interface does not hold
 /// (a part connected to no interface node, or a mechanism: names a grid and component).
