@@ -21,7 +21,11 @@ tmp="$(mktemp -d "${TMPDIR:-/tmp}/seflex-bootstrap-check.XXXXXX")"
 trap 'rm -rf "$tmp"' EXIT
 # A clean clone of the checkout: its tracked files as committed, plus uncommitted changes to them
 # (git stash create makes that commit without touching the checkout; empty when there are none).
-rev="$(git -C "$src" stash create)"
+# git stash create refreshes the index, and fails (silently, exit 1) while another git command holds
+# the checkout's index lock (an editor's or a shell prompt's `git status`): it is given a copy.
+index="$(git -C "$src" rev-parse --path-format=absolute --git-path index)"
+cp "$index" "$tmp/index"
+rev="$(GIT_INDEX_FILE="$tmp/index" git -C "$src" stash create)"
 mkdir "$tmp/clone"
 git -C "$src" archive "${rev:-HEAD}" | tar -x -C "$tmp/clone"
 cd "$tmp/clone"
