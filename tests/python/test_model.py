@@ -15,8 +15,8 @@ def test_modes_match_mystran_and_the_command(tmp_path):
     model = seflex.read_model(CANTILEVER)
     r = seflex.modes(model, 4)
     # MYSTRAN 12.0 (tests/data/validation/README.md): 10.68719 / 62.81653 / 166.3460 / 289.9396 Hz,
-    # printed to 7 digits; the README states 1e-5 relative agreement with its lumped mass.
-    np.testing.assert_allclose(r.frequencies, [10.68719, 62.81653, 166.3460, 289.9396], rtol=1e-5)
+    # printed to 7 digits (rounding up to 5e-7 relative); measured agreement 2.9e-7.
+    np.testing.assert_allclose(r.frequencies, [10.68719, 62.81653, 166.3460, 289.9396], rtol=1e-6)
     np.testing.assert_array_equal(r.radians, np.sqrt(np.abs(r.eigenvalues)))
     # The command on the same deck writes the same numbers (shortest round-trip decimal: bit for bit).
     out = tmp_path / "f.csv"
@@ -33,9 +33,12 @@ def test_mode_shapes_are_keyed_by_grid_and_mass_normalised():
     r = seflex.modes(model, 2)
     assert r.shapes.shape == (2, len(model.grid_ids), 6)
     np.testing.assert_array_equal(r.grids, model.grid_ids)
-    # Nastran's default normalisation is MASS: generalized mass 1 (to round-off, measured 2e-16).
-    np.testing.assert_allclose(r.generalized_mass, 1.0, rtol=1e-12)
-    np.testing.assert_allclose(r.generalized_stiffness, r.eigenvalues, rtol=1e-12)
+    # The deck asks for NORM=MAX: the largest component of each shape is 1, and the generalized
+    # masses are MYSTRAN's 6.800571E-04 and 9.499997E-04 (7 printed digits; measured 4.5e-8 relative).
+    # Generalized stiffness = eigenvalue x generalized mass: measured 2.8e-14 relative.
+    np.testing.assert_allclose(np.abs(r.shapes).max(axis=(1, 2)), 1.0, rtol=1e-12)
+    np.testing.assert_allclose(r.generalized_mass, [6.800571e-04, 9.499997e-04], rtol=1e-6)
+    np.testing.assert_allclose(r.generalized_stiffness, r.eigenvalues * r.generalized_mass, rtol=1e-12)
     # The shapes are a read-only view owned by the result (no copy per access).
     a, b = r.shapes, r.shapes
     assert not a.flags.writeable
@@ -44,7 +47,7 @@ def test_mode_shapes_are_keyed_by_grid_and_mass_normalised():
 
 def test_cantilever_tip_deflection_is_euler_bernoulli(tmp_path):
     # A steel cantilever of 4 CBARs, tip load P along z: w = P L^3 / (3 E I), theta = P L^2 / (2 E I)
-    # (the cubic beam element is exact for nodal loads). Measured agreement: 2e-16 relative.
+    # (the cubic beam element is exact for nodal loads). Measured agreement: 5e-14 relative.
     L, E, I, P = 2.0, 2.0e11, 8.0e-8, 150.0
     grids = "".join(f"GRID,{k + 1},,{k * L / 4},0.,0.\n" for k in range(5))
     bars = "".join(f"CBAR,{k + 1},1,{k + 1},{k + 2},0.,1.,0.\n" for k in range(4))
