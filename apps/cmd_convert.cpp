@@ -9,6 +9,7 @@
 #include "model_args.hpp"
 #include "usage_warnings.hpp"
 #include "seflex/solutions/card_usage.hpp"
+#include "seflex/fem/element_counts.hpp"
 #include "seflex/io/model_reader.hpp"
 #include "seflex/io/nastran_writer.hpp"
 #include "seflex/io/results_csv.hpp"
@@ -36,9 +37,7 @@ int run_convert(seflex::app::Args& args) {
   }
   seflex::io::write_nastran_file(model, *output, force, w);
 
-  std::size_t elements = model.bars.size() + model.rods.size() + model.shells.size() + model.springs.size() + model.rbe2.size() +
-                         model.rbars.size() + model.rbe3.size() + model.bushes.size() + model.scalar_masses.size() +
-                         model.conm1.size() + model.solids.size();
+  const std::size_t elements = seflex::fem::element_count(model) - model.conm2.size();
   std::printf("wrote %s: %zu grids, %zu elements, %zu CONM2, %zu node sets\n", output->c_str(), model.grids.size(), elements,
               model.conm2.size(), model.node_sets.size());
   std::fflush(stdout);

@@ -10,6 +10,7 @@
 #include "seflex/solutions/buckling.hpp"
 #include "command.hpp"
 #include "info_superelement.hpp"
+#include "seflex/fem/element_counts.hpp"
 #include "seflex/fem/finalize.hpp"
 #include "seflex/fem/mass_properties.hpp"
 #include "seflex/fem/model.hpp"
@@ -25,42 +26,21 @@ void row(const std::string& name, std::size_t n, int indent = 2) {
 }
 
 void print_model(const seflex::fem::Model& m) {
-  std::size_t cbar = 0, cbeam = 0, crod = 0, conrod = 0, quad = 0, tria = 0, celas1 = 0, celas2 = 0;
-  for (const auto& b : m.bars) (b.is_beam ? cbeam : cbar)++;
-  for (const auto& r : m.rods) (r.inline_property ? conrod : crod)++;
-  for (const auto& s : m.shells) (s.nnode == 4 ? quad : tria)++;
-  std::size_t celas34 = 0, cmass = 0;
-  for (const auto& s : m.springs) (s.scalar_points ? celas34 : s.inline_property ? celas2 : celas1)++;
-  cmass = m.scalar_masses.size();
-  const std::size_t elements = m.bars.size() + m.rods.size() + m.shells.size() + m.conm2.size() + m.springs.size() +
-                               m.rbe2.size() + m.rbars.size() + m.rbe3.size() + m.bushes.size() + cmass + m.conm1.size() +
-                               m.solids.size();
-  std::size_t chexa = 0, cpenta = 0, ctetra = 0;
-  for (const auto& s : m.solids)
-    (s.shape == seflex::fem::Solid::Shape::Hexa ? chexa : s.shape == seflex::fem::Solid::Shape::Penta ? cpenta : ctetra)++;
   std::printf("\nmodel\n");
   row("grids", m.grids.size());
   row("scalar points", m.spoints.size());
   row("coordinate systems", m.coords.size());
-  row("elements", elements);
-  const std::pair<const char*, std::size_t> kinds[] = {{"CBAR", cbar},     {"CBEAM", cbeam},   {"CROD", crod},
-                                                       {"CONROD", conrod}, {"CQUAD4", quad},   {"CTRIA3", tria},
-                                                       {"CONM2", m.conm2.size()}, {"CELAS1", celas1}, {"CELAS2", celas2},
-                                                       {"RBE2", m.rbe2.size()}, {"RBAR", m.rbars.size()},
-                                                       {"RBE3", m.rbe3.size()}, {"CBUSH", m.bushes.size()},
-                                                       {"CELAS3/CELAS4", celas34}, {"CMASS1-4", cmass},
-                                                       {"CONM1", m.conm1.size()}, {"CHEXA", chexa},
-                                                       {"CPENTA", cpenta}, {"CTETRA", ctetra}};
-  for (const auto& [name, n] : kinds)
-    if (n) row(name, n, 4);
+  row("elements", seflex::fem::element_count(m));
+  for (const auto& [name, n] : seflex::fem::element_counts(m)) row(name, n, 4);
   row("properties", m.bar_props.size() + m.rod_props.size() + m.shell_props.size() + m.composite_props.size() +
-                         m.spring_props.size() + m.bush_props.size() + m.mass_props.size() + m.solid_props.size());
+                         m.spring_props.size() + m.bush_props.size() + m.mass_props.size() + m.solid_props.size() +
+                         m.shear_props.size() + m.bend_props.size());
   row("materials", m.mat1.size() + m.mat2.size() + m.mat8.size() + m.mat9.size());
   row("SPC entries", m.spcs.size());
   row("MPC equations", m.mpcs.size());
-  row("loads (FORCE, MOMENT)", m.point_loads.size());
+  row("loads (FORCE*, MOMENT*)", m.point_loads.size());
   if (const std::size_t n = m.pressure_loads.size() + m.face_loads.size() + m.gravity_loads.size() +
-                            m.rotational_loads.size())
+                            m.rotational_loads.size() + m.grid_pressure_loads.size() + m.scalar_loads.size())
     row("pressure, inertia loads", n);
   if (const std::size_t n = m.bar_line_loads.size()) row("bar loads (PLOAD1)", n);
   if (const std::size_t n = m.enforced_motions.size()) row("enforced motion (SPCD)", n);

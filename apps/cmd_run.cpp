@@ -68,6 +68,8 @@ int run_run(seflex::app::Args& args) {
   const auto inertia = args.value("inertia");
   const auto fidelity = args.value("fidelity");
   const std::string formulation_arg = args.value("formulation").value_or("aic");
+  const auto method = args.value("method");
+  const auto tolerance = args.value("tolerance");
   const bool no_animation = args.flag("no-animation");
   const std::string scene_path = args.positional("SCENE");
   args.finish();
@@ -84,9 +86,17 @@ int run_run(seflex::app::Args& args) {
   scene::RunOutput::check_folder(*out, force);  // before the work, not after it
 
   scene::SceneDescription d = scene::read_scene(scene_path);
-  if (!mbd::integrator_unavailable(formulation, d.method).empty())
-    throw UsageError("option --formulation " + formulation_arg + " integrates with generalized-alpha only; the scene asks for integrator.method " +
-                     mbd::integrator_method_name(d.method));
+  if (method) {
+    if (*method == "generalized-alpha") d.method = mbd::IntegratorMethod::GeneralizedAlpha;
+    else if (*method == "radau5") d.method = mbd::IntegratorMethod::Radau5;
+    else if (*method == "rk4") d.method = mbd::IntegratorMethod::Rk4;
+    else throw UsageError("option --method expects generalized-alpha, radau5 or rk4, got '" + *method + "'");
+  }
+  if (const std::string why = mbd::integrator_unavailable(formulation, d.method); !why.empty())
+    throw UsageError("option --formulation " + formulation_arg + ": " + (method ? "--method asks for " : "the scene asks for ") + why);
+  if (tolerance)
+    d.integrator.tol_position = d.integrator.tol_angle =
+        seflex::app::positive_number("tolerance", *tolerance, "a local error tolerance > 0 (relative to the model size / rad)");
   if (t_end) d.integrator.t_end = seflex::app::positive_number("t-end", *t_end, "a time > 0 in seconds");
   if (step) {
     d.integrator.h_initial = seflex::app::positive_number("step", *step, "a time > 0 in seconds");
@@ -131,6 +141,7 @@ int run_run(seflex::app::Args& args) {
   Progress progress(output);
   scene::RunEnd end;
   end.formulation = mbd::formulation_name(formulation);
+  end.method = mbd::integrator_method_name(d.method);
   const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   const auto cpu_seconds = [&] { return static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC; };
   try {
@@ -173,10 +184,11 @@ int run_run(seflex::app::Args& args) {
 }  // namespace
 
 SEFLEX_COMMAND(run,
-               "SCENE -o OUTDIR [--force] [--t-end T] [--step H] [--inertia simplified|full] "
-               "[--fidelity rigid|flexible] [--formulation aic|ffrf-lm|rigid-lm] [--no-animation]",
+               "SCENE -o OUTDIR [--force] [--t-end T] [--step H] [--method generalized-alpha|radau5|rk4] [--tolerance TOL] "
+               "[--inertia simplified|full] [--fidelity rigid|flexible] [--formulation aic|ffrf-lm|rigid-lm] [--no-animation]",
                "simulate the mechanism of a scene file (YAML, docs/scenes.md); writes history.csv, events.csv, "
-               "poses.csv, animation.pvd and summary.txt/json to OUTDIR as the run goes (options override the scene; "
+               "poses.csv, animation.pvd and summary.txt/json to OUTDIR as the run goes (options override the scene: "
+               "--method = integrator.method, --tolerance = integrator.tolerance's position and angle; "
                "--formulation: the AIC superelements (default), the classic floating frame or rigid bodies with "
                "Lagrange multipliers (rigid-lm, also spelled rigid), docs/ffrf.md)",
                run_run);

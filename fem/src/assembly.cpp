@@ -7,12 +7,16 @@
 #include "seflex/common/error.hpp"
 #include "seflex/fem/dmig.hpp"
 #include "seflex/fem/element_bar.hpp"
+#include "seflex/fem/element_bend.hpp"
 #include "seflex/fem/element_bush.hpp"
 #include "seflex/fem/element_conm1.hpp"
 #include "seflex/fem/element_conm2.hpp"
+#include "seflex/fem/element_genel.hpp"
 #include "seflex/fem/element_scalar_mass.hpp"
 #include "seflex/fem/element_rod.hpp"
+#include "seflex/fem/element_shear_panel.hpp"
 #include "seflex/fem/element_shell_quad4.hpp"
+#include "seflex/fem/element_shell_quadratic.hpp"
 #include "seflex/fem/element_solid.hpp"
 #include "seflex/fem/element_shell_tria3.hpp"
 #include "seflex/fem/element_spring.hpp"
@@ -85,6 +89,35 @@ std::int32_t node_of_grid(const Model& model, int grid_id, const CardRef& ref, c
   return static_cast<std::int32_t>(detail::grid_index(model, grid_id, ref, card, id, field));
 }
 
+/// The resolved elements of one kind with N grids each and their nodes (N per element), for the
+/// element kinds whose matrices come from a stiffness and a mass function alone.
+template <int N, class E>
+struct ElementGroup {
+  std::vector<E> elements;
+  std::vector<std::int32_t> nodes;
+
+  template <class Card, class Make>
+  void add(const Model& model, const Card& card, const char* name, const std::array<int, N>& grids, Make make,
+           detail::Connectivity& conn) {
+    std::int32_t n[N];
+    for (int k = 0; k < N; ++k)
+      n[k] = node_of_grid(model, grids[static_cast<std::size_t>(k)], card.ref, name, card.id, "G" + std::to_string(k + 1));
+    conn.add(n, n + N);
+    nodes.insert(nodes.end(), n, n + N);
+    elements.push_back(make(model, card));
+  }
+
+  /// f(element) -> NodeMatrix<N> in basic, rotated to the grids' CD systems and scattered, times `scale`.
+  template <class F>
+  void scatter(const detail::BlockPattern& pattern, const Axes& axes, double scale, F f, Eigen::SparseMatrix<double>& A) const {
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+      NodeMatrix<N> K = scale * f(elements[i]);
+      to_cd<N>(&nodes[N * i], axes, K);
+      pattern.scatter<N>(&nodes[N * i], K, A);
+    }
+  }
+};
+
 }  // namespace
 
 GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
@@ -118,7 +151,7 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
   rods.reserve(model.rods.size());
   for (const Rod& r : model.rods) {
     rods.push_back(make_rod_element(model, r));
-    const std::string card = r.inline_property ? "CONROD" : "CROD";
+    const std::string card = rod_card(r);
     const std::int32_t n[2] = {node_of_grid(model, r.ga, r.ref, card, r.id, "G1"),
                                node_of_grid(model, r.gb, r.ref, card, r.id, "G2")};
     conn.add(n, n + 2);
@@ -135,7 +168,7 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
                      model.conm2.size());
   conn.ptr.reserve(model.bars.size() + model.rods.size() + model.shells.size() + model.springs.size() + 1);
   for (const Shell& s : model.shells) {
-    const std::string card = s.nnode == 4 ? "CQUAD4" : "CTRIA3";
+    const std::string card = shell_card(s);
     std::int32_t n[4];
     for (int k = 0; k < s.nnode; ++k)
       n[k] = node_of_grid(model, s.g[k], s.ref, card, s.id, std::to_string(k + 4) + " (G" + std::to_string(k + 1) + ")");
@@ -177,6 +210,29 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
   for (const Conm1& c : model.conm1) conm1_nodes.push_back(node_of_grid(model, c.grid, c.ref, "CONM1", c.id, "3 (G)"));
   std::vector<ScalarMassElement> scalar_masses;
   for (const ScalarMass& s : model.scalar_masses) scalar_masses.push_back(make_scalar_mass_element(model, g.dofs, s));
+  ElementGroup<4, ShearPanelElement> shear_panels;
+  for (const ShearPanel& s : model.shear_panels) shear_panels.add(model, s, "CSHEAR", s.g, make_shear_panel_element, conn);
+  ElementGroup<2, BendElement> bends;
+  for (const Bend& b : model.bends) bends.add(model, b, "CBEND", {b.ga, b.gb}, make_bend_element, conn);
+  ElementGroup<8, QuadraticShellElement> shells8;
+  for (const QuadraticShell& q : model.shells8) {
+    const Shell& s = q.shell;
+    std::array<int, 8> grids;  // absent mid-side grids: the first corner (their blocks are zero)
+    for (int k = 0; k < 8; ++k) grids[static_cast<std::size_t>(k)] = s.g[0];
+    for (int k = 0; k < s.nnode; ++k) {
+      grids[static_cast<std::size_t>(k)] = s.g[static_cast<std::size_t>(k)];
+      if (q.mid[static_cast<std::size_t>(k)]) grids[static_cast<std::size_t>(s.nnode + k)] = q.mid[static_cast<std::size_t>(k)];
+    }
+    shells8.add(model, s, quadratic_shell_card(q), grids,
+                [&](const Model& m, const Shell&) { return make_quadratic_shell_element(m, q, &sections.get(m, s)); }, conn);
+  }
+  std::vector<GenelElement> genels;
+  for (const Genel& ge : model.genels) {
+    genels.push_back(make_genel_element(model, g.dofs, ge));
+    std::vector<std::int32_t> n;
+    for (const Eigen::Index d : genels.back().dofs) n.push_back(static_cast<std::int32_t>(g.dofs.node_of_dof(d)));
+    conn.add(n.data(), n.data() + n.size());
+  }
   for (const Spring& s : model.springs) {
     springs.push_back(make_spring_element(model, g.dofs, s));
     const SpringElement& e = springs.back();
@@ -228,6 +284,13 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
       to_cd_translations(&solid_nodes[solid_ptr[i]], solids[i].nnode, axes, K);
       pattern.scatter_translations(&solid_nodes[solid_ptr[i]], solids[i].nnode, K, g.K);
     }
+    shear_panels.scatter(pattern, axes, 1.0, shear_panel_stiffness, g.K);
+    bends.scatter(pattern, axes, 1.0, bend_stiffness, g.K);
+    shells8.scatter(pattern, axes, 1.0, [&](const QuadraticShellElement& e) { return quadratic_shell_stiffness(e, options.k6rot); }, g.K);
+    for (const GenelElement& e : genels)
+      for (std::size_t j = 0; j < e.dofs.size(); ++j)
+        for (std::size_t i = 0; i < e.dofs.size(); ++i)
+          detail::add_entry(g.K, e.dofs[i], e.dofs[j], e.K(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)));
     for (const SpringElement& s : springs) {
       detail::add_entry(g.K, s.dof1, s.dof1, s.k);
       if (s.dof2 >= 0) {
@@ -268,6 +331,9 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
       to_cd_translations(&solid_nodes[solid_ptr[i]], solids[i].nnode, axes, M);
       pattern.scatter_translations(&solid_nodes[solid_ptr[i]], solids[i].nnode, M, g.M);
     }
+    shear_panels.scatter(pattern, axes, w, shear_panel_mass, g.M);
+    bends.scatter(pattern, axes, w, bend_mass, g.M);
+    shells8.scatter(pattern, axes, w, [&](const QuadraticShellElement& e) { return quadratic_shell_mass(e, options.mass); }, g.M);
     for (std::size_t i = 0; i < masses.size(); ++i) {
       NodeMatrix<1> M = w * conm2_mass(masses[i]);
       to_cd<1>(&mass_nodes[i], axes, M);

@@ -4,7 +4,8 @@
 //
 //   u_m = sum_k a_k u_k      (one DependentDof per m-set dof; the u_k may be dependent themselves)
 //
-// One function per card family, each in its own file: constraint_rigid.cpp (RBE2, RBAR),
+// One function per card family, each in its own file: constraint_rigid.cpp (RBE2, RBAR, RBE1,
+// CRIGD1-3, RROD, CRIGDR),
 // constraint_rbe3.cpp (RBE3), constraint_mpc.cpp (MPC/MPCADD). constraints.cpp eliminates them.
 // Every function throws InputError naming the card (file:line, id, field) for undefined grids,
 // components that do not exist, and element definitions that do not determine their dependents.
@@ -42,7 +43,7 @@ struct ConstraintEquations {
 /// dofs of grid `gi` in its CD system: [A^T, -A^T skew(x_g - p); 0, A^T].
 Eigen::Matrix<double, 6, 6> rigid_map(const Model& model, const CdAxes& axes, Eigen::Index gi, const Eigen::Vector3d& p);
 
-/// RBE2 and RBAR (constraint_rigid.cpp).
+/// RBE2, RBAR, RBE1, CRIGD1-3, RROD, CRIGDR (constraint_rigid.cpp).
 void add_rigid_elements(const Model& model, const DofMap& dofs, const CdAxes& axes, ConstraintEquations& eq);
 
 /// RBE3 (constraint_rbe3.cpp).

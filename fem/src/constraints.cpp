@@ -177,7 +177,7 @@ ConstrainedSystem apply_constraints(const Model& model, const GlobalMatrices& g,
 
   // m-set: rigid elements, RBE3s and the selected MPC set, each dependent dof as a combination of others.
   detail::ConstraintEquations eq;
-  if (!model.rbe2.empty() || !model.rbars.empty() || !model.rbe3.empty() || options.mpc_set) {
+  if (has_rigid_elements(model) || options.mpc_set) {
     const auto axes = grid_cd_axes(model);
     detail::add_rigid_elements(model, dofs, axes, eq);
     detail::add_rbe3_elements(model, dofs, axes, eq);

@@ -8,6 +8,7 @@
 
 #include "model_lookup.hpp"
 #include "seflex/common/error.hpp"
+#include "seflex/fem/beam_section.hpp"
 #include "seflex/fem/components.hpp"
 
 namespace seflex::fem {
@@ -37,6 +38,102 @@ Eigen::Matrix<double, 1, 12> deformation_row(int comp, double L) {
   return g;
 }
 
+// 8-point Gauss-Legendre on [-1, 1].
+constexpr double kGauss8X[8] = {-0.96028985649753618, -0.79666647741362673, -0.52553240991632899, -0.18343464249564978,
+                                0.18343464249564978,  0.52553240991632899,  0.79666647741362673,  0.96028985649753618};
+constexpr double kGauss8W[8] = {0.10122853629037669, 0.22238103445337434, 0.31370664587788705, 0.36268378337836177,
+                                0.36268378337836177, 0.31370664587788705, 0.22238103445337434, 0.10122853629037669};
+
+/// A tapered bar's section (and NSI) at x in [0, 1]: linear between its stations.
+BarStation station_at(const BarElement& e, double x) {
+  const std::vector<BarStation>& t = e.taper;
+  std::size_t k = 1;
+  while (k + 1 < t.size() && t[k].x < x) ++k;
+  const BarStation &a = t[k - 1], &b = t[k];
+  const double f = b.x > a.x ? (x - a.x) / (b.x - a.x) : 0.0, g = 1.0 - f;
+  BarStation s;
+  s.x = x;
+  s.section = {g * a.section.A + f * b.section.A,     g * a.section.I1 + f * b.section.I1, g * a.section.I2 + f * b.section.I2,
+               g * a.section.I12 + f * b.section.I12, g * a.section.J + f * b.section.J,   a.section.K1,
+               a.section.K2,                           g * a.section.nsm + f * b.section.nsm};
+  s.nsi = g * a.nsi + f * b.nsi;
+  return s;
+}
+
+/// Calls f(s, ds, station) at the Gauss points along the bar: each interval between stations in
+/// four parts of 8 points (the flexibility's integrand, 1/A and 1/I of linear A and I, is rational:
+/// relative error below 1e-14 for an area tapering 4 to 1, tests/solutions/tapered_beam_test.cpp).
+template <class F>
+void along_taper(const BarElement& e, double L, F f) {
+  for (std::size_t k = 1; k < e.taper.size(); ++k)
+    for (int part = 0; part < 4; ++part) {
+      const double x0 = e.taper[k - 1].x + part * 0.25 * (e.taper[k].x - e.taper[k - 1].x);
+      const double x1 = x0 + 0.25 * (e.taper[k].x - e.taper[k - 1].x);
+      if (!(x1 > x0)) continue;
+      for (int i = 0; i < 8; ++i) {
+        const double x = x0 + 0.5 * (x1 - x0) * (1.0 + kGauss8X[i]);
+        f(x * L, 0.5 * (x1 - x0) * L * kGauss8W[i], station_at(e, x));
+      }
+    }
+}
+
+/// Stiffness of a tapered bar in element axes: the flexibility of end B (end A clamped) integrated
+/// along the bar, section resultants (N, Vy, Vz, T, My, Mz) = B(s) (Fx, Fy, Fz, Mx, My, Mz) at B.
+/// A block whose property is zero anywhere along the bar (A, J, I1/I2) carries no stiffness, as
+/// for the prismatic bar.
+Matrix12 tapered_stiffness(const BarElement& e, double L) {
+  const double E = e.material.E, G = e.material.G;
+  bool axial = E > 0.0, torsion = G > 0.0, plane1 = E > 0.0, plane2 = E > 0.0, coupled = false;
+  for (const BarStation& t : e.taper) {
+    axial = axial && t.section.A > 0.0;
+    torsion = torsion && t.section.J > 0.0;
+    plane1 = plane1 && t.section.I1 > 0.0;
+    plane2 = plane2 && t.section.I2 > 0.0;
+    coupled = coupled || t.section.I12 != 0.0;
+  }
+  if (coupled) plane1 = plane2 = plane1 && plane2;
+  std::vector<int> comp;  // active tip-load components
+  if (axial) comp.push_back(kU);
+  if (plane1) comp.push_back(kV);
+  if (plane2) comp.push_back(kW);
+  if (torsion) comp.push_back(kRx);
+  if (plane2) comp.push_back(kRy);
+  if (plane1) comp.push_back(kRz);
+  Matrix12 K = Matrix12::Zero();
+  if (comp.empty()) return K;
+  Eigen::Matrix<double, 6, 6> C = Eigen::Matrix<double, 6, 6>::Zero();
+  along_taper(e, L, [&](double s, double ds, const BarStation& st) {
+    const BarSection& x = st.section;
+    Eigen::Matrix<double, 6, 6> S = Eigen::Matrix<double, 6, 6>::Zero();  // section compliance
+    if (axial) S(0, 0) = 1.0 / (E * x.A);
+    if (plane1 && x.K1 > 0.0 && G > 0.0) S(1, 1) = 1.0 / (G * x.K1 * x.A);
+    if (plane2 && x.K2 > 0.0 && G > 0.0) S(2, 2) = 1.0 / (G * x.K2 * x.A);
+    if (torsion) S(3, 3) = 1.0 / (G * x.J);
+    if (plane1 || plane2) {  // curvatures of (My, Mz): inv(E [I2 -I12; -I12 I1])
+      const double det = x.I1 * x.I2 - x.I12 * x.I12;
+      if (coupled) {
+        S(4, 4) = x.I1 / (E * det), S(5, 5) = x.I2 / (E * det);
+        S(4, 5) = S(5, 4) = x.I12 / (E * det);
+      } else {
+        if (plane2) S(4, 4) = 1.0 / (E * x.I2);
+        if (plane1) S(5, 5) = 1.0 / (E * x.I1);
+      }
+    }
+    Eigen::Matrix<double, 6, 6> B = Eigen::Matrix<double, 6, 6>::Identity();
+    B(4, 2) = -(L - s);  // My(s) = My - (L - s) Fz
+    B(5, 1) = L - s;     // Mz(s) = Mz + (L - s) Fy
+    C += ds * B.transpose() * S * B;
+  });
+  const auto n = static_cast<Eigen::Index>(comp.size());
+  Eigen::MatrixXd Ca(n, n), g(n, 12);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index j = 0; j < n; ++j) Ca(i, j) = C(comp[static_cast<std::size_t>(i)], comp[static_cast<std::size_t>(j)]);
+    g.row(i) = deformation_row(comp[static_cast<std::size_t>(i)], L);
+  }
+  K = g.transpose() * Ca.ldlt().solve(g);
+  return 0.5 * (K + K.transpose());
+}
+
 }  // namespace
 
 Eigen::Matrix3d bar_axes(const BarElement& e) {
@@ -59,6 +156,7 @@ double bar_length(const BarElement& e) { return ((e.x_B + e.w_B) - (e.x_A + e.w_
 NodeMatrix<2> bar_stiffness_element_axes(const BarElement& e) {
   const double L = bar_length(e);
   SEFLEX_DEMAND(L > 0.0, "bar of zero length");
+  if (!e.taper.empty()) return tapered_stiffness(e, L);
   const BarSection& s = e.section;
   const double E = e.material.E, G = e.material.G;
   Matrix12 K = Matrix12::Zero();
@@ -202,8 +300,54 @@ Eigen::Matrix<double, 12, 1> bar_thermal_load(const BarElement& e, double alpha,
   return f;
 }
 
+namespace {
+
+/// The mass of a tapered bar (element axes before offsets): lumped, each end the mass and polar
+/// inertia weighted by the linear function of its end ((1 - s/L) at A, s/L at B: the total and the
+/// first moment kept); coupled, the prismatic bar's shape functions (linear axial and torsion, cubic
+/// Hermite transverse) integrated with the varying mass per length.
+Matrix12 tapered_mass(const BarElement& e, double L, MassKind kind) {
+  Matrix12 M = Matrix12::Zero();
+  const double rho = e.material.rho;
+  along_taper(e, L, [&](double s, double ds, const BarStation& st) {
+    const double m = (rho * st.section.A + st.section.nsm) * ds;
+    const double polar = (rho * (st.section.I1 + st.section.I2) + st.nsi) * ds;
+    const double x = s / L, N[2] = {1 - x, x};
+    if (kind == MassKind::Lumped) {
+      for (int n = 0; n < 2; ++n) {
+        for (int c : {kU, kV, kW}) M(6 * n + c, 6 * n + c) += N[n] * m;
+        if (e.is_beam) M(6 * n + kRx, 6 * n + kRx) += N[n] * polar;
+      }
+      return;
+    }
+    const double H[4] = {1 - 3 * x * x + 2 * x * x * x, L * (x - 2 * x * x + x * x * x), 3 * x * x - 2 * x * x * x,
+                         L * (-x * x + x * x * x)};
+    const int p1[4] = {kV, kRz, 6 + kV, 6 + kRz};
+    const int p2[4] = {kW, kRy, 6 + kW, 6 + kRy};
+    const double sgn[4] = {1, -1, 1, -1};  // theta_y = -w'
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) {
+        M(6 * i + kU, 6 * j + kU) += N[i] * N[j] * m;
+        M(6 * i + kRx, 6 * j + kRx) += N[i] * N[j] * polar;
+      }
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) {
+        M(p1[i], p1[j]) += H[i] * H[j] * m;
+        M(p2[i], p2[j]) += sgn[i] * sgn[j] * H[i] * H[j] * m;
+      }
+  });
+  return M;
+}
+
+}  // namespace
+
 NodeMatrix<2> bar_mass(const BarElement& e, MassKind kind) {
   const double L = bar_length(e);
+  if (!e.taper.empty()) {
+    Matrix12 M = tapered_mass(e, L, kind);
+    to_grids(e, bar_axes(e), M);
+    return M;
+  }
   const BarSection& s = e.section;
   const double m = (e.material.rho * s.A + s.nsm) * L;  // total translational mass
   Matrix12 M = Matrix12::Zero();
@@ -263,6 +407,25 @@ BarElement make_bar_element(const Model& model, const Bar& bar) {
   e.material = detail::material(model, p.mid, p.ref, pcard, p.id, "3 (MID)");
   e.is_beam = bar.is_beam;
   e.nsi = bar.is_beam ? p.nsi : 0.0;
+  for (std::size_t k = 0; k < p.stations.size(); ++k) {  // tapered PBEAM / PBEAML
+    const BarProperty::Station& s = p.stations[k];
+    if (p.source != BarProperty::Source::PBEAML || k == 0) {
+      e.taper.push_back({s.x, {s.A, s.I1, s.I2, s.I12, s.J, p.K1, p.K2, s.nsm}, s.nsi});
+      continue;
+    }
+    // PBEAML: the dimensions vary linearly between stations (QRG), the section properties do not:
+    // 32 sub-intervals, each section from the interpolated dimensions (linear properties between
+    // them: 1.4e-4 of a tip deflection for a tube whose radius tapers 3 to 2, tests/solutions/tapered_beam_test.cpp)
+    const BarProperty::Station& a = p.stations[k - 1];
+    constexpr int kParts = 32;
+    for (int j = 1; j <= kParts; ++j) {
+      const double f = static_cast<double>(j) / kParts;
+      std::vector<double> dims(s.dims.size());
+      for (std::size_t d = 0; d < dims.size(); ++d) dims[d] = (1 - f) * a.dims[d] + f * s.dims[d];
+      const BeamSection b = beam_section(p.section_type, dims);
+      e.taper.push_back({(1 - f) * a.x + f * s.x, {b.A, b.I1, b.I2, b.I12, b.J, p.K1, p.K2, (1 - f) * a.nsm + f * s.nsm}, 0.0});
+    }
+  }
   if (p.I12 != 0.0 && !(p.I1 * p.I2 > p.I12 * p.I12))
     detail::fail(model, p.ref, pcard, p.id, "I12", "I1 * I2 must exceed I12^2 (I1 = " + std::to_string(p.I1) +
                                                        ", I2 = " + std::to_string(p.I2) +

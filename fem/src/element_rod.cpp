@@ -51,7 +51,7 @@ Eigen::Matrix<double, 12, 1> rod_thermal_load(const RodElement& e, double alpha,
 }
 
 RodElement make_rod_element(const Model& model, const Rod& rod) {
-  const std::string card = rod.inline_property ? "CONROD" : "CROD";
+  const std::string card = rod_card(rod);
   RodElement e;
   e.x_A = model.grids[detail::grid_index(model, rod.ga, rod.ref, card, rod.id, rod.inline_property ? "3 (G1)" : "4 (G1)")]
               .x_basic;
@@ -66,12 +66,12 @@ RodElement make_rod_element(const Model& model, const Rod& rod) {
     const auto it = model.rod_prop_index.find(rod.pid);
     if (it == model.rod_prop_index.end())
       detail::fail(model, rod.ref, card, rod.id, "3 (PID)",
-                   "references PROD " + std::to_string(rod.pid) + ", which is not defined");
+                   std::string("references ") + (rod.tube ? "PTUBE " : "PROD ") + std::to_string(rod.pid) + ", which is not defined");
     const RodProperty& p = model.rod_props[it->second];
     e.A = p.A;
     e.J = p.J;
     e.nsm = p.nsm;
-    e.material = detail::material(model, p.mid, p.ref, "PROD", p.id, "3 (MID)");
+    e.material = detail::material(model, p.mid, p.ref, rod_property_card(p), p.id, "3 (MID)");
   }
   if (!((e.x_B - e.x_A).norm() > 0.0))
     detail::fail(model, rod.ref, card, rod.id, "", "connects two grids at the same position (zero length)");

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "model_lookup.hpp"
+#include "seflex/fem/element_membrane_drilling.hpp"
 #include "seflex/fem/element_plate_min4t.hpp"
 #include "seflex/common/error.hpp"
 
@@ -113,6 +114,26 @@ Row12 drilling_row(const Eigen::Vector4d& N, const Eigen::Matrix<double, 2, 4>& 
 
 const double kGauss = 1.0 / std::sqrt(3.0);
 
+// Cartesian shape derivatives (rows d/dx, d/dy) at (xi, eta).
+Eigen::Matrix<double, 2, 4> cartesian_derivatives(const Geometry& g, const Shape& s) {
+  Eigen::Matrix<double, 2, 4> dN;
+  dN.row(0) = s.dxi.transpose();
+  dN.row(1) = s.deta.transpose();
+  return jacobian(g, s).inverse() * dN;
+}
+
+// Bending: kappa = (theta_y,x, -theta_x,y, theta_y,y - theta_x,x).
+Eigen::Matrix<double, 3, 12> curvature_B(const Eigen::Matrix<double, 2, 4>& dN) {
+  Eigen::Matrix<double, 3, 12> Bb = Eigen::Matrix<double, 3, 12>::Zero();
+  for (int i = 0; i < 4; ++i) {
+    Bb(0, 3 * i + pRy) = dN(0, i);
+    Bb(1, 3 * i + pRx) = -dN(1, i);
+    Bb(2, 3 * i + pRy) = dN(1, i);
+    Bb(2, 3 * i + pRx) = -dN(0, i);
+  }
+  return Bb;
+}
+
 }  // namespace
 
 NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot, const MystranPlate* mystran) {
@@ -147,10 +168,7 @@ NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot, const Mystran
       const double det = J.determinant();
       SEFLEX_DEMAND(det > 0.0, "CQUAD4 with a non-positive Jacobian (non-convex or misordered corners)");
       const Eigen::Matrix2d Jinv = J.inverse();
-      Eigen::Matrix<double, 2, 4> dN;  // rows d/dx, d/dy
-      dN.row(0) = s.dxi.transpose();
-      dN.row(1) = s.deta.transpose();
-      dN = Jinv * dN;
+      const Eigen::Matrix<double, 2, 4> dN = cartesian_derivatives(g, s);
       const double w = det;  // Gauss weights are 1
 
       // Membrane, compatible part and QM6 incompatible modes (1 - xi^2, 1 - eta^2 per direction).
@@ -170,14 +188,7 @@ NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot, const Mystran
       Kua.noalias() += BtA.lazyProduct(Gm);
       Kaa.noalias() += (w * Gm.transpose() * Am).lazyProduct(Gm);
 
-      // Bending: kappa = (theta_y,x, -theta_x,y, theta_y,y - theta_x,x).
-      Eigen::Matrix<double, 3, 12> Bb = Eigen::Matrix<double, 3, 12>::Zero();
-      for (int i = 0; i < 4; ++i) {
-        Bb(0, 3 * i + pRy) = dN(0, i);
-        Bb(1, 3 * i + pRx) = -dN(1, i);
-        Bb(2, 3 * i + pRy) = dN(1, i);
-        Bb(2, 3 * i + pRx) = -dN(0, i);
-      }
+      const Eigen::Matrix<double, 3, 12> Bb = curvature_B(dN);
       if (!mystran) {
         const Eigen::Matrix<double, 12, 3> BtD = w * Bb.transpose() * Db;
         Kp.noalias() += BtD.lazyProduct(Bb);
@@ -218,8 +229,16 @@ NodeMatrix<4> quad4_stiffness(const Quad4Element& e, double k6rot, const Mystran
     const Row12 d = drilling_row(s0.N, J0inv * dN);
     Km.noalias() += ((4.0 * det0 * sec.drill_Gt) * d.transpose()).lazyProduct(d);
   }
-  // Static condensation of the incompatible modes (coupled to the plate dofs through B).
-  if (Kaa.trace() > 0.0) {
+  if (e.drilling && sec.has_membrane) {
+    // CQUADR: the Allman-type membrane (its drilling rotations in the displacement field and the
+    // Hughes-Brezzi term at the centre) replaces QM6 and the drilling terms; the coupling B with the
+    // MITC4 curvatures over its own 3 x 3 points.
+    Km = drilling_membrane_stiffness<4>(g.p, Am, sec.drill_Gt);
+    Kmp.setZero();
+    if (coupled)
+      for (const auto& q : drilling_membrane_points(g.p))
+        Kmp.noalias() += q.weight * q.B.transpose() * Bc * curvature_B(cartesian_derivatives(g, shape(q.xi.x(), q.xi.y())));
+  } else if (Kaa.trace() > 0.0) {  // static condensation of the incompatible modes (coupled to the plate dofs through B)
     const Eigen::Matrix4d Kaa_inv = Kaa.inverse();
     Km.noalias() -= (Kua * Kaa_inv).lazyProduct(Kua.transpose());
     if (coupled) {
@@ -291,10 +310,10 @@ Quad4Element make_quad4_element(const Model& model, const Shell& shell, const Sh
   Quad4Element e;
   for (int k = 0; k < 4; ++k) {
     const std::string field = std::to_string(k + 4) + " (G" + std::to_string(k + 1) + ")";
-    e.x[k] = model.grids[detail::grid_index(model, shell.g[k], shell.ref, "CQUAD4", shell.id, field)].x_basic;
+    e.x[k] = model.grids[detail::grid_index(model, shell.g[k], shell.ref, shell_card(shell), shell.id, field)].x_basic;
     for (int j = 0; j < k; ++j)
       if (shell.g[j] == shell.g[k])
-        detail::fail(model, shell.ref, "CQUAD4", shell.id, field, "repeats GRID " + std::to_string(shell.g[k]));
+        detail::fail(model, shell.ref, shell_card(shell), shell.id, field, "repeats GRID " + std::to_string(shell.g[k]));
   }
   const Eigen::Vector3d n = (e.x[2] - e.x[0]).cross(e.x[3] - e.x[1]);
   bool convex = n.norm() > 0.0;
@@ -303,13 +322,14 @@ Quad4Element make_quad4_element(const Model& model, const Shell& shell, const Sh
     convex = a.cross(b).dot(n) > 1e-12 * a.norm() * b.norm() * n.norm();
   }
   if (!convex)
-    detail::fail(model, shell.ref, "CQUAD4", shell.id, "4-7 (G1-G4)",
+    detail::fail(model, shell.ref, shell_card(shell), shell.id, "4-7 (G1-G4)",
                  "corners must form a convex quadrilateral, ordered around its edge (interior angles < 180 deg)");
   const Eigen::Vector3d e3 = n.normalized();
   const Eigen::Vector3d a = (e.x[1] - e.x[0]) - (e.x[1] - e.x[0]).dot(e3) * e3;
   const Eigen::Vector3d e1 = a.normalized();
   const double theta = detail::material_angle(model, shell, e1, e3.cross(e1), 0.25 * (e.x[0] + e.x[1] + e.x[2] + e.x[3]));
   e.section = (section ? *section : make_shell_section(model, shell)).in_element_axes(theta).offset(shell.zoffs);
+  e.drilling = shell.drilling;
   return e;
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "model_lookup.hpp"
+#include "seflex/fem/element_membrane_drilling.hpp"
 #include "seflex/fem/element_plate_dkt.hpp"
 #include "seflex/fem/element_plate_min3.hpp"
 #include "seflex/common/error.hpp"
@@ -85,10 +86,30 @@ NodeMatrix<3> tria3_stiffness(const Tria3Element& e, double k6rot, const Mystran
   } else {
     K.noalias() += A * Bb.transpose() * sec.D * Bb;
   }
-  K.noalias() += A * Bm.transpose() * sec.A * Bm;
-  if (!sec.B.isZero(0.0)) {  // membrane-bending coupling
-    const Eigen::Matrix<double, 18, 18> Kmb = A * Bm.transpose() * sec.B * Bb;
-    K.noalias() += Kmb + Kmb.transpose();
+  const bool allman = e.drilling && sec.has_membrane;  // CTRIAR (element_membrane_drilling.hpp)
+  if (allman) {
+    // Allman's membrane with its drilling rotations, and its strain (linear) times B with the mean
+    // curvature: at the edge midpoints, which integrate it exactly
+    constexpr int kMembraneDof[3] = {kU, kV, kRz};
+    const Eigen::Matrix<double, 9, 9> Km = drilling_membrane_stiffness<3>(g.p, sec.A, sec.drill_Gt);
+    Eigen::Matrix<double, 3, 18> Bmean = Eigen::Matrix<double, 3, 18>::Zero();  // A x the mean strain
+    for (const auto& q : drilling_membrane_points(g.p))
+      for (int i = 0; i < 3; ++i)
+        for (int a = 0; a < 3; ++a) Bmean.col(6 * i + kMembraneDof[a]) += q.weight * q.B.col(3 * i + a);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        for (int a = 0; a < 3; ++a)
+          for (int b = 0; b < 3; ++b) K(6 * i + kMembraneDof[a], 6 * j + kMembraneDof[b]) += Km(3 * i + a, 3 * j + b);
+    if (!sec.B.isZero(0.0)) {
+      const Eigen::Matrix<double, 18, 18> Kmb = Bmean.transpose() * sec.B * Bb;
+      K.noalias() += Kmb + Kmb.transpose();
+    }
+  } else {
+    K.noalias() += A * Bm.transpose() * sec.A * Bm;
+    if (!sec.B.isZero(0.0)) {  // membrane-bending coupling
+      const Eigen::Matrix<double, 18, 18> Kmb = A * Bm.transpose() * sec.B * Bb;
+      K.noalias() += Kmb + Kmb.transpose();
+    }
   }
 
   if (!kirchhoff && !mystran) {
@@ -127,7 +148,7 @@ NodeMatrix<3> tria3_stiffness(const Tria3Element& e, double k6rot, const Mystran
   }
   // Drilling: the K6ROT penalty on (theta_z - omega)^2 at the edge midpoints and the Hughes-Brezzi
   // coupling at the centroid (see element_shell_quad4.hpp).
-  const double kd = sec.has_membrane ? k6rot * 1e-6 * sec.drill_Gt : 0.0;
+  const double kd = sec.has_membrane && !allman ? k6rot * 1e-6 * sec.drill_Gt : 0.0;
   const double omega_row_scale = 0.5;
   if (kd > 0.0) {
     for (int q = 0; q < 3; ++q) {
@@ -142,7 +163,7 @@ NodeMatrix<3> tria3_stiffness(const Tria3Element& e, double k6rot, const Mystran
       K.noalias() += (kd * A / 3.0) * d.transpose() * d;
     }
   }
-  if (sec.has_membrane) {
+  if (sec.has_membrane && !allman) {
     Row18 d = Row18::Zero();
     for (int i = 0; i < 3; ++i) {
       d(6 * i + kRz) = 1.0 / 3.0;
@@ -176,17 +197,18 @@ Tria3Element make_tria3_element(const Model& model, const Shell& shell, const Sh
   Tria3Element e;
   for (int k = 0; k < 3; ++k) {
     const std::string field = std::to_string(k + 4) + " (G" + std::to_string(k + 1) + ")";
-    e.x[k] = model.grids[detail::grid_index(model, shell.g[k], shell.ref, "CTRIA3", shell.id, field)].x_basic;
+    e.x[k] = model.grids[detail::grid_index(model, shell.g[k], shell.ref, shell_card(shell), shell.id, field)].x_basic;
     for (int j = 0; j < k; ++j)
       if (shell.g[j] == shell.g[k])
-        detail::fail(model, shell.ref, "CTRIA3", shell.id, field, "repeats GRID " + std::to_string(shell.g[k]));
+        detail::fail(model, shell.ref, shell_card(shell), shell.id, field, "repeats GRID " + std::to_string(shell.g[k]));
   }
   const Eigen::Vector3d a = e.x[1] - e.x[0], b = e.x[2] - e.x[0];
   if (!(a.cross(b).norm() > 1e-12 * a.norm() * b.norm()))
-    detail::fail(model, shell.ref, "CTRIA3", shell.id, "4-6 (G1-G3)", "corners are collinear (zero area)");
+    detail::fail(model, shell.ref, shell_card(shell), shell.id, "4-6 (G1-G3)", "corners are collinear (zero area)");
   const Eigen::Vector3d e1 = a.normalized(), e3 = a.cross(b).normalized();
   const double theta = detail::material_angle(model, shell, e1, e3.cross(e1), (e.x[0] + e.x[1] + e.x[2]) / 3.0);
   e.section = (section ? *section : make_shell_section(model, shell)).in_element_axes(theta).offset(shell.zoffs);
+  e.drilling = shell.drilling;
   return e;
 }
 

@@ -47,7 +47,7 @@ Eigen::Vector3d load_direction(const Model& model, const FaceLoad& l, const Eige
 }  // namespace
 
 void shell_face_forces(const Model& model, const Shell& sh, const FaceLoad& l, std::vector<GridForce>& out) {
-  const char* card = sh.nnode == 4 ? "CQUAD4" : "CTRIA3";
+  const char* card = shell_card(sh);
   std::array<Eigen::Vector3d, 4> x;
   std::array<std::uint32_t, 4> gi{};
   for (int k = 0; k < sh.nnode; ++k) {

@@ -164,30 +164,36 @@ class Finalizer {
     index_unchecked(m_.mat8, m_.mat8_index);
     index_unchecked(m_.mat9, m_.mat9_index);
     index(m_.bar_props, m_.bar_prop_index, "PBAR", "property");
-    index(m_.rod_props, m_.rod_prop_index, "PROD", "property");
+    index_unchecked(m_.rod_props, m_.rod_prop_index);  // PROD and PTUBE: checked in the shared id space below
     index(m_.shell_props, m_.shell_prop_index, "PSHELL", "property");
     index(m_.spring_props, m_.spring_prop_index, "PELAS", "property");
     index_unchecked(m_.bush_props, m_.bush_prop_index);
     index_unchecked(m_.mass_props, m_.mass_prop_index);
+    index_unchecked(m_.shear_props, m_.shear_prop_index);
+    index_unchecked(m_.bend_props, m_.bend_prop_index);
     index(m_.solid_props, m_.solid_prop_index, "PSOLID", "property");
     // one id space for all properties
     IdSpace seen;
     seen.model = &m_;
     auto add = [&](int id, const CardRef& ref, const char* card) {
       seen.add(id, ref, card, "field 2 (PID)", "property",
-               "expected unique property ids across PBAR, PBARL, PBEAM, PBEAML, PROD, PSHELL, PCOMP, PCOMPG, PELAS, PBUSH, PMASS, PSOLID");
+               "expected unique property ids across PBAR, PBARL, PBEAM, PBEAML, PROD, PTUBE, PSHEAR, PBEND, PSHELL, PCOMP, PCOMPG, PELAS, PBUSH, PMASS, PSOLID");
     };
     for (const auto& p : m_.bar_props) add(p.id, p.ref, card_name(p.source));
-    for (const auto& p : m_.rod_props) add(p.id, p.ref, "PROD");
+    for (const auto& p : m_.rod_props) add(p.id, p.ref, rod_property_card(p));
     for (const auto& p : m_.shell_props) add(p.id, p.ref, "PSHELL");
     for (const auto& p : m_.composite_props) add(p.id, p.ref, p.global ? "PCOMPG" : "PCOMP");
     for (const auto& p : m_.spring_props) add(p.id, p.ref, "PELAS");
     for (const auto& p : m_.bush_props) add(p.id, p.ref, "PBUSH");
     for (const auto& p : m_.mass_props) add(p.id, p.ref, "PMASS");
+    for (const auto& p : m_.shear_props) add(p.id, p.ref, "PSHEAR");
+    for (const auto& p : m_.bend_props) add(p.id, p.ref, "PBEND");
     for (const auto& p : m_.solid_props) add(p.id, p.ref, "PSOLID");
     index_unchecked(m_.composite_props, m_.composite_prop_index);
     for (const auto& p : m_.bar_props) need_material(p.mid, p.ref, card_name(p.source), p.id, "field 3 (MID)");
-    for (const auto& p : m_.rod_props) need_material(p.mid, p.ref, "PROD", p.id, "field 3 (MID)");
+    for (const auto& p : m_.rod_props) need_material(p.mid, p.ref, rod_property_card(p), p.id, "field 3 (MID)");
+    for (const auto& p : m_.shear_props) need_material(p.mid, p.ref, "PSHEAR", p.id, "field 3 (MID)");
+    for (const auto& p : m_.bend_props) need_material(p.mid, p.ref, "PBEND", p.id, "field 3 (MID)");
     for (const auto& p : m_.solid_props)
       if (!m_.mat9_index.count(p.mid)) need_material(p.mid, p.ref, "PSOLID", p.id, "field 3 (MID)", true);
     for (const auto& p : m_.shell_props) {
@@ -224,7 +230,8 @@ class Finalizer {
     const std::size_t total = m_.bars.size() + m_.rods.size() + m_.shells.size() + m_.conm2.size() +
                               m_.springs.size() + m_.rbe2.size() + m_.rbars.size() + m_.rbe3.size() +
                               m_.bushes.size() + m_.scalar_masses.size() + m_.conm1.size() +
-                              m_.solids.size();
+                              m_.solids.size() + m_.genels.size() + m_.shear_panels.size() + m_.bends.size() +
+                              m_.shells8.size();
     IdSpace seen;
     seen.model = &m_;
     int max_id = 0;
@@ -232,7 +239,8 @@ class Finalizer {
       for (const auto& e : v) max_id = std::max(max_id, e.id);
     };
     max_of(m_.bars), max_of(m_.rods), max_of(m_.shells), max_of(m_.conm2), max_of(m_.springs), max_of(m_.bushes);
-    max_of(m_.scalar_masses), max_of(m_.conm1), max_of(m_.solids);
+    max_of(m_.scalar_masses), max_of(m_.conm1), max_of(m_.solids), max_of(m_.genels), max_of(m_.shear_panels), max_of(m_.bends);
+    for (const auto& e : m_.shells8) max_id = std::max(max_id, e.shell.id);
     seen.use_dense(max_id, total);
     if (seen.dense.empty()) seen.map.reserve(total);
     auto add = [&](int id, const CardRef& ref, const char* card) {
@@ -243,19 +251,26 @@ class Finalizer {
     IdSpace rigid;
     rigid.model = &m_;
     auto add_rigid = [&](int id, const CardRef& ref, const char* card) {
-      rigid.add(id, ref, card, "field 2 (EID)", "rigid element", "expected unique ids across RBE2, RBAR and RBE3");
+      rigid.add(id, ref, card, "field 2 (EID)", "rigid element",
+                "expected unique ids across the rigid elements (RBE1, RBE2, RBE3, RBAR, RROD, CRIGD1-3, CRIGDR)");
     };
     for (const auto& e : m_.bars) add(e.id, e.ref, e.is_beam ? "CBEAM" : "CBAR");
-    for (const auto& e : m_.rods) add(e.id, e.ref, e.inline_property ? "CONROD" : "CROD");
-    for (const auto& e : m_.shells) add(e.id, e.ref, e.nnode == 4 ? "CQUAD4" : "CTRIA3");
+    for (const auto& e : m_.rods) add(e.id, e.ref, rod_card(e));
+    for (const auto& e : m_.shells) add(e.id, e.ref, shell_card(e));
     for (const auto& e : m_.conm2) add(e.id, e.ref, "CONM2");
     for (const auto& e : m_.springs) add(e.id, e.ref, spring_card(e));
     for (const auto& e : m_.bushes) add(e.id, e.ref, "CBUSH");
     for (const auto& e : m_.scalar_masses) add(e.id, e.ref, scalar_mass_card(e));
     for (const auto& e : m_.conm1) add(e.id, e.ref, "CONM1");
+    for (const auto& e : m_.genels) add(e.id, e.ref, "GENEL");
+    for (const auto& e : m_.shear_panels) add(e.id, e.ref, "CSHEAR");
+    for (const auto& e : m_.bends) add(e.id, e.ref, "CBEND");
+    for (const auto& e : m_.shells8) add(e.shell.id, e.shell.ref, quadratic_shell_card(e));
     for (const auto& e : m_.rbe2) add_rigid(e.id, e.ref, "RBE2");
     for (const auto& e : m_.rbars) add_rigid(e.id, e.ref, "RBAR");
     for (const auto& e : m_.rbe3) add_rigid(e.id, e.ref, "RBE3");
+    for (const auto& e : m_.rigid_bodies) add_rigid(e.id, e.ref, rigid_body_card(e));
+    for (const auto& e : m_.rigid_rods) add_rigid(e.id, e.ref, rigid_rod_card(e));
     for (const auto& e : m_.solids) add(e.id, e.ref, e.card());
   }
 
@@ -365,16 +380,20 @@ class Finalizer {
                                                      "; expected a " + (b.is_beam ? "PBEAM or PBEAML" : "PBAR or PBARL"));
     }
     for (const auto& r : m_.rods) {
-      const char* card = r.inline_property ? "CONROD" : "CROD";
+      const char* card = rod_card(r);
       need_grid(r.ga, r.ref, card, r.id, r.inline_property ? "field 3 (G1)" : "field 4 (G1)");
       need_grid(r.gb, r.ref, card, r.id, r.inline_property ? "field 4 (G2)" : "field 5 (G2)");
       if (r.inline_property)
         need_material(r.mid, r.ref, card, r.id, "field 5 (MID)");
       else if (!m_.rod_prop_index.count(r.pid))
-        fail(r.ref, card, r.id, "field 3 (PID)", "references property " + std::to_string(r.pid) + undefined(r.pid) + "; expected the id of a PROD card");
+        fail(r.ref, card, r.id, "field 3 (PID)", "references property " + std::to_string(r.pid) + undefined(r.pid) +
+                                                     "; expected the id of a " + (r.tube ? "PTUBE" : "PROD") + " card");
+      else if (const RodProperty& p = m_.rod_props[m_.rod_prop_index.at(r.pid)]; p.tube != r.tube)
+        fail(r.ref, card, r.id, "field 3 (PID)", "references " + std::string(rod_property_card(p)) + " " + std::to_string(p.id) +
+                                                     "; expected a " + (r.tube ? "PTUBE" : "PROD"));
     }
     for (const auto& s : m_.shells) {
-      const char* card = s.nnode == 4 ? "CQUAD4" : "CTRIA3";
+      const char* card = shell_card(s);
       static const char* gfields[4] = {"field 4 (G1)", "field 5 (G2)", "field 6 (G3)", "field 7 (G4)"};
       for (int k = 0; k < s.nnode; ++k) need_grid(s.g[k], s.ref, card, s.id, gfields[k]);
       if (!m_.shell_prop_index.count(s.pid) && !m_.composite_prop_index.count(s.pid))
@@ -407,6 +426,34 @@ class Finalizer {
       if (!m_.bush_prop_index.count(b.pid))
         fail(b.ref, "CBUSH", b.id, "field 3 (PID)", "references property " + std::to_string(b.pid) + undefined(b.pid) + "; expected the id of a PBUSH card");
     }
+    for (const auto& e : m_.shear_panels) {
+      static const char* gfields[4] = {"field 4 (G1)", "field 5 (G2)", "field 6 (G3)", "field 7 (G4)"};
+      for (int k = 0; k < 4; ++k) need_grid(e.g[static_cast<std::size_t>(k)], e.ref, "CSHEAR", e.id, gfields[k]);
+      if (!m_.shear_prop_index.count(e.pid))
+        fail(e.ref, "CSHEAR", e.id, "field 3 (PID)", "references property " + std::to_string(e.pid) + undefined(e.pid) + "; expected the id of a PSHEAR card");
+    }
+    for (const auto& q : m_.shells8) {
+      const Shell& s = q.shell;
+      const char* card = quadratic_shell_card(q);
+      for (int k = 0; k < s.nnode; ++k) need_grid(s.g[static_cast<std::size_t>(k)], s.ref, card, s.id, "G" + std::to_string(k + 1));
+      for (int k = 0; k < s.nnode; ++k)
+        if (q.mid[static_cast<std::size_t>(k)] != 0)
+          need_grid(q.mid[static_cast<std::size_t>(k)], s.ref, card, s.id, "G" + std::to_string(s.nnode + k + 1));
+      if (!m_.shell_prop_index.count(s.pid) && !m_.composite_prop_index.count(s.pid))
+        fail(s.ref, card, s.id, "field 3 (PID)", "references property " + std::to_string(s.pid) + undefined(s.pid) +
+                                                   "; expected the id of a PSHELL, PCOMP or PCOMPG card");
+      if (s.theta_is_mcid) need_coord(s.mcid, s.ref, card, s.id, "MCID");
+    }
+    for (const auto& e : m_.bends) {
+      need_grid(e.ga, e.ref, "CBEND", e.id, "field 4 (GA)");
+      need_grid(e.gb, e.ref, "CBEND", e.id, "field 5 (GB)");
+      if (e.has_g0) need_grid(e.g0, e.ref, "CBEND", e.id, "field 6 (G0)");
+      if (!m_.bend_prop_index.count(e.pid))
+        fail(e.ref, "CBEND", e.id, "field 3 (PID)", "references property " + std::to_string(e.pid) + undefined(e.pid) + "; expected the id of a PBEND card");
+    }
+    for (const auto& e : m_.genels)
+      for (const auto* list : {&e.ui, &e.ud})
+        for (const auto& d : *list) need_dof(d.point, d.c, false, e.ref, "GENEL", e.id, list == &e.ui ? "field UIi" : "field UDi");
     for (const auto& c : m_.conm1) {
       need_grid(c.grid, c.ref, "CONM1", c.id, "field 3 (G)");
       if (c.cid > 0) need_coord(c.cid, c.ref, "CONM1", c.id, "field 4 (CID)");
@@ -424,6 +471,16 @@ class Finalizer {
     for (const auto& r : m_.rbars) {
       need_grid(r.ga, r.ref, "RBAR", r.id, "field 3 (GA)");
       need_grid(r.gb, r.ref, "RBAR", r.id, "field 4 (GB)");
+    }
+    for (const auto& r : m_.rigid_bodies) {
+      const RigidBodyFields f = rigid_body_fields(r);
+      for (const auto& g : r.independent) need_grid(g.grid, r.ref, rigid_body_card(r), r.id, "field " + f.independent);
+      for (const auto& g : r.dependent) need_grid(g.grid, r.ref, rigid_body_card(r), r.id, "field " + f.dependent);
+    }
+    for (const auto& r : m_.rigid_rods) {
+      const RigidRodFields f = rigid_rod_fields(r);
+      need_grid(r.ga, r.ref, rigid_rod_card(r), r.id, std::string("field ") + f.ga);
+      need_grid(r.gb, r.ref, rigid_rod_card(r), r.id, std::string("field ") + f.gb);
     }
     for (const auto& r : m_.rbe3) {
       need_grid(r.refgrid, r.ref, "RBE3", r.id, "field 4 (REFGRID)");
@@ -445,7 +502,7 @@ class Finalizer {
     std::unordered_map<int, CardRef> spcadd_ids, mpcadd_ids, load_ids;
     for (const auto& a : m_.spcadds) check_combination(spcadd_ids, spc_sets, "SPCADD", a.sid, a.ref, "SPC set", "SPC or SPC1");
     for (const auto& a : m_.mpcadds) check_combination(mpcadd_ids, mpc_sets, "MPCADD", a.sid, a.ref, "MPC set", "MPC");
-    for (const auto& l : m_.load_combinations) check_combination(load_ids, load_sets, "LOAD", l.sid, l.ref, "load set", "FORCE or MOMENT");
+    for (const auto& l : m_.load_combinations) check_combination(load_ids, load_sets, "LOAD", l.sid, l.ref, "load set", "FORCE, MOMENT, FORCE1/2 or MOMENT1/2");
     for (const auto& e : m_.aset) need_dof(e.grid, e.c, true, e.ref, "ASET/ASET1", e.grid, "");
     for (const auto& e : m_.omit) need_dof(e.grid, e.c, true, e.ref, "OMIT/OMIT1", e.grid, "");
     for (const auto& e : m_.bset) need_dof(e.grid, e.c, true, e.ref, "BSET/BSET1", e.grid, "");

@@ -65,7 +65,15 @@ class LeaveOut {
     });
     drop_properties(m_.rod_props, "rod", [&](const RodProperty& p) {
       const std::string mat = isotropic_problem(p.mid);
-      return mat.empty() ? mat : "PROD on " + mat;
+      return mat.empty() ? mat : std::string(rod_property_card(p)) + " on " + mat;
+    });
+    drop_properties(m_.bend_props, "bend", [&](const BendProperty& p) {
+      const std::string mat = isotropic_problem(p.mid);
+      return mat.empty() ? mat : "PBEND on " + mat;
+    });
+    drop_properties(m_.shear_props, "shear", [&](const ShearProperty& p) {
+      const std::string mat = isotropic_problem(p.mid);
+      return mat.empty() ? mat : "PSHEAR on " + mat;
     });
     drop_properties(m_.solid_props, "solid", [&](const SolidProperty& p) {
       const std::string mat = isotropic_problem(p.mid);
@@ -94,20 +102,26 @@ class LeaveOut {
     return "";  // not defined: finalize's error
   }
 
-  template <class Vec, class Kept, class Card>
-  void drop_elements(Vec& elements, const char* kind, Kept kept_of, Card card_of) {
+  /// Leave out the elements (with their shell(e) giving pid and ref: the element itself, or the
+  /// corner data of a CTRIA6/CQUAD8) whose property of kind `kind` is left out or unsupported.
+  template <class Vec, class Kept, class Card, class ShellOf>
+  void drop_elements(Vec& elements, const char* kind, Kept kept_of, Card card_of, ShellOf shell) {
     const auto& dropped = dropped_[kind];
     if (dropped.empty() && unsupported_prop_.empty()) return;
     const std::unordered_set<int> kept = kept_of();
     elements.erase(std::remove_if(elements.begin(), elements.end(),
                                   [&](const auto& e) {
-                                    if (e.pid == 0) return false;
-                                    const std::string reason = element_problem(e.pid, kind, kept);
+                                    if (shell(e).pid == 0) return false;
+                                    const std::string reason = element_problem(shell(e).pid, kind, kept);
                                     if (reason.empty()) return false;
-                                    note(std::string(card_of(e)) + " on " + reason + " (left out)", e.ref);
+                                    note(std::string(card_of(e)) + " on " + reason + " (left out)", shell(e).ref);
                                     return true;
                                   }),
                    elements.end());
+  }
+  template <class Vec, class Kept, class Card>
+  void drop_elements(Vec& elements, const char* kind, Kept kept_of, Card card_of) {
+    drop_elements(elements, kind, kept_of, card_of, [](const auto& e) -> const auto& { return e; });
   }
 
   template <class Vec>
@@ -120,15 +134,17 @@ class LeaveOut {
   void elements() {
     drop_elements(m_.bars, "bar", [&] { return ids(m_.bar_props); },
                   [](const Bar& b) { return b.is_beam ? "CBEAM" : "CBAR"; });
-    drop_elements(m_.rods, "rod", [&] { return ids(m_.rod_props); }, [](const Rod&) { return "CROD"; });
+    drop_elements(m_.rods, "rod", [&] { return ids(m_.rod_props); }, [](const Rod& r) { return rod_card(r); });
+    drop_elements(m_.bends, "bend", [&] { return ids(m_.bend_props); }, [](const Bend&) { return "CBEND"; });
+    drop_elements(m_.shear_panels, "shear", [&] { return ids(m_.shear_props); }, [](const ShearPanel&) { return "CSHEAR"; });
     drop_elements(m_.solids, "solid", [&] { return ids(m_.solid_props); }, [](const Solid& s) { return s.card(); });
-    drop_elements(m_.shells, "shell",
-                  [&] {
-                    std::unordered_set<int> s = ids(m_.shell_props);
-                    for (const auto& p : m_.composite_props) s.insert(p.id);
-                    return s;
-                  },
-                  [](const Shell& s) { return s.nnode == 4 ? "CQUAD4" : "CTRIA3"; });
+    const auto shell_ids = [&] {
+      std::unordered_set<int> s = ids(m_.shell_props);
+      for (const auto& p : m_.composite_props) s.insert(p.id);
+      return s;
+    };
+    drop_elements(m_.shells, "shell", shell_ids, [](const Shell& s) { return shell_card(s); });
+    drop_elements(m_.shells8, "shell", shell_ids, quadratic_shell_card, [](const QuadraticShell& q) -> const Shell& { return q.shell; });
     // CONROD: its own material
     m_.rods.erase(std::remove_if(m_.rods.begin(), m_.rods.end(),
                                  [&](const Rod& r) {

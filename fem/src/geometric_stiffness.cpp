@@ -9,6 +9,7 @@
 #include "seflex/fem/element_rod.hpp"
 #include "seflex/fem/element_shell_quad4.hpp"
 #include "seflex/fem/element_shell_tria3.hpp"
+#include "seflex/fem/finalize.hpp"
 
 namespace seflex::fem {
 namespace {
@@ -56,6 +57,17 @@ void grid_nodes(const Model& model, const int* ids, const CardRef& ref, const ch
 Eigen::SparseMatrix<double> assemble_geometric_stiffness(const Model& model, const DofMap& dofs,
                                                          const Eigen::Ref<const Eigen::VectorXd>& u_ref) {
   SEFLEX_DEMAND(u_ref.size() == dofs.size(), "assemble_geometric_stiffness: displacement vector of the wrong size");
+  // Elements whose differential stiffness seflex does not compute: refused, never left out.
+  auto refuse = [&](const char* card, int id, const CardRef& ref) {
+    throw InputError(where(model, ref), std::string(card) + " " + std::to_string(id) +
+                                            ": seflex does not compute the differential stiffness of " + card +
+                                            " elements, which buckling needs; expected CBAR, CBEAM, CROD, CONROD, CTUBE, "
+                                            "CQUAD4 and CTRIA3 elements only in a buckling model");
+  };
+  if (!model.shear_panels.empty()) refuse("CSHEAR", model.shear_panels.front().id, model.shear_panels.front().ref);
+  if (!model.bends.empty()) refuse("CBEND", model.bends.front().id, model.bends.front().ref);
+  if (!model.shells8.empty())
+    refuse(quadratic_shell_card(model.shells8.front()), model.shells8.front().shell.id, model.shells8.front().shell.ref);
   const Eigen::VectorXd u_g = u_ref;
   const Axes axes = grid_cd_axes(model);
 
@@ -71,7 +83,7 @@ Eigen::SparseMatrix<double> assemble_geometric_stiffness(const Model& model, con
   for (const Rod& r : model.rods) {
     std::int32_t n[2];
     const int ids[2] = {r.ga, r.gb};
-    grid_nodes<2>(model, ids, r.ref, r.inline_property ? "CONROD" : "CROD", r.id, r.inline_property ? 3 : 4, n);
+    grid_nodes<2>(model, ids, r.ref, rod_card(r), r.id, r.inline_property ? 3 : 4, n);
     conn.add(n, n + 2);
     rod_nodes.insert(rod_nodes.end(), n, n + 2);
   }
@@ -79,9 +91,9 @@ Eigen::SparseMatrix<double> assemble_geometric_stiffness(const Model& model, con
     std::int32_t n[4];
     int ids[4] = {s.g[0], s.g[1], s.g[2], s.nnode == 4 ? s.g[3] : 0};
     if (s.nnode == 4)
-      grid_nodes<4>(model, ids, s.ref, "CQUAD4", s.id, 4, n);
+      grid_nodes<4>(model, ids, s.ref, shell_card(s), s.id, 4, n);
     else
-      grid_nodes<3>(model, ids, s.ref, "CTRIA3", s.id, 4, n);
+      grid_nodes<3>(model, ids, s.ref, shell_card(s), s.id, 4, n);
     conn.add(n, n + s.nnode);
     shell_nodes.insert(shell_nodes.end(), n, n + s.nnode);
   }

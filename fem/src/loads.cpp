@@ -11,6 +11,7 @@
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/bar_line_load.hpp"
 #include "seflex/fem/element_shell_quad4.hpp"
+#include "seflex/fem/element_shell_quadratic.hpp"
 #include "seflex/fem/element_shell_tria3.hpp"
 #include "seflex/fem/enforced_motion.hpp"
 #include "seflex/fem/finalize.hpp"
@@ -41,6 +42,10 @@ class LoadBuilder {
       if (r.sid == sid) found = true, rotation(r, scale);
     for (const BarLineLoad& l : m_.bar_line_loads)
       if (l.sid == sid) found = true, bar_load(l, scale);
+    for (const ScalarLoad& l : m_.scalar_loads)
+      if (l.sid == sid) found = true, scalar_load(l, scale);
+    for (const GridPressureLoad& l : m_.grid_pressure_loads)
+      if (l.sid == sid) found = true, grid_pressure(l, scale);
     // SPCD cards make a load set of enforced displacements (enforced_motion.hpp): no load here
     return found || has_enforced_motion_set(m_, sid);
   }
@@ -64,10 +69,64 @@ class LoadBuilder {
   }
 
   void point_load(const PointLoad& l, double scale) {
-    const char* card = l.kind == PointLoad::Kind::Force ? "FORCE" : "MOMENT";
+    const char* card = point_load_card(l);
     const std::uint32_t gi = detail::grid_index(m_, l.grid, l.ref, card, l.sid, "3 (G)");
-    const Eigen::Matrix3d A_cid = detail::axes_at(m_, l.cid, m_.grids[gi].x_basic, l.ref, card, l.sid, "4 (CID)");
-    add_grid(gi, l.kind == PointLoad::Kind::Force ? 1 : 4, A_cid * (l.scale * l.n), scale, p_);
+    add_grid(gi, l.kind == PointLoad::Kind::Force ? 1 : 4, l.scale * point_load_direction(l, gi), scale, p_);
+  }
+
+  /// The basic vector a unit value of the load acts along: (N1, N2, N3) in CID (FORCE, MOMENT), the
+  /// unit vector G1 -> G2 (FORCE1, MOMENT1) or of (G1 -> G2) x (G3 -> G4) (FORCE2, MOMENT2), at the
+  /// grids' undeformed positions.
+  Eigen::Vector3d point_load_direction(const PointLoad& l, std::uint32_t gi) const {
+    const char* card = point_load_card(l);
+    if (l.direction == PointLoad::Direction::Vector)
+      return detail::axes_at(m_, l.cid, m_.grids[gi].x_basic, l.ref, card, l.sid, "4 (CID)") * l.n;
+    static const char* fields[4] = {"5 (G1)", "6 (G2)", "7 (G3)", "8 (G4)"};
+    auto x = [&](int k) {
+      return m_.grids[detail::grid_index(m_, l.g[static_cast<std::size_t>(k)], l.ref, card, l.sid, fields[k])].x_basic;
+    };
+    const Eigen::Vector3d a = x(1) - x(0);
+    if (!(a.norm() > 0.0))
+      detail::fail(m_, l.ref, card, l.sid, "5 (G1)", "grids G1 and G2 are at the same point; expected a direction G1 -> G2");
+    if (l.direction == PointLoad::Direction::TwoGrids) return a.normalized();
+    const Eigen::Vector3d b = x(3) - x(2);
+    if (!(b.norm() > 0.0))
+      detail::fail(m_, l.ref, card, l.sid, "7 (G3)", "grids G3 and G4 are at the same point; expected a direction G3 -> G4");
+    const Eigen::Vector3d n = a.cross(b);
+    if (!(n.norm() > 1e-10 * a.norm() * b.norm()))
+      detail::fail(m_, l.ref, card, l.sid, "5 (G1)",
+                   "G1 -> G2 and G3 -> G4 are parallel; expected two directions whose cross product gives the load's");
+    return n.normalized();
+  }
+
+  /// SLOAD: on the scalar point, or on T1 (CD system) of a grid of that id.
+  void scalar_load(const ScalarLoad& l, double scale) {
+    const auto dof = find_dof(m_, dofs_, l.point, m_.spoint_index.count(l.point) ? 0 : 1);
+    if (!dof)
+      detail::fail(m_, l.ref, "SLOAD", l.sid, "Si",
+                   "references point " + std::to_string(l.point) + ", which is not defined; expected a scalar point (or a grid: its T1)");
+    p_[*dof] += scale * l.f;
+  }
+
+  /// PLOAD: a triangle's force P A along (G1 -> G2) x (G1 -> G3), a third per grid; a quadrilateral
+  /// as the four triangles 123, 234, 341, 412 with P/2 each (QRG PLOAD remarks).
+  void grid_pressure(const GridPressureLoad& l, double scale) {
+    static const char* fields[4] = {"4 (G1)", "5 (G2)", "6 (G3)", "7 (G4)"};
+    const int n = l.g[3] != 0 ? 4 : 3;
+    std::array<std::uint32_t, 4> gi{};
+    for (int k = 0; k < n; ++k) gi[static_cast<std::size_t>(k)] = detail::grid_index(m_, l.g[static_cast<std::size_t>(k)], l.ref, "PLOAD", l.sid, fields[k]);
+    auto triangle = [&](int a, int b, int c, double p) {
+      const std::uint32_t t[3] = {gi[static_cast<std::size_t>(a)], gi[static_cast<std::size_t>(b)], gi[static_cast<std::size_t>(c)]};
+      const Eigen::Vector3d n2 = (m_.grids[t[1]].x_basic - m_.grids[t[0]].x_basic).cross(m_.grids[t[2]].x_basic - m_.grids[t[0]].x_basic);
+      if (!(n2.norm() > 0.0))
+        detail::fail(m_, l.ref, "PLOAD", l.sid, "", "its grids " + std::to_string(l.g[static_cast<std::size_t>(a)]) + ", " +
+                                                        std::to_string(l.g[static_cast<std::size_t>(b)]) + ", " +
+                                                        std::to_string(l.g[static_cast<std::size_t>(c)]) +
+                                                        " are collinear; expected a triangle or quadrilateral of non-zero area");
+      for (const std::uint32_t g : t) add_grid(g, 1, p * n2 / 6.0, scale, p_);  // P (|n2|/2) n / 3
+    };
+    if (n == 3) return triangle(0, 1, 2, l.p);
+    for (int k = 0; k < 4; ++k) triangle(k, (k + 1) % 4, (k + 2) % 4, 0.5 * l.p);
   }
 
   void bar_load(const BarLineLoad& l, double scale) {
@@ -88,32 +147,68 @@ class LoadBuilder {
     return *shell_index_;
   }
 
+  const std::unordered_map<int, std::size_t>& shells8() {
+    if (!shell8_index_) {
+      shell8_index_.emplace();
+      for (std::size_t k = 0; k < m_.shells8.size(); ++k) shell8_index_->emplace(m_.shells8[k].shell.id, k);
+    }
+    return *shell8_index_;
+  }
+
+  /// A uniform pressure p along the normal of a CTRIA6/CQUAD8: the element's work-equivalent loads.
+  void quadratic_shell_pressure(const QuadraticShell& q, double p, double scale) {
+    if (!k6rot_) k6rot_ = assembly_options(m_).k6rot;
+    const QuadraticShellElement e = make_quadratic_shell_element(m_, q);
+    const Eigen::Matrix<double, 48, 1> f = quadratic_shell_pressure_load(e, p, *k6rot_);
+    const char* card = quadratic_shell_card(q);
+    for (int k = 0; k < 2 * q.shell.nnode; ++k) {
+      const int g = k < q.shell.nnode ? q.shell.g[static_cast<std::size_t>(k)] : q.mid[static_cast<std::size_t>(k - q.shell.nnode)];
+      if (g == 0) continue;
+      const std::uint32_t gi = detail::grid_index(m_, g, q.shell.ref, card, q.shell.id, "G" + std::to_string(k + 1));
+      add_grid(gi, 1, f.segment<3>(6 * k), scale, p_);
+      add_grid(gi, 4, f.segment<3>(6 * k + 3), scale, p_);
+    }
+  }
+
   /// The card kind of a non-shell element id, or "" if no element has it (for messages).
   std::string other_element(int id) const {
     for (const Bar& b : m_.bars)
       if (b.id == id) return b.is_beam ? "CBEAM" : "CBAR";
     for (const Rod& r : m_.rods)
-      if (r.id == id) return r.inline_property ? "CONROD" : "CROD";
+      if (r.id == id) return rod_card(r);
     for (const Spring& s : m_.springs)
       if (s.id == id) return s.inline_property ? "CELAS2" : "CELAS1";
     for (const Conm2& c : m_.conm2)
       if (c.id == id) return "CONM2";
+    for (const ShearPanel& s : m_.shear_panels)
+      if (s.id == id) return "CSHEAR";
+    for (const Bend& b : m_.bends)
+      if (b.id == id) return "CBEND";
     for (const Rbe2& r : m_.rbe2)
       if (r.id == id) return "RBE2";
     for (const Rbar& r : m_.rbars)
       if (r.id == id) return "RBAR";
     for (const Rbe3& r : m_.rbe3)
       if (r.id == id) return "RBE3";
+    for (const RigidBody& r : m_.rigid_bodies)
+      if (r.id == id) return rigid_body_card(r);
+    for (const RigidRod& r : m_.rigid_rods)
+      if (r.id == id) return rigid_rod_card(r);
     return "";
   }
 
   void pressure_load(const PressureLoad& l, double scale) {
     const auto& index = shells();
     auto one = [&](int eid) -> bool {
-      const auto it = index.find(eid);
-      if (it == index.end()) return false;
-      shell_pressure(m_.shells[it->second], l, scale);
-      return true;
+      if (const auto it = index.find(eid); it != index.end()) {
+        shell_pressure(m_.shells[it->second], l, scale);
+        return true;
+      }
+      if (const auto it = shells8().find(eid); it != shells8().end()) {
+        quadratic_shell_pressure(m_.shells8[it->second], l.p, scale);
+        return true;
+      }
+      return false;
     };
     if (l.thru) {  // QRG PLOAD2 remark: ids of the range that are not shells are skipped
       for (int eid = l.elements[0]; eid <= l.elements[1]; ++eid) one(eid);
@@ -124,14 +219,14 @@ class LoadBuilder {
       const std::string kind = other_element(eid);
       detail::fail(m_, l.ref, "PLOAD2", l.sid, "EID",
                    "element " + std::to_string(eid) + (kind.empty() ? " is not defined" : " is a " + kind) +
-                       "; expected a CQUAD4 or CTRIA3");
+                       "; expected a shell: CQUAD4, CTRIA3, CQUADR, CTRIAR, CQUAD8 or CTRIA6");
     }
   }
 
   void shell_pressure(const Shell& s, const PressureLoad& l, double scale) {
     if (!mystran_) mystran_ = assembly_options(m_).mystran_plate;
     if (*mystran_) return mystran_pressure(s, l, scale, **mystran_);
-    const char* card = s.nnode == 4 ? "CQUAD4" : "CTRIA3";
+    const char* card = shell_card(s);
     std::array<std::uint32_t, 4> gi{};
     std::array<Eigen::Vector3d, 4> x;
     for (int k = 0; k < s.nnode; ++k) {
@@ -166,7 +261,7 @@ class LoadBuilder {
 
   /// PARAM QUAD4TYP MIN4T: the work-equivalent load of MIN4T / MIN3 (forces and corner moments).
   void mystran_pressure(const Shell& s, const PressureLoad& l, double scale, const MystranPlate& mystran) {
-    const char* card = s.nnode == 4 ? "CQUAD4" : "CTRIA3";
+    const char* card = shell_card(s);
     std::array<std::uint32_t, 4> gi{};
     for (int k = 0; k < s.nnode; ++k)
       gi[k] = detail::grid_index(m_, s.g[k], s.ref, card, s.id, std::to_string(k + 4) + " (G" + std::to_string(k + 1) + ")");
@@ -193,11 +288,29 @@ class LoadBuilder {
 
   void face_load(const FaceLoad& l, double scale) {
     std::vector<detail::GridForce> forces;
+    auto quadratic = [&](int eid) {  // CTRIA6/CQUAD8: a uniform pressure along the normal only
+      const auto it = shells8().find(eid);
+      if (it == shells8().end()) return false;
+      const QuadraticShell& q = m_.shells8[it->second];
+      const int nc = q.shell.nnode;
+      bool uniform = l.n.squaredNorm() == 0.0;
+      for (int k = 1; k < nc; ++k) uniform = uniform && l.p[static_cast<std::size_t>(k)] == l.p[0];
+      if (!uniform)
+        detail::fail(m_, l.ref, "PLOAD4", l.sid, "P2-P4/N",
+                     std::string("on ") + quadratic_shell_card(q) + " " + std::to_string(eid) +
+                         ": a pressure varying over the element or along a direction N1-N3; seflex applies a uniform pressure "
+                         "along the normal of a CTRIA6/CQUAD8 (P2-P4 blank or equal to P1, N blank)");
+      quadratic_shell_pressure(q, l.p[0], scale);
+      return true;
+    };
     if (l.eid_last > 0) {  // THRU: the shells of the range (other ids are skipped, as for PLOAD2)
       const auto& index = shells();
       for (int eid = l.eid; eid <= l.eid_last; ++eid)
         if (const auto it = index.find(eid); it != index.end())
           detail::shell_face_forces(m_, m_.shells[it->second], l, forces);
+        else
+          quadratic(eid);
+    } else if (quadratic(l.eid)) {
     } else if (const auto it = shells().find(l.eid); it != shells().end()) {
       detail::shell_face_forces(m_, m_.shells[it->second], l, forces);
     } else if (const auto js = solids().find(l.eid); js != solids().end()) {
@@ -206,7 +319,7 @@ class LoadBuilder {
       const std::string kind = other_element(l.eid);
       detail::fail(m_, l.ref, "PLOAD4", l.sid, "EID",
                    "element " + std::to_string(l.eid) + (kind.empty() ? " is not defined" : " is a " + kind) +
-                       "; expected a CQUAD4, CTRIA3, CHEXA, CPENTA or CTETRA");
+                       "; expected a CQUAD4, CTRIA3, CQUAD8, CTRIA6, CHEXA, CPENTA or CTETRA");
     }
     for (const auto& gf : forces) add_grid(gf.grid, 1, gf.f_basic, scale, p_);
   }
@@ -258,7 +371,8 @@ class LoadBuilder {
   const DofMap& dofs_;
   Eigen::VectorXd& p_;
   std::vector<std::optional<Eigen::Matrix3d>> cd_;
-  std::optional<std::unordered_map<int, std::size_t>> shell_index_, solid_index_;
+  std::optional<std::unordered_map<int, std::size_t>> shell_index_, shell8_index_, solid_index_;
+  std::optional<double> k6rot_;  ///< PARAM K6ROT, read at the first CTRIA6/CQUAD8 pressure
   std::optional<Eigen::VectorXd> acc_;
   std::optional<std::optional<MystranPlate>> mystran_;  ///< PARAM QUAD4TYP MIN4T, read at the first PLOAD2
 };

@@ -10,10 +10,13 @@
 #include "seflex/fem/finalize.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/element_bar.hpp"
+#include "seflex/fem/element_bend.hpp"
 #include "seflex/fem/element_conm1.hpp"
 #include "seflex/fem/element_conm2.hpp"
 #include "seflex/fem/element_rod.hpp"
+#include "seflex/fem/element_shear_panel.hpp"
 #include "seflex/fem/element_shell_quad4.hpp"
+#include "seflex/fem/element_shell_quadratic.hpp"
 #include "seflex/fem/element_solid.hpp"
 #include "seflex/fem/element_shell_tria3.hpp"
 
@@ -76,7 +79,7 @@ MassProperties mass_properties(const Model& model, std::optional<int> reference_
         e.section = sec;
         std::uint32_t gi[4];
         for (int k = 0; k < 4; ++k) {
-          gi[k] = detail::grid_index(model, s.g[k], s.ref, "CQUAD4", s.id, "G");
+          gi[k] = detail::grid_index(model, s.g[k], s.ref, shell_card(s), s.id, "G");
           e.x[k] = model.grids[gi[k]].x_basic;
         }
         const auto m = quad4_lumped_masses(e);
@@ -99,6 +102,18 @@ MassProperties mass_properties(const Model& model, std::optional<int> reference_
     Eigen::MatrixXd D = Eigen::MatrixXd::Zero(3 * e.nnode, 6);
     for (int a = 0; a < e.nnode; ++a) D.block<3, 6>(3 * a, 0) = rigid_link(e.x[static_cast<std::size_t>(a)] - ref).topRows<3>();
     M0 += D.transpose() * M * D;
+  }
+  for (const QuadraticShell& q : model.shells8) {
+    const QuadraticShellElement e = make_quadratic_shell_element(model, q, &sections.get(model, q.shell));
+    add_element<8>(e.x, ref, quadratic_shell_mass(e, kind), M0);
+  }
+  for (const Bend& b : model.bends) {
+    const BendElement e = make_bend_element(model, b);
+    add_element<2>({e.x_A, e.x_B}, ref, bend_mass(e), M0);
+  }
+  for (const ShearPanel& s : model.shear_panels) {
+    const ShearPanelElement e = make_shear_panel_element(model, s);
+    add_element<4>(e.x, ref, shear_panel_mass(e), M0);
   }
   for (const Conm2& c : model.conm2) {
     const Conm2Element e = make_conm2_element(model, c);

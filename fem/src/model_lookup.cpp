@@ -66,7 +66,7 @@ double material_angle(const Model& model, const Shell& shell, const Eigen::Vecto
                       const Eigen::Vector3d& centroid) {
   constexpr double kPi = 3.14159265358979323846;
   if (!shell.theta_is_mcid) return shell.theta_deg * kPi / 180.0;
-  const std::string card = shell.nnode == 4 ? "CQUAD4" : "CTRIA3";
+  const std::string card = shell_card(shell);
   const std::string field = shell.nnode == 4 ? "8 (MCID)" : "7 (MCID)";
   if (shell.mcid != 0) {
     const auto it = model.coord_index.find(shell.mcid);

@@ -256,7 +256,7 @@ ShellSection laminate_section(std::vector<Ply> plies, std::optional<double> z0, 
 }
 
 ShellSection make_shell_section(const Model& model, const Shell& shell) {
-  const std::string card = shell.nnode == 4 ? "CQUAD4" : "CTRIA3";
+  const std::string card = shell_card(shell);
   if (const auto it = model.shell_prop_index.find(shell.pid); it != model.shell_prop_index.end()) {
     const ShellProperty& p = model.shell_props[it->second];
     ShellMaterial m[4];

@@ -1,12 +1,15 @@
 // Thermal loads of TEMP / TEMPD / TEMPRB sets on bars, rods, shells and solids (see loads.hpp).
+#include <initializer_list>
 #include <optional>
 #include <unordered_map>
+#include <vector>
 
 #include "model_lookup.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/element_bar.hpp"
 #include "seflex/fem/element_rod.hpp"
+#include "seflex/fem/element_shell_quadratic.hpp"
 #include "seflex/fem/element_shell_thermal.hpp"
 #include "seflex/fem/element_solid.hpp"
 #include "seflex/fem/finalize.hpp"
@@ -80,7 +83,7 @@ class ThermalLoads {
         T = 0.5 * (it->second->ta + it->second->tb);
         used[r.id] = true;
       } else {
-        const char* card = r.inline_property ? "CONROD" : "CROD";
+        const char* card = rod_card(r);
         T = 0.5 * (grid_temperature(r.ga, r.ref, card, r.id) + grid_temperature(r.gb, r.ref, card, r.id));
       }
       if (mat.alpha == 0.0 || T == mat.tref) continue;
@@ -89,11 +92,59 @@ class ThermalLoads {
     for (const auto& [eid, t] : bar_t_)
       if (!used.count(eid))
         detail::fail(m_, t->ref, "TEMPRB", t->sid, "EID",
-                     "element " + std::to_string(eid) + " is not a CBAR, CBEAM, CROD or CONROD; expected one of them");
+                     "element " + std::to_string(eid) + " is not a CBAR, CBEAM, CROD, CTUBE or CONROD; expected one of them");
     const AssemblyOptions options = assembly_options(m_);
     for (const Shell& s : m_.shells) shell(s, options.k6rot, options.mystran_plate ? &*options.mystran_plate : nullptr);
     for (const Solid& s : m_.solids) solid(s);
+    for (const QuadraticShell& q : m_.shells8) quadratic_shell(q, options.k6rot);
+    for (const ShearPanel& s : m_.shear_panels)
+      refuse_heated("CSHEAR", s.id, s.ref, m_.shear_props[m_.shear_prop_index.at(s.pid)].mid, {s.g[0], s.g[1], s.g[2], s.g[3]});
+    for (const Bend& b : m_.bends) refuse_heated("CBEND", b.id, b.ref, m_.bend_props[m_.bend_prop_index.at(b.pid)].mid, {b.ga, b.gb});
     return p_;
+  }
+
+  /// A CTRIA6/CQUAD8: the mean of its grids' temperatures (corners and mid-side grids), uniform
+  /// through the thickness, from the section's TREF, as the CQUAD4's.
+  void quadratic_shell(const QuadraticShell& q, double k6rot) {
+    const QuadraticShellElement e = make_quadratic_shell_element(m_, q);
+    const Shell& s = q.shell;
+    const bool mid4_expands = pshell_mid4_expands(s);
+    if (!e.section.thermal() && !mid4_expands) return;
+    const char* card = quadratic_shell_card(q);
+    std::vector<int> ids, slots;  // present grids and their element positions
+    double T = 0;
+    for (int k = 0; k < 2 * s.nnode; ++k) {
+      const int g = k < s.nnode ? s.g[static_cast<std::size_t>(k)] : q.mid[static_cast<std::size_t>(k - s.nnode)];
+      if (g == 0) continue;
+      T += grid_temperature(g, s.ref, card, s.id);
+      ids.push_back(g);
+      slots.push_back(k);
+    }
+    const double dT = T / static_cast<double>(ids.size()) - e.section.tref;
+    if (dT == 0.0) return;
+    if (mid4_expands) refuse_mid4(s, card);
+    const Eigen::Matrix<double, 48, 1> f = quadratic_shell_thermal_load(e, dT, k6rot);
+    Eigen::VectorXd fg(6 * static_cast<Eigen::Index>(ids.size()));
+    for (std::size_t i = 0; i < ids.size(); ++i) fg.segment<6>(6 * static_cast<Eigen::Index>(i)) = f.segment<6>(6 * slots[i]);
+    scatter(ids.data(), static_cast<int>(ids.size()), fg);
+  }
+
+  /// An element seflex computes no thermal load for: refused when the set heats it (its MAT1 expands
+  /// and a grid's temperature differs from TREF), never skipped.
+  void refuse_heated(const char* card, int id, const CardRef& ref, int mid, std::initializer_list<int> grids) const {
+    const Mat1& mat = mat1(mid);
+    if (mat.alpha == 0.0) return;
+    for (const int g : grids) {
+      const auto gi = m_.grid_index.find(g);
+      const auto it = gi == m_.grid_index.end() ? grid_t_.end() : grid_t_.find(gi->second);
+      const std::optional<double> T = it != grid_t_.end() ? std::optional<double>(it->second) : tempd_;
+      if (T && *T != mat.tref)
+        detail::fail(m_, ref, card, id, "",
+                     "thermal load set " + std::to_string(sid_) + " heats the element (grid " + std::to_string(g) + " at " +
+                         std::to_string(*T) + ", MAT1 " + std::to_string(mid) + " TREF " + std::to_string(mat.tref) +
+                         ", ALPHA " + std::to_string(mat.alpha) + "), whose thermal load seflex does not compute for " + card +
+                         "; expected its grids at TREF, or ALPHA = 0");
+    }
   }
 
  private:
@@ -105,7 +156,7 @@ class ThermalLoads {
     if (const auto it = grid_t_.find(gi); it != grid_t_.end()) return it->second;
     if (tempd_) return *tempd_;
     const std::string c = card;
-    const bool line = c == "CBAR" || c == "CBEAM" || c == "CROD" || c == "CONROD";
+    const bool line = c == "CBAR" || c == "CBEAM" || c == "CROD" || c == "CONROD" || c == "CTUBE";
     detail::fail(m_, ref, card, eid, "",
                  "GRID " + std::to_string(g) + " has no temperature in thermal load set " + std::to_string(sid_) +
                      (line ? " (no TEMP card gives it, no TEMPD and no TEMPRB for the element); expected one of them"
@@ -116,22 +167,25 @@ class ThermalLoads {
   /// shell without TEMPPi), uniform through the thickness, from the section's TREF.
   void shell(const Shell& s, double k6rot, const MystranPlate* mystran) {
     const ShellSection section = make_shell_section(m_, s);
-    const char* card = s.nnode == 4 ? "CQUAD4" : "CTRIA3";
+    const char* card = shell_card(s);
     const bool mid4_expands = pshell_mid4_expands(s);
     if (!section.thermal() && !mid4_expands) return;
     double T = 0;
     for (int k = 0; k < s.nnode; ++k) T += grid_temperature(s.g[k], s.ref, card, s.id);
     const double dT = T / s.nnode - section.tref;
     if (dT == 0.0) return;
-    if (mid4_expands)
-      detail::fail(m_, s.ref, card, s.id, "",
-                   "thermal load set " + std::to_string(sid_) + " heats it and its PSHELL " + std::to_string(s.pid) +
-                       " has a MID4 (membrane-bending coupling) material with thermal expansion, whose thermal moment "
-                       "seflex does not compute; expected ALPHA blank on MID4's material");
+    if (mid4_expands) refuse_mid4(s, card);
     if (s.nnode == 4)
       scatter(s.g.data(), 4, quad4_thermal_load(make_quad4_element(m_, s, &section), dT, k6rot, mystran));
     else
       scatter(s.g.data(), 3, tria3_thermal_load(make_tria3_element(m_, s, &section), dT, k6rot, mystran));
+  }
+
+  [[noreturn]] void refuse_mid4(const Shell& s, const char* card) const {
+    detail::fail(m_, s.ref, card, s.id, "",
+                 "thermal load set " + std::to_string(sid_) + " heats it and its PSHELL " + std::to_string(s.pid) +
+                     " has a MID4 (membrane-bending coupling) material with thermal expansion, whose thermal moment "
+                     "seflex does not compute; expected ALPHA blank on MID4's material");
   }
 
   /// A PSHELL's MID4 (membrane-bending coupling) with thermal expansion: its thermal moment is not

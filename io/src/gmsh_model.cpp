@@ -325,6 +325,8 @@ class ModelBuilder {
     take(m_.rbe2);
     take(m_.rbars);
     take(m_.rbe3);
+    take(m_.rigid_bodies);
+    take(m_.rigid_rods);
     next_element_ = dir_.first_element ? *dir_.first_element : (max_id < INT_MAX ? max_id + 1 : INT_MAX);
   }
 

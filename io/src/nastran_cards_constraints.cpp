@@ -174,6 +174,59 @@ void parse_suport(const Card& card, ReaderState& st) { dof_pairs(card, st.model.
 void parse_force(const Card& card, ReaderState& st) { point_load(card, st, fem::PointLoad::Kind::Force); }
 void parse_moment(const Card& card, ReaderState& st) { point_load(card, st, fem::PointLoad::Kind::Moment); }
 
+// FORCE1 SID G F G1 G2 (MOMENT1: M); FORCE2 SID G F G1 G2 G3 G4 (MOMENT2: M). The direction, G1 -> G2
+// or (G1 -> G2) x (G3 -> G4), is taken from the grids' positions when the load is applied.
+void parse_force12(const Card& card, ReaderState& st) {
+  const std::string_view name = card.name();
+  fem::PointLoad l;
+  l.kind = name[0] == 'F' ? fem::PointLoad::Kind::Force : fem::PointLoad::Kind::Moment;
+  const bool four = name.back() == '2';
+  l.direction = four ? fem::PointLoad::Direction::FourGrids : fem::PointLoad::Direction::TwoGrids;
+  l.sid = card.id(0, "SID");
+  l.grid = card.id(1, "G");
+  l.scale = card.real(2, l.kind == fem::PointLoad::Kind::Force ? "F" : "M");
+  static const char* names[4] = {"G1", "G2", "G3", "G4"};
+  const std::size_t n = four ? 4 : 2;
+  for (std::size_t k = 0; k < n; ++k) l.g[k] = card.id(3 + k, names[k]);
+  for (std::size_t k = 0; k < n; k += 2)
+    if (l.g[k] == l.g[k + 1])
+      card.fail(4 + k, names[k + 1], "grid " + std::to_string(l.g[k]) + " is also " + names[k] +
+                                         "; expected two distinct grids to give a direction");
+  if (card.used() > 3 + n) card.fail(3 + n, "", card.got(3 + n) + " after " + names[n - 1] + "; expected nothing more");
+  l.ref = card.ref();
+  st.model.point_loads.push_back(l);
+}
+
+// SLOAD SID S1 F1 S2 F2 S3 F3
+void parse_sload(const Card& card, ReaderState& st) {
+  const int sid = card.id(0, "SID");
+  static const char* names[3][2] = {{"S1", "F1"}, {"S2", "F2"}, {"S3", "F3"}};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const std::size_t b = 1 + 2 * k;
+    if (k > 0 && card.blank(b) && card.blank(b + 1)) continue;
+    st.model.scalar_loads.push_back({sid, card.id(b, names[k][0]), card.real(b + 1, names[k][1]), card.ref()});
+  }
+  if (card.used() > 7) card.fail(7, "", card.got(7) + " after F3; expected at most three scalar loads per SLOAD");
+}
+
+// PLOAD SID P G1 G2 G3 G4 (G4 blank or 0: a triangle)
+void parse_pload(const Card& card, ReaderState& st) {
+  fem::GridPressureLoad l;
+  l.sid = card.id(0, "SID");
+  l.p = card.real(1, "P");
+  static const char* names[4] = {"G1", "G2", "G3", "G4"};
+  for (std::size_t k = 0; k < 3; ++k) l.g[k] = card.id(2 + k, names[k]);
+  l.g[3] = card.integer_or(5, "G4", 0);
+  if (l.g[3] < 0) card.fail(5, "G4", card.got(5) + "; expected a grid id, or 0 or blank (a triangle)");
+  for (std::size_t a = 0; a < 4; ++a)
+    for (std::size_t b = a + 1; b < 4; ++b)
+      if (l.g[b] != 0 && l.g[a] == l.g[b])
+        card.fail(2 + b, names[b], "grid " + std::to_string(l.g[b]) + " repeats " + names[a] + "; expected distinct grids");
+  if (card.used() > 6) card.fail(6, "", card.got(6) + " after G4; expected nothing more");
+  l.ref = card.ref();
+  st.model.grid_pressure_loads.push_back(l);
+}
+
 // LOAD SID S S1 L1 S2 L2 ...
 void parse_load(const Card& card, ReaderState& st) {
   fem::LoadCombination l;

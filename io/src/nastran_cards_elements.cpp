@@ -58,16 +58,21 @@ void check_distinct(const Card& card, const int* g, std::size_t n, std::size_t f
                                            "; expected distinct grids");
 }
 
+// The two distinct end grids of a line element, in fields first and first + 1.
+void line_ends(const Card& card, std::size_t first, const char* na, const char* nb, int& ga, int& gb) {
+  ga = card.id(first, na);
+  gb = card.id(first + 1, nb);
+  const char* names[2] = {na, nb};
+  const int ends[2] = {ga, gb};
+  check_distinct(card, ends, 2, first, names);
+}
+
 void parse_bar_like(const Card& card, ReaderState& st, bool beam) {
   fem::Bar b;
   b.is_beam = beam;
   b.id = card.id(0, "EID");
   b.pid = card.id_or(1, "PID", 0);  // blank: BAROR/BEAMOR PID, else EID (applied after reading)
-  b.ga = card.id(2, "GA");
-  b.gb = card.id(3, "GB");
-  static const char* names[2] = {"GA", "GB"};
-  const int ends[2] = {b.ga, b.gb};
-  check_distinct(card, ends, 2, 2, names);
+  line_ends(card, 2, "GA", "GB", b.ga, b.gb);
   orientation(card, 4, b.has_g0, b.g0, b.v);
   if (beam && card.kind(7) == FieldKind::Real)
     st.note_unsupported("CBEAM BIT (built-in twist ignored)", card.ref());
@@ -120,6 +125,7 @@ void parse_shell(const Card& card, ReaderState& st, std::uint8_t nnode) {
   static const char* tnames[4] = {"T1", "T2", "T3", "T4"};
   fem::Shell s;
   s.nnode = nnode;
+  s.drilling = card.name() == "CQUADR" || card.name() == "CTRIAR";  // the same fields as CQUAD4 / CTRIA3
   s.id = card.id(0, "EID");
   s.pid = card.id_or(1, "PID", s.id);
   for (std::size_t k = 0; k < nnode; ++k) s.g[k] = card.id(2 + k, gnames[k]);
@@ -182,13 +188,11 @@ void parse_beamor(const Card& card, ReaderState& st) { parse_bar_defaults(card, 
 // CROD EID PID G1 G2
 void parse_crod(const Card& card, ReaderState& st) {
   fem::Rod r;
+  r.tube = card.name() == "CTUBE";  // CTUBE EID PID G1 G2: a CROD on a PTUBE
   r.id = card.id(0, "EID");
   r.pid = card.id_or(1, "PID", r.id);
-  r.ga = card.id(2, "G1");
-  r.gb = card.id(3, "G2");
-  static const char* names[2] = {"G1", "G2"};
-  const int ends[2] = {r.ga, r.gb};
-  check_distinct(card, ends, 2, 2, names);
+  line_ends(card, 2, "G1", "G2", r.ga, r.gb);
+  if (r.tube && card.used() > 4) card.fail(4, "", card.got(4) + " after G2; expected one tube per CTUBE card");
   r.ref = card.ref();
   st.model.rods.push_back(r);
 }
@@ -197,11 +201,7 @@ void parse_crod(const Card& card, ReaderState& st) {
 void parse_conrod(const Card& card, ReaderState& st) {
   fem::Rod r;
   r.id = card.id(0, "EID");
-  r.ga = card.id(1, "G1");
-  r.gb = card.id(2, "G2");
-  static const char* names[2] = {"G1", "G2"};
-  const int ends[2] = {r.ga, r.gb};
-  check_distinct(card, ends, 2, 1, names);
+  line_ends(card, 1, "G1", "G2", r.ga, r.gb);
   r.inline_property = true;
   r.mid = card.id(3, "MID");
   r.A = card.real(4, "A");
@@ -279,6 +279,75 @@ void parse_rbe2(const Card& card, ReaderState& st) {
     if (g == r.gn) card.fail(3, "GM", "the independent grid " + std::to_string(g) + " is also dependent; expected GMi different from GN");
   r.ref = card.ref();
   st.model.rbe2.push_back(std::move(r));
+}
+
+// CSHEAR EID PID G1 G2 G3 G4 (PID blank: EID)
+void parse_cshear(const Card& card, ReaderState& st) {
+  fem::ShearPanel e;
+  e.id = card.id(0, "EID");
+  e.pid = card.id_or(1, "PID", e.id);
+  static const char* names[4] = {"G1", "G2", "G3", "G4"};
+  for (std::size_t k = 0; k < 4; ++k) e.g[k] = card.id(2 + k, names[k]);
+  check_distinct(card, e.g.data(), 4, 2, names);
+  if (card.used() > 6) card.fail(6, "", card.got(6) + " after G4; expected nothing more");
+  e.ref = card.ref();
+  st.model.shear_panels.push_back(e);
+}
+
+// CBEND EID PID GA GB X1 X2 X3 GEOM, or G0 in field 6 (PID blank: EID)
+void parse_cbend(const Card& card, ReaderState& st) {
+  fem::Bend b;
+  b.id = card.id(0, "EID");
+  b.pid = card.id_or(1, "PID", b.id);
+  line_ends(card, 2, "GA", "GB", b.ga, b.gb);
+  if (!orientation(card, 4, b.has_g0, b.g0, b.v))
+    card.fail(4, "X1/G0", "blank; expected an orientation grid G0 or vector X1 X2 X3 (the plane of the bend)");
+  if (b.has_g0 && (b.g0 == b.ga || b.g0 == b.gb)) card.fail(4, "G0", "G0 is an end of the element; expected a third grid");
+  b.geom = card.integer(7, "GEOM");
+  if (b.geom < 1 || b.geom > 4) card.fail(7, "GEOM", card.got(7) + "; expected 1, 2, 3 or 4 (QRG CBEND)");
+  if (card.used() > 8) card.fail(8, "", card.got(8) + " after GEOM; expected nothing more");
+  b.ref = card.ref();
+  st.model.bends.push_back(b);
+}
+
+// CQUAD8 EID PID G1 G2 G3 G4 G5 G6 / G7 G8 T1 T2 T3 T4 THETA/MCID ZOFFS / TFLAG
+// CTRIA6 EID PID G1 G2 G3 G4 G5 G6 / THETA/MCID ZOFFS T1 T2 T3 TFLAG
+// Mid-side grids (G5-G8, G4-G6) may be blank: that edge is straight (QRG CQUAD8, CTRIA6).
+void parse_shell8(const Card& card, ReaderState& st) {
+  const bool quad = card.name() == "CQUAD8";
+  const std::size_t nc = quad ? 4 : 3;
+  static const char* gnames[8] = {"G1", "G2", "G3", "G4", "G5", "G6", "G7", "G8"};
+  static const char* tnames[4] = {"T1", "T2", "T3", "T4"};
+  fem::QuadraticShell q;
+  fem::Shell& s = q.shell;
+  s.nnode = static_cast<std::uint8_t>(nc);
+  s.id = card.id(0, "EID");
+  s.pid = card.id_or(1, "PID", s.id);
+  for (std::size_t k = 0; k < nc; ++k) s.g[k] = card.id(2 + k, gnames[k]);
+  check_distinct(card, s.g.data(), nc, 2, gnames);
+  int all[8] = {s.g[0], s.g[1], s.g[2], s.g[3]};
+  for (std::size_t k = 0; k < nc; ++k) {
+    q.mid[k] = card.integer_or(2 + nc + k, gnames[nc + k], 0);
+    if (q.mid[k] < 0) card.fail(2 + nc + k, gnames[nc + k], card.got(2 + nc + k) + "; expected a grid id or blank (a straight edge)");
+    all[nc + k] = q.mid[k];
+  }
+  for (std::size_t a = 0; a < 2 * nc; ++a)
+    for (std::size_t b = a + 1; b < 2 * nc; ++b)
+      if (all[b] != 0 && all[a] == all[b])
+        card.fail(2 + b, gnames[b], "grid " + std::to_string(all[b]) + " repeats " + gnames[a] + "; expected distinct grids");
+  const std::size_t t0 = 10;  // T1: field 4 of the second line of both
+  const std::size_t theta = quad ? 14 : 8, zoffs = quad ? 15 : 9, tflag = quad ? 16 : 13;
+  for (std::size_t k = 0; k < nc; ++k) {
+    s.t[k] = card.real_or(t0 + k, tnames[k], 0.0);
+    if (s.t[k] < 0.0) card.fail(t0 + k, tnames[k], card.got(t0 + k) + "; expected a thickness >= 0 or blank");
+  }
+  theta_mcid(card, theta, s);
+  s.zoffs = card.real_or(zoffs, "ZOFFS", 0.0);
+  s.tflag = card.integer_or(tflag, "TFLAG", 0);
+  if (s.tflag != 0 && s.tflag != 1) card.fail(tflag, "TFLAG", card.got(tflag) + "; expected 0, 1 or blank");
+  if (card.used() > tflag + 1) card.fail(tflag + 1, "", card.got(tflag + 1) + " after TFLAG; expected nothing more");
+  s.ref = card.ref();
+  st.model.shells8.push_back(q);
 }
 
 }  // namespace seflex::io::nastran

@@ -145,8 +145,9 @@ void parse_pbarl(const Card& card, ReaderState& st) {
 
 // PBEAM PID MID A(A) I1(A) I2(A) I12(A) J(A) NSM(A) / C1(A) .. F2(A) / [SO X/XB A I1 I2 I12 J NSM /
 //   C1 .. F2]... / K1 K2 S1 S2 NSI(A) NSI(B) CW(A) CW(B) / M1(A) M2(A) M1(B) M2(B) N1(A) N2(A) N1(B) N2(B)
-// seflex models a PBEAM as a prismatic beam with the end-A section (and NSI(A), the non-structural
-// mass moment of inertia per length, in the beam's polar inertia); a taper is reported.
+// A taper (stations or end B differing from end A, NSI(B) differing from NSI(A)) keeps every station
+// (BarProperty::stations); NSI, the non-structural mass moment of inertia per length, goes into the
+// beam's polar inertia.
 void parse_pbeam(const Card& card, ReaderState& st) {
   fem::BarProperty p;
   p.source = fem::BarProperty::Source::PBEAM;
@@ -166,16 +167,25 @@ void parse_pbeam(const Card& card, ReaderState& st) {
   bool tapered = false;
   static const char* names[6] = {"A", "I1", "I2", "I12", "J", "NSM"};
   const double end_a[6] = {p.A, p.I1, p.I2, p.I12, p.J, p.nsm};
+  std::vector<fem::BarProperty::Station> stations{{0.0, p.A, p.I1, p.I2, p.I12, p.J, p.nsm, 0.0, {}}};
   while (line < nlines && is_station_flag(upper(card.raw(8 * line)))) {
     const std::size_t b = 8 * line;
     const double x = card.real(b + 1, "X/XB");
     if (x < 0.0 || x > 1.0) card.fail(b + 1, "X/XB", card.got(b + 1) + "; expected 0 <= X/XB <= 1");
+    if (!(x > stations.back().x))
+      card.fail(b + 1, "X/XB", card.got(b + 1) + "; expected stations in increasing X/XB after end A (0)");
+    double v[6];
     for (std::size_t k = 0; k < 6; ++k) {
-      const double v = card.real_or(b + 2 + k, names[k], end_a[k]);
-      if (std::abs(v - end_a[k]) > 1e-9 * std::max(std::abs(end_a[k]), std::abs(v))) tapered = true;
+      v[k] = card.real_or(b + 2 + k, names[k], end_a[k]);
+      if (std::abs(v[k] - end_a[k]) > 1e-9 * std::max(std::abs(end_a[k]), std::abs(v[k]))) tapered = true;
     }
+    stations.push_back({x, v[0], v[1], v[2], v[3], v[4], v[5], 0.0, {}});
     const bool has_stress_line = upper(card.raw(b)) == "YES";
     line += has_stress_line ? 2 : 1;
+  }
+  if (stations.back().x < 1.0) {  // end B as the last station given (QRG: the last one is end B)
+    stations.push_back(stations.back());
+    stations.back().x = 1.0;
   }
   if (line < nlines) {  // K1 K2 S1 S2 NSI(A) NSI(B) CW(A) CW(B)
     const std::size_t b = 8 * line;
@@ -187,6 +197,7 @@ void parse_pbeam(const Card& card, ReaderState& st) {
     if (p.nsi < 0.0) card.fail(b + 4, "NSI(A)", card.got(b + 4) + "; expected a mass moment of inertia per length >= 0 or blank");
     const double nsi_b = card.real_or(b + 5, "NSI(B)", p.nsi);
     if (std::abs(nsi_b - p.nsi) > 1e-9 * std::max(std::abs(p.nsi), std::abs(nsi_b))) tapered = true;
+    for (auto& s : stations) s.nsi = p.nsi + s.x * (nsi_b - p.nsi);
     for (std::size_t k : {2, 3, 6, 7})
       if (!card.blank(b + k) && card.real(b + k, "S1/S2/CW") != 0.0)
         st.note_unsupported("PBEAM S1/S2/CW (shear relief and warping ignored)", card.ref());
@@ -202,7 +213,7 @@ void parse_pbeam(const Card& card, ReaderState& st) {
   }
   if (line < nlines)
     card.fail(8 * line, "SO", card.got(8 * line) + "; expected YES, YESA or NO starting a station, or the K1 line and the M1 line at the end");
-  if (tapered) st.note_unsupported("PBEAM (tapered: end-A section used)", card.ref());
+  if (tapered) p.stations = std::move(stations);
   p.ref = card.ref();
   st.model.bar_props.push_back(std::move(p));
 }
@@ -215,20 +226,37 @@ void parse_pbeaml(const Card& card, ReaderState& st) {
   bool tapered = false;
   std::size_t i = 9 + n;
   const std::size_t used = card.used();
+  std::vector<fem::BarProperty::Station> stations{{0.0, p.A, p.I1, p.I2, p.I12, p.J, p.nsm, 0.0, p.dims}};
   while (i < used) {
     const std::string so = card.text_or(i, "SO", "YES");
     if (!is_station_flag(so)) card.fail(i, "SO", card.got(i) + "; expected YES, YESA or NO");
     const double x = card.real(i + 1, "X/XB");
     if (x < 0.0 || x > 1.0) card.fail(i + 1, "X/XB", card.got(i + 1) + "; expected 0 <= X/XB <= 1");
+    if (!(x > stations.back().x))
+      card.fail(i + 1, "X/XB", card.got(i + 1) + "; expected stations in increasing X/XB after end A (0)");
+    fem::BarProperty::Station s;
+    s.x = x;
     for (std::size_t k = 0; k < n; ++k) {
       const std::string name = "DIM" + std::to_string(k + 1);
-      const double v = card.real_or(i + 2 + k, name.c_str(), p.dims[k]);
-      if (std::abs(v - p.dims[k]) > 1e-9 * std::max(std::abs(p.dims[k]), std::abs(v))) tapered = true;
+      s.dims.push_back(card.real_or(i + 2 + k, name.c_str(), p.dims[k]));
+      if (std::abs(s.dims[k] - p.dims[k]) > 1e-9 * std::max(std::abs(p.dims[k]), std::abs(s.dims[k]))) tapered = true;
     }
-    if (card.real_or(i + 2 + n, "NSM", p.nsm) != p.nsm) tapered = true;
+    s.nsm = card.real_or(i + 2 + n, "NSM", p.nsm);
+    if (s.nsm != p.nsm) tapered = true;
+    try {
+      const fem::BeamSection b = fem::beam_section(p.section_type, s.dims);
+      s.A = b.A, s.I1 = b.I1, s.I2 = b.I2, s.I12 = b.I12, s.J = b.J;
+    } catch (const InputError& e) {
+      card.fail(i + 2, "DIMi", std::string(e.what()) + " (station X/XB = " + std::string(card.raw(i + 1)) + ")");
+    }
+    stations.push_back(std::move(s));
     i += n + 3;
   }
-  if (tapered) st.note_unsupported("PBEAML (tapered: end-A section used)", card.ref());
+  if (stations.back().x < 1.0) {
+    stations.push_back(stations.back());
+    stations.back().x = 1.0;
+  }
+  if (tapered) p.stations = std::move(stations);
   p.ref = card.ref();
   st.model.bar_props.push_back(std::move(p));
 }
@@ -245,6 +273,99 @@ void parse_prod(const Card& card, ReaderState& st) {
   p.nsm = card.real_or(5, "NSM", 0.0);
   p.ref = card.ref();
   st.model.rod_props.push_back(p);
+}
+
+// PTUBE PID MID OD T NSM OD2: a PROD of the tube's section (T = 0 or blank: a solid rod; QRG PTUBE).
+// OD2 tapers the tube in heat transfer only (QRG remark 5): the structure has the section of OD,
+// as MSC Nastran's; an OD2 other than OD is listed.
+void parse_ptube(const Card& card, ReaderState& st) {
+  fem::RodProperty p;
+  p.tube = true;
+  p.id = card.id(0, "PID");
+  p.mid = card.id(1, "MID");
+  p.od = card.real(2, "OD");
+  if (!(p.od > 0.0)) card.fail(2, "OD", card.got(2) + "; expected an outside diameter > 0");
+  p.t = card.real_or(3, "T", 0.0);
+  if (!(p.t >= 0.0 && p.t <= 0.5 * p.od))
+    card.fail(3, "T", card.got(3) + "; expected a wall thickness 0 <= T <= OD/2 (0 or blank: a solid rod)");
+  p.nsm = card.real_or(4, "NSM", 0.0);
+  p.od2 = card.real_or(5, "OD2", p.od);
+  if (!(p.od2 > 0.0)) card.fail(5, "OD2", card.got(5) + "; expected a diameter at G2 > 0 or blank (OD)");
+  if (p.od2 != p.od) st.note_unsupported("PTUBE OD2 (tapered; MSC Nastran tapers tubes in heat transfer only: the structure uses OD)", card.ref());
+  if (card.used() > 6) card.fail(6, "", card.got(6) + " after OD2; expected nothing more");
+  const double r_in = p.t == 0.0 ? 0.0 : 0.5 * p.od - p.t;  // T = 0 or OD/2: the solid rod
+  const fem::BeamSection s = r_in > 0.0 ? fem::beam_section("TUBE", {0.5 * p.od, r_in}) : fem::beam_section("ROD", {0.5 * p.od});
+  p.A = s.A;
+  p.J = s.J;
+  p.C = 0.5 * p.od;
+  p.ref = card.ref();
+  st.model.rod_props.push_back(p);
+}
+
+// PBEND PID MID A I1 I2 J RB THETAB / C1 C2 D1 D2 E1 E2 F1 F2 / K1 K2 NSM RC ZC DELTAN, or the pipe
+// format PID MID FSI RM T P RB THETAB / - - NSM RC ZC (FSI an integer in field 4).
+void parse_pbend(const Card& card, ReaderState& st) {
+  fem::BendProperty p;
+  p.id = card.id(0, "PID");
+  p.mid = card.id(1, "MID");
+  p.pipe = card.kind(2) == FieldKind::Integer;
+  if (p.pipe) {
+    p.fsi = card.integer(2, "FSI");
+    if (p.fsi < 1 || p.fsi > 3) card.fail(2, "FSI", card.got(2) + "; expected 1, 2 or 3 (pipe format), or the area A (real)");
+    p.rm = card.real(3, "RM");
+    if (!(p.rm > 0.0)) card.fail(3, "RM", card.got(3) + "; expected a mean pipe radius > 0");
+    p.t = card.real_or(4, "T", 0.0);
+    if (!(p.t >= 0.0 && p.t <= 2.0 * p.rm)) card.fail(4, "T", card.got(4) + "; expected a wall thickness 0 <= T <= 2 RM (0: a solid section of radius RM)");
+    p.p = card.real_or(5, "P", 0.0);
+    p.nsm = card.real_or(10, "NSM", 0.0);
+    p.rc = card.real_or(11, "RC", 0.0);
+    p.zc = card.real_or(12, "ZC", 0.0);
+    // a circular tube of mean radius RM and wall T (T = 0: solid of radius RM, QRG PBEND remark 6)
+    const double ro = p.t == 0.0 ? p.rm : p.rm + 0.5 * p.t, ri = p.t == 0.0 ? 0.0 : p.rm - 0.5 * p.t;
+    const fem::BeamSection s = ri > 0.0 ? fem::beam_section("TUBE", {ro, ri}) : fem::beam_section("ROD", {ro});
+    p.A = s.A, p.I1 = p.I2 = s.I1, p.J = s.J;
+    st.note_unsupported("PBEND pipe format (flexibility factors FSI, pressure P and transverse shear not applied: a circular tube)", card.ref());
+  } else {
+    static const char* names[4] = {"A", "I1", "I2", "J"};
+    double* v[4] = {&p.A, &p.I1, &p.I2, &p.J};
+    for (std::size_t k = 0; k < 4; ++k) {
+      *v[k] = card.real(2 + k, names[k]);
+      if (!(*v[k] > 0.0)) card.fail(2 + k, names[k], card.got(2 + k) + "; expected a section property > 0");
+    }
+    for (std::size_t i = 8; i < 16; ++i) card.real_or(i, "Ci/Di/Ei/Fi", 0.0);  // stress recovery points: not used
+    p.K1 = card.real_or(16, "K1", 0.0);
+    p.K2 = card.real_or(17, "K2", 0.0);
+    if (!(p.K1 >= 0.0)) card.fail(16, "K1", card.got(16) + "; expected a shear factor >= 0 (0 or blank: rigid in shear)");
+    if (!(p.K2 >= 0.0)) card.fail(17, "K2", card.got(17) + "; expected a shear factor >= 0 (0 or blank: rigid in shear)");
+    p.nsm = card.real_or(18, "NSM", 0.0);
+    p.rc = card.real_or(19, "RC", 0.0);
+    p.zc = card.real_or(20, "ZC", 0.0);
+    p.has_deltan = !card.blank(21);
+    p.deltan = card.real_or(21, "DELTAN", 0.0);
+  }
+  p.rb = card.real_or(6, "RB", 0.0);
+  p.thetab_deg = card.real_or(7, "THETAB", 0.0);
+  if (p.rc != 0.0 || p.zc != 0.0) st.note_unsupported("PBEND RC/ZC (centroid offsets ignored)", card.ref());
+  if (p.deltan != 0.0) st.note_unsupported("PBEND DELTAN (neutral-axis offset ignored: a thin curved beam)", card.ref());
+  p.ref = card.ref();
+  st.model.bend_props.push_back(p);
+}
+
+// PSHEAR PID MID T NSM F1 F2 (F1, F2 blank: 0, no extensional stiffness)
+void parse_pshear(const Card& card, ReaderState& st) {
+  fem::ShearProperty p;
+  p.id = card.id(0, "PID");
+  p.mid = card.id(1, "MID");
+  p.t = card.real(2, "T");
+  if (!(p.t > 0.0)) card.fail(2, "T", card.got(2) + "; expected a thickness > 0");
+  p.nsm = card.real_or(3, "NSM", 0.0);
+  p.f1 = card.real_or(4, "F1", 0.0);
+  p.f2 = card.real_or(5, "F2", 0.0);
+  if (!(p.f1 >= 0.0)) card.fail(4, "F1", card.got(4) + "; expected an effectiveness factor >= 0 (0 or blank: none)");
+  if (!(p.f2 >= 0.0)) card.fail(5, "F2", card.got(5) + "; expected an effectiveness factor >= 0 (0 or blank: none)");
+  if (card.used() > 6) card.fail(6, "", card.got(6) + " after F2; expected nothing more");
+  p.ref = card.ref();
+  st.model.shear_props.push_back(p);
 }
 
 // PSHELL PID MID1 T MID2 12I/T**3 MID3 TS/T NSM / Z1 Z2 MID4

@@ -169,4 +169,17 @@ void parse_dmig(const Card& card, ReaderState& st) {
   if (!any) card.fail(4, "G1", "blank; expected at least one matrix term (G1 C1 A1)");
 }
 
+// MDLPRM NAME1 VAL1 NAME2 VAL2 ...: MSC's model parameters. HDF5 (the output database) is output
+// and listed as such; every other one is listed by name (seflex models none of them).
+void parse_mdlprm(const Card& card, ReaderState& st) {
+  bool any = false;
+  for (std::size_t i = 0; i < card.size(); i += 2) {
+    if (card.blank(i)) continue;
+    const std::string name = card.text_or(i, "PARAMi", "");
+    any = true;
+    st.note_unsupported(name == "HDF5" ? std::string(kMdlprmHdf5) : "MDLPRM " + name + " (model parameter not used)", card.ref());
+  }
+  if (!any) card.fail(0, "PARAM1", "blank; expected model parameter names and values");
+}
+
 }  // namespace seflex::io::nastran

@@ -65,7 +65,13 @@ constexpr CardType kCardTypes[] = {
     {"CMASS1", parse_cmass1},   {"CMASS2", parse_cmass2},   {"CMASS3", parse_cmass1},  {"CMASS4", parse_cmass2},
     {"PMASS", parse_pmass},     {"CONM1", parse_conm1},     {"PLOAD1", parse_pload1},  {"SPCD", parse_spcd},
     {"CHEXA", parse_chexa},     {"CPENTA", parse_cpenta},   {"CTETRA", parse_ctetra},  {"PSOLID", parse_psolid},
-    {"PLOAD4", parse_pload4},   {"MAT9", parse_mat9},
+    {"PLOAD4", parse_pload4},   {"MAT9", parse_mat9},       {"FORCE1", parse_force12}, {"FORCE2", parse_force12},
+    {"MOMENT1", parse_force12}, {"MOMENT2", parse_force12}, {"RBE1", parse_rbe1},      {"CRIGD1", parse_crigd1},
+    {"CRIGD2", parse_crigd2},   {"CRIGD3", parse_crigd3},   {"CRIGDR", parse_crigdr},  {"RROD", parse_rrod},
+    {"CTUBE", parse_crod},      {"PTUBE", parse_ptube},     {"GENEL", parse_genel},    {"CSHEAR", parse_cshear},
+    {"MDLPRM", parse_mdlprm},   {"PSHEAR", parse_pshear},   {"CBEND", parse_cbend},     {"PBEND", parse_pbend},    {"CQUAD8", parse_shell8},
+    {"CTRIA6", parse_shell8},   {"CQUADR", parse_cquad4},   {"CTRIAR", parse_ctria3},  {"SLOAD", parse_sload},
+    {"PLOAD", parse_pload},
 };
 constexpr std::size_t kNumCardTypes = sizeof(kCardTypes) / sizeof(kCardTypes[0]);
 

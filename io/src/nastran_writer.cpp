@@ -157,13 +157,25 @@ void write_bar_property(CardWriter& w, const fem::BarProperty& p) {
       w.r(p.A).r(p.I1).r(p.I2).r(p.J).r(p.nsm).next_line().blank(8).r(p.K1).r(p.K2).r(p.I12);
       break;
     case Source::PBEAM:
-      w.r(p.A).r(p.I1).r(p.I2).r(p.I12).r(p.J).r(p.nsm).next_line().blank(8).r(p.K1).r(p.K2).blank(2).r(p.nsi).r(p.nsi);
+      w.r(p.A).r(p.I1).r(p.I2).r(p.I12).r(p.J).r(p.nsm).next_line();
+      if (p.stations.empty())
+        w.blank(8);
+      for (std::size_t k = 1; k < p.stations.size(); ++k) {  // a taper: each station (end B last), no stress points
+        const auto& s = p.stations[k];
+        w.t("NO").r(s.x).r(s.A).r(s.I1).r(s.I2).r(s.I12).r(s.J).r(s.nsm);
+      }
+      w.r(p.K1).r(p.K2).blank(2).r(p.nsi).r(p.stations.empty() ? p.nsi : p.stations.back().nsi);
       break;
     case Source::PBARL:
     case Source::PBEAML:
       w.t("MSCBML0").t(p.section_type).next_line();
       for (const double d : p.dims) w.r(d);
       w.r(p.nsm);
+      for (std::size_t k = 1; k < p.stations.size(); ++k) {  // a taper: the stations' dimensions (end B last)
+        w.t("NO").r(p.stations[k].x);
+        for (const double d : p.stations[k].dims) w.r(d);
+        w.r(p.stations[k].nsm);
+      }
       break;
   }
   w.end();
@@ -187,7 +199,7 @@ void write_bar(CardWriter& w, const fem::Bar& b) {
 }
 
 void write_shell(CardWriter& w, const fem::Shell& s) {
-  w.start(s.nnode == 4 ? "CQUAD4" : "CTRIA3").i(s.id).i(s.pid);
+  w.start(fem::shell_card(s)).i(s.id).i(s.pid);
   for (int k = 0; k < s.nnode; ++k) w.i(s.g[k]);
   if (s.theta_is_mcid)
     w.i(s.mcid);
@@ -202,13 +214,82 @@ void write_shell(CardWriter& w, const fem::Shell& s) {
   w.end();
 }
 
+
+/// CQUAD8 EID PID G1-G6 / G7 G8 T1-T4 THETA/MCID ZOFFS / TFLAG; CTRIA6 EID PID G1-G6 / THETA/MCID
+/// ZOFFS T1-T3 TFLAG (blank mid-side grids and thicknesses stay blank).
+void write_quadratic_shell(const fem::QuadraticShell& q, CardWriter& w) {
+  const fem::Shell& s = q.shell;
+  const bool quad = s.nnode == 4;
+  w.start(fem::quadratic_shell_card(q)).i(s.id).i(s.pid);
+  for (int k = 0; k < s.nnode; ++k) w.i(s.g[static_cast<std::size_t>(k)]);
+  for (int k = 0; k < s.nnode; ++k) w.id0(q.mid[static_cast<std::size_t>(k)]);
+  auto theta = [&] { s.theta_is_mcid ? w.i(s.mcid) : w.r(s.theta_deg); };
+  auto thicknesses = [&] {
+    for (int k = 0; k < s.nnode; ++k) s.t[static_cast<std::size_t>(k)] != 0.0 ? w.r(s.t[static_cast<std::size_t>(k)]) : w.blank();
+  };
+  if (quad) {
+    thicknesses();
+    theta();
+    w.r(s.zoffs).i(s.tflag);
+  } else {
+    theta();
+    w.r(s.zoffs);
+    thicknesses();
+    w.i(s.tflag);
+  }
+  w.end();
+}
+
+/// GENEL as the reader reads it (nastran_cards_genel.cpp): the lists and matrices each from a new line.
+void write_genel(const fem::Genel& g, CardWriter& w) {
+  w.start("GENEL").i(g.id).blank();
+  for (const auto& d : g.ui) w.i(d.point).i(d.c);
+  if (!g.ud.empty()) {
+    w.next_line().t("UD").blank();
+    for (const auto& d : g.ud) w.i(d.point).i(d.c);
+  }
+  w.next_line().t(g.flexibility ? "Z" : "K");
+  for (const double v : g.kz) w.r(v);
+  if (!g.s.empty()) {
+    w.next_line().t("S");
+    for (const double v : g.s) w.r(v);
+  }
+  w.end();
+}
+
+/// RBE1, CRIGD1, CRIGD2, CRIGD3 as the reader reads them (nastran_cards_rigid.cpp).
+void write_rigid_body(const fem::RigidBody& r, CardWriter& w) {
+  w.start(fem::rigid_body_card(r)).i(r.id);
+  if (r.card == fem::RigidBody::Card::Crigd1 || r.card == fem::RigidBody::Card::Crigd2) {
+    w.i(r.independent.front().grid);
+    for (const auto& g : r.dependent) {
+      w.i(g.grid);
+      if (r.card == fem::RigidBody::Card::Crigd2) w.components(g.c);
+    }
+    w.end();
+    return;
+  }
+  // RBE1, CRIGD3: three pairs per line in fields 3-8; the dependent pairs after UM (MSET)
+  auto pairs = [&](const std::vector<fem::RigidBody::GridComponents>& list) {
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      if (k > 0 && k % 3 == 0) w.blank().next_line().blank();
+      w.i(list[k].grid).components(list[k].c);
+    }
+  };
+  pairs(r.independent);
+  w.next_line().t(r.card == fem::RigidBody::Card::Rbe1 ? "UM" : "MSET");
+  pairs(r.dependent);
+  if (r.alpha != 0.0) w.r(r.alpha);
+  w.end();
+}
+
 void write_elements(const fem::Model& m, CardWriter& w) {
   for (const auto& b : m.bars) write_bar(w, b);
   for (const auto& r : m.rods) {
     if (r.inline_property)
       w.start("CONROD").i(r.id).i(r.ga).i(r.gb).i(r.mid).r(r.A).r(r.J).r(r.C).r(r.nsm).end();
     else
-      w.start("CROD").i(r.id).i(r.pid).i(r.ga).i(r.gb).end();
+      w.start(fem::rod_card(r)).i(r.id).i(r.pid).i(r.ga).i(r.gb).end();
   }
   for (const auto& s : m.shells) write_shell(w, s);
   for (const auto& s : m.solids) {
@@ -236,6 +317,24 @@ void write_elements(const fem::Model& m, CardWriter& w) {
   for (const auto& r : m.rbars)
     w.start("RBAR").i(r.id).i(r.ga).i(r.gb).components(r.cna).components(r.cnb).components(r.cma).components(r.cmb)
         .r(r.alpha).end();
+  for (const auto& q : m.shells8) write_quadratic_shell(q, w);
+  for (const auto& s : m.shear_panels) w.start("CSHEAR").i(s.id).i(s.pid).i(s.g[0]).i(s.g[1]).i(s.g[2]).i(s.g[3]).end();
+  for (const auto& b : m.bends) {
+    w.start("CBEND").i(b.id).i(b.pid).i(b.ga).i(b.gb);
+    if (b.has_g0)
+      w.i(b.g0).blank(2);
+    else
+      w.r(b.v.x()).r(b.v.y()).r(b.v.z());
+    w.i(b.geom).end();
+  }
+  for (const auto& r : m.rigid_bodies) write_rigid_body(r, w);
+  for (const auto& g : m.genels) write_genel(g, w);
+  for (const auto& r : m.rigid_rods) {
+    if (r.card == fem::RigidRod::Card::Crigdr)
+      w.start("CRIGDR").i(r.id).i(r.ga).i(r.gb).i(r.cmb).end();
+    else
+      w.start("RROD").i(r.id).i(r.ga).i(r.gb).id0(r.cma).id0(r.cmb).r(r.alpha).end();
+  }
   for (const auto& r : m.rbe3) {
     w.start("RBE3").i(r.id).blank().i(r.refgrid).components(r.refc);
     for (const auto& g : r.groups) {
@@ -285,9 +384,18 @@ void write_constraints_and_loads(const fem::Model& m, CardWriter& w) {
       {"ASET", &m.aset}, {"OMIT", &m.omit}, {"BSET", &m.bset}, {"SUPORT", &m.suport}};
   for (const auto& [name, entries] : sets)
     for (const auto& e : *entries) w.start(name).i(e.grid).components(e.c, false).end();
-  for (const auto& l : m.point_loads)
-    w.start(l.kind == fem::PointLoad::Kind::Force ? "FORCE" : "MOMENT").i(l.sid).i(l.grid).i(l.cid).r(l.scale)
-        .r(l.n.x()).r(l.n.y()).r(l.n.z()).end();
+  for (const auto& l : m.point_loads) {
+    w.start(fem::point_load_card(l)).i(l.sid).i(l.grid);
+    if (l.direction == fem::PointLoad::Direction::Vector) {
+      w.i(l.cid).r(l.scale).r(l.n.x()).r(l.n.y()).r(l.n.z()).end();
+      continue;
+    }
+    w.r(l.scale).i(l.g[0]).i(l.g[1]);
+    if (l.direction == fem::PointLoad::Direction::FourGrids) w.i(l.g[2]).i(l.g[3]);
+    w.end();
+  }
+  for (const auto& l : m.scalar_loads) w.start("SLOAD").i(l.sid).i(l.point).r(l.f).end();
+  for (const auto& l : m.grid_pressure_loads) w.start("PLOAD").i(l.sid).r(l.p).i(l.g[0]).i(l.g[1]).i(l.g[2]).id0(l.g[3]).end();
   for (const auto& l : m.pressure_loads) {
     w.start("PLOAD2").i(l.sid).r(l.p);
     if (l.thru)
@@ -477,7 +585,22 @@ void write_nastran(const fem::Model& m, std::ostream& stream, const NastranWrite
     w.r(mat.tref).r(mat.ge).end();
   }
   for (const auto& p : m.bar_props) write_bar_property(w, p);
-  for (const auto& p : m.rod_props) w.start("PROD").i(p.id).i(p.mid).r(p.A).r(p.J).r(p.C).r(p.nsm).end();
+  for (const auto& p : m.rod_props)
+    if (p.tube)
+      w.start("PTUBE").i(p.id).i(p.mid).r(p.od).r(p.t).r(p.nsm).r(p.od2).end();
+    else
+      w.start("PROD").i(p.id).i(p.mid).r(p.A).r(p.J).r(p.C).r(p.nsm).end();
+  for (const auto& p : m.shear_props) w.start("PSHEAR").i(p.id).i(p.mid).r(p.t).r(p.nsm).r(p.f1).r(p.f2).end();
+  for (const auto& p : m.bend_props) {
+    w.start("PBEND").i(p.id).i(p.mid);
+    if (p.pipe)
+      w.i(p.fsi).r(p.rm).r(p.t).r(p.p).r(p.rb).r(p.thetab_deg).next_line().blank(2).r(p.nsm).r(p.rc).r(p.zc);
+    else {
+      w.r(p.A).r(p.I1).r(p.I2).r(p.J).r(p.rb).r(p.thetab_deg).next_line().blank(8).r(p.K1).r(p.K2).r(p.nsm).r(p.rc).r(p.zc);
+      if (p.has_deltan) w.r(p.deltan);
+    }
+    w.end();
+  }
   for (const auto& p : m.shell_props)
     w.start("PSHELL").i(p.id).id0(p.mid1).r(p.t).id0(p.mid2).r(p.bend_ratio).id0(p.mid3).r(p.ts_t).r(p.nsm)
         .r(p.z1).r(p.z2).id0(p.mid4).end();

@@ -20,7 +20,7 @@ namespace {
 using vtk_plugin::CellType;
 
 enum ElementType : int { kBar = 1, kRod = 2, kSpring = 3, kRbe2 = 4, kTria = 5, kQuad = 6, kMass = 7, kRbar = 8, kRbe3 = 9,
-                   kSolid = 10 };
+                   kSolid = 10, kRigid = 11, kShear = 12, kBend = 13, kTria6 = 14, kQuad8 = 15 };
 
 /// Cells of the mesh (grid ids resolved through the finalized model's index).
 class MeshCells {
@@ -85,6 +85,16 @@ void write_mode_shapes_vtu(const std::filesystem::path& path, const fem::Model& 
   for (const auto& r : model.rbe2)
     for (int gm : r.gm) cells.add(vtk_plugin::kLine, {r.gn, gm}, r.id, kRbe2);
   for (const auto& r : model.rbars) cells.add(vtk_plugin::kLine, {r.ga, r.gb}, r.id, kRbar);
+  for (const auto& q : model.shells8) {  // drawn as the linear cell of the corners (mid-side grids may be blank)
+    const fem::Shell& s = q.shell;
+    if (s.nnode == 3) cells.add(vtk_plugin::kTriangle, {s.g[0], s.g[1], s.g[2]}, s.id, kTria6);
+    else cells.add(vtk_plugin::kQuad, {s.g[0], s.g[1], s.g[2], s.g[3]}, s.id, kQuad8);
+  }
+  for (const auto& s : model.shear_panels) cells.add(vtk_plugin::kQuad, {s.g[0], s.g[1], s.g[2], s.g[3]}, s.id, kShear);
+  for (const auto& b : model.bends) cells.add(vtk_plugin::kLine, {b.ga, b.gb}, b.id, kBend);
+  for (const auto& r : model.rigid_bodies)  // RBE1, CRIGD1-3: lines from the first independent grid
+    for (const auto& g : r.dependent) cells.add(vtk_plugin::kLine, {r.independent.front().grid, g.grid}, r.id, kRigid);
+  for (const auto& r : model.rigid_rods) cells.add(vtk_plugin::kLine, {r.ga, r.gb}, r.id, kRigid);
   for (const auto& r : model.rbe3)
     for (const auto& g : r.groups)
       for (int gi : g.grids) cells.add(vtk_plugin::kLine, {r.refgrid, gi}, r.id, kRbe3);

@@ -4,6 +4,7 @@
 #include <metis.h>
 
 #include <string>
+#include <vector>
 
 #include "seflex/common/error.hpp"
 
@@ -16,7 +17,8 @@ std::size_t owned(const std::vector<int>& v, int part) {
   return n;
 }
 
-/// Element -> node lists of the mesh elements (CSR), in the order bars, rods, shells, solids, bushes.
+/// Element -> node lists of the mesh elements (CSR), in the order bars, rods, shells, solids, bushes,
+/// shear panels, bends, CTRIA6/CQUAD8.
 struct MeshConnectivity {
   std::vector<idx_t> ptr{0}, nodes;
   void add(const fem::Model& model, std::initializer_list<int> ids) { add_range(model, ids.begin(), ids.end()); }
@@ -35,11 +37,13 @@ struct MeshConnectivity {
 
 std::size_t ElementPartition::count(int part) const {
   return owned(bars, part) + owned(rods, part) + owned(shells, part) + owned(solids, part) + owned(bushes, part) +
+         owned(shear_panels, part) + owned(bends, part) + owned(shells8, part) +
          owned(conm2, part) + owned(conm1, part) + owned(springs, part) + owned(scalar_masses, part);
 }
 
 std::size_t ElementPartition::total() const {
-  return bars.size() + rods.size() + shells.size() + solids.size() + bushes.size() + conm2.size() + conm1.size() +
+  return bars.size() + rods.size() + shells.size() + solids.size() + bushes.size() + shear_panels.size() + bends.size() +
+         shells8.size() + conm2.size() + conm1.size() +
          springs.size() + scalar_masses.size();
 }
 
@@ -56,6 +60,14 @@ ElementPartition partition_elements(const fem::Model& model, int parts) {
   for (const fem::Bush& b : model.bushes) {
     if (b.gb != 0) mesh.add(model, {b.ga, b.gb});
     else mesh.add(model, {b.ga});
+  }
+  for (const fem::ShearPanel& s : model.shear_panels) mesh.add_range(model, s.g.begin(), s.g.end());
+  for (const fem::Bend& b : model.bends) mesh.add(model, {b.ga, b.gb});
+  for (const fem::QuadraticShell& q : model.shells8) {
+    std::vector<int> ids(q.shell.g.begin(), q.shell.g.begin() + q.shell.nnode);
+    for (const int g : q.mid)
+      if (g != 0) ids.push_back(g);
+    mesh.add_range(model, ids.begin(), ids.end());
   }
   const idx_t ne = mesh.elements();
   const auto n_nodes = static_cast<idx_t>(model.grids.size() + model.spoints.size());
@@ -83,6 +95,9 @@ ElementPartition partition_elements(const fem::Model& model, int parts) {
   take(p.shells, model.shells.size());
   take(p.solids, model.solids.size());
   take(p.bushes, model.bushes.size());
+  take(p.shear_panels, model.shear_panels.size());
+  take(p.bends, model.bends.size());
+  take(p.shells8, model.shells8.size());
   auto round_robin = [&](std::vector<int>& out, std::size_t n) {
     out.resize(n);
     for (std::size_t i = 0; i < n; ++i) out[i] = static_cast<int>(i % static_cast<std::size_t>(parts));

@@ -54,6 +54,9 @@ class OwnElements {
     keep(m.shells, p.shells, rank, shells_);
     keep(m.solids, p.solids, rank, solids_);
     keep(m.bushes, p.bushes, rank, bushes_);
+    keep(m.shear_panels, p.shear_panels, rank, shear_panels_);
+    keep(m.bends, p.bends, rank, bends_);
+    keep(m.shells8, p.shells8, rank, shells8_);
     keep(m.conm2, p.conm2, rank, conm2_);
     keep(m.conm1, p.conm1, rank, conm1_);
     keep(m.springs, p.springs, rank, springs_);
@@ -65,6 +68,9 @@ class OwnElements {
     m_.shells.swap(shells_);
     m_.solids.swap(solids_);
     m_.bushes.swap(bushes_);
+    m_.shear_panels.swap(shear_panels_);
+    m_.bends.swap(bends_);
+    m_.shells8.swap(shells8_);
     m_.conm2.swap(conm2_);
     m_.conm1.swap(conm1_);
     m_.springs.swap(springs_);
@@ -87,6 +93,9 @@ class OwnElements {
   std::vector<fem::Shell> shells_;
   std::vector<fem::Solid> solids_;
   std::vector<fem::Bush> bushes_;
+  std::vector<fem::ShearPanel> shear_panels_;
+  std::vector<fem::Bend> bends_;
+  std::vector<fem::QuadraticShell> shells8_;
   std::vector<fem::Conm2> conm2_;
   std::vector<fem::Conm1> conm1_;
   std::vector<fem::Spring> springs_;
@@ -305,17 +314,22 @@ SparseMatrixd PartitionedSystem::gather_K_ff() const { return gather_f(pencil_->
 SparseMatrixd PartitionedSystem::gather_M_ff() const { return gather_f(pencil_->M.get(), *this); }
 
 std::optional<std::string> partition_refusal(const fem::Model& model, std::optional<int> mpc_set) {
-  const char* card = !model.rbe2.empty()                ? "RBE2"
-                     : !model.rbars.empty()             ? "RBAR"
-                     : !model.rbe3.empty()              ? "RBE3"
-                     : (mpc_set && !model.mpcs.empty()) ? "MPC"
-                                                        : nullptr;
-  if (card != nullptr)
-    return std::string("the model has ") + card +
+  const std::string card = !model.rbe2.empty()                ? "RBE2"
+                           : !model.rbars.empty()             ? "RBAR"
+                           : !model.rbe3.empty()              ? "RBE3"
+                           : !model.rigid_bodies.empty()      ? fem::rigid_body_card(model.rigid_bodies.front())
+                           : !model.rigid_rods.empty()        ? fem::rigid_rod_card(model.rigid_rods.front())
+                           : (mpc_set && !model.mpcs.empty()) ? "MPC"
+                                                              : "";
+  if (!card.empty())
+    return "the model has " + card +
            " cards: their dependent dofs are eliminated from the whole model's K (K_ff = T^T K T), which needs it on "
            "every rank";
   if (!model.aset.empty() || !model.omit.empty())
     return std::string("the model has ASET/OMIT cards: the Guyan reduction to the a-set needs the whole K_ff on every rank");
+  if (!model.genels.empty())
+    return std::string("the model has GENEL cards: their matrices couple any dofs, which the partition of the elements does "
+                       "not follow; they need the whole K on every rank");
   if (!model.dmigs.empty())
     return std::string("the model has DMIG cards: their direct matrices are added to the whole K and M on every rank");
   return std::nullopt;

@@ -163,6 +163,21 @@ std::vector<se::MeshCell> mesh_cells(const fem::Model& model) {
   };
   for (const fem::Bar& b : model.bars) line(b.ga, b.gb, b.id);
   for (const fem::Rod& r : model.rods) line(r.ga, r.gb, r.id);
+  for (const fem::Bend& b : model.bends) line(b.ga, b.gb, b.id);
+  for (const fem::QuadraticShell& q : model.shells8) {  // the corners' cell
+    se::MeshCell c;
+    c.type = q.shell.nnode == 4 ? se::MeshCell::Type::Quad : se::MeshCell::Type::Triangle;
+    for (int k = 0; k < q.shell.nnode; ++k) c.nodes[static_cast<std::size_t>(k)] = node(q.shell.g[static_cast<std::size_t>(k)]);
+    c.element_id = q.shell.id;
+    cells.push_back(c);
+  }
+  for (const fem::ShearPanel& s : model.shear_panels) {
+    se::MeshCell c;
+    c.type = se::MeshCell::Type::Quad;
+    for (std::size_t k = 0; k < 4; ++k) c.nodes[k] = node(s.g[k]);
+    c.element_id = s.id;
+    cells.push_back(c);
+  }
   for (const fem::Shell& s : model.shells) {
     se::MeshCell c;
     c.type = s.nnode == 4 ? se::MeshCell::Type::Quad : se::MeshCell::Type::Triangle;

@@ -300,6 +300,12 @@ void RunOutput::finish(const RunEnd& end) {
      << ",\n  \"steps\": " << steps
      << ",\n  \"rejected_steps\": " << (end.stats ? std::to_string(rej_err + rej_newton) : "null")
      << ",\n  \"newton_iterations\": " << newton << ",\n  \"formulation\": " << json_string(end.formulation)
+     << ",\n  \"method\": " << json_string(end.method)
+     << ",\n  \"rejected_error\": " << rej_err << ",\n  \"rejected_newton\": " << rej_newton
+     << ",\n  \"event_retries\": " << (end.stats ? end.stats->event_retries : -1)
+     << ",\n  \"factorizations\": " << (end.stats ? end.stats->factorizations : -1)
+     << ",\n  \"jacobians\": " << (end.stats ? end.stats->jacobians : -1)
+     << ",\n  \"residual_evaluations\": " << (end.stats ? end.stats->evaluations : -1)
      << ",\n  \"dofs\": " << (end.coordinates >= 0 ? end.coordinates : m.num_dofs) << ",\n  \"multipliers\": " << end.multipliers
      << ",\n  \"locks\": {";
   for (std::size_t k = 0; k < lock_elements_.size(); ++k) {
@@ -317,7 +323,7 @@ void RunOutput::finish(const RunEnd& end) {
   tx << "final time      " << t_last_ << " s\nrun time        " << end.wall_seconds << " s\nCPU time        " << end.cpu_seconds << " s\n";
   tx << "model           " << scene_.description.bodies.size() << " bodies, " << m.hinges.size() << " hinges, "
      << m.force_elements.size() << " force elements, " << m.num_dofs << " dofs\n";
-  tx << "formulation     " << end.formulation;
+  tx << "formulation     " << end.formulation << " (" << end.method << ")";
   if (end.coordinates >= 0) tx << ": " << end.coordinates << " coordinates, " << end.multipliers << " multipliers";
   tx << "\nsteps           " << steps;
   if (end.stats) tx << " accepted, " << rej_err << " rejected (error), " << rej_newton << " retried (Newton)";

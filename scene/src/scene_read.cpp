@@ -277,11 +277,12 @@ struct Reader {
   }
 
   void integrator(const YamlField& f) {
-    f.check_keys({"method", "rho_inf", "t_end", "step", "max_step", "min_step", "adaptive", "tolerance", "newton", "stop"});
+    f.check_keys({"method", "rho_inf", "t_end", "step", "max_step", "min_step", "adaptive", "tolerance", "newton", "radau", "stop"});
     mbd::IntegratorSettings& s = d.integrator;
     const std::string method = f.text_or("method", "generalized-alpha");
-    if (method != "generalized-alpha" && method != "rk4") f["method"].fail("expected generalized-alpha or rk4, got '" + method + "'");
-    d.method = method == "rk4" ? mbd::IntegratorMethod::Rk4 : mbd::IntegratorMethod::GeneralizedAlpha;
+    if (method != "generalized-alpha" && method != "rk4" && method != "radau5")
+      f["method"].fail("expected generalized-alpha, radau5 or rk4, got '" + method + "'");
+    d.method = method == "rk4" ? mbd::IntegratorMethod::Rk4 : method == "radau5" ? mbd::IntegratorMethod::Radau5 : mbd::IntegratorMethod::GeneralizedAlpha;
     if (f.has("rho_inf")) {
       s.rho_inf = f["rho_inf"].number();
       if (!(s.rho_inf >= 0.0 && s.rho_inf <= 1.0)) f["rho_inf"].fail("expected a spectral radius between 0 and 1");
@@ -311,6 +312,22 @@ struct Reader {
       if (n.has("max_iterations")) {
         s.newton_max_iterations = n["max_iterations"].integer();
         if (s.newton_max_iterations < 1) n["max_iterations"].fail("expected a number >= 1");
+      }
+    }
+    if (f.has("radau")) {  // method radau5's simplified Newton (mbd::IntegratorSettings::Radau)
+      const YamlField r = f["radau"];
+      r.check_keys({"max_iterations", "newton_fraction", "jacobian_theta"});
+      if (r.has("max_iterations")) {
+        s.radau.newton_max_iterations = r["max_iterations"].integer();
+        if (s.radau.newton_max_iterations < 2) r["max_iterations"].fail("expected a number >= 2");
+      }
+      if (r.has("newton_fraction")) {
+        s.radau.newton_fraction = r["newton_fraction"].non_negative();
+        if (!(s.radau.newton_fraction < 1.0)) r["newton_fraction"].fail("expected a fraction of the local error tolerance in [0, 1) (0: Hairer and Wanner's rule)");
+      }
+      if (r.has("jacobian_theta")) {
+        s.radau.jacobian_theta = r["jacobian_theta"].non_negative();
+        if (!(s.radau.jacobian_theta < 1.0)) r["jacobian_theta"].fail("expected a contraction rate in [0, 1)");
       }
     }
     if (f.has("stop")) {

@@ -287,7 +287,7 @@ class Classifier {
       bool heated = tempd.has_value();
       for (int k = 0; k < sh.nnode; ++k) heated = heated || grid_t.count(sh.g[k]) > 0;
       if (heated)
-        report_.add_set(Kind::Refused, sh.nnode == 4 ? "CQUAD4" : "CTRIA3", sh.ref, "thermal load set", sid,
+        report_.add_set(Kind::Refused, fem::shell_card(sh), sh.ref, "thermal load set", sid,
                         " gives a temperature to shells whose PSHELL MID4 (membrane-bending coupling) has thermal "
                         "expansion, and seflex does not compute the thermal moment of MID4");
     }
@@ -336,14 +336,18 @@ class Classifier {
         unused_load(std::string(role->name), mb.sid, mb.ref);
       }
     }
-    // FORCE / MOMENT references (checked where the set is applied when selected)
+    // FORCE / MOMENT (and FORCE1/2, MOMENT1/2) references (checked where the set is applied when selected)
     for (const auto& l : m_.point_loads) {
-      const char* card = l.kind == fem::PointLoad::Kind::Force ? "FORCE" : "MOMENT";
+      const char* card = fem::point_load_card(l);
       const bool used = uses_loads() && used_load_.count(l.sid);
-      if (!m_.grid_index.count(l.grid))
-        report_.add(used ? Kind::Refused : Kind::Unused, card, l.ref,
-                    "load set " + std::to_string(l.sid) + ": references grid " + std::to_string(l.grid) +
-                        ", which is not defined" + (used ? "" : " (the set is not used)"));
+      const int n_dir = l.direction == fem::PointLoad::Direction::Vector ? 0 : l.direction == fem::PointLoad::Direction::TwoGrids ? 2 : 4;
+      for (int k = -1; k < n_dir; ++k) {
+        const int g = k < 0 ? l.grid : l.g[static_cast<std::size_t>(k)];
+        if (!m_.grid_index.count(g))
+          report_.add(used ? Kind::Refused : Kind::Unused, card, l.ref,
+                      "load set " + std::to_string(l.sid) + ": references grid " + std::to_string(g) +
+                          ", which is not defined" + (used ? "" : " (the set is not used)"));
+      }
       if (l.cid != 0 && !m_.coord_index.count(l.cid))
         report_.add(used ? Kind::Refused : Kind::Unused, card, l.ref,
                     "load set " + std::to_string(l.sid) + ": references coordinate system " + std::to_string(l.cid) +
@@ -654,14 +658,15 @@ class Classifier {
     for (const auto& u : m_.unsupported)
       if (u.name.find(' ') != std::string::npos && role_of(u.name) == nullptr)
         report_.add(k, u.name, u.first, "read with the approximation stated", u.count);
-    for (const auto& r : m_.rbe3)
-      if (r.has_alpha && r.alpha != 0.0)
-        report_.add(k, "RBE3 ALPHA", r.ref,
+    auto alpha = [&](const char* card, double value, const fem::CardRef& ref) {
+      if (value != 0.0)
+        report_.add(k, std::string(card) + " ALPHA", ref,
                     "thermal expansion coefficient of the element: read, not used (rigid elements do not expand)");
-    for (const auto& r : m_.rbars)
-      if (r.alpha != 0.0)
-        report_.add(k, "RBAR ALPHA", r.ref,
-                    "thermal expansion coefficient of the element: read, not used (rigid elements do not expand)");
+    };
+    for (const auto& r : m_.rbe3) alpha("RBE3", r.has_alpha ? r.alpha : 0.0, r.ref);
+    for (const auto& r : m_.rbars) alpha("RBAR", r.alpha, r.ref);
+    for (const auto& r : m_.rigid_bodies) alpha(fem::rigid_body_card(r), r.alpha, r.ref);
+    for (const auto& r : m_.rigid_rods) alpha(fem::rigid_rod_card(r), r.alpha, r.ref);
     drilling();
   }
 

@@ -11,15 +11,26 @@
 namespace seflex::solutions::detail {
 namespace {
 
-void force_members(const fem::Model& m, MemberList& out) {
+template <fem::PointLoad::Kind K, fem::PointLoad::Direction D>
+void point_load_members(const fem::Model& m, MemberList& out) {
   for (const auto& l : m.point_loads)
-    if (l.kind == fem::PointLoad::Kind::Force) out.push_back({l.sid, l.ref});
+    if (l.kind == K && l.direction == D) out.push_back({l.sid, l.ref});
 }
-void moment_members(const fem::Model& m, MemberList& out) {
-  for (const auto& l : m.point_loads)
-    if (l.kind == fem::PointLoad::Kind::Moment) out.push_back({l.sid, l.ref});
-}
+using PK = fem::PointLoad::Kind;
+using PD = fem::PointLoad::Direction;
+constexpr MembersFn force_members = point_load_members<PK::Force, PD::Vector>;
+constexpr MembersFn moment_members = point_load_members<PK::Moment, PD::Vector>;
+constexpr MembersFn force1_members = point_load_members<PK::Force, PD::TwoGrids>;
+constexpr MembersFn moment1_members = point_load_members<PK::Moment, PD::TwoGrids>;
+constexpr MembersFn force2_members = point_load_members<PK::Force, PD::FourGrids>;
+constexpr MembersFn moment2_members = point_load_members<PK::Moment, PD::FourGrids>;
 
+void sload_members(const fem::Model& m, MemberList& out) {
+  for (const auto& l : m.scalar_loads) out.push_back({l.sid, l.ref});
+}
+void pload_members(const fem::Model& m, MemberList& out) {
+  for (const auto& l : m.grid_pressure_loads) out.push_back({l.sid, l.ref});
+}
 void pload2_members(const fem::Model& m, MemberList& out) {
   for (const auto& l : m.pressure_loads) out.push_back({l.sid, l.ref});
 }
@@ -67,25 +78,26 @@ const CardRole kRows[] = {
     {"CMASS2", R::Structure, Y, nullptr}, {"CMASS3", R::Structure, Y, nullptr}, {"CMASS4", R::Structure, Y, nullptr},
     {"CONM1", R::Structure, Y, nullptr}, {"CBUSH", R::Structure, Y, nullptr}, {"CBUSH1D", R::Structure, N, nullptr},
     {"CBUSH2D", R::Structure, N, nullptr}, {"CHEXA", R::Structure, Y, nullptr}, {"CPENTA", R::Structure, Y, nullptr},
-    {"CTETRA", R::Structure, Y, nullptr}, {"CPYRAM", R::Structure, N, nullptr}, {"CQUAD8", R::Structure, N, nullptr},
-    {"CTRIA6", R::Structure, N, nullptr}, {"CQUADR", R::Structure, N, nullptr}, {"CTRIAR", R::Structure, N, nullptr},
-    {"CQUAD", R::Structure, N, nullptr}, {"CSHEAR", R::Structure, N, nullptr}, {"CTUBE", R::Structure, N, nullptr},
-    {"CBEND", R::Structure, N, nullptr}, {"CBEAM3", R::Structure, N, nullptr}, {"CGAP", R::Structure, N, nullptr},
+    {"CTETRA", R::Structure, Y, nullptr}, {"CPYRAM", R::Structure, N, nullptr}, {"CQUAD8", R::Structure, Y, nullptr},
+    {"CTRIA6", R::Structure, Y, nullptr}, {"CQUADR", R::Structure, Y, nullptr}, {"CTRIAR", R::Structure, Y, nullptr},
+    {"CQUAD", R::Structure, N, nullptr}, {"CSHEAR", R::Structure, Y, nullptr}, {"CTUBE", R::Structure, Y, nullptr},
+    {"CBEND", R::Structure, Y, nullptr}, {"CBEAM3", R::Structure, N, nullptr}, {"CGAP", R::Structure, N, nullptr},
     {"CFAST", R::Structure, N, nullptr}, {"CWELD", R::Structure, N, nullptr}, {"CSEAM", R::Structure, N, nullptr},
-    {"GENEL", R::Structure, N, nullptr}, {"CQUADX", R::Structure, N, nullptr}, {"CTRIAX", R::Structure, N, nullptr},
+    {"GENEL", R::Structure, Y, nullptr}, {"CQUADX", R::Structure, N, nullptr}, {"CTRIAX", R::Structure, N, nullptr},
     {"CTRIAX6", R::Structure, N, nullptr}, {"CCONEAX", R::Structure, N, nullptr}, {"CRAC2D", R::Structure, N, nullptr},
     {"CRAC3D", R::Structure, N, nullptr}, {"CSPRING", R::Structure, N, nullptr}, {"CDAMP1", R::Damping, N, nullptr},
     {"CDAMP2", R::Damping, N, nullptr}, {"CDAMP3", R::Damping, N, nullptr}, {"CDAMP4", R::Damping, N, nullptr},
     {"CDAMP5", R::Damping, N, nullptr}, {"CVISC", R::Damping, N, nullptr}, {"PLOTEL", R::Output, N, nullptr},
     // rigid and interpolation elements
     {"RBE2", R::Structure, Y, nullptr}, {"RBAR", R::Structure, Y, nullptr}, {"RBE3", R::Structure, Y, nullptr},
+    {"RBE1", R::Structure, Y, nullptr}, {"RROD", R::Structure, Y, nullptr}, {"CRIGD1", R::Structure, Y, nullptr},
+    {"CRIGD2", R::Structure, Y, nullptr}, {"CRIGD3", R::Structure, Y, nullptr}, {"CRIGDR", R::Structure, Y, nullptr},
     // features of supported cards the reader keeps for `seflex info` but no solution may use (the
     // names the reader gives them: io/include/seflex/io/nastran_cards.hpp, io/src/nastran_deck.cpp)
     {"MAT1 NU above 0.5", R::Structure, N, nullptr}, {"CQUAD4/CTRIA3 TFLAG a fraction", R::Structure, N, nullptr},
     {"GRID CD = -1 (fluid)", R::Structure, N, nullptr}, {"PSOLID FCTN = PFLUID", R::Structure, N, nullptr},
     {"PSHELL MID2 = -1 (plane strain)", R::Structure, N, nullptr},
-    {"RBE1", R::Structure, N, nullptr}, {"RBAR1", R::Structure, N, nullptr}, {"RROD", R::Structure, N, nullptr},
-    {"RTRPLT", R::Structure, N, nullptr}, {"RTRPLT1", R::Structure, N, nullptr}, {"RSPLINE", R::Structure, N, nullptr},
+    {"RBAR1", R::Structure, N, nullptr}, {"RTRPLT", R::Structure, N, nullptr}, {"RTRPLT1", R::Structure, N, nullptr}, {"RSPLINE", R::Structure, N, nullptr},
     {"RJOINT", R::Structure, N, nullptr}, {"RBE2A", R::Structure, N, nullptr},
     // properties
     {"PBAR", R::Structure, Y, nullptr}, {"PBARL", R::Structure, Y, nullptr}, {"PBEAM", R::Structure, Y, nullptr},
@@ -93,8 +105,8 @@ const CardRole kRows[] = {
     {"PELAS", R::Structure, Y, nullptr}, {"PCOMP", R::Structure, Y, nullptr}, {"PCOMPG", R::Structure, Y, nullptr},
     {"PSOLID", R::Structure, Y, nullptr}, {"PLSOLID", R::Structure, N, nullptr}, {"PBUSH", R::Structure, Y, nullptr},
     {"PBUSH1D", R::Structure, N, nullptr}, {"PBUSH2D", R::Structure, N, nullptr}, {"PBUSHT", R::Nonlinear, N, nullptr},
-    {"PMASS", R::Structure, Y, nullptr}, {"PSHEAR", R::Structure, N, nullptr}, {"PTUBE", R::Structure, N, nullptr},
-    {"PBEND", R::Structure, N, nullptr}, {"PBCOMP", R::Structure, N, nullptr}, {"PBRSECT", R::Structure, N, nullptr},
+    {"PMASS", R::Structure, Y, nullptr}, {"PSHEAR", R::Structure, Y, nullptr}, {"PTUBE", R::Structure, Y, nullptr},
+    {"PBEND", R::Structure, Y, nullptr}, {"PBCOMP", R::Structure, N, nullptr}, {"PBRSECT", R::Structure, N, nullptr},
     {"PBMSECT", R::Structure, N, nullptr}, {"PGAP", R::Structure, N, nullptr}, {"PFAST", R::Structure, N, nullptr},
     {"PWELD", R::Structure, N, nullptr}, {"PSEAM", R::Structure, N, nullptr}, {"PCONEAX", R::Structure, N, nullptr},
     {"PLPLANE", R::Structure, N, nullptr}, {"PRAC2D", R::Structure, N, nullptr}, {"PRAC3D", R::Structure, N, nullptr},
@@ -110,12 +122,12 @@ const CardRole kRows[] = {
     {"MAT4", R::Heat, N, nullptr}, {"MAT5", R::Heat, N, nullptr},
     // static loads (selected by LOAD)
     {"FORCE", R::Load, Y, force_members}, {"MOMENT", R::Load, Y, moment_members}, {"LOAD", R::LoadCombination, Y, nullptr},
-    {"FORCE1", R::Load, N, nullptr}, {"FORCE2", R::Load, N, nullptr}, {"MOMENT1", R::Load, N, nullptr},
-    {"MOMENT2", R::Load, N, nullptr}, {"PLOAD", R::Load, N, nullptr}, {"PLOAD1", R::Load, Y, pload1_members},
+    {"FORCE1", R::Load, Y, force1_members}, {"FORCE2", R::Load, Y, force2_members}, {"MOMENT1", R::Load, Y, moment1_members},
+    {"MOMENT2", R::Load, Y, moment2_members}, {"PLOAD", R::Load, Y, pload_members}, {"PLOAD1", R::Load, Y, pload1_members},
     {"PLOAD2", R::Load, Y, pload2_members}, {"PLOAD4", R::Load, Y, pload4_members}, {"PLOADX1", R::Load, N, nullptr},
     {"GRAV", R::Load, Y, grav_members}, {"RFORCE", R::Load, Y, rforce_members}, {"RFORCE1", R::Load, N, nullptr},
     {"ACCEL", R::Load, N, nullptr}, {"ACCEL1", R::Load, N, nullptr}, {"SPCD", R::Load, Y, spcd_members},
-    {"SLOAD", R::Load, N, nullptr}, {"PLOADB3", R::Load, N, nullptr}, {"PRESAX", R::Load, N, nullptr},
+    {"SLOAD", R::Load, Y, sload_members}, {"PLOADB3", R::Load, N, nullptr}, {"PRESAX", R::Load, N, nullptr},
     {"LSEQ", R::Load, N, nullptr}, {"DEFORM", R::Load, N, nullptr},
     // temperatures (selected by TEMPERATURE)
     {"TEMP", R::TemperatureLoad, Y, temp_members}, {"TEMPD", R::TemperatureLoad, Y, tempd_members},
@@ -152,7 +164,7 @@ const CardRole kRows[] = {
     {"PARAM", R::Param, Y, nullptr},
     // output
     {"MONPNT1", R::Output, N, nullptr}, {"MONPNT2", R::Output, N, nullptr}, {"MONPNT3", R::Output, N, nullptr},
-    {"MONSUM", R::Output, N, nullptr}, {"PARVEC", R::Output, N, nullptr},
+    {"MONSUM", R::Output, N, nullptr}, {"PARVEC", R::Output, N, nullptr}, {"MDLPRM HDF5 (output format)", R::Output, N, nullptr},
     // optimisation
     {"DESVAR", R::Optimization, N, nullptr}, {"DRESP1", R::Optimization, N, nullptr}, {"DRESP2", R::Optimization, N, nullptr},
     {"DRESP3", R::Optimization, N, nullptr}, {"DCONSTR", R::Optimization, N, nullptr}, {"DCONADD", R::Optimization, N, nullptr},

@@ -21,6 +21,19 @@ DrillingInertia drilling_inertia(const fem::Model& m) {
     other.insert(r.gm.begin(), r.gm.end());
   }
   for (const auto& r : m.rbars) other.insert({r.ga, r.gb});
+  for (const auto& r : m.rigid_rods) other.insert({r.ga, r.gb});
+  for (const auto& b : m.bends) other.insert({b.ga, b.gb});
+  for (const auto& q : m.shells8) {  // curved or quadratic: their grids are not those of flat linear facets
+    other.insert(q.shell.g.begin(), q.shell.g.begin() + q.shell.nnode);
+    other.insert(q.mid.begin(), q.mid.end());
+  }
+  for (const auto& s : m.shear_panels) other.insert(s.g.begin(), s.g.end());
+  for (const auto& g : m.genels)
+    for (const auto* list : {&g.ui, &g.ud})
+      for (const auto& d : *list) other.insert(d.point);
+  for (const auto& r : m.rigid_bodies)
+    for (const auto* set : {&r.independent, &r.dependent})
+      for (const auto& g : *set) other.insert(g.grid);
   for (const auto& r : m.rbe3) {
     other.insert(r.refgrid);
     for (const auto& g : r.groups) other.insert(g.grids.begin(), g.grids.end());

@@ -154,7 +154,7 @@ std::vector<Caution> thick_shells(const fem::Model& m) {
     }
     const double h = std::sqrt(area), ts = r * t;
     if (!(h > 0.0) || !(ts > kThickShellRatio * h)) continue;
-    Group& g = groups[s.nnode == 4 ? "CQUAD4" : "CTRIA3"];
+    Group& g = groups[fem::shell_card(s)];
     ++g.count;
     if (before(s.ref, g.first)) {
       g.first = s.ref;

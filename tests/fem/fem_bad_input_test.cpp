@@ -2,12 +2,14 @@
 // naming the file:line, the card and field, and what was expected. (Also run under ASan + UBSan.)
 #include <gtest/gtest.h>
 
+#include "assembly_test_util.hpp"
 #include "nastran_test_util.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/constraints.hpp"
 #include "seflex/fem/loads.hpp"
 
 using namespace seflex;
+using seflex::test::assembly_error;
 using seflex::test::mentions;
 using seflex::test::read_deck;
 
@@ -15,18 +17,6 @@ namespace {
 
 const std::string kBar = "MAT1,1,2.1+11,,0.3,7800.\nPBAR,7,1,1.e-4,1.e-8,2.e-8,0.\n"
                          "GRID,1,,0.,0.,0.\nGRID,2,,1.,0.,0.\nGRID,3,,1.,0.,0.\nGRID,4,,2.,1.,0.\n";
-
-/// The InputError message of assembling the deck ("" and a test failure if it assembles).
-std::string assembly_error(const std::string& deck) {
-  const fem::Model m = read_deck(deck);
-  try {
-    fem::assemble(m, fem::assembly_options(m));
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "assembled without error";
-  return "";
-}
 
 /// The InputError message of applying the constraints (SPC set `spc`, MPC set `mpc`, if any).
 std::string constraint_error(const std::string& deck, std::optional<int> spc = std::nullopt,

@@ -129,7 +129,7 @@ TEST(NastranCards, CbarFieldsAndBarorDefaults) {
   EXPECT_EQ(n.bars[0].offt, "GGG");
 }
 
-TEST(NastranCards, CbeamPbeamAsPrismaticEndA) {
+TEST(NastranCards, CbeamPbeamEndAAndTaper) {
   const fem::Model m = read_deck(base_deck() +
                                  "BEAMOR,,50,,,0.,0.,1.\n"
                                  "PBEAM,50,1,2.,3.,4.,.5,6.,.7\n"  // end A; no K line: K1 = K2 = 1 (QRG default)
@@ -150,8 +150,18 @@ TEST(NastranCards, CbeamPbeamAsPrismaticEndA) {
   EXPECT_DOUBLE_EQ(q.A, 2.0);  // end A, not the station's 1.0
   EXPECT_DOUBLE_EQ(q.K1, 0.5);
   EXPECT_DOUBLE_EQ(q.K2, 0.6);
-  ASSERT_EQ(m.unsupported.size(), 1u);
-  EXPECT_EQ(m.unsupported[0].name, "PBEAM (tapered: end-A section used)");
+  // the taper: end A and end B (X/XB = 1, A = 1; blank I12 and NSM are end A's), none unsupported
+  EXPECT_TRUE(p.stations.empty());
+  ASSERT_EQ(q.stations.size(), 2u);
+  EXPECT_EQ(q.stations[0].x, 0.0);
+  EXPECT_EQ(q.stations[0].A, 2.0);
+  EXPECT_EQ(q.stations[1].x, 1.0);
+  EXPECT_EQ(q.stations[1].A, 1.0);
+  EXPECT_EQ(q.stations[1].I1, 3.0);
+  EXPECT_EQ(q.stations[1].I2, 4.0);
+  EXPECT_EQ(q.stations[1].I12, 0.0);
+  EXPECT_EQ(q.stations[1].J, 6.0);
+  EXPECT_TRUE(m.unsupported.empty());
   EXPECT_TRUE(m.bars[0].is_beam);
   EXPECT_EQ(m.bars[0].pid, 50);
   EXPECT_EQ(m.bars[0].v, Eigen::Vector3d(0, 0, 1));

@@ -30,20 +30,6 @@ Model soft_chain(double E) {
   return pendulum_chain(o);
 }
 
-/// Highest frequency of the model linearised at its initial state: max sqrt(eig(K, M)).
-double highest_frequency(const Model& model) {
-  State s = initial_state(model);
-  Data data(model);
-  initial_accelerations(model, s, data);
-  assemble(model, s, data, AssemblyOptions{});
-  Eigen::SparseMatrix<double> K, M;
-  combine_matrices(model, data, 1.0, 0.0, 0.0, nullptr, K);
-  combine_matrices(model, data, 0.0, 0.0, 1.0, nullptr, M);
-  const Eigen::MatrixXd Kd = Eigen::MatrixXd(K), Md = Eigen::MatrixXd(M);
-  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(0.5 * (Kd + Kd.transpose()), 0.5 * (Md + Md.transpose()));
-  return std::sqrt(es.eigenvalues().maxCoeff());
-}
-
 // Differences of successive halvings |x(h) - x(h/2)| (tip position, hinge angles at t = 0.2 s)
 // fall by 2^4 per halving. E = 7e8 Pa; h0 = 2 / omega_max (omega_max = 8.9e3 rad/s from the linearised model) is inside the stability limit.
 TEST(ExplicitRk4, FlexibleChainConvergesAtFourthOrder) {

@@ -39,17 +39,6 @@ void check_derivatives(const ForceElement& fe, VectorXd phi, const VectorXd& phi
   }
 }
 
-Model rotor(double tau0, double tau1, double phi_ref, double phi_lock, double k_lock, double c_lock = 0) {
-  ModelBuilder mb;
-  const auto rod = mb.add_superelement(test::rod(1.0, 1.0));
-  const auto g = mb.add_ground("ground", Pose{});
-  const auto h = mb.add_hinge("H", g, Vector3d::UnitZ());
-  mb.add_rigid_body("rod", rod, mb.hinge_child(h), 0, Pose{Matrix3d::Identity(), Vector3d(0.5, 0, 0)});
-  mb.add_force_element("spring", TorsionSpring{h, tau0, tau1, phi_ref, {}, {}});
-  if (k_lock > 0) mb.add_force_element("lock", HingeLock{h, phi_lock, k_lock, c_lock});
-  return mb.build();
-}
-
 }  // namespace
 
 TEST(ForceElements, TorsionSpringLinearAndTable) {
@@ -146,12 +135,10 @@ TEST(ForceElements, CableLoopPreloadAndSplitTorque) {
 // latch, J phi'' = tau0 - k phi - k_lock (phi - phi_lock): a harmonic oscillation about
 // phi_eq = (tau0 + k_lock phi_lock) / (k + k_lock) at w_l = sqrt((k + k_lock) / J).
 TEST(ForceElements, LockCrossingTimeIsLocated) {
-  const double tau0 = 13, tau1 = 8, phi_ref = M_PI / 2, phi_lock = M_PI / 2, k_lock = 5000, J = 1.0 / 3.0;
-  const double k = (tau0 - tau1) / phi_ref, w = std::sqrt(k / J);
-  const double t_star = std::acos(1 - k * phi_lock / tau0) / w;
-  const double phidot_star = tau0 / k * w * std::sin(w * t_star);
-  const double phi_eq = (tau0 + k_lock * phi_lock) / (k + k_lock), wl = std::sqrt((k + k_lock) / J);
-  const Model model = rotor(tau0, tau1, phi_ref, phi_lock, k_lock);
+  const double tau0 = 13, tau1 = 8, phi_ref = M_PI / 2, phi_lock = M_PI / 2, k_lock = 5000;
+  const test::SpringRotorMotion exact(tau0, tau1, phi_ref, phi_lock, k_lock);
+  const double t_star = exact.t_star;
+  const Model model = test::spring_rotor(tau0, tau1, phi_ref, phi_lock, k_lock);
   for (bool adaptive : {true, false}) {
     State s = initial_state(model);
     Data data(model);
@@ -181,8 +168,7 @@ TEST(ForceElements, LockCrossingTimeIsLocated) {
     EXPECT_TRUE(event);
     if (!adaptive) continue;
     // Post-lock oscillation against its closed form.
-    const double tau = s.t - t_star;
-    const double phi_exact = phi_eq + (phi_lock - phi_eq) * std::cos(wl * tau) + phidot_star / wl * std::sin(wl * tau);
+    const double phi_exact = exact.phi_after_latch(s.t);
     EXPECT_NEAR(s.phi[0], phi_exact, 2e-6);
   }
 }
@@ -193,7 +179,7 @@ TEST(ForceElements, LockCrossingTimeIsLocated) {
 // what remains is the Newton and event-location round-off: measured 1.3e-12 J of 16.5 J; bound 1e-10
 // of the spring work.
 TEST(ForceElements, EnergyBalanceWithSpringAndLock) {
-  const Model model = rotor(13, 8, M_PI / 2, M_PI / 2, 5000);
+  const Model model = test::spring_rotor(13, 8, M_PI / 2, M_PI / 2, 5000);
   State s = initial_state(model);
   Data data(model);
   IntegratorSettings st;

@@ -2,11 +2,14 @@
 // Small models shared by the multibody tests: rigid rods, flexible pendulum chains, and an
 // observer that keeps every sample.
 #include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+#include <Eigen/Sparse>
 #include <cmath>
 #include <functional>
 #include <vector>
 
 #include "beam_superelement.hpp"
+#include "seflex/mbd/assembly/assembly.hpp"
 #include "seflex/mbd/solvers/integrator.hpp"
 #include "seflex/mbd/model.hpp"
 
@@ -111,5 +114,55 @@ inline mbd::Model pendulum_chain(const ChainOptions& o) {
   if (o.extra) o.extra(mb, hinges);
   return mb.build();
 }
+
+/// A rigid rod (1 m, 1 kg: J = 1/3 kg m^2 about its end) on a ground hinge about z, driven by the
+/// linear torsion spring tau = tau0 + (tau1 - tau0) phi / phi_ref, with a latching lock at phi_lock of
+/// stiffness k_lock (none when k_lock = 0) and damping c_lock.
+inline mbd::Model spring_rotor(double tau0, double tau1, double phi_ref, double phi_lock, double k_lock, double c_lock = 0) {
+  using namespace mbd;
+  ModelBuilder mb;
+  const auto r = mb.add_superelement(rod(1.0, 1.0));
+  const auto g = mb.add_ground("ground", Pose{});
+  const auto h = mb.add_hinge("H", g, Eigen::Vector3d::UnitZ());
+  mb.add_rigid_body("rod", r, mb.hinge_child(h), 0, Pose{Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.5, 0, 0)});
+  mb.add_force_element("spring", TorsionSpring{h, tau0, tau1, phi_ref, {}, {}});
+  if (k_lock > 0) mb.add_force_element("lock", HingeLock{h, phi_lock, k_lock, c_lock});
+  return mb.build();
+}
+
+/// Highest frequency of the model linearised at its initial state: max sqrt(eig(K, M)).
+inline double highest_frequency(const mbd::Model& model) {
+  using namespace mbd;
+  State s = initial_state(model);
+  Data data(model);
+  initial_accelerations(model, s, data);
+  assemble(model, s, data, AssemblyOptions{});
+  Eigen::SparseMatrix<double> K, M;
+  combine_matrices(model, data, 1.0, 0.0, 0.0, nullptr, K);
+  combine_matrices(model, data, 0.0, 0.0, 1.0, nullptr, M);
+  const Eigen::MatrixXd Kd = Eigen::MatrixXd(K), Md = Eigen::MatrixXd(M);
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(0.5 * (Kd + Kd.transpose()), 0.5 * (Md + Md.transpose()));
+  return std::sqrt(es.eigenvalues().maxCoeff());
+}
+
+/// The closed form of spring_rotor's motion (J = 1/3 kg m^2) from rest at phi = 0: J phi'' = tau0 - k phi,
+/// phi(t) = (tau0 / k)(1 - cos w t), w = sqrt(k / J), k = (tau0 - tau1) / phi_ref, reaching phi_lock
+/// at t_star = acos(1 - k phi_lock / tau0) / w with rate phidot_star; after the latch a harmonic
+/// oscillation about phi_eq = (tau0 + k_lock phi_lock) / (k + k_lock) at w_l = sqrt((k + k_lock) / J).
+struct SpringRotorMotion {
+  double t_star, phidot_star, phi_eq, wl, phi_lock;
+  SpringRotorMotion(double tau0, double tau1, double phi_ref, double phi_lock_, double k_lock) : phi_lock(phi_lock_) {
+    const double J = 1.0 / 3.0, k = (tau0 - tau1) / phi_ref, w = std::sqrt(k / J);
+    t_star = std::acos(1 - k * phi_lock / tau0) / w;
+    phidot_star = tau0 / k * w * std::sin(w * t_star);
+    phi_eq = (tau0 + k_lock * phi_lock) / (k + k_lock);
+    wl = std::sqrt((k + k_lock) / J);
+  }
+  /// The angle at time t after the latch.
+  double phi_after_latch(double t) const {
+    const double tau = t - t_star;
+    return phi_eq + (phi_lock - phi_eq) * std::cos(wl * tau) + phidot_star / wl * std::sin(wl * tau);
+  }
+};
 
 }  // namespace seflex::test

@@ -70,7 +70,11 @@ TEST(SceneInput, BadValuesNameLineKeyAndExpectation) {
   expect_parts(scene_error(edit(4, "    superelement: link.se\n    fidelity: elastic")),
                {"scene.yaml:5: bodies[0].fidelity: expected flexible or rigid, got 'elastic'"});
   expect_parts(scene_error(edit(13, "integrator:\n  method: euler")),
-               {"scene.yaml:14: integrator.method: expected generalized-alpha or rk4, got 'euler'"});
+               {"scene.yaml:14: integrator.method: expected generalized-alpha, radau5 or rk4, got 'euler'"});
+  expect_parts(scene_error(edit(14, "  t_end: 1.0\n  radau: {max_iterations: 1}")),
+               {"scene.yaml:15: integrator.radau.max_iterations: expected a number >= 2"});
+  expect_parts(scene_error(edit(14, "  t_end: 1.0\n  radau: {jacobian_theta: 1.5}")),
+               {"scene.yaml:15: integrator.radau.jacobian_theta: expected a contraction rate in [0, 1)"});
   expect_parts(scene_error(edit(14, "  rho_inf: 0.5")), {"integrator.t_end: missing (expected the end time [s])"});
 }
 

@@ -5,7 +5,7 @@
 // between the end of the first accepted step and the end of step 101 is counted, samples at the
 // scene's output interval included (the observer itself keeps nothing). Required: zero.
 //
-// FFRF-LM on the same scene and rigid-LM on its beam-like variant (sync-beam): the same requirement
+// Radau IIA-5 on the same scene, to 100 steps and through the first latch. FFRF-LM on the same scene and rigid-LM on its beam-like variant (sync-beam): the same requirement
 // over 100 steps.
 //
 // The allocator hooks replace glibc's malloc family in this executable only (its own folder, so
@@ -154,6 +154,28 @@ TEST_F(TimeLoopAllocations, DemoSync3dThroughTheFirstLatchAllocatesNothing) {
   ASSERT_GT(window.latch_step(), 100);
   EXPECT_GT(run.run.event_retries, 0);
   EXPECT_EQ(g_allocations.load(), 0) << "heap allocations in " << window.accepted() << " steps";
+}
+
+// Radau IIA-5 (integrator.method radau5) on the same scene: 100 steps, samples from its dense output
+// included (steps do not land on output times), then through the first lock latch (its crossing
+// located on the collocation polynomial, the step redone to end there) and 50 steps after it.
+TEST_F(TimeLoopAllocations, DemoSync3dRadau5AllocatesNothing) {
+  for (const bool through_latch : {false, true}) {
+    g_allocations = 0;
+    StepWindow window(through_latch ? 50 : 100, through_latch);
+    const mbd::SimulationRun run = mbd::simulate(scene_->model, scene_->description.integrator, mbd::IntegratorMethod::Radau5,
+                                                 mbd::Formulation::Aic, &window);
+    g_counting = false;
+    if (through_latch) {
+      ASSERT_GT(window.latch_step(), 10);
+      EXPECT_GT(run.run.event_retries, 0);
+    } else {
+      ASSERT_EQ(window.accepted(), 101);
+    }
+    EXPECT_GT(run.run.newton_iterations, 100);
+    EXPECT_EQ(g_allocations.load(), 0) << "heap allocations in " << window.accepted() << " radau5 steps"
+                                       << (through_latch ? " through the first latch" : "") << " (SEFLEX_TRACE_ALLOCATIONS=1 prints where)";
+  }
 }
 
 // The baselines held to the same standard (issue 12, part 5): 100 steps from the end of the first

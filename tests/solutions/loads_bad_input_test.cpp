@@ -58,7 +58,7 @@ TEST(LoadsBadInput, ReaderNamesCardAndField) {
 TEST(LoadsBadInput, SelectedLoadReferencesAreChecked) {
   // PLOAD2 listing a bar, or an element that does not exist (THRU would skip them)
   EXPECT_TRUE(mentions(solve_error(deck("LOAD = 5\n", "PLOAD2,5,1.,10,2\n")),
-                       {"deck.bdf:18:", "PLOAD2 5", "element 2 is a CBAR; expected a CQUAD4 or CTRIA3"}));
+                       {"deck.bdf:18:", "PLOAD2 5", "element 2 is a CBAR; expected a shell: CQUAD4, CTRIA3, CQUADR, CTRIAR, CQUAD8 or CTRIA6"}));
   EXPECT_TRUE(mentions(solve_error(deck("LOAD = 5\n", "PLOAD2,5,1.,99\n")), {"PLOAD2 5", "element 99 is not defined"}));
   // GRAV/RFORCE in a system that does not exist or is not rectangular, RFORCE about a missing grid
   const std::string cyl = "CORD2C,8,,0.,0.,0.,0.,0.,1.,+C\n+C,1.,0.,0.\n";
@@ -103,7 +103,7 @@ TEST(LoadsBadInput, ThermalSelections) {
                         "does not compute the thermal moment of MID4"}));
   // TEMPRB on the shell
   EXPECT_TRUE(mentions(solve_error(deck("TEMP(LOAD) = 7\n", bars_only + "TEMPRB,7,10,30.,30.\n")),
-                       {"TEMPRB 7", "element 10 is not a CBAR, CBEAM, CROD or CONROD"}));
+                       {"TEMPRB 7", "element 10 is not a CBAR, CBEAM, CROD, CTUBE or CONROD"}));
   // a bar without TEMPRB whose grid has no temperature
   EXPECT_TRUE(mentions(solve_error(deck("TEMP(LOAD) = 7\n", "TEMPRB,7,1,30.,30.\nTEMP,7,3,25.\n")),
                        {"CBAR 2", "GRID 2 has no temperature in thermal load set 7"}));

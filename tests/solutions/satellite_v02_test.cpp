@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <map>
+#include <regex>
 #include <sstream>
 
 #include "seflex/fem/mass_properties.hpp"
@@ -83,9 +84,13 @@ TEST(SatelliteV02, EveryJobReadsAndStopsOnTheFloatingPanel) {
   for (const auto& [job, options] : jobs) {
     const auto r = test::run_seflex("static " + job + " -o '" + (out / (job + ".csv")).string() + "' " + options, kJobs);
     EXPECT_EQ(r.exit_code, 3) << job;
-    EXPECT_EQ(r.err.substr(r.err.find("error: ")),
+    // which dof of the floating panel the factorisation meets first depends on round-off (grid 55042
+    // component 5 or 55041 component 1 as the shell element's arithmetic is compiled): the part is the same
+    const std::string err = std::regex_replace(r.err.substr(r.err.find("error: ")), std::regex("at grid 5504[0-9] component [1-6]"),
+                                               "at grid G component C");
+    EXPECT_EQ(err,
               "error: " + job +
-                  ": statics: the constrained stiffness matrix is singular at grid 55042 component 5: it belongs to a "
+                  ": statics: the constrained stiffness matrix is singular at grid G component C: it belongs to a "
                   "part of 65 points (55012, 55015, 55017, 55020, 55022, 55023, ...; the first defined at "
                   "../../BULK/PANNEAUX_EXT/Satellite_V02_Panneaux_Externe_01.blk:12) that no SPC holds and no element "
                   "or rigid element connects to the rest of the model, so it moves freely; connect it (shared grids, "

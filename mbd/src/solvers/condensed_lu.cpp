@@ -12,14 +12,16 @@ namespace seflex::mbd::detail {
 namespace {
 
 /// The pivot test of Data::factorize: every pivot finite and above 1e-14 of the largest entry.
-bool regular(const Eigen::PartialPivLU<Eigen::MatrixXd>& lu, double scale) {
+template <class Matrix>
+bool regular(const Eigen::PartialPivLU<Matrix>& lu, double scale) {
   const auto pivots = lu.matrixLU().diagonal().cwiseAbs();
   return pivots.size() == 0 || (std::isfinite(pivots.sum()) && pivots.minCoeff() > 1e-14 * scale);
 }
 
 }  // namespace
 
-void CondensedLu::setup(const Model& model, const Eigen::SparseMatrix<double>& S) {
+template <class Scalar>
+void CondensedLuT<Scalar>::setup(const Model& model, const Sparse& S) {
   const int n = static_cast<int>(S.rows());
   pos_.assign(static_cast<std::size_t>(n), 0);
   blocks_.clear();
@@ -42,7 +44,7 @@ void CondensedLu::setup(const Model& model, const Eigen::SparseMatrix<double>& S
   bool arrow = !blocks_.empty();
   std::vector<std::vector<char>> coupled(blocks_.size(), std::vector<char>(kept_.size(), 0));
   for (int j = 0; j < S.outerSize() && arrow; ++j)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(S, j); it; ++it) {
+    for (typename Sparse::InnerIterator it(S, j); it; ++it) {
       const int pi = pos_[static_cast<std::size_t>(it.row())], pj = pos_[static_cast<std::size_t>(j)];
       if (pi < 0 && pj < 0 && pi != pj) {
         arrow = false;
@@ -67,11 +69,11 @@ void CondensedLu::setup(const Model& model, const Eigen::SparseMatrix<double>& S
     blk.X.setZero(blk.m, nc);
     blk.T.setZero(nc, nc);
     blk.y.setZero(blk.m);
-    blk.lu = Eigen::PartialPivLU<Eigen::MatrixXd>(blk.m);
+    blk.lu = Eigen::PartialPivLU<Matrix>(blk.m);
   }
   const auto nr = static_cast<Eigen::Index>(kept_.size());
   Srr_.setZero(nr, nr);
-  lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(nr);
+  lu_ = Eigen::PartialPivLU<Matrix>(nr);
   rr_.setZero(nr);
   xr_.setZero(nr);
   // Destination of every stored entry (the matrices are sized for good: the pointers stay valid).
@@ -81,7 +83,7 @@ void CondensedLu::setup(const Model& model, const Eigen::SparseMatrix<double>& S
   dest_.clear();
   for (int j = 0; j < S.outerSize(); ++j) {
     const int pj = pos_[static_cast<std::size_t>(j)];
-    for (Eigen::SparseMatrix<double>::InnerIterator it(S, j); it; ++it) {
+    for (typename Sparse::InnerIterator it(S, j); it; ++it) {
       const int pi = pos_[static_cast<std::size_t>(it.row())];
       if (pi >= 0 && pj >= 0) {
         dest_.push_back(&Srr_(pi, pj));
@@ -100,7 +102,8 @@ void CondensedLu::setup(const Model& model, const Eigen::SparseMatrix<double>& S
   ready_ = true;
 }
 
-bool CondensedLu::factorize(const Model& model, const Eigen::SparseMatrix<double>& S) {
+template <class Scalar>
+bool CondensedLuT<Scalar>::factorize(const Model& model, const Sparse& S) {
   if (!ready_ || static_cast<Eigen::Index>(pos_.size()) != S.rows()) setup(model, S);
   SEFLEX_DEMAND(static_cast<std::size_t>(S.nonZeros()) == dest_.size(), "the iteration matrix keeps its pattern");
   Srr_.setZero();
@@ -109,11 +112,11 @@ bool CondensedLu::factorize(const Model& model, const Eigen::SparseMatrix<double
     blk.Sec.setZero();
     blk.Sce.setZero();
   }
-  const double* val = S.valuePtr();
+  const Scalar* val = S.valuePtr();
   for (std::size_t k = 0; k < dest_.size(); ++k) *dest_[k] = val[k];
   // Apart from the scatter: a running maximum there was kept in memory (the stores through dest_ may
   // alias it), a store-to-load chain per entry.
-  const double scale = Eigen::Map<const Eigen::VectorXd>(val, S.nonZeros()).cwiseAbs().maxCoeff();
+  const double scale = Eigen::Map<const Vector>(val, S.nonZeros()).cwiseAbs().maxCoeff();
   for (Block& blk : blocks_) {
     blk.lu.compute(blk.See);
     if (!regular(blk.lu, scale)) return false;
@@ -127,12 +130,14 @@ bool CondensedLu::factorize(const Model& model, const Eigen::SparseMatrix<double
   return regular(lu_, scale);
 }
 
-void CondensedLu::solve_negated(const Eigen::VectorXd& r, Eigen::VectorXd& x) {
+template <class Scalar>
+void CondensedLuT<Scalar>::solve_negated(const Vector& r, Vector& x) {
   if (x.size() != r.size()) x.resize(r.size());
   for (std::size_t p = 0; p < kept_.size(); ++p) rr_[static_cast<Eigen::Index>(p)] = r[kept_[p]];
   for (Block& blk : blocks_) {
     blk.y = blk.lu.solve(r.segment(blk.first, blk.m));
-    for (std::size_t a = 0; a < blk.c.size(); ++a) rr_[blk.c[a]] -= blk.Sce.row(static_cast<Eigen::Index>(a)).dot(blk.y);
+    // (a plain product: dot() would conjugate the row of a complex matrix)
+    for (std::size_t a = 0; a < blk.c.size(); ++a) rr_[blk.c[a]] -= blk.Sce.row(static_cast<Eigen::Index>(a)).transpose().cwiseProduct(blk.y).sum();
   }
   xr_ = lu_.solve(rr_);
   for (std::size_t p = 0; p < kept_.size(); ++p) x[kept_[p]] = -xr_[static_cast<Eigen::Index>(p)];
@@ -141,5 +146,8 @@ void CondensedLu::solve_negated(const Eigen::VectorXd& r, Eigen::VectorXd& x) {
     x.segment(blk.first, blk.m) = -blk.y;
   }
 }
+
+template class CondensedLuT<double>;
+template class CondensedLuT<std::complex<double>>;
 
 }  // namespace seflex::mbd::detail

@@ -11,27 +11,35 @@
 // work of the full one. S_ee,b = K_ee + gamma' C_ee + beta' M_ee is dominated by the modal mass and
 // is pivoted within its block. Where the pattern is not an arrowhead (e.g. a force element on a
 // modal dof) the whole matrix is factorised densely. No allocation after the first factorisation.
+// Real (the generalized-alpha and Radau IIA real systems) or complex (Radau IIA's complex system,
+// radau5.cpp): CondensedLuT<double>, CondensedLuT<std::complex<double>>.
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
+#include <complex>
 #include <vector>
 
 #include "seflex/mbd/model.hpp"
 
 namespace seflex::mbd::detail {
 
-class CondensedLu {
+template <class Scalar>
+class CondensedLuT {
  public:
+  using Matrix = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
+  using Vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  using Sparse = Eigen::SparseMatrix<Scalar>;
+
   /// Whether S (its pattern; analysed at the first call) condenses to at most `max_dense` retained
   /// dofs: above that the caller's sparse LU is the better choice.
-  bool applicable(const Model& model, const Eigen::SparseMatrix<double>& S, int max_dense) {
+  bool applicable(const Model& model, const Sparse& S, int max_dense) {
     if (!ready_ || static_cast<Eigen::Index>(pos_.size()) != S.rows()) setup(model, S);
     return dense_size() <= max_dense;
   }
   /// Factorise S (on the model's dof numbering; pattern fixed after the first call). False when S
   /// is singular (a zero or non-finite pivot relative to the largest entry, as Data::factorize).
-  bool factorize(const Model& model, const Eigen::SparseMatrix<double>& S);
+  bool factorize(const Model& model, const Sparse& S);
   /// x = -S^-1 r with the last factorisation.
-  void solve_negated(const Eigen::VectorXd& r, Eigen::VectorXd& x);
+  void solve_negated(const Vector& r, Vector& x);
   /// Size of the dense factorisation (retained dofs, or all of them without condensation).
   int dense_size() const { return static_cast<int>(Srr_.rows()); }
 
@@ -39,20 +47,23 @@ class CondensedLu {
   struct Block {
     int first = 0, m = 0;   ///< the body's modal dofs first .. first + m - 1
     std::vector<int> c;     ///< retained positions coupled to them (sorted)
-    Eigen::MatrixXd See, Sec, Sce, X, T;  ///< X = See^-1 Sec, T = Sce X
-    Eigen::PartialPivLU<Eigen::MatrixXd> lu;
-    Eigen::VectorXd y;      ///< See^-1 r_e of a solve
+    Matrix See, Sec, Sce, X, T;  ///< X = See^-1 Sec, T = Sce X
+    Eigen::PartialPivLU<Matrix> lu;
+    Vector y;               ///< See^-1 r_e of a solve
   };
-  void setup(const Model& model, const Eigen::SparseMatrix<double>& S);
+  void setup(const Model& model, const Sparse& S);
 
   bool ready_ = false;
   std::vector<int> pos_;    ///< per dof: position among the retained dofs, or -1 - block index
   std::vector<int> kept_;   ///< retained dofs in order
   std::vector<Block> blocks_;
-  std::vector<double*> dest_;  ///< per stored entry of S (value order): where it goes
-  Eigen::MatrixXd Srr_;
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
-  Eigen::VectorXd rr_, xr_;
+  std::vector<Scalar*> dest_;  ///< per stored entry of S (value order): where it goes
+  Matrix Srr_;
+  Eigen::PartialPivLU<Matrix> lu_;
+  Vector rr_, xr_;
 };
+
+using CondensedLu = CondensedLuT<double>;
+using CondensedLuComplex = CondensedLuT<std::complex<double>>;
 
 }  // namespace seflex::mbd::detail

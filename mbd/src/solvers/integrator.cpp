@@ -178,22 +178,12 @@ StepResult newton_step(const Model& model, const State& s0, double h, const Coef
   return out;
 }
 
-/// Per-dof weight over tolerance of the local error estimate.
-VectorXd error_weights(const Model& model, const IntegratorSettings& st) {
-  VectorXd w(model.num_dofs);
-  for (int i = 0; i < model.num_dofs; ++i) {
-    const char kind = model.dof_kind[static_cast<std::size_t>(i)];
-    w[i] = model.dof_weight[i] / ((kind == 't' || kind == 'e') ? st.tol_position : st.tol_angle);
-  }
-  return w;
-}
-
 /// The AIC formulation as seen by the step driver.
 class AicStepper final : public detail::Stepper {
  public:
   AicStepper(const Model& model, State& state, Data& data, const IntegratorSettings& st)
       : model_(model), state_(state), data_(data), st_(st), c_(st.rho_inf), trial_(state),
-        error_weights_(mbd::error_weights(model, st)), vdot_prev_(state.vdot), vdot_predicted_(state.vdot) {
+        error_weights_(detail::error_weights(model, st)), vdot_prev_(state.vdot), vdot_predicted_(state.vdot) {
     for (const Hinge& h : model.hinges) has_drives_ = has_drives_ || static_cast<bool>(h.drive);
   }
   double time() const override { return state_.t; }

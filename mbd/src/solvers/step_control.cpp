@@ -11,25 +11,38 @@
 
 namespace seflex::mbd::detail {
 
-namespace {
-
-/// Hermite-interpolated crossing of g(theta) = side (phi(theta) - phi_lock) = 0 on [0, 1].
-double crossing_fraction(double p0, double d0, double p1, double d1, double h, double target, double side) {
-  auto g = [&](double th) {
+double Stepper::crossing_fraction(int hinge, double target, double side, double h) const {
+  // Cubic Hermite interpolant of the hinge angle on [0, 1] from the angles and rates at both ends.
+  const double p0 = hinge_angle(hinge, false), d0 = hinge_rate(hinge, false);
+  const double p1 = hinge_angle(hinge, true), d1 = hinge_rate(hinge, true);
+  return first_crossing([&](double th) {
     const double t2 = th * th, t3 = t2 * th;
     const double phi = (2 * t3 - 3 * t2 + 1) * p0 + (t3 - 2 * t2 + th) * h * d0 + (-2 * t3 + 3 * t2) * p1 + (t3 - t2) * h * d1;
     return side * (phi - target);
-  };
-  double lo = 0.0, hi = 1.0;
-  if (g(lo) >= 0.0) return 0.0;
-  for (int i = 0; i < 80; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (g(mid) >= 0.0 ? hi : lo) = mid;
-  }
-  return 0.5 * (lo + hi);
+  });
 }
 
-}  // namespace
+double Stepper::step_after_accept(double h, double h_wanted, double err, bool after_rejection) {
+  // The growth limit applies to the step the control asked for, not to one shortened to land on an
+  // output time: otherwise a step halved before an output (h_wanted in (0.5, 0.95] of the interval)
+  // could only grow to 0.75 of the interval, and the steps stayed at half the output interval
+  // whatever the tolerance (sync-3d: 2.5 ms at a local error of 1e-2 as at 1e-5).
+  const double f = err > 0.0 ? 0.9 * std::pow(err, -1.0 / 3.0) : 2.0;
+  const double base = std::max(h, h_wanted);
+  return std::clamp(h * f, 0.2 * h, (after_rejection ? 1.0 : 1.5) * base);
+}
+
+double Stepper::step_after_rejection(double h, double err) { return h * std::clamp(0.9 * std::pow(err, -1.0 / 3.0), 0.2, 0.9); }
+
+
+Eigen::VectorXd error_weights(const Model& model, const IntegratorSettings& st) {
+  Eigen::VectorXd w(model.num_dofs);
+  for (int i = 0; i < model.num_dofs; ++i) {
+    const char kind = model.dof_kind[static_cast<std::size_t>(i)];
+    w[i] = model.dof_weight[i] / ((kind == 't' || kind == 'e') ? st.tol_position : st.tol_angle);
+  }
+  return w;
+}
 
 void validate_settings(const IntegratorSettings& st, double t0) {
   auto bad = [](const std::string& what) { throw InputError("integrator settings: " + what); };
@@ -43,6 +56,9 @@ void validate_settings(const IntegratorSettings& st, double t0) {
     bad("Newton iterations must be >= 1 and tolerances positive");
   if (!(st.newton_error_fraction >= 0.0 && st.newton_error_fraction < 1.0)) bad("Newton error fraction must lie in [0, 1)");
   if (!(st.event_tol > 0.0)) bad("event tolerance must be positive");
+  if (st.radau.newton_max_iterations < 2) bad("radau: Newton iterations must be >= 2");
+  if (!(st.radau.newton_fraction >= 0.0 && st.radau.newton_fraction < 1.0)) bad("radau: Newton fraction must lie in [0, 1)");
+  if (!(st.radau.jacobian_theta >= 0.0 && st.radau.jacobian_theta < 1.0)) bad("radau: Jacobian theta must lie in [0, 1)");
 }
 
 double wrms_error(const Eigen::VectorXd& dvdot, const Eigen::VectorXd& weight_over_tol, double h, const AlphaCoefficients& c) {
@@ -58,18 +74,23 @@ RunStats drive_steps(const Model& model, const IntegratorSettings& st, Stepper& 
   RunStats stats;
   long step = 0;
   Sample smp;  // reused: no allocation per sample once filled
-  auto emit = [&](bool event) {
-    if (!observer) return;
-    stepper.sample(smp);
+  auto deliver = [&](bool event) {
     smp.step = step;
     smp.event = event;
     smp.newton_iterations = stats.newton_iterations;
     smp.step_size = stats.h_last;
     observer->on_sample(model, smp);
   };
+  auto emit = [&](bool event) {
+    if (!observer) return;
+    stepper.sample(smp);
+    deliver(event);
+  };
   emit(false);
   const double t0 = stepper.time();
   const double eps = 1e-12 * std::max(1.0, std::abs(st.t_end));
+  // Steps land on output times unless the formulation interpolates its samples (dense output).
+  const bool dense = stepper.dense_output() && st.output_interval > 0.0;
   double next_out = st.output_interval > 0.0 ? t0 + st.output_interval : st.t_end;
   double h_nat = st.h_initial;
   int event_retries = 0;
@@ -81,8 +102,9 @@ RunStats drive_steps(const Model& model, const IntegratorSettings& st, Stepper& 
     if (st.h_max > 0.0) h = std::min(h, st.h_max);
     const double h_wanted = h;  // before landing on the next output time
     bool hits_output = false;
-    const double to_out = std::min(next_out, st.t_end) - t;
-    if (h >= to_out / 1.05) {  // stretch a little rather than leave a sliver
+    const double to_out = (dense ? st.t_end : std::min(next_out, st.t_end)) - t;
+    const bool lands = h >= to_out / 1.05;
+    if (lands) {  // stretch a little rather than leave a sliver
       h = to_out;
       hits_output = true;
     } else if (h > 0.5 * to_out) {
@@ -92,16 +114,16 @@ RunStats drive_steps(const Model& model, const IntegratorSettings& st, Stepper& 
     if (!r.converged) {
       ++stats.rejected_newton;
       h_event = 0.0;
-      h_nat = h * 0.25;
+      h_nat = h * r.retry_factor;
       if (h_nat < st.h_min) {
         std::ostringstream os;
         os.precision(6);
         os << "time integration stopped at t = " << t << " s (step " << step + 1 << ", h = " << h
            << " s, minimum step " << st.h_min << " s reached): " << r.why;
         os.precision(3);
-        os << "; residual norm " << r.residual << " (relative " << (r.scale > 0 ? r.residual / r.scale : r.residual)
-           << ", tolerance " << st.newton_residual_tol << ") after " << r.iterations << " iterations; largest residuals: "
-           << stepper.describe_residual();
+        os << "; residual norm " << r.residual;
+        if (r.scale > 0) os << " (relative " << r.residual / r.scale << ", tolerance " << st.newton_residual_tol << ")";
+        os << " after " << r.iterations << " iterations; largest residuals: " << stepper.describe_residual();
         // Deliver the last accepted state before reporting.
         if (observer) {
           try {
@@ -119,10 +141,11 @@ RunStats drive_steps(const Model& model, const IntegratorSettings& st, Stepper& 
       ++stats.rejected_error;
       just_rejected = true;
       h_event = 0.0;
-      h_nat = std::max(st.h_min, h * std::clamp(0.9 * std::pow(err, -1.0 / 3.0), 0.2, 0.9));
+      h_nat = std::max(st.h_min, stepper.step_after_rejection(h, err));
       continue;
     }
-    // Lock events.
+    // Lock events: a lock whose angle reaches phi_lock in the step (at its end, or inside it where the
+    // formulation has a continuous output) makes the step end there.
     std::vector<LockState>& locks = stepper.locks();
     double theta = 1.0;
     bool crossing = false, land = false;
@@ -132,22 +155,49 @@ RunStats drive_steps(const Model& model, const IntegratorSettings& st, Stepper& 
       const double side = locks[i].side;
       const int hi = l->hinge.value;
       const double g1 = side * (stepper.hinge_angle(hi, true) - l->phi_lock);
-      if (g1 < -st.event_tol) continue;
+      if (g1 < -st.event_tol) {
+        if (!dense) continue;
+        const double th = stepper.crossing_fraction(hi, l->phi_lock, side, h);  // reached and left inside the step?
+        if (th >= 1.0) continue;
+        crossing = true;
+        theta = std::min(theta, th);
+        continue;
+      }
       crossing = true;
       if (g1 <= st.event_tol) {
         land = true;
         continue;
       }
-      theta = std::min(theta, crossing_fraction(stepper.hinge_angle(hi, false), stepper.hinge_rate(hi, false),
-                                                stepper.hinge_angle(hi, true), stepper.hinge_rate(hi, true), h, l->phi_lock,
-                                                side));
+      theta = std::min(theta, stepper.crossing_fraction(hi, l->phi_lock, side, h));
     }
-    if (crossing && !land && event_retries < 30 && theta * h > st.h_min) {
-      ++stats.event_retries;
-      ++event_retries;
-      h_event = theta * h;
-      if (h_event >= h) h_event = 0.5 * h;
-      continue;
+    if (crossing && !land && event_retries < 30) {
+      if (theta * h > st.h_min) {
+        ++stats.event_retries;
+        ++event_retries;
+        h_event = theta * h;
+        if (h_event >= h) h_event = 0.5 * h;
+        continue;
+      }
+      // The crossing is less than h_min ahead (the last step landed just short of it): the lock
+      // latches at the current state, and the step is tried again with it.
+      bool latched_here = false;
+      for (std::size_t i = 0; i < model.force_elements.size(); ++i) {
+        const auto* l = std::get_if<HingeLock>(&model.force_elements[i].element);
+        if (!l || locks[i].latched) continue;
+        const int hi = l->hinge.value;
+        if (locks[i].side * (stepper.hinge_angle(hi, true) - l->phi_lock) > st.event_tol &&
+            stepper.crossing_fraction(hi, l->phi_lock, locks[i].side, h) * h <= st.h_min) {
+          locks[i].latched = true;
+          locks[i].t_latch = t;
+          latched_here = true;
+        }
+      }
+      if (latched_here) {
+        h_event = 0.0;
+        stepper.on_latch();
+        emit(true);
+        continue;
+      }
     }
     // Accept.
     const bool was_event_retry = h_event > 0.0;
@@ -162,6 +212,15 @@ RunStats drive_steps(const Model& model, const IntegratorSettings& st, Stepper& 
     stats.factorizations += r.factorizations;
     stats.max_newton_iterations = std::max(stats.max_newton_iterations, r.iterations);
     stats.h_last = h;
+    // Samples inside the step, from the continuous output.
+    if (dense) {
+      for (; next_out < stepper.time() - eps; next_out += st.output_interval)
+        if (observer) {
+          stepper.sample_at(next_out, smp);
+          deliver(false);
+        }
+      if (std::abs(next_out - stepper.time()) <= eps) hits_output = true;
+    }
     bool latched_now = false;
     std::vector<LockState>& now = stepper.locks();
     for (std::size_t i = 0; i < model.force_elements.size(); ++i) {
@@ -173,7 +232,10 @@ RunStats drive_steps(const Model& model, const IntegratorSettings& st, Stepper& 
         latched_now = true;
       }
     }
-    if (latched_now) emit(true);
+    if (latched_now) {
+      stepper.on_latch();
+      emit(true);
+    }
     if ((hits_output || st.output_interval <= 0.0) && !latched_now) emit(false);
     if (hits_output) next_out = st.output_interval > 0.0 ? next_out + st.output_interval : st.t_end;
     if (st.output_interval > 0.0)
@@ -186,15 +248,8 @@ RunStats drive_steps(const Model& model, const IntegratorSettings& st, Stepper& 
       }
     }
     if (st.adaptive) {
-      if (!was_event_retry && !hits_output) {
-        // The growth limit applies to the step the control asked for, not to one shortened to land
-        // on an output time: otherwise a step halved before an output (h_wanted in (0.5, 0.95] of
-        // the interval) could only grow to 0.75 of the interval, and the steps stayed at half the
-        // output interval whatever the tolerance (sync-3d: 2.5 ms at a local error of 1e-2 as at 1e-5).
-        const double f = err > 0.0 ? 0.9 * std::pow(err, -1.0 / 3.0) : 2.0;
-        const double base = std::max(h, h_wanted);
-        h_nat = std::clamp(h * f, 0.2 * h, (after_rejection ? 1.0 : 1.5) * base);
-      }
+      // A step cut to an event or landed on an output time keeps the controller's step.
+      if (!was_event_retry && !lands) h_nat = stepper.step_after_accept(h, h_wanted, err, after_rejection);
       h_nat = std::max(h_nat, st.h_min);
     } else {
       h_nat = st.h_initial;

@@ -32,6 +32,8 @@ struct StepResult {
   /// The formulation's data hold the evaluation at the result (false: Newton stopped on the
   /// contraction of its corrections without evaluating the corrected iterate).
   bool evaluated = true;
+  /// Not converged: the next attempt's step is h times this.
+  double retry_factor = 0.25;
 };
 
 /// What the driver needs from a formulation. `current` is the last accepted state, `trial` the
@@ -57,7 +59,40 @@ class Stepper {
   virtual void prepare_failure_sample() {}
   /// "largest residuals: ..." of the last failed attempt.
   virtual std::string describe_residual() const = 0;
+
+  // A formulation may bring its own step-size rules and a continuous output (Radau IIA: radau5.cpp);
+  // the defaults are those of the generalized-alpha integrators (local error ~ h^3).
+  /// The next step after an accepted one of size h with error err (h was not cut to an event or
+  /// landed on an output time, but may have been halved before one; h_wanted: the step the
+  /// controller had asked for).
+  virtual double step_after_accept(double h, double h_wanted, double err, bool after_rejection);
+  /// The next step after the error test rejected a step of size h with error err > 1.
+  virtual double step_after_rejection(double h, double err);
+  /// True when sample_at can sample any time of the last accepted step: steps then do not land on
+  /// output times (only on t_end and on lock crossings).
+  virtual bool dense_output() const { return false; }
+  /// The sample at time t inside the last accepted step, from the continuous output.
+  virtual void sample_at(double /*t*/, Sample& /*out*/) {}
+  /// Fraction theta in (0, 1] of the trial step of size h at which side (phi(theta) - target) first
+  /// reaches 0 (it is < 0 at the start). Default: the cubic Hermite interpolant of the hinge angle
+  /// and rate at both ends, where it is >= 0 at the end. A formulation with a continuous output
+  /// looks inside the step and returns a value >= 1 when the angle does not reach the target.
+  virtual double crossing_fraction(int hinge, double target, double side, double h) const;
+  /// A lock has just latched at the current state (its stiffness now acts).
+  virtual void on_latch() {}
 };
+
+/// Root in [lo, hi] of a function g with g(lo) < 0 <= g(hi), by bisection to round-off (returns lo
+/// if g(lo) >= 0).
+template <class G>
+double first_crossing(const G& g, double lo = 0.0, double hi = 1.0) {
+  if (g(lo) >= 0.0) return lo;
+  for (int i = 0; i < 80; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (g(mid) >= 0.0 ? hi : lo) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
 
 /// Newton convergence from the contraction of the corrections (Hairer and Wanner, Solving ODEs II,
 /// sec. IV.8; SUNDIALS IDA): after the k-th correction dx_k the iterate is about
@@ -91,6 +126,10 @@ class NewtonRate {
   double prev_inc_ = 0.0;
   int k_ = 0;
 };
+
+/// Per dof of the model: its weight (Model::dof_weight) over its local-error tolerance (tol_position for
+/// translations and modes, tol_angle for rotations and hinge angles).
+Eigen::VectorXd error_weights(const Model& model, const IntegratorSettings& settings);
 
 /// Check the settings (InputError naming the setting).
 void validate_settings(const IntegratorSettings& settings, double t0);

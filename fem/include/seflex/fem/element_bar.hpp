@@ -1,5 +1,5 @@
 #pragma once
-// CBAR / CBEAM: prismatic 3-D beam between two grids, 12 x 12 on (GA, GB) x (T1 T2 T3 R1 R2 R3),
+// CBAR / CBEAM: 3-D beam between two grids, 12 x 12 on (GA, GB) x (T1 T2 T3 R1 R2 R3),
 // in the basic system.
 //
 // Formulation (exact for a prismatic bar, Przemieniecki, Theory of Matrix Structural Analysis,
@@ -7,7 +7,8 @@
 //   C = int_0^L B(s)^T S^-1 B(s) ds,   section resultants = B(s) * (tip loads),
 // with the section compliance S^-1 = diag(1/EA, 1/(G K1 A), 1/(G K2 A), 1/GJ) and the bending
 // compliance inv(E [I2 -I12; -I12 I1]); K = Gamma^T C^-1 Gamma with Gamma the deformation of B
-// relative to A's rigid motion. Euler-Bernoulli when K1/K2 are blank, Timoshenko otherwise; I12
+// relative to A's rigid motion. A tapered CBEAM integrates C over its stations (section properties
+// linear between them). Euler-Bernoulli when K1/K2 are blank, Timoshenko otherwise; I12
 // couples the two bending planes. The six rigid-body modes are in the null space by construction.
 //
 // Element axes (Nastran): x from offset end A to offset end B; y in the plane of x and the
@@ -24,6 +25,7 @@
 // spin about the bar axis has the section's exact polar inertia. With offsets the end masses sit
 // at the bar ends and reach the grids through the rigid links.
 #include <Eigen/Core>
+#include <vector>
 
 #include "seflex/fem/element_common.hpp"
 #include "seflex/fem/material.hpp"
@@ -31,6 +33,13 @@
 #include "seflex/fem/section.hpp"
 
 namespace seflex::fem {
+
+/// A station of a tapered bar: its section at x (fraction of the length from end A).
+struct BarStation {
+  double x = 0;
+  BarSection section;
+  double nsi = 0;
+};
 
 struct BarElement {
   Eigen::Vector3d x_A = Eigen::Vector3d::Zero(), x_B = Eigen::Vector3d::Zero();  ///< grid positions, basic
@@ -41,6 +50,9 @@ struct BarElement {
   ComponentMask pin_A = 0, pin_B = 0;  ///< released element-axis dofs (bit c-1 for component c)
   bool is_beam = false;  ///< CBEAM (lumped mass carries the polar inertia), else CBAR
   double nsi = 0;        ///< PBEAM NSI: non-structural mass moment of inertia per length
+  /// Tapered CBEAM (PBEAM/PBEAML stations): sections at x = 0 .. 1 along the bar, linear between
+  /// them; `section` and `nsi` are end A's. Empty: prismatic.
+  std::vector<BarStation> taper;
 };
 
 /// Element axes as columns in basic (R_BE: x, y, z) and the length between the offset ends.

@@ -52,6 +52,9 @@ namespace seflex::fem {
 struct Quad4Element {
   std::array<Eigen::Vector3d, 4> x{};  ///< corner positions G1..G4, basic (consecutive around the edge)
   ShellSection section;                ///< in element axes (e1 along the projected G1-G2 edge)
+  /// CQUADR: the Allman-type membrane with drilling rotations (element_membrane_drilling.hpp)
+  /// instead of QM6 and the drilling terms above; K6ROT has no effect on it. The plate is MITC4's.
+  bool drilling = false;
 };
 
 /// Stiffness (24 x 24, basic). k6rot: PARAM K6ROT. mystran (PARAM QUAD4TYP MIN4T): MIN4T bending

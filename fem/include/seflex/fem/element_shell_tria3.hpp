@@ -36,6 +36,9 @@ namespace seflex::fem {
 struct Tria3Element {
   std::array<Eigen::Vector3d, 3> x{};  ///< corner positions G1..G3, basic
   ShellSection section;
+  /// CTRIAR: Allman's membrane with drilling rotations (element_membrane_drilling.hpp) instead of
+  /// the CST and the drilling terms above; K6ROT has no effect on it. The plate is as CTRIA3's.
+  bool drilling = false;
 };
 
 /// Stiffness (18 x 18, basic). mystran (PARAM QUAD4TYP MIN4T): MIN3 bending and transverse shear

@@ -4,6 +4,12 @@
 //
 // FORCE  SID G CID F N1 N2 N3:  force  F (N1, N2, N3) in system CID (axes at the grid) on G's T1-T3;
 // MOMENT SID G CID M N1 N2 N3:  moment M (N1, N2, N3) on G's R1-R3.
+// SLOAD SID S F:                F on scalar point S (a grid S: its T1).
+// PLOAD SID P G1 G2 G3 [G4]:     P A along (G1 -> G2) x (G1 -> G3), a third per grid; four grids:
+//                               the triangles 123, 234, 341, 412 with P/2 each (QRG PLOAD).
+// FORCE1/MOMENT1 SID G F G1 G2: F along the unit vector from G1 to G2; FORCE2/MOMENT2 SID G F G1 G2
+//                               G3 G4: along the unit vector of (G1 -> G2) x (G3 -> G4); directions
+//                               at the grids' undeformed positions (linear Nastran, QRG FORCE1/2).
 // PLOAD4 (face_pressure.hpp):   corner pressures P1..P4 on a CQUAD4/CTRIA3 or on the face of a CHEXA/
 //                               CPENTA/CTETRA (G1, G3/G4), work-equivalent grid forces f_a = int N_a p d dA
 //                               with d the shell normal, the inward normal of a solid face, or N/|N| in CID;

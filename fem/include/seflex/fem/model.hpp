@@ -64,6 +64,8 @@ struct Model {
   std::vector<SpringProperty> spring_props;
   std::vector<BushProperty> bush_props;        ///< PBUSH
   std::vector<MassProperty> mass_props;        ///< PMASS
+  std::vector<ShearProperty> shear_props;      ///< PSHEAR
+  std::vector<BendProperty> bend_props;        ///< PBEND
 
   BarDefaults baror, beamor;
   std::vector<Bar> bars;
@@ -74,10 +76,16 @@ struct Model {
   std::vector<Bush> bushes;                    ///< CBUSH
   std::vector<ScalarMass> scalar_masses;       ///< CMASS1-4
   std::vector<Conm1> conm1;
+  std::vector<Genel> genels;                ///< GENEL
+  std::vector<ShearPanel> shear_panels;     ///< CSHEAR
+  std::vector<Bend> bends;                  ///< CBEND
+  std::vector<QuadraticShell> shells8;      ///< CTRIA6, CQUAD8
   std::vector<SolidProperty> solid_props;   ///< PSOLID
   std::vector<Solid> solids;                ///< CHEXA, CPENTA, CTETRA
   std::vector<Rbe2> rbe2;
   std::vector<Rbar> rbars;
+  std::vector<RigidBody> rigid_bodies;      ///< RBE1, CRIGD1, CRIGD2, CRIGD3
+  std::vector<RigidRod> rigid_rods;         ///< RROD, CRIGDR
   std::vector<Rbe3> rbe3;
 
   std::vector<SpcEntry> spcs;
@@ -87,6 +95,8 @@ struct Model {
   std::vector<DofSetEntry> aset, omit, bset, suport;
   std::vector<PointLoad> point_loads;
   std::vector<PressureLoad> pressure_loads;
+  std::vector<ScalarLoad> scalar_loads;            ///< SLOAD
+  std::vector<GridPressureLoad> grid_pressure_loads;  ///< PLOAD
   std::vector<BarLineLoad> bar_line_loads;         ///< PLOAD1
   std::vector<EnforcedMotion> enforced_motions;    ///< SPCD
   std::vector<FaceLoad> face_loads;         ///< PLOAD4
@@ -114,8 +124,14 @@ struct Model {
   // Lookups, built by fem::finalize (id -> position in the vector above).
   std::unordered_map<int, std::uint32_t> grid_index, coord_index, mat1_index, mat2_index, mat8_index, mat9_index,
       bar_prop_index, rod_prop_index, shell_prop_index, composite_prop_index, spring_prop_index, spoint_index,
-      bush_prop_index, mass_prop_index, solid_prop_index;
+      bush_prop_index, mass_prop_index, solid_prop_index, shear_prop_index, bend_prop_index;
   bool finalized = false;
 };
+
+/// Whether the model has rigid elements (RBE2, RBAR, RBE1, CRIGD1-3, RROD, CRIGDR) or RBE3s: dependent
+/// dofs eliminated from the whole K (constraints.hpp).
+inline bool has_rigid_elements(const Model& m) {
+  return !m.rbe2.empty() || !m.rbars.empty() || !m.rbe3.empty() || !m.rigid_bodies.empty() || !m.rigid_rods.empty();
+}
 
 }  // namespace seflex::fem

@@ -26,7 +26,7 @@ struct BarDefaults {  ///< BAROR (and BEAMOR for CBEAM)
   CardRef ref;
 };
 
-/// CBAR or CBEAM (a CBEAM is treated as a prismatic bar with its end-A section).
+/// CBAR or CBEAM (a CBEAM on a tapered PBEAM/PBEAML: BarProperty::stations).
 struct Bar {
   int id = 0, pid = 0;
   int ga = 0, gb = 0;
@@ -40,16 +40,20 @@ struct Bar {
   CardRef ref;
 };
 
-struct Rod {  ///< CROD (pid -> PROD) or CONROD (inline property, pid = 0)
+struct Rod {  ///< CROD (pid -> PROD), CTUBE (pid -> PTUBE) or CONROD (inline property, pid = 0)
   int id = 0, pid = 0;
   int ga = 0, gb = 0;
   bool inline_property = false;
+  bool tube = false;                            ///< CTUBE
   int mid = 0;                                  ///< CONROD only
   double A = 0, J = 0, C = 0, nsm = 0;          ///< CONROD only
   CardRef ref;
 };
 
-/// CQUAD4 (4 grids) or CTRIA3 (3 grids; g[3] = 0).
+/// "CROD", "CTUBE" or "CONROD".
+inline const char* rod_card(const Rod& r) { return r.tube ? "CTUBE" : r.inline_property ? "CONROD" : "CROD"; }
+
+/// CQUAD4 or CQUADR (4 grids), CTRIA3 or CTRIAR (3 grids; g[3] = 0).
 struct Shell {
   int id = 0, pid = 0;
   std::array<int, 4> g{};
@@ -60,8 +64,45 @@ struct Shell {
   double zoffs = 0;
   int tflag = 0;
   std::array<double, 4> t{};                    ///< corner thicknesses, 0 = blank (use PSHELL T)
+  bool drilling = false;                        ///< CQUADR / CTRIAR (MSC's shells with drilling stiffness)
   CardRef ref;
 };
+
+/// CSHEAR: shear panel on G1-G4 (consecutive around the perimeter), pid -> PSHEAR.
+struct ShearPanel {
+  int id = 0, pid = 0;
+  std::array<int, 4> g{};
+  CardRef ref;
+};
+
+/// CBEND: curved beam or pipe from GA to GB along a circular arc (pid -> PBEND). The arc's plane and
+/// centre come from the orientation (grid G0 or vector X1-X3 in GA's displacement system) and GEOM
+/// (QRG CBEND): 1 centre on the line from GA along the orientation; 2 tangent at GA along the
+/// orientation (the arc on its side of the chord); 3 radius RB, 4 arc angle THETAB of the PBEND, the
+/// centre on the side of the chord away from the orientation.
+struct Bend {
+  int id = 0, pid = 0, ga = 0, gb = 0;
+  bool has_g0 = false;
+  int g0 = 0;
+  Eigen::Vector3d v = Eigen::Vector3d::Zero();
+  int geom = 0;                                 ///< 1-4
+  CardRef ref;
+};
+
+/// "CQUAD4", "CTRIA3", "CQUADR" or "CTRIAR".
+inline const char* shell_card(const Shell& s) {
+  return s.nnode == 4 ? (s.drilling ? "CQUADR" : "CQUAD4") : (s.drilling ? "CTRIAR" : "CTRIA3");
+}
+
+/// CTRIA6 (3 corners) or CQUAD8 (4 corners) with their mid-side grids: the corner data as a Shell
+/// (PID, THETA/MCID, ZOFFS, TFLAG, corner thicknesses; shell.nnode = 3 or 4) and mid[k] the grid
+/// on the edge from corner k to corner k + 1, 0 = blank (that edge straight, its field linear).
+struct QuadraticShell {
+  Shell shell;
+  std::array<int, 4> mid{};
+};
+
+inline const char* quadratic_shell_card(const QuadraticShell& q) { return q.shell.nnode == 4 ? "CQUAD8" : "CTRIA6"; }
 
 /// CONM2: concentrated mass with offset and inertia.
 struct Conm2 {
@@ -114,6 +155,25 @@ struct ScalarMass {
 struct Conm1 {
   int id = 0, grid = 0, cid = 0;
   Eigen::Matrix<double, 6, 6> M = Eigen::Matrix<double, 6, 6>::Zero();
+  CardRef ref;
+};
+
+/// GENEL: a general element on the dofs UI (n) and UD (m), in the grids' CD systems (scalar points:
+/// component 0). Stiffness form (K) or flexibility form (Z, K = Z^-1), the lower triangle given by
+/// columns; S (n x m, by rows) the rigid-body matrix u_i = S u_d, computed from the geometry when UD
+/// holds six dofs and S is blank (MSC QRG GENEL):
+///   [f_i]   [  K       -K S   ] [u_i]
+///   [f_d] = [ -S^T K  S^T K S ] [u_d]
+struct Genel {
+  struct Dof {
+    int point = 0;                              ///< grid or scalar point id
+    int c = 0;                                  ///< 1-6 for a grid, 0 for a scalar point
+  };
+  int id = 0;
+  std::vector<Dof> ui, ud;
+  bool flexibility = false;                     ///< Z given (else K)
+  std::vector<double> kz;                       ///< n (n + 1) / 2 values: KZ11 KZ21 ... KZn1 KZ22 ...
+  std::vector<double> s;                        ///< n m values S11 S12 ... S1m S21 ...; empty: from UD
   CardRef ref;
 };
 

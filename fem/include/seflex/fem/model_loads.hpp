@@ -1,8 +1,9 @@
 #pragma once
 // Part of model.hpp (the FE model as data; conventions there), kept apart to keep headers short:
-// static and thermal loads (FORCE/MOMENT, PLOAD2, PLOAD1, SPCD, GRAV, RFORCE, TEMP/TEMPD/TEMPRB,
+// static and thermal loads (FORCE/MOMENT, FORCE1/2, MOMENT1/2, PLOAD2, PLOAD1, SPCD, GRAV, RFORCE, TEMP/TEMPD/TEMPRB,
 // LOAD). PLOAD4: model_solids.hpp. No parsing and no numerics here.
 #include <Eigen/Core>
+#include <array>
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -15,12 +16,42 @@ namespace seflex::fem {
 
 // ---------------------------------------------------------------------------------------------
 // Loads
-struct PointLoad {  ///< FORCE or MOMENT: value = scale * (n1, n2, n3) in system cid
+/// FORCE or MOMENT: value = scale * (n1, n2, n3) in system cid. FORCE1/MOMENT1 (Direction::TwoGrids):
+/// scale along the unit vector from grid g[0] to g[1]; FORCE2/MOMENT2 (Direction::FourGrids): along
+/// the unit vector of (x(g[1]) - x(g[0])) x (x(g[3]) - x(g[2])). The directions are taken at the
+/// grids' undeformed basic positions when the load vector is built (linear Nastran; QRG FORCE1/2).
+struct PointLoad {
   enum class Kind : std::uint8_t { Force, Moment };
+  enum class Direction : std::uint8_t { Vector, TwoGrids, FourGrids };
   Kind kind = Kind::Force;
+  Direction direction = Direction::Vector;
   int sid = 0, grid = 0, cid = 0;
   double scale = 0;
   Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  std::array<int, 4> g{};           ///< FORCE1/2, MOMENT1/2: G1 ... G4
+  CardRef ref;
+};
+
+/// "FORCE", "MOMENT", "FORCE1", "MOMENT1", "FORCE2" or "MOMENT2".
+inline const char* point_load_card(const PointLoad& l) {
+  static const char* names[2][3] = {{"FORCE", "FORCE1", "FORCE2"}, {"MOMENT", "MOMENT1", "MOMENT2"}};
+  return names[l.kind == PointLoad::Kind::Moment][static_cast<int>(l.direction)];
+}
+
+/// SLOAD: load F on scalar point S, or on component T1 (in its CD system) of a grid S (MSC QRG SLOAD).
+struct ScalarLoad {
+  int sid = 0, point = 0;
+  double f = 0;
+  CardRef ref;
+};
+
+/// PLOAD: pressure P on the surface of grids G1 G2 G3 (g[3] = 0: a triangle, the force P A along
+/// (G1 -> G2) x (G1 -> G3) split equally over its grids) or G1-G4 (four triangles 123, 234, 341, 412,
+/// each with P/2 as a triangle; QRG PLOAD remarks).
+struct GridPressureLoad {
+  int sid = 0;
+  double p = 0;
+  std::array<int, 4> g{};
   CardRef ref;
 };
 

@@ -75,6 +75,15 @@ struct BarProperty {
   double K1 = 0, K2 = 0;            ///< shear factors; 0 (blank) = no transverse shear flexibility
   std::string section_type;         ///< PBARL/PBEAML TYPE (ROD, TUBE, BAR, BOX, I, ...)
   std::vector<double> dims;         ///< PBARL/PBEAML DIMi
+  /// PBEAM/PBEAML taper: the sections at the stations x = X/XB (0 end A, 1 end B), end A first and
+  /// end B last, each field as written or, when blank, end A's (PBEAM) or the previous station's
+  /// dimensions (PBEAML); empty when every station equals end A (a prismatic beam).
+  struct Station {
+    double x = 0;
+    double A = 0, I1 = 0, I2 = 0, I12 = 0, J = 0, nsm = 0, nsi = 0;
+    std::vector<double> dims;       ///< PBEAML
+  };
+  std::vector<Station> stations;
   CardRef ref;
 };
 
@@ -89,9 +98,40 @@ inline const char* card_name(BarProperty::Source s) {
   return "PBAR";
 }
 
-struct RodProperty {  ///< PROD (CONROD stores its own inline copy, id = 0)
+/// PROD, or PTUBE (tube): its section A = pi T (OD - T), J = pi T (OD - T) ((OD - T)^2 + T^2) / 4 and
+/// C = OD / 2 computed as it is read (T = 0 or blank: a solid rod of diameter OD; QRG PTUBE).
+/// (CONROD stores its own inline copy, id = 0.)
+struct RodProperty {
   int id = 0, mid = 0;
   double A = 0, J = 0, C = 0, nsm = 0;
+  bool tube = false;                ///< PTUBE
+  double od = 0, t = 0, od2 = 0;    ///< PTUBE OD, T, OD2 (OD2 tapers the tube in heat transfer only, QRG)
+  CardRef ref;
+};
+
+inline const char* rod_property_card(const RodProperty& p) { return p.tube ? "PTUBE" : "PROD"; }
+
+/// PSHEAR: shear panel thickness T, NSM per area, extensional effectiveness factors F1 (edges 1-2,
+/// 3-4) and F2 (edges 2-3, 1-4), 0 = none (QRG PSHEAR remark 2).
+struct ShearProperty {
+  int id = 0, mid = 0;
+  double t = 0, nsm = 0, f1 = 0, f2 = 0;
+  CardRef ref;
+};
+
+/// PBEND: the section of a curved beam (A, I1 in the plane of the bend, I2 out of it, J; K1, K2 shear
+/// factors, 0 = rigid in shear (QRG remark 4)), or of a curved pipe (pipe = true: FSI, mean radius RM,
+/// wall T, pressure P; the section of the tube computed), with the bend's radius RB and arc angle
+/// THETAB (degrees) that CBEND GEOM 3 and 4 use. RC, ZC, DELTAN: centroid and neutral-axis offsets.
+struct BendProperty {
+  int id = 0, mid = 0;
+  bool pipe = false;
+  double A = 0, I1 = 0, I2 = 0, J = 0, K1 = 0, K2 = 0, nsm = 0;
+  int fsi = 0;
+  double rm = 0, t = 0, p = 0;                  ///< pipe format
+  double rb = 0, thetab_deg = 0;                ///< 0 = blank
+  double rc = 0, zc = 0, deltan = 0;
+  bool has_deltan = false;
   CardRef ref;
 };
 

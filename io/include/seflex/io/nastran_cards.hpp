@@ -47,6 +47,7 @@ inline constexpr const char* kFluidGrid = "GRID CD = -1 (fluid)";
 inline constexpr const char* kFluidSolid = "PSOLID FCTN = PFLUID";
 inline constexpr const char* kPlaneStrainShell = "PSHELL MID2 = -1 (plane strain)";
 inline constexpr const char* kPartSuperelement = "BEGIN SUPER";
+inline constexpr const char* kMdlprmHdf5 = "MDLPRM HDF5 (output format)";
 
 /// The parser of a bulk-data card name (upper case), or nullptr if seflex does not support it.
 CardParser find_card_parser(std::string_view name);
@@ -62,14 +63,17 @@ void parse_cbar(const Card&, ReaderState&);
 void parse_cbeam(const Card&, ReaderState&);
 void parse_baror(const Card&, ReaderState&);
 void parse_beamor(const Card&, ReaderState&);
-void parse_crod(const Card&, ReaderState&);
+void parse_crod(const Card&, ReaderState&);  ///< CROD and CTUBE
 void parse_conrod(const Card&, ReaderState&);
-void parse_cquad4(const Card&, ReaderState&);
-void parse_ctria3(const Card&, ReaderState&);
+void parse_cquad4(const Card&, ReaderState&);  ///< CQUAD4 and CQUADR
+void parse_ctria3(const Card&, ReaderState&);  ///< CTRIA3 and CTRIAR
 void parse_conm2(const Card&, ReaderState&);
 void parse_celas1(const Card&, ReaderState&);
 void parse_celas2(const Card&, ReaderState&);
 void parse_rbe2(const Card&, ReaderState&);
+void parse_cshear(const Card&, ReaderState&);
+void parse_cbend(const Card&, ReaderState&);
+void parse_shell8(const Card&, ReaderState&);  ///< CQUAD8, CTRIA6
 // Solids and face pressures (nastran_cards_solids.cpp)
 void parse_chexa(const Card&, ReaderState&);
 void parse_cpenta(const Card&, ReaderState&);
@@ -86,6 +90,9 @@ void parse_pbarl(const Card&, ReaderState&);
 void parse_pbeam(const Card&, ReaderState&);
 void parse_pbeaml(const Card&, ReaderState&);
 void parse_prod(const Card&, ReaderState&);
+void parse_ptube(const Card&, ReaderState&);
+void parse_pshear(const Card&, ReaderState&);
+void parse_pbend(const Card&, ReaderState&);
 void parse_pshell(const Card&, ReaderState&);
 void parse_pcomp(const Card&, ReaderState&);
 void parse_pcompg(const Card&, ReaderState&);
@@ -107,7 +114,18 @@ void parse_bset1(const Card&, ReaderState&);
 void parse_suport(const Card&, ReaderState&);
 void parse_force(const Card&, ReaderState&);
 void parse_moment(const Card&, ReaderState&);
+void parse_force12(const Card&, ReaderState&);  ///< FORCE1, FORCE2, MOMENT1, MOMENT2
+void parse_sload(const Card&, ReaderState&);
+void parse_pload(const Card&, ReaderState&);
 void parse_load(const Card&, ReaderState&);
+void parse_genel(const Card&, ReaderState&);  ///< nastran_cards_genel.cpp
+// Rigid elements besides RBE2 and RBAR (nastran_cards_rigid.cpp)
+void parse_rbe1(const Card&, ReaderState&);
+void parse_crigd1(const Card&, ReaderState&);
+void parse_crigd2(const Card&, ReaderState&);
+void parse_crigd3(const Card&, ReaderState&);
+void parse_crigdr(const Card&, ReaderState&);
+void parse_rrod(const Card&, ReaderState&);
 // Pressure, inertia and thermal loads (nastran_cards_loads.cpp)
 void parse_pload2(const Card&, ReaderState&);
 void parse_grav(const Card&, ReaderState&);
@@ -132,6 +150,7 @@ void parse_eigrl(const Card&, ReaderState&);
 void parse_eigr(const Card&, ReaderState&);
 void parse_param(const Card&, ReaderState&);
 void parse_dmig(const Card&, ReaderState&);
+void parse_mdlprm(const Card&, ReaderState&);
 
 /// A PARAM value as stored in fem::Param::values: text upper-cased; numbers rewritten in a form
 /// std::from_chars reads (Nastran's "2.59-3" becomes "0.00259"), reals always with '.' or an exponent.

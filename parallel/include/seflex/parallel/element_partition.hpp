@@ -21,7 +21,7 @@ namespace seflex::parallel {
 struct ElementPartition {
   int parts = 1;
   /// Owning part of each element, indexed like the model's vectors of the same name.
-  std::vector<int> bars, rods, shells, solids, bushes, conm2, conm1, springs, scalar_masses;
+  std::vector<int> bars, rods, shells, solids, bushes, shear_panels, bends, shells8, conm2, conm1, springs, scalar_masses;
   /// Owning part of each node (grid index, then scalar points: fem::DofMap's node numbering).
   std::vector<int> node_owner;
 

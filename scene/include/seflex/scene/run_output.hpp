@@ -40,6 +40,7 @@ struct RunEnd {
   double wall_seconds = 0.0;
   double cpu_seconds = 0.0;          ///< process CPU time over the same span (building the scene, integrating, writing)
   std::string formulation = "aic";   ///< which solver ran (mbd::formulation_name)
+  std::string method = "generalized-alpha";  ///< which integrator ran (mbd::integrator_method_name)
   int coordinates = -1;              ///< unknowns of a multiplier formulation (-1: the model's dofs)
   int multipliers = 0;               ///< its Lagrange multipliers
   std::optional<mbd::RunStats> stats;  ///< absent when the solver threw (counts then come from the samples)

@@ -48,6 +48,19 @@ struct IntegratorSettings {
   /// h |Omega| is not small.
   bool inertia_velocity_tangent = true;
   double event_tol = 1e-9;        ///< located lock crossing: |phi - phi_lock| [rad]
+  /// Radau IIA only (radau5.hpp): its simplified Newton iteration.
+  struct Radau {
+    int newton_max_iterations = 7;  ///< per step (Hairer and Wanner's NIT)
+    /// Newton stops when its estimated distance to the solution, theta/(1 - theta) |dW| (weighted
+    /// like the error estimate), is below this fraction of the local error tolerance. 0: their rule,
+    /// min(0.03, sqrt(tol)) with tol the smaller of tol_position and tol_angle.
+    double newton_fraction = 0.0;
+    /// The Jacobian (K, C, M) is kept for the next step while Newton's contraction rate theta stays
+    /// at most this (their THET; 0.001 re-forms it almost every step, 0.1 suits Jacobians that cost
+    /// as much as several residuals, as here); a faster rate also keeps the step when the controller
+    /// asks for 1 to 1.2 times it (no new factorisation).
+    double jacobian_theta = 0.1;
+  } radau;
 };
 
 struct RunStats {
@@ -59,6 +72,8 @@ struct RunStats {
   long factorizations = 0;     ///< iteration matrices formed and factorised, over accepted steps
   int max_newton_iterations = 0;
   double h_last = 0.0;
+  long jacobians = 0;          ///< radau5: Jacobians (K, C, M) evaluated, over all attempts (else 0)
+  long evaluations = 0;        ///< radau5: residual evaluations (3 per Newton iteration), over all attempts (else 0)
 };
 
 /// Integrate from state.t to settings.t_end. Starts by computing consistent accelerations.

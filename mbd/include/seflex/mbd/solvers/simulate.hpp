@@ -13,11 +13,11 @@
 namespace seflex::mbd {
 
 /// The time integrator (scene files' `integrator.method`): the implicit Lie-group generalized-alpha
-/// (solvers/integrator.hpp) or the explicit Runge-Kutta-Munthe-Kaas 4 with a constant step
-/// (solvers/explicit_integrator.hpp).
-enum class IntegratorMethod { GeneralizedAlpha, Rk4 };
+/// (solvers/integrator.hpp), the implicit Radau IIA of order 5 (solvers/radau5.hpp) or the explicit
+/// Runge-Kutta-Munthe-Kaas 4 with a constant step (solvers/explicit_integrator.hpp).
+enum class IntegratorMethod { GeneralizedAlpha, Radau5, Rk4 };
 
-/// "generalized-alpha", "rk4" (the spelling of a scene file's `integrator.method`).
+/// "generalized-alpha", "radau5", "rk4" (the spelling of a scene file's `integrator.method`).
 const char* integrator_method_name(IntegratorMethod m);
 
 enum class Formulation {
@@ -30,7 +30,7 @@ enum class Formulation {
 const char* formulation_name(Formulation f);
 
 /// Empty when `formulation` integrates with `method`; otherwise why not (FFRF-LM and rigid-LM:
-/// generalized-alpha only), as "integrator.method rk4: the formulation ffrf-lm integrates with ...".
+/// generalized-alpha only, docs/ffrf.md), as "integrator.method rk4: the formulation ffrf-lm integrates with ...".
 std::string integrator_unavailable(Formulation formulation, IntegratorMethod method);
 
 struct SimulationRun {
