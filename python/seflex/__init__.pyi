@@ -19,6 +19,7 @@ class Model:
     files: list[str]
     grid_ids: _I
     counts: dict[str, int]
+    element_counts: dict[str, int]
     warnings: list[str]
     def mass_properties(self, reference_grid: int | None = None) -> dict[str, float | _F]: ...
 

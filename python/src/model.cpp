@@ -16,6 +16,7 @@
 #include "model.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/fem/dof_map.hpp"
+#include "seflex/fem/element_counts.hpp"
 #include "seflex/fem/mass_properties.hpp"
 #include "seflex/io/model_reader.hpp"
 #include "seflex/solutions/card_usage.hpp"
@@ -88,17 +89,15 @@ void bind_model(py::module_& m) {
             py::dict d;
             d["grids"] = x.grids.size();
             d["scalar_points"] = x.spoints.size();
-            d["bars"] = x.bars.size();
-            d["rods"] = x.rods.size();
-            d["shells"] = x.shells.size();
-            d["solids"] = x.solids.size();
-            d["springs"] = x.springs.size();
-            d["bushes"] = x.bushes.size();
-            d["conm2"] = x.conm2.size();
-            d["rigid"] = x.rbe2.size() + x.rbars.size() + x.rbe3.size();
+            d["elements"] = fem::element_count(x);
             d["materials"] = x.mat1.size() + x.mat2.size() + x.mat8.size() + x.mat9.size();
             return d;
-          }, "numbers of grids, elements by family, rigid elements (RBE2, RBAR, RBE3) and materials")
+          }, "numbers of grids, scalar points, elements (rigid elements included) and materials (MAT1, MAT2, MAT8, MAT9)")
+      .def_property_readonly("element_counts", [](const PyModel& p) {
+            py::dict d;
+            for (const auto& [card, n] : fem::element_counts(p.model)) d[py::str(card)] = n;
+            return d;
+          }, "{card name: count} of every element kind present, as `seflex info` lists them")
       .def_property_readonly("warnings", [](const PyModel& p) { return p.model.read_warnings; },
                              "what the reader chose and says so (e.g. an INCLUDE found in two places)")
       .def("mass_properties", [](const PyModel& p, std::optional<int> reference_grid) {

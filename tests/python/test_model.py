@@ -71,6 +71,8 @@ def test_cantilever_tip_deflection_is_euler_bernoulli(tmp_path):
 def test_model_counts_and_mass():
     model = seflex.read_model(SOURCE / "meshes" / "yoke.bdf")
     assert model.counts["grids"] == len(model.grid_ids) > 0
+    assert model.counts["elements"] == sum(model.element_counts.values()) > 0
+    assert model.element_counts["CBAR"] > 0
     mp = model.mass_properties()
     assert mp["mass"] > 0
     assert mp["I_cg"].shape == (3, 3)
