@@ -8,7 +8,9 @@
 # another with -DPython3_EXECUTABLE=/path/to/python3.
 set(SEFLEX_PYTHON AUTO CACHE STRING "Build the Python module: AUTO (when Python 3 and pybind11 are found), ON or OFF")
 set_property(CACHE SEFLEX_PYTHON PROPERTY STRINGS AUTO ON OFF)
-if(SEFLEX_PYTHON STREQUAL "OFF")
+if(SEFLEX_PYTHON STREQUAL "OFF" OR (SEFLEX_PYTHON STREQUAL "AUTO" AND SEFLEX_SANITIZE))
+  # AUTO leaves the module out of sanitizer builds (build-fuzz): an ASan module needs the runtime
+  # preloaded into python3, and those builds run only the input and cards tests.
   set(SEFLEX_PYTHON_BUILT OFF)
   return()
 endif()
