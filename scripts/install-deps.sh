@@ -15,6 +15,9 @@
 # the sanitizer and fuzzing stage of `scripts/bootstrap.sh test` (build-fuzz/): libclang-rt-14-dev
 # holds the ASan/UBSan runtimes and libFuzzer itself (libclang_rt.fuzzer*.a, what -fsanitize=fuzzer
 # links), so Debian's separate libfuzzer-14-dev (libFuzzer.a for other compilers) is not needed.
+#
+# python3-dev and pybind11-dev build the Python module (python/, docs/python.md) for Debian's
+# /usr/bin/python3; python3-pytest runs its tests (tests/python). Without them the module is skipped.
 set -euo pipefail
 
 packages=(
@@ -22,7 +25,7 @@ packages=(
   clang clang-14 libclang-rt-14-dev llvm-14
   libeigen3-dev libspectra-dev libarpack2-dev libmetis-dev libsuitesparse-dev libopenblas-dev
   libgmsh-dev gmsh libvtk9-dev libyaml-cpp-dev libgtest-dev nettle-dev
-  python3 python3-numpy python3-scipy python3-matplotlib
+  python3 python3-numpy python3-scipy python3-matplotlib python3-dev pybind11-dev python3-pytest
   paraview xvfb xauth
   petsc-dev slepc-dev mpi-default-dev mpi-default-bin
 )
