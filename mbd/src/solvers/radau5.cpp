@@ -153,7 +153,7 @@ class RadauStepper final : public detail::Stepper {
   StageSystem<Complex> complex_;
   double h_factored_ = 0.0;     // step of the factorisations (0: none valid)
   bool need_jacobian_ = true;   // evaluate K, C, M at the next attempt's start
-  bool caljac_ = false;         // the Jacobian was evaluated at the current step's start
+  bool caljac_ = false;         // the Jacobian was evaluated for the current step
 
   // Newton and controller state.
   MatrixXd U_, Up_, V_, A_, R_, F_;  // n x 3: stage increments, their rates, velocities, accelerations, residuals
@@ -282,9 +282,21 @@ detail::StepResult RadauStepper::attempt(double h) {
   }
   predict(h);
   try {
-    if (need_jacobian_) evaluate_jacobian(state_);
+    // A new Jacobian at the predicted second stage (c = 0.64), not at the step's start: the stages
+    // lie on both sides of it, which halves how far the bodies turn between the Jacobian's
+    // configuration and the stages' (sync-3d, largest step 50 ms, at local error 1e-4 / 1e-5:
+    // 1006 -> 917 / 1441 -> 1248 steps, 8,193 -> 7,548 / 12,285 -> 11,471 residuals, 802 -> 590 /
+    // 848 -> 657 Jacobians). Turning each Free node's rows and columns of the iteration matrix with
+    // the node from there to each stage gained 3-9 % more on sync-3d but made simplified Newton fail
+    // on the flexible 3-D pendulum at 8 ms steps (radau5_test.cpp): the hinges' attached nodes turn
+    // with their bodies, not with a Free node, so that partial transport is not a similarity of the
+    // true iteration matrix; it is not used.
+    if (need_jacobian_) {
+      form_stages(h);
+      evaluate_jacobian(stage_[1]);
+    }
   } catch (const ConvergenceError& e) {
-    return failed(out, std::string("the Jacobian at the step's start: ") + e.what(), 0.5);
+    return failed(out, std::string("the Jacobian at the predicted second stage: ") + e.what(), 0.5);
   }
   if (h != h_factored_) {
     if (!factorize(h))
@@ -454,11 +466,14 @@ double RadauStepper::step_after_accept(double h, double /*h_wanted*/, double err
   err_accepted_ = std::max(1e-2, err);
   double h_new = h * q;
   if (after_rejection) h_new = std::min(h_new, h);
-  // Newton's limit: with the Jacobian of the step's start, a stiff element that turns with its body
-  // makes the contraction rate grow like h^3 (its stiffness, turned by ~ omega h, against the soft
+  // Newton's limit: with one Jacobian for all stages, a stiff element that turns with its body makes
+  // the contraction rate grow like h^3 (its stiffness, turned by ~ omega h, against the soft
   // directions' (gamma/h)^2 M). Growing the step beyond h (kThetaTarget / theta)^(1/3) made simplified
   // Newton fail at the next step (sync-3d at local error 1e-5, largest step 50 ms: 947 retries and
-  // 1.74 s CPU without this limit; 150 and 1.21 s with it; targets 0.05 / 0.2 / 0.3: 1.27 / 1.51 / 1.49 s).
+  // 1.74 s CPU without this limit; 150 and 1.21 s with it; targets 0.05 / 0.2 / 0.3: 1.27 / 1.51 / 1.49 s;
+  // with the Jacobian at the second stage, targets 0.2 / 0.4 cost 8-11 % / 13-14 % more residuals and
+  // Jacobians than 0.1). After the demo's last lock 94 % of the steps are set by this limit, not by the
+  // error (the error would allow 7-9 ms where Newton allows 3.6-6.5 ms at 1e-5).
   if (theta_measured_ && theta_ > 0.0) h_new = std::min(h_new, std::max(h, h * std::cbrt(kThetaTarget / theta_)));
   if (theta_ <= st_.radau.jacobian_theta && h_new >= kKeepLow * h && h_new <= kKeepHigh * h) h_new = h;  // same matrices
   return h_new;
