@@ -177,10 +177,11 @@ TEST(Radau5, RigidDoublePendulumMatchesReference) {
     test::Recorder rec;
     const RunStats stats = simulate_radau5(model, s, data, st, &rec);
     const test::ReferenceErrors err = test::reference_errors(rec.samples, ref);
-    // Measured: phi 2.0e-6, 1.5e-8, 1.6e-10 rad; energy 9.7e-7, 1.4e-8, 4.2e-10 (J/kg scale) at the three
-    // tolerances: the global error follows the local tolerance (a factor 100 each), within 1-4.2 times
-    // it. With the Jacobian at the step's start instead of its second stage (other steps, same
-    // tolerance): phi 1.6e-6, 2.7e-8, 2.5e-10; energy 1.8e-6, 1.4e-8, 1.7e-10. The bounds hold both.
+    // Measured: phi 2.2e-6, 1.3e-8, 1.8e-10 rad; energy 8.3e-7, 1.2e-8, 2.9e-10 (J/kg scale) at the three
+    // tolerances: the global error follows the local tolerance (a factor 100 each), within 0.8-2.9 times
+    // it. Other Newton policies take other steps at the same tolerance: with the Jacobian at the step's
+    // start, phi 1.6e-6, 2.7e-8, 2.5e-10, energy 1.8e-6, 1.4e-8, 1.7e-10; at the second stage without
+    // the refresh in a slow iteration, phi 2.0e-6, 1.5e-8, 1.6e-10, energy 9.7e-7, 1.4e-8, 4.2e-10.
     EXPECT_LT(err.phi, 5.0 * tol);
     EXPECT_LT(err.energy, 5.0 * tol);
     EXPECT_EQ(rec.samples.size(), 201u);  // every 10 ms from the dense output, t = 0 and 2 s included
