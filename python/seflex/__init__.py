@@ -6,7 +6,10 @@
     se = seflex.reduce(model, interface=[1, 3, 4], modes=5)
     se.K, se.M                                             # numpy views, owned by se
     se.save("yoke.se")
-    r = seflex.run("scene.yaml", t_end=1.0)              # r.history["hinge1.phi_deg"], r.locks, r.summary
+    scene = seflex.Scene.load("sync-3d.yaml")
+    scene.springs["HL1"].preload = 15.0                    # N m, names as in the YAML
+    r = seflex.run(scene, progress=lambda t, t_end: None)
+    r.histories["HL1.phi_deg"], r.locks["lock.HL1"].t_latch, r.events, r.summary
 
 Errors of the library are raised as seflex.InputError (a ValueError), seflex.ConvergenceError (a
 RuntimeError) or seflex.Error (a RuntimeError) with the message the command line prints.
@@ -19,18 +22,18 @@ from ._seflex import (  # noqa: F401
     InputError,
     Model,
     ModesResult,
-    RunResult,
     StaticResult,
     Superelement,
     load_superelement,
     modes,
     read_model,
     reduce,
-    run,
     static,
 )
+from .scene import Event, Item, Items, Lock, RunResult, Scene, Spring, run  # noqa: F401
 
 __all__ = [
-    "ConvergenceError", "Error", "GridValues", "InputError", "Model", "ModesResult", "RunResult", "StaticResult",
-    "Superelement", "load_superelement", "modes", "read_model", "reduce", "run", "static",
+    "ConvergenceError", "Error", "Event", "GridValues", "InputError", "Item", "Items", "Lock", "Model", "ModesResult",
+    "RunResult", "Scene", "Spring", "StaticResult", "Superelement", "load_superelement", "modes", "read_model", "reduce",
+    "run", "static",
 ]

@@ -1,6 +1,6 @@
 # Type stubs of the seflex package (the compiled module seflex._seflex, re-exported).
 from os import PathLike
-from typing import Callable, Sequence
+from typing import Sequence
 
 import numpy as np
 import numpy.typing as npt
@@ -82,13 +82,6 @@ def reduce(model: Model, *, interface: str | Sequence[int | str], modes: int | N
            stiffening: bool = True, mesh: bool = True) -> Superelement: ...
 def load_superelement(path: _Path) -> Superelement: ...
 
-class RunResult:
-    history: dict[str, _F]  # read-only views
-    columns: list[str]
-    locks: list[dict[str, str | float | None]]
-    summary: dict[str, str | float | int]
-    folder: PathLike[str]
-
-def run(scene: _Path, *, output: _Path | None = None, overwrite: bool = False, t_end: float | None = None,
-        step: float | None = None, formulation: str = "aic", animation: bool = False,
-        progress: Callable[[float, float], object] | None = None, progress_interval: float = 0.2) -> RunResult: ...
+# Scenes and runs: python/seflex/scene.py (annotated Python).
+from .scene import Event as Event, Item as Item, Items as Items, Lock as Lock, RunResult as RunResult
+from .scene import Scene as Scene, Spring as Spring, run as run

@@ -210,13 +210,6 @@ void history_values(const mbd::Model& m, const mbd::Sample& s, std::vector<doubl
   v.push_back(s.step_size);
 }
 
-std::vector<LockRecord> RunOutput::locks() const {
-  std::vector<LockRecord> r;
-  for (std::size_t k = 0; k < lock_elements_.size(); ++k)
-    r.push_back({scene_.model.force_elements[static_cast<std::size_t>(lock_elements_[k])].name, t_latch_[k], peak_after_latch_[k]});
-  return r;
-}
-
 void RunOutput::write_history(const mbd::Model& m, const mbd::Sample& s) {
   std::string& row = history_buf_;  // rows are appended to the buffer that write_out empties
   history_values(m, s, row_values_);

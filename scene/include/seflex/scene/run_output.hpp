@@ -52,13 +52,6 @@ struct RunEnd {
 std::vector<std::string> history_columns(const mbd::Model& model);
 void history_values(const mbd::Model& model, const mbd::Sample& sample, std::vector<double>& values);
 
-/// A lock of the run, as summary.json's "locks" reports it.
-struct LockRecord {
-  std::string name;
-  std::optional<double> t_latch;            ///< absent: never latched
-  double peak_abs_torque_after_latch = 0.0;
-};
-
 class RunOutput : public mbd::Observer {
  public:
   /// The files a run writes into its folder (checked by check_folder, removed before an overwrite).
@@ -82,8 +75,6 @@ class RunOutput : public mbd::Observer {
   void finish(const RunEnd& end);
 
   double t_last() const { return t_last_; }
-  /// The locks so far, in the order of the model's force elements.
-  std::vector<LockRecord> locks() const;
   long samples() const { return samples_; }
   const std::filesystem::path& folder() const { return folder_; }
 
