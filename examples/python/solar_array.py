@@ -8,7 +8,7 @@ torques against time (a PNG, matplotlib's Agg backend).
     PYTHONPATH=build/python /usr/bin/python3 examples/python/solar_array.py [OUTDIR] [--modes N] [--t-end T] [--small]
 
 OUTDIR (default solar-array-python/) receives superelements/, sync-3d/ (the files of `seflex run`) and
-sync-3d.png. --small: 2 modes per body, the preview settings of docs/solar-array-results.md and 1 s of
+sync-3d.png. --small: 2 modes per body, the preview settings of docs/solar-array-results.md and 3.2 s of
 deployment (a few seconds; the CTest).
 """
 import argparse
@@ -51,10 +51,10 @@ def main():
     ap.add_argument("out", nargs="?", default="solar-array-python", type=pathlib.Path)
     ap.add_argument("--modes", type=int, default=10, help="fixed-interface modes per superelement (default 10)")
     ap.add_argument("--t-end", type=float, help="end time [s] (default: the scene's, 5 s after the last lock)")
-    ap.add_argument("--small", action="store_true", help="2 modes, preview settings, 1 s")
+    ap.add_argument("--small", action="store_true", help="2 modes, preview settings, up to 3.2 s")
     a = ap.parse_args()
     if a.small:
-        a.modes, a.t_end = 2, a.t_end or 1.0
+        a.modes, a.t_end = 2, a.t_end or 3.2
     reduce_superelements(a.out, a.modes)
     scene = sync_3d(a.out, preview=a.small)
 

@@ -415,6 +415,8 @@ def run(scene: Scene | str | os.PathLike, *, output: str | os.PathLike | None = 
     The GIL is released while the run computes. Returns a RunResult. Raises seflex.InputError (the
     command's message) and seflex.ConvergenceError (the files in `output` hold the run up to it).
     """
+    if progress is not None and not callable(progress):
+        raise TypeError(f"progress expects a callable progress(t, t_end), got {type(progress).__name__}")
     if isinstance(scene, Scene):
         file, text = scene._source()
     else:
