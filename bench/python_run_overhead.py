@@ -83,11 +83,13 @@ def main():
     print(f"$ {' '.join(sys.argv)}")
     print(f"scene {scene_path.name}: {r.summary['dofs']} dofs, {r.summary['steps']} steps, {r.summary['final_t']:.3f} s simulated; "
           f"{a.repeat} runs each, alternating; user+sys CPU [s]")
-    print(f"  {'':15s} {'median':>8s} {'min':>8s} {'max':>8s} {'/ command':>10s}")
+    print(f"  {'':15s} {'median':>8s} {'min':>8s} {'max':>8s} {'/ command':>10s} {'paired':>8s}")
     base = statistics.median(times["command"])
     for k, v in times.items():
         m = statistics.median(v)
-        print(f"  {k:15s} {m:8.3f} {min(v):8.3f} {max(v):8.3f} {m / base:10.3f}")
+        paired = statistics.median(x / c for x, c in zip(v, times["command"]))
+        print(f"  {k:15s} {m:8.3f} {min(v):8.3f} {max(v):8.3f} {m / base:10.3f} {paired:8.3f}")
+    print("  (/ command: ratio of the medians; paired: median of the ratios of the runs made one after the other)")
 
 
 if __name__ == "__main__":
