@@ -197,7 +197,8 @@ def test_progress_callback_bounded_rate_and_exception_stops_the_run(link, tmp_pa
     calls.clear()
     r = seflex.run(scene, progress=lambda t, t_end: calls.append(time.monotonic()), progress_interval=0.05)
     assert len(calls) <= r.summary["run_time_s"] / 0.05 + 1
-    assert all(b - a >= 0.05 for a, b in zip(calls, calls[1:]))
+    # The calls' own times carry the delay of taking the GIL (microseconds here, more on a loaded machine).
+    assert all(b - a >= 0.04 for a, b in zip(calls, calls[1:]))
 
     def stop(t, t_end):
         if t > 0.5:
