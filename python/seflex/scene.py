@@ -35,10 +35,10 @@ def _plain(v):
         return copy.deepcopy(v._d)
     if isinstance(v, dict):
         return {str(k): _plain(x) for k, x in v.items()}
-    if isinstance(v, (list, tuple)) or type(v).__name__ == "ndarray":
+    if isinstance(v, (list, tuple)):
         return [_plain(x) for x in v]
-    if hasattr(v, "item") and not isinstance(v, (str, bytes)):  # numpy scalars
-        return v.item()
+    if hasattr(v, "tolist") and not isinstance(v, (str, bytes)):  # numpy arrays and scalars
+        return _plain(v.tolist())
     if isinstance(v, os.PathLike):
         return os.fspath(v)
     return v
