@@ -143,6 +143,7 @@ def link(tmp_path_factory):
 
 def test_link_lock_time_is_the_closed_form(link, tmp_path):
     scene, I_zz = link
+    scene = scene.copy()  # the module's scene stays as built
     phi = math.radians(30)
     for tau in (0.02, 0.08):  # phi = tau t^2 / (2 I): t_latch = sqrt(2 I phi / tau), halved by 4x the preload
         scene.springs["root"].preload = tau
