@@ -39,7 +39,6 @@ namespace {
 struct RunData {
   std::vector<std::string> columns;
   std::vector<double> rows;
-  bool stopped = false;  ///< ended by an exception of the progress callback or a signal
 };
 
 /// Forwards to the run's files, keeps the history rows, calls the progress callback (GIL held) at a
@@ -128,7 +127,6 @@ py::object to_python(const YAML::Node& n) {
 void bind_run(py::module_& m) {
   py::class_<RunData>(m, "_RunData", "history rows of a run (seflex.run wraps them in a RunResult)")
       .def_readonly("columns", &RunData::columns)
-      .def_readonly("stopped", &RunData::stopped)
       .def_property_readonly("rows", [](py::object self) {
             const RunData& r = self.cast<const RunData&>();
             const auto nc = static_cast<py::ssize_t>(r.columns.size());
