@@ -86,6 +86,17 @@ def test_a_scene_loaded_and_run_from_python_is_the_file(solar):
         np.testing.assert_array_equal(a[c], b[c], err_msg=c)
 
 
+@pytest.mark.parametrize("path", sorted((SOURCE / "examples").glob("*/*.yaml")), ids=lambda p: p.name)
+def test_saving_a_loaded_scene_keeps_its_data(path, tmp_path):
+    """Scene.load -> save -> Scene.load gives the same data (keys, order, values and their types)."""
+    scene = seflex.Scene.load(path)
+    scene.folder = tmp_path  # the superelement paths as written (relative to the new file: the same)
+    scene.save(tmp_path / path.name)
+    back = seflex.Scene.load(tmp_path / path.name)
+    assert back.to_dict() == scene.to_dict()
+    assert json.dumps(back.to_dict()) == json.dumps(scene.to_dict())  # ints stay ints, floats floats
+
+
 def test_larger_preload_locks_earlier_and_the_command_agrees(solar):
     scene = seflex.Scene.load(solar / "sync-3d.yaml")
     k = scene.springs["HL1"].stiffness
