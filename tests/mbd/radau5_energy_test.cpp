@@ -20,6 +20,7 @@
 #include "mbd_models.hpp"
 #include "seflex/mbd/solvers/integrator.hpp"
 #include "seflex/mbd/solvers/radau5.hpp"
+#include "test_support.hpp"
 
 namespace seflex::test {
 namespace {
@@ -92,17 +93,10 @@ History radau_history(double h) {
   return out;
 }
 
-double largest_difference(const std::vector<double>& a, const std::vector<double>& b) {
-  EXPECT_EQ(a.size(), b.size());
-  double d = 0.0;
-  for (std::size_t k = 0; k < std::min(a.size(), b.size()); ++k) d = std::max(d, std::abs(a[k] - b[k]));
-  return d;
-}
-
 TEST(Radau5Energy, DriftOfAFreeFlyingFlexibleBodyShrinksAsH5) {
   const History ref = radau_history(5e-4);
   const double e0 = ref.energy.front();
-  const double formulation = largest_difference(ref.energy, std::vector<double>(ref.energy.size(), e0)) / e0;
+  const double formulation = max_abs_difference(ref.energy, std::vector<double>(ref.energy.size(), e0)) / e0;
 
   // The converged energy history, by a second method: generalized-alpha without numerical damping.
   const FreeBeam fb = free_beam();
@@ -118,7 +112,7 @@ TEST(Radau5Energy, DriftOfAFreeFlyingFlexibleBodyShrinksAsH5) {
   simulate(fb.model, s, data, st, &rec);
   std::vector<double> ga;
   for (const Sample& q : rec.samples) ga.push_back(q.energy.total());
-  const double methods = largest_difference(ga, ref.energy) / e0;
+  const double methods = max_abs_difference(ga, ref.energy) / e0;
   std::printf("converged motion: energy %.6f J, moves by %.3e of it (largest elastic energy %.3e J); generalized-alpha at "
               "0.1 ms: the same history to %.3e\n",
               e0, formulation, ref.largest_elastic, methods);
@@ -131,7 +125,7 @@ TEST(Radau5Energy, DriftOfAFreeFlyingFlexibleBodyShrinksAsH5) {
   std::vector<double> err;
   for (double h : {8e-3, 4e-3, 2e-3}) {
     const History run = radau_history(h);
-    err.push_back(largest_difference(run.energy, ref.energy) / e0);
+    err.push_back(max_abs_difference(run.energy, ref.energy) / e0);
     std::printf("h %.0e: largest energy error %.3e of E(0)\n", h, err.back());
   }
   const double s1 = std::log2(err[0] / err[1]), s2 = std::log2(err[1] / err[2]);
