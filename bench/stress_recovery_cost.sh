@@ -12,7 +12,7 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 repeat=3
 if [ "${1:-}" = --repeat ]; then repeat="$2"; shift 2; fi
 [ $# -eq 1 ] || { sed -n 2,9p "$0"; exit 2; }
-bin="$1"
+bin="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 for v in off on; do
