@@ -148,6 +148,7 @@ RunOutput::RunOutput(const Scene& scene, const RunOutputOptions& o) : scene_(sce
     sb.peak.assign(E, -1.0);
     sb.t_peak.assign(E, 0.0);
     sb.fibre.assign(E, 0);
+    sb.after_lock.assign(lock_elements_.size(), LockPeak{});
     stress_.push_back(std::move(sb));
   }
   if (scene.description.output.interface_loads) {
@@ -198,6 +199,12 @@ void RunOutput::recover_stresses(const mbd::Sample& s) {
         sb.t_peak[e] = s.t;
         sb.fibre[e] = p.fibre;
       }
+      if (last_latched_ >= 0)  // every lock that latched at that instant (hinge lines of two hinges)
+        for (std::size_t k = 0; k < lock_elements_.size(); ++k) {
+          if (t_latch_[k] != t_latch_[static_cast<std::size_t>(last_latched_)]) continue;
+          LockPeak& lp = sb.after_lock[k];
+          if (p.value > lp.value) lp = {p.value, s.t, st.element_ids[e], p.fibre};
+        }
     }
   }
 }
@@ -273,6 +280,7 @@ void RunOutput::track_locks(const mbd::Model& model, const mbd::Sample& s) {
     const mbd::ElementSample& e = s.elements[i];
     if (e.latched && !t_latch_[k]) {
       t_latch_[k] = e.t_latch;
+      if (last_latched_ < 0 || *t_latch_[k] >= *t_latch_[static_cast<std::size_t>(last_latched_)]) last_latched_ = static_cast<int>(k);
       const auto& l = std::get<mbd::HingeLock>(model.force_elements[i].element);
       std::ostringstream os;
       os << "latched at phi = " << s.hinges[static_cast<std::size_t>(l.hinge.value)].phi * kRad2Deg << " deg (lock angle "
@@ -439,6 +447,22 @@ void RunOutput::finish(const RunEnd& end) {
        << ", \"peak_abs_torque_after_latch\": " << (t_latch_[k] ? json_number(peak_after_latch_[k]) : "null") << "}";
   }
   js << (lock_elements_.empty() ? "}" : "\n  }");
+  if (!stress_.empty() && !lock_elements_.empty()) {  // the latch shocks: per lock and body, the most loaded element
+    js << ",\n  \"element_peaks_after_lock\": {";
+    for (std::size_t k = 0; k < lock_elements_.size(); ++k) {
+      js << (k ? "," : "") << "\n    " << json_string(m.force_elements[static_cast<std::size_t>(lock_elements_[k])].name) << ": {";
+      for (std::size_t b = 0; b < stress_.size(); ++b) {
+        const LockPeak& lp = stress_[b].after_lock[k];
+        js << (b ? ", " : "") << json_string(scene_.description.bodies[stress_[b].body].name) << ": ";
+        if (lp.value < 0) js << "null";
+        else
+          js << "{\"element\": " << lp.element << ", \"peak\": " << json_number(lp.value) << ", \"t\": " << json_number(lp.t)
+             << ", \"fibre\": " << lp.fibre << "}";
+      }
+      js << "}";
+    }
+    js << "\n  }";
+  }
   // The largest element results per body (stress modes), most loaded first.
   const auto top = [](const StressBody& sb) {
     std::vector<std::size_t> order(sb.peak.size());
@@ -489,6 +513,23 @@ void RunOutput::finish(const RunEnd& end) {
     for (std::size_t pad = m.force_elements[static_cast<std::size_t>(lock_elements_[k])].name.size(); pad < 24; ++pad) tx << ' ';
     if (t_latch_[k]) tx << num(*t_latch_[k]) << "   " << num(peak_after_latch_[k]) << "\n";
     else tx << "never latched\n";
+  }
+  if (!stress_.empty() && !lock_elements_.empty()) {
+    tx << "\nlargest element result of each body from each lock's latch until the next lock latches\n";
+    for (std::size_t k = 0; k < lock_elements_.size(); ++k)
+      for (const StressBody& sb : stress_) {
+        const LockPeak& lp = sb.after_lock[k];
+        tx << "  " << m.force_elements[static_cast<std::size_t>(lock_elements_[k])].name << "  "
+           << scene_.description.bodies[sb.body].name << ": ";
+        if (lp.value < 0) {
+          tx << "-\n";
+          continue;
+        }
+        const auto it = std::find(sb.modes->element_ids.begin(), sb.modes->element_ids.end(), lp.element);
+        const auto kind = static_cast<fem::ResultKind>(sb.modes->kinds[static_cast<std::size_t>(it - sb.modes->element_ids.begin())]);
+        tx << fem::element_result_peak_name(kind) << " " << num(lp.value) << " at element " << lp.element << ", t = " << num(lp.t)
+           << " s" << (lp.fibre ? (lp.fibre == 1 ? " (fibre Z1)" : " (fibre Z2)") : "") << "\n";
+      }
   }
   for (const StressBody& sb : stress_) {
     tx << "\nlargest element results of " << scene_.description.bodies[sb.body].name

@@ -113,6 +113,10 @@ class RunOutput : public mbd::Observer {
   std::vector<std::optional<double>> t_latch_;  ///< per lock
   std::vector<double> peak_after_latch_;        ///< per lock, max |torque| once latched
   std::optional<double> all_locked_at_;
+  struct LockPeak {
+    double value = -1.0, t = 0.0;
+    int element = 0, fibre = 0;
+  };
   /// A body with stress modes: its results at the last sample and, per element, the largest peak so far.
   struct StressBody {
     std::size_t body = 0;  ///< scene body
@@ -120,12 +124,15 @@ class RunOutput : public mbd::Observer {
     Eigen::VectorXd results;
     std::vector<double> current, peak, t_peak;  ///< per element: the ranking value now (animation), its peak and time
     std::vector<int> fibre;
+    /// Per lock: the largest element result from its latch until the next lock latches (the latch shock).
+    std::vector<LockPeak> after_lock;
   };
   std::vector<StressBody> stress_;
   std::ofstream interface_loads_;
   std::string interface_buf_;
   Eigen::VectorXd f_b_;  ///< interface loads of one body (scratch)
   std::size_t next_subcase_ = 0;  ///< the next of output.static_subcases to write
+  int last_latched_ = -1;         ///< the lock latched most recently (index into lock_elements_), -1 none
   bool stop_announced_ = false;
 };
 
