@@ -290,12 +290,16 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
                 seflex::se::StiffeningInvariants::kInertiaCases, s.stiffening.interface.size(), info.seconds_stiffening);
   else
     std::printf("  geometric-stiffness invariants: not computed (--no-stiffening: no stress stiffening in the run)\n");
-  for (const auto& [card, count] : info.stress_missing)
-    std::fprintf(stderr, "warning: --stresses: %d %s%s: no element results in seflex (left out of the stress modes)\n",
-                 count, card.c_str(), card.rfind("unknown", 0) == 0 ? "" : count > 1 ? " elements" : " element");
+  for (const auto& [card, count] : info.stress_missing) {
+    if (card.rfind("unknown element id ", 0) == 0)
+      std::fprintf(stderr, "warning: --stresses: element %s is not in the model\n", card.substr(19).c_str());
+    else
+      std::fprintf(stderr, "warning: --stresses: %d %s element%s: no element results in seflex (left out of the stress modes)\n",
+                   count, card.c_str(), count > 1 ? "s" : "");
+  }
   if (stress.present())
-    std::printf("  stress modes: %zu elements, %ld result rows x %d basis vectors (element forces and stresses)\n",
-                stress.element_ids.size(), static_cast<long>(stress.S.rows()), s.size());
+    std::printf("  stress modes: %zu element%s, %ld result rows x %d basis vectors (element forces and stresses)\n",
+                stress.element_ids.size(), stress.element_ids.size() > 1 ? "s" : "", static_cast<long>(stress.S.rows()), s.size());
   else if (stresses)
     std::printf("  stress modes: none (no selected element has element results)\n");
   if (no_mesh)

@@ -23,6 +23,7 @@
 #include "seflex/mbd/data.hpp"
 #include "seflex/mbd/solvers/statics.hpp"
 #include "seflex/mbd/state.hpp"
+#include "seflex/scene/advise.hpp"
 #include "seflex/scene/run_output.hpp"
 #include "seflex/scene/scene.hpp"
 
@@ -58,11 +59,17 @@ std::map<int, std::map<std::string, double>> element_csv(const std::filesystem::
   return out;
 }
 
-TEST(StressRecovery, QuasiStaticRunMatchesSeflexStaticOnTheDeck) {
-  TempDir dir;
+/// The link of examples/scenes (link.bdf) copied to `dir` and reduced there to link.se (interfaces 1 and 5,
+/// frame 3, 3 fixed-interface modes) with `--stresses ELSET`; returns the deck's text and the command's output.
+std::pair<std::string, RunResult> reduce_link(const TempDir& dir, const std::string& elset) {
   const std::string deck = read_file(source_dir() / "examples/scenes/link.bdf");
   { std::ofstream(dir.path() / "link.bdf") << deck; }
-  const auto red = run_seflex("reduce link.bdf --interface 1,5 --frame 3 --modes 3 --stresses all -o link.se", dir.path());
+  return {deck, run_seflex("reduce link.bdf --interface 1,5 --frame 3 --modes 3 --stresses " + elset + " -o link.se", dir.path())};
+}
+
+TEST(StressRecovery, QuasiStaticRunMatchesSeflexStaticOnTheDeck) {
+  TempDir dir;
+  const auto [deck, red] = reduce_link(dir, "all");
   ASSERT_EQ(red.exit_code, 0) << red.out << red.err;
   EXPECT_NE(red.out.find("stress modes: 4 elements"), std::string::npos) << red.out;
   const auto info = run_seflex("info link.se", dir.path());
@@ -155,9 +162,7 @@ output:
 // static P L).
 TEST(StressRecovery, SuddenTipLoadPeakRootMomentMatchesFullTransient) {
   TempDir dir;
-  const std::string deck = read_file(source_dir() / "examples/scenes/link.bdf");
-  { std::ofstream(dir.path() / "link.bdf") << deck; }
-  const auto red = run_seflex("reduce link.bdf --interface 1,5 --frame 3 --modes 3 --stresses 1 -o link.se", dir.path());
+  const auto [deck, red] = reduce_link(dir, "1");
   ASSERT_EQ(red.exit_code, 0) << red.out << red.err;
   const double P = 2.0, T = 0.1;
 
@@ -283,6 +288,53 @@ TEST(StressRecovery, StressModesRoundTripThroughTheFile) {
   EXPECT_EQ(u.element_ids.size(), 1u);
   ASSERT_EQ(info.stress_missing.size(), 1u);
   EXPECT_EQ(info.stress_missing[0].first, "unknown element id 77");
+}
+
+
+// The advisor's stress tolerance: a variant without stress modes (all bodies rigid) misses every peak
+// (error exactly 1); a tolerance no variant but the finest meets recommends the finest; a tolerance of
+// 300 % constrains nothing (the recommendation of the angle tolerance alone).
+TEST(StressRecovery, AdvisorStressTolerance) {
+  TempDir dir;
+  const auto red = reduce_link(dir, "all").second;
+  ASSERT_EQ(red.exit_code, 0) << red.out << red.err;
+  { std::ofstream(dir.path() / "scene.yaml") << R"(title: flexible pendulum released horizontally
+bodies:
+  - {name: link, superelement: link.se}
+hinges:
+  - {name: H1, parent: ground, child: link.1, axis: [0, 0, 1]}
+loads:
+  gravity: [0, -9.81, 0]
+integrator:
+  t_end: 0.3
+  step: 1.0e-3
+output:
+  interval: 0.01
+)"; }
+  const scene::SceneDescription d = scene::read_scene(dir.path() / "scene.yaml");
+  scene::AdviseOptions o;
+  o.tolerance = 5.0 * M_PI / 180.0;
+  o.t_end = 0.3;
+  const scene::AdviseReport angles_only = scene::advise(d, o);
+  o.stress_tolerance = 3.0;
+  const scene::AdviseReport loose = scene::advise(d, o);
+  EXPECT_EQ(loose.rows[static_cast<std::size_t>(loose.recommended)].name,
+            angles_only.rows[static_cast<std::size_t>(angles_only.recommended)].name);
+  bool rigid_seen = false;
+  for (const auto& row : loose.rows)
+    if (row.name == "rigid") {
+      rigid_seen = true;
+      EXPECT_TRUE(row.ran);
+      EXPECT_EQ(row.max_stress_error, 1.0);  // no stress modes: every peak missed
+    }
+  EXPECT_TRUE(rigid_seen);
+  o.stress_tolerance = 1e-12;
+  const scene::AdviseReport tight = scene::advise(d, o);
+  const auto& best = tight.rows[static_cast<std::size_t>(tight.recommended)];
+  EXPECT_LE(best.max_stress_error, 1e-12) << best.name;
+  for (const auto& row : tight.rows)
+    std::printf("%-50s stress error %.3e%s\n", row.name.c_str(), row.max_stress_error,
+                &row == &best ? "  <- recommended" : "");
 }
 
 }  // namespace
