@@ -12,10 +12,12 @@
 // - Shell (CQUAD4, CQUADR, CTRIA3, CTRIAR): at the centroid, in the element coordinate system (CTRIA3:
 //   x along G1->G2; CQUAD4: x bisects the angle between the diagonals G1-G3 and G2-G4; z the normal):
 //   membrane forces Nx Ny Nxy, moments Mx My Mxy, transverse shears Qx Qy (all per unit width), and
-//   the fibre stresses sx sy txy at Z1 and Z2 (PSHELL Z1/Z2, default -T/2 and +T/2 from the reference
-//   plane), sigma(z) = N / T - M (z - zoffs) / I with I = (12I/T^3) T^3 / 12 (Nastran's sign: a
-//   positive Mx is tension on the bottom, z < 0). Transverse shears are zero without transverse shear
-//   flexibility (PSHELL MID3 blank, Kirchhoff plate), as Nastran prints them.
+//   the fibre stresses sx sy txy at Z1 and Z2 (PSHELL Z1/Z2, default -T/2 and +T/2 from the material
+//   mid-surface, which ZOFFS moves off the grids), sigma(z) = N / T - M z / I with I = (12I/T^3) T^3 / 12
+//   and M about that mid-surface (Nastran's sign: a positive Mx is tension on the bottom, z < 0).
+//   Transverse shears are zero without transverse shear flexibility (PSHELL MID3 blank, Kirchhoff
+//   plate), as Nastran prints them. PCOMP/PCOMPG sections: the homogeneous-plate fibre formula of the
+//   total thickness (no ply stresses).
 // - Bar (CBAR, CBEAM): bending moments at end A plane 1, plane 2, end B plane 1, plane 2, shears in
 //   plane 1 and 2, axial force (tension positive), torque, in element axes; plane 1 is x-y (moment
 //   about z), plane 2 x-z; dM/dx = -V in both planes (the CBAR force output of the QRG).
@@ -63,7 +65,8 @@ const char* element_result_peak_name(ResultKind kind);
 /// Von Mises of a plane stress state.
 double plane_von_mises(double sx, double sy, double txy);
 
-/// Fibre distances of a shell for its stresses (PSHELL Z1/Z2; default -T/2, +T/2) and its ZOFFS.
+/// Fibre distances of a shell for its stresses (PSHELL Z1/Z2 from the material mid-surface; default -T/2,
+/// +T/2), its ZOFFS and the bending inertia per width of the fibre formula.
 struct ShellFibres {
   double z1 = 0, z2 = 0, zoffs = 0, I = 0;  ///< I: bending inertia per width (12I/T^3) T^3 / 12
 };
