@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "ffrf/ffrf_detail.hpp"
+#include "ffrf/ffrf_redundancy.hpp"
 #include "seflex/common/error.hpp"
 
 namespace seflex::mbd {
@@ -181,6 +182,7 @@ FfrfSystem make_ffrf_system(const Model& model, const FfrfOptions& options) {
                             !sys.bodies[static_cast<std::size_t>(src.body)].flexible;
     if (!same_rigid) sys.constraints.push_back(FfrfConstraint{src.body, src.interface, NodeIndex(static_cast<int>(k)), true});
   }
+  detail::find_redundant(sys);
   return sys;
 }
 
