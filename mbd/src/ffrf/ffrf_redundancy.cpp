@@ -1,6 +1,6 @@
 // Redundant constraint equations of FFRF-LM and rigid-LM (docs/ffrf.md, "Redundant constraints"):
-// the rows of the constraint Jacobian, scaled by the natural scales of the equations and coordinates,
-// are orthogonalised in the order of the joints (classical Gram-Schmidt, applied twice: "twice is
+// the rows of the constraint Jacobian (position rows divided by the model's length scale, columns
+// equilibrated to a largest entry of 1) are orthogonalised in the order of the joints (classical Gram-Schmidt, applied twice: "twice is
 // enough", Giraud, Langou and Rozloznik 2005); a row whose component orthogonal to the rows kept
 // before it is at most tol times the largest row norm depends on them and is removed. Along the run
 // the same test on every accepted configuration checks that the rank has not changed.
@@ -36,9 +36,13 @@ void scaled_jacobian(const FfrfSystem& sys, const FfrfState& s, RankScratch& w, 
     for (std::size_t i = 0; i < w.ce.cols.size(); ++i) {
       const int col = w.ce.cols[i];
       if (col < 0) continue;  // a driven hinge: not a coordinate
-      const double scale = 1.0 / sys.weight[col];
-      for (int k = 0; k < 6; ++k) w.G(6 * c + k, col) += w.ce.G(k, static_cast<Eigen::Index>(i)) * scale / (k < 3 ? L : 1.0);
+      for (int k = 0; k < 6; ++k) w.G(6 * c + k, col) += w.ce.G(k, static_cast<Eigen::Index>(i)) / (k < 3 ? L : 1.0);
     }
+  }
+  // Columns equilibrated (largest entry 1): the rank does not depend on the units of a coordinate.
+  for (Eigen::Index j = 0; j < nq; ++j) {
+    const double m = w.G.col(j).cwiseAbs().maxCoeff();
+    if (m > 0.0) w.G.col(j) /= m;
   }
 }
 

@@ -57,8 +57,8 @@ struct FfrfOptions {
   /// model then has a singular iteration matrix).
   bool remove_redundant = true;
   /// A row is dependent when its component orthogonal to the rows kept before it is at most this
-  /// fraction of the largest row norm (rows and columns scaled by their natural scales: positions by
-  /// the model's length scale, modal coordinates by their amplitudes).
+  /// fraction of the largest row norm (position rows divided by the model's length scale, columns
+  /// equilibrated to a largest entry of 1).
   double redundancy_tolerance = 1e-6;
 };
 
