@@ -131,6 +131,7 @@ int run_run(seflex::app::Args& args) {
               with_mesh ? "with mesh parts" : "dynamics only, mesh parts not read");
   if (!no_animation && d.output.animation_interval && meshless)
     std::printf("  note: a superelement without its mesh part (seflex reduce --no-mesh) is not drawn in the animation\n");
+  for (const std::string& line : scene.redundant_hinges) std::printf("  redundant: %s\n", line.c_str());
   std::fflush(stdout);
 
   scene::RunOutputOptions oo;

@@ -270,6 +270,7 @@ AdviseReport advise(const SceneDescription& scene, const AdviseOptions& o) {
     try {
       const Scene s = build_scene(variants[v].scene);
       row.dofs = s.model.num_dofs;
+      for (const std::string& line : s.redundant_hinges) row.redundant += (row.redundant.empty() ? "" : " | ") + line;
       row.stiffening = stiffened(s) && variants[v].formulation == mbd::Formulation::Aic;
       rec = std::make_unique<AngleRecorder>(false, match_nodes(s.model, o.nodes, p0, variants[v].scene.file));
       const double c0 = cpu_now();
@@ -279,6 +280,7 @@ AdviseReport advise(const SceneDescription& scene, const AdviseOptions& o) {
         if (run.ffrf) {
           row.dofs = run.ffrf->coordinates;
           row.multipliers = run.ffrf->constraints;
+          row.redundant = mbd::describe_redundant(run.ffrf->redundant);
         }
         row.steps = st.steps;
         row.ran = true;

@@ -149,7 +149,7 @@ FfrfSystem make_ffrf_system(const Model& model, const FfrfOptions& options) {
     for (int m = 0; m < b.k; ++m) push('e', std::max(b.amplitude[m], 1e-12) / L, owner);
   }
   for (std::size_t h = 0; h < model.hinges.size(); ++h)
-    sys.hinge_coord.push_back(model.hinges[h].drive ? -1 : push('h', 1.0, static_cast<int>(h)));
+    sys.hinge_coord.push_back(model.hinges[h].drive || model.hinges[h].follower() ? -1 : push('h', 1.0, static_cast<int>(h)));
   // Node sources and constraints.
   using Kind = FfrfNodeSource::Kind;
   sys.node_source.assign(model.nodes.size(), FfrfNodeSource{});
