@@ -16,12 +16,6 @@
 namespace seflex::test {
 namespace {
 
-void replace_once(std::string& s, const std::string& from, const std::string& to) {
-  const auto at = s.find(from);
-  ASSERT_NE(at, std::string::npos) << "the demo scene no longer contains '" << from << "'";
-  s.replace(at, from.size(), to);
-}
-
 class SolarArrayRedundant : public ::testing::Test {
  protected:
   void SetUp() override {
