@@ -49,18 +49,6 @@ def run(binary, scene, folder, method=None):
     return s, (ru1.ru_utime + ru1.ru_stime) - (ru0.ru_utime + ru0.ru_stime)
 
 
-def errors(folder, summary, ref_folder, ref_summary):
-    r = dict(folder=folder, status=summary["status"], locks=summary["locks"])
-    ref = dict(folder=ref_folder, status=ref_summary["status"], locks=ref_summary["locks"])
-    e = measures.errors_solar(r, ref) if any(l["t_latch"] is not None for l in ref_summary["locks"].values()) else {}
-    h0 = runs.read_history(os.path.join(ref_folder, "history.csv"))
-    h = runs.read_history(os.path.join(folder, "history.csv"))
-    L0, L = measures.lines_of(h0), measures.lines_of(h)
-    g = h0["t"][h0["t"] <= h["t"][-1]]
-    e["angle_run_deg"] = max(float(np.max(np.abs(np.interp(g, h["t"], L[n]) - np.interp(g, h0["t"], L0[n])))) for n in L0)
-    return e
-
-
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("binaries", nargs="+")
@@ -122,7 +110,7 @@ def main():
         for k, (m2, t2) in enumerate(refs[1:]):
             f2 = os.path.join(work, f"reference-{k + 2}")
             s2, _ = run(bins[-1], scene(t2, grid[0][1], f"reference-{k + 2}"), f2, m2)
-            e2 = errors(f2, s2, ref_folder, ref_summary)
+            e2 = measures.errors_hinges(f2, s2, ref_folder, ref_summary)
             print(f"second reference: {m2 or 'the scene method'}, local error {t2:g}: {s2['steps']} steps; against the reference: "
                   f"lock time {e2.get('lock_time_err_s', float('nan')):.2g} s, peak torque {e2.get('lock_torque_rel_err', float('nan')):.2%}, "
                   f"angle to last lock {e2.get('angle_err_deg', float('nan')):.3g} deg, whole run {e2['angle_run_deg']:.3g} deg", flush=True)
@@ -141,7 +129,7 @@ def main():
         for c in configs:
             b, tol, ms, modes, method = c
             folder, s = last[c]
-            e = errors(folder, s, ref_folder, ref_summary)
+            e = measures.errors_hinges(folder, s, ref_folder, ref_summary)
             t = sorted(cpu[c])
             rows.append(dict(bin=b, method=s.get("method", method or "?"), tol=tol, max_step=ms, modes=modes, dofs=s["dofs"], steps=s["steps"], rejected=s["rejected_steps"],
                              newton=s["newton_iterations"], simulated=s["final_t"], best=t[0], median=t[len(t) // 2], **e))

@@ -66,3 +66,21 @@ def errors_solar(r, ref_r):
     lt = max(abs((k[n][0] if k.get(n, (None,))[0] is not None else np.inf) - k0[n][0]) for n in k0)
     lq = max(abs(k[n][1] - k0[n][1]) / k0[n][1] if n in k else np.inf for n in k0)
     return dict(angle_err_deg=ang, lock_time_err_s=lt, lock_torque_rel_err=lq)
+
+
+def errors_hinges(folder, summary, ref_folder, ref_summary):
+    """Every hinge measure of a run against a reference run: errors_solar's lock times, peak lock torques
+    and hinge-line angles to the reference's last lock (when the reference locks at all), and the
+    largest hinge-line angle difference over the whole run, angle_run_deg [deg]."""
+    r = dict(folder=folder, status=summary["status"], locks=summary["locks"])
+    ref = dict(folder=ref_folder, status=ref_summary["status"], locks=ref_summary["locks"])
+    e = errors_solar(r, ref) if any(l["t_latch"] is not None for l in ref_summary["locks"].values()) else {}
+    if summary["status"] != "ok":
+        e["angle_run_deg"] = np.inf
+        return e
+    h0 = read_history(os.path.join(ref_folder, "history.csv"))
+    h = read_history(os.path.join(folder, "history.csv"))
+    L0, L = lines_of(h0), lines_of(h)
+    g = h0["t"][h0["t"] <= h["t"][-1]]
+    e["angle_run_deg"] = max(float(np.max(np.abs(np.interp(g, h["t"], L[n]) - np.interp(g, h0["t"], L0[n])))) for n in L0)
+    return e

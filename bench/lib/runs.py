@@ -43,10 +43,11 @@ def edit_scene(text, tol=None, method=None, step=None, stop=None, t_end=None, ma
     return text
 
 
-def save_figure(fig, out, name, img, cmd):
-    """Save a chart with the command that made it under out/ (and a copy in img/ if given)."""
+def save_figure(fig, out, name, img, cmd, bottom=0.03):
+    """Save a chart with the command that made it under out/ (and a copy in img/ if given); bottom: the
+    fraction of the height kept below the axes (the command, a figure legend)."""
     fig.text(0.01, 0.01, cmd, fontsize=6)
-    fig.tight_layout(rect=(0, 0.03, 1, 1))
+    fig.tight_layout(rect=(0, bottom, 1, 1))
     png = os.path.join(out, name)
     fig.savefig(png, dpi=110)
     if img:

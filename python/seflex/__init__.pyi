@@ -81,3 +81,7 @@ def reduce(model: Model, *, interface: str | Sequence[int | str], modes: int | N
            frame: int | str | None = None, name: str | None = None, eigensolver: str = "spectra",
            stiffening: bool = True, mesh: bool = True) -> Superelement: ...
 def load_superelement(path: _Path) -> Superelement: ...
+
+# Scenes and runs: python/seflex/scene.py (annotated Python).
+from .scene import Event as Event, Item as Item, Items as Items, Lock as Lock, RunResult as RunResult
+from .scene import Scene as Scene, Spring as Spring, run as run

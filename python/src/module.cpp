@@ -12,11 +12,12 @@
 namespace py = pybind11;
 
 PYBIND11_MODULE(_seflex, m) {
-  m.doc() = "seflex: FE models, normal modes, statics and Craig-Bampton superelements from Python";
+  m.doc() = "seflex: FE models, normal modes, statics, Craig-Bampton superelements and scene runs from Python";
   // pybind11 tries the translators in the reverse order of registration: the base class first.
   py::register_exception<seflex::Error>(m, "Error", PyExc_RuntimeError);
   py::register_exception<seflex::InputError>(m, "InputError", PyExc_ValueError);
   py::register_exception<seflex::ConvergenceError>(m, "ConvergenceError", PyExc_RuntimeError);
   seflex::python::bind_model(m);
   seflex::python::bind_superelement(m);
+  seflex::python::bind_run(m);
 }

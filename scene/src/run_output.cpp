@@ -94,27 +94,12 @@ RunOutput::RunOutput(const Scene& scene, const RunOutputOptions& o) : scene_(sce
   const mbd::Model& m = scene.model;
 
   history_ = open(folder_ / "history.csv");
-  history_ << "t";
-  for (const auto& h : m.hinges) {
-    history_ << "," << h.name << ".phi_deg," << h.name << ".rate_deg_s";
-    if (h.drive) history_ << "," << h.name << ".drive_torque";
-  }
-  for (std::size_t i = 0; i < m.force_elements.size(); ++i) {
-    const auto& fe = m.force_elements[i];
-    if (const auto* c = as_cable(fe.element)) {
-      history_ << "," << fe.name << ".force," << fe.name << ".tension1," << fe.name << ".tension2";
-      for (auto h : c->hinges_a) history_ << "," << fe.name << ".torque." << m.hinge(h).name;
-      for (auto h : c->hinges_b) history_ << "," << fe.name << ".torque." << m.hinge(h).name;
-    } else {
-      history_ << "," << fe.name << ".torque";
-    }
-    if (std::holds_alternative<mbd::HingeLock>(fe.element)) {
-      history_ << "," << fe.name << ".latched";
-      lock_elements_.push_back(static_cast<int>(i));
-    }
-  }
-  history_ << ",E_kinetic,E_elastic,E_spring,E_gravity,E_total,newton_iterations,step_size\n";
+  const std::vector<std::string> columns = history_columns(m);
+  for (std::size_t i = 0; i < columns.size(); ++i) history_ << (i ? "," : "") << columns[i];
+  history_ << "\n";
   history_.flush();
+  for (std::size_t i = 0; i < m.force_elements.size(); ++i)
+    if (std::holds_alternative<mbd::HingeLock>(m.force_elements[i].element)) lock_elements_.push_back(static_cast<int>(i));
   t_latch_.assign(lock_elements_.size(), std::nullopt);
   peak_after_latch_.assign(lock_elements_.size(), 0.0);
 
@@ -177,31 +162,67 @@ void RunOutput::track_locks(const mbd::Model& model, const mbd::Sample& s) {
   }
 }
 
-void RunOutput::write_history(const mbd::Model& m, const mbd::Sample& s) {
-  std::string& row = history_buf_;  // rows are appended to the buffer that write_out empties
-  append_number(row, s.t);
+std::vector<std::string> history_columns(const mbd::Model& m) {
+  std::vector<std::string> c{"t"};
+  for (const auto& h : m.hinges) {
+    c.push_back(h.name + ".phi_deg");
+    c.push_back(h.name + ".rate_deg_s");
+    if (h.drive) c.push_back(h.name + ".drive_torque");
+  }
+  for (const auto& fe : m.force_elements) {
+    if (const auto* cable = as_cable(fe.element)) {
+      for (const char* x : {".force", ".tension1", ".tension2"}) c.push_back(fe.name + x);
+      for (auto h : cable->hinges_a) c.push_back(fe.name + ".torque." + m.hinge(h).name);
+      for (auto h : cable->hinges_b) c.push_back(fe.name + ".torque." + m.hinge(h).name);
+    } else {
+      c.push_back(fe.name + ".torque");
+    }
+    if (std::holds_alternative<mbd::HingeLock>(fe.element)) c.push_back(fe.name + ".latched");
+  }
+  for (const char* x : {"E_kinetic", "E_elastic", "E_spring", "E_gravity", "E_total", "newton_iterations", "step_size"})
+    c.emplace_back(x);
+  return c;
+}
+
+void history_values(const mbd::Model& m, const mbd::Sample& s, std::vector<double>& v) {
+  v.clear();
+  v.push_back(s.t);
   for (std::size_t i = 0; i < s.hinges.size(); ++i) {
     const mbd::HingeSample& h = s.hinges[i];
-    append_field(row, h.phi * kRad2Deg);
-    append_field(row, h.phidot * kRad2Deg);
-    if (m.hinges[i].drive) append_field(row, h.drive_torque);
+    v.push_back(h.phi * kRad2Deg);
+    v.push_back(h.phidot * kRad2Deg);
+    if (m.hinges[i].drive) v.push_back(h.drive_torque);
   }
   for (std::size_t i = 0; i < m.force_elements.size(); ++i) {
     const mbd::ElementSample& e = s.elements[i];
-    append_field(row, e.value);
+    v.push_back(e.value);
     if (const auto* c = as_cable(m.force_elements[i].element)) {
       const auto [T1, T2] = tensions(*c, s);
-      append_field(row, T1);
-      append_field(row, T2);
-      for (double tau : e.hinge_torques) append_field(row, tau);
+      v.push_back(T1);
+      v.push_back(T2);
+      for (double tau : e.hinge_torques) v.push_back(tau);
     }
-    if (std::holds_alternative<mbd::HingeLock>(m.force_elements[i].element)) row += e.latched ? ",1" : ",0";
+    if (std::holds_alternative<mbd::HingeLock>(m.force_elements[i].element)) v.push_back(e.latched ? 1.0 : 0.0);
   }
   const mbd::Energies& E = s.energy;
-  for (double x : {E.kinetic, E.elastic, E.spring, E.gravity, E.total()}) append_field(row, x);
-  row += ',';
-  row += std::to_string(s.newton_iterations);
-  append_field(row, s.step_size);
+  for (double x : {E.kinetic, E.elastic, E.spring, E.gravity, E.total()}) v.push_back(x);
+  v.push_back(static_cast<double>(s.newton_iterations));  // exact: counts stay far below 2^53
+  v.push_back(s.step_size);
+}
+
+void RunOutput::write_history(const mbd::Model& m, const mbd::Sample& s) {
+  std::string& row = history_buf_;  // rows are appended to the buffer that write_out empties
+  history_values(m, s, row_values_);
+  const std::size_t newton = row_values_.size() - 2;  // the count, as an integer (to_chars could write 1e+05)
+  append_number(row, row_values_[0]);
+  for (std::size_t i = 1; i < row_values_.size(); ++i) {
+    if (i == newton) {
+      row += ',';
+      row += std::to_string(s.newton_iterations);
+    } else {
+      append_field(row, row_values_[i]);
+    }
+  }
   row += '\n';
 }
 

@@ -46,6 +46,12 @@ struct RunEnd {
   std::optional<mbd::RunStats> stats;  ///< absent when the solver threw (counts then come from the samples)
 };
 
+/// The columns of history.csv (t first; the list above) and one sample's values in that order: what
+/// RunOutput writes, and what seflex.run (python/) returns as arrays by name. `values` is cleared
+/// and refilled (no allocation once it has the capacity).
+std::vector<std::string> history_columns(const mbd::Model& model);
+void history_values(const mbd::Model& model, const mbd::Sample& sample, std::vector<double>& values);
+
 class RunOutput : public mbd::Observer {
  public:
   /// The files a run writes into its folder (checked by check_folder, removed before an overwrite).
@@ -89,6 +95,7 @@ class RunOutput : public mbd::Observer {
   std::filesystem::path folder_;
   std::ofstream history_, events_, poses_;
   std::string history_buf_, poses_buf_;  ///< rows not yet written (write_out)
+  std::vector<double> row_values_;       ///< one history row (history_values)
   std::chrono::steady_clock::time_point last_flush_ = std::chrono::steady_clock::now();
   std::unique_ptr<io::PvdSeries> animation_;
   double next_animation_ = 0.0;
