@@ -73,6 +73,19 @@ TEST_F(SolarArrayRedundant, RigidAicAndRigidLmRunAndAgree) {
   EXPECT_LT(pair, 1e-9);
 }
 
+// A loop of rigid bodies that is not redundant is refused, naming the hinge and the remedy: HL2b's
+// axis tilted by 0.1 rad (about 5.7 deg) from HL2a's.
+TEST_F(SolarArrayRedundant, NonCoaxialRigidLoopIsRefused) {
+  std::string s = read_file(scene_);
+  replace_once(s, "child: panel1.2, axis: [0, 0, 1]", "child: panel1.2, axis: [0, 0.1003346721, 1]");
+  const auto tilted = dir_.write("tilted.yaml", s);
+  const RunResult r = run_seflex("run " + q(tilted) + " -o " + q(dir_ / "tilted") + " --t-end 0.1 --no-animation --fidelity rigid");
+  EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
+  EXPECT_NE(r.err.find("hinges[2]"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("it is not coaxial with hinge 'HL2a' between the same bodies (axes 0.1 rad apart"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--formulation rigid-lm"), std::string::npos) << r.err;
+}
+
 // The advisor's table on the demo: every variant runs, the rigid ones agree with each other, and the
 // redundant joints are named under the table.
 TEST_F(SolarArrayRedundant, AdviseComparesRigidWithFlexible) {
