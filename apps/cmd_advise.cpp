@@ -106,8 +106,12 @@ int run_advise(seflex::app::Args& args) {
                 row.within ? "yes" : "no", static_cast<int>(i) == r.recommended ? "  <- recommended" : "");
   }
   std::printf("(unknowns: dofs of the AIC variants; coordinates + Lagrange multipliers of FFRF-LM and rigid-LM)\n");
-  for (const auto& row : r.rows)
+  for (const auto& row : r.rows) {
     if (!row.ran && !row.reference) std::printf("  %s: %s\n", row.name.c_str(), row.failure.c_str());
+    if (!row.redundant.empty())
+      std::printf("  %s: redundant joints (their reactions are indeterminate): %s\n", row.name.c_str(),
+                  row.redundant.c_str());
+  }
   const scene::AdviseRow& best = r.rows.at(static_cast<std::size_t>(r.recommended));
   std::printf("\nrecommended: %s (%.3g s CPU, %.2fx the finest model's %.3g s; max hinge-angle error %.3g deg <= %s deg",
               best.name.c_str(), best.cpu_seconds, r.rows[0].cpu_seconds > 0 ? best.cpu_seconds / r.rows[0].cpu_seconds : 1.0,

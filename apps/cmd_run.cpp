@@ -131,6 +131,7 @@ int run_run(seflex::app::Args& args) {
               with_mesh ? "with mesh parts" : "dynamics only, mesh parts not read");
   if (!no_animation && d.output.animation_interval && meshless)
     std::printf("  note: a superelement without its mesh part (seflex reduce --no-mesh) is not drawn in the animation\n");
+  for (const std::string& line : scene.redundant_hinges) std::printf("  redundant: %s\n", line.c_str());
   std::fflush(stdout);
 
   scene::RunOutputOptions oo;
@@ -154,6 +155,9 @@ int run_run(seflex::app::Args& args) {
       std::printf("  %s: %d coordinates, %d multipliers; largest constraint drift %.2e m, %.2e rad (%.2e m/s)\n",
                   formulation_arg.c_str(), r.ffrf->coordinates, r.ffrf->constraints, r.ffrf->drift_position,
                   r.ffrf->drift_rotation, r.ffrf->drift_velocity);
+      if (!r.ffrf->redundant.empty())
+        std::printf("  %zu redundant constraint equations removed at t = 0 (their reactions are indeterminate, reported as zero): %s\n",
+                    r.ffrf->redundant.size(), mbd::describe_redundant(r.ffrf->redundant).c_str());
     }
   } catch (const seflex::Error& e) {
     // Everything computed so far is on disk; say where it stopped and why.

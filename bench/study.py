@@ -15,10 +15,12 @@ Cases and formulations:
     rigid-LM: the whole lag).
   solar array, sync and unsync (examples/solar_array, superelements reduced as scripts/demo.sh does):
     AIC full inertia and simplified mass on the 3D and beam-like reductions (local error 1e-4, 1e-5),
-    rigid; errors: max hinge-line angle difference up to the reference's last lock [deg], largest
+    rigid (beam-like; 3D with each line's second hinge a follower, docs/scenes.md); errors: max
+    hinge-line angle difference up to the reference's last lock [deg], largest
     lock-time difference [s], largest relative peak lock-torque difference.
   FFRF-LM (seflex run --formulation ffrf-lm; spin-up: local error 1e-4..1e-7; arrays: 3D 1e-4..1e-6 and
-    beam-like 1e-4) and rigid-LM (spin-up 1e-6; arrays, 1e-4 and 1e-5) are included when the binary offers them
+    beam-like 1e-4) and rigid-LM (spin-up 1e-6; arrays: beam-like 1e-4 and 1e-5, 3D 1e-5 with its redundant
+    equations removed, docs/ffrf.md) are included when the binary offers them
     (otherwise skipped, and said so). A run longer than --timeout (300 s) is stopped: status timeout.
 Reference: the finest AIC full-inertia run (3D, local error 1e-6); cross-checked against the finest
 FFRF-LM run when there is one (printed as a note: its errors, and FFRF-LM's next run against it). --quick: the spin-up beam only, 3 s, four runs (a CTest).
@@ -190,12 +192,16 @@ def main():
             st.run(case, "AIC simplified", "beam tol 1e-4", edit_scene(sc["beam"], tol=1e-4), od, ["--inertia", "simplified"])
             st.run(case, "rigid", "tol 1e-5", edit_scene(sc["beam"], tol=1e-5), od, ["--fidelity", "rigid"])
             st.run(case, "rigid", "tol 1e-4", edit_scene(sc["beam"], tol=1e-4), od, ["--fidelity", "rigid"])
+            # 3D: each hinge line two coaxial hinges on a rigid panel, the second one a follower (docs/scenes.md)
+            st.run(case, "rigid", "3D tol 1e-5", edit_scene(sc["3d"], tol=1e-5), od, ["--fidelity", "rigid"])
             if st.has_ffrf:
                 for tol in (1e-6, 1e-5, 1e-4):
                     st.run(case, "FFRF-LM", f"3D tol {tol:g}", edit_scene(sc["3d"], tol=tol), od, ["--formulation", "ffrf-lm"])
                 st.run(case, "FFRF-LM", "beam tol 1e-4", edit_scene(sc["beam"], tol=1e-4), od, ["--formulation", "ffrf-lm"])
                 for tol in (1e-5, 1e-4):
                     st.run(case, "rigid-LM", f"tol {tol:g}", edit_scene(sc["beam"], tol=tol), od, ["--formulation", "rigid-lm"])
+                # 3D: 10 redundant equations removed (docs/ffrf.md, "Redundant constraints")
+                st.run(case, "rigid-LM", "3D tol 1e-5", edit_scene(sc["3d"], tol=1e-5), od, ["--formulation", "rigid-lm"])
             if ref_r["status"] != "ok":
                 sys.exit(f"study: the {case} reference run failed: " + ref_r["message"])
             for r in st.rows:

@@ -45,6 +45,10 @@ void ModelBuilder::check_node(NodeIndex n, const std::string& who) const {
 void ModelBuilder::check_hinge(HingeIndex h, const std::string& who) const {
   if (!h.valid() || h.value >= static_cast<int>(model_.hinges.size()))
     throw InputError(who + ": refers to hinge index " + std::to_string(h.value) + ", which does not exist");
+  const Hinge& hg = model_.hinges[static_cast<std::size_t>(h.value)];
+  if (hg.follower())
+    throw InputError(who + ": acts on hinge '" + hg.name + "', which follows hinge '" + model_.hinges[static_cast<std::size_t>(hg.leader.value)].name +
+                     "' (a redundant hinge of a closed loop of rigid bodies); put the element on the leader");
 }
 
 NodeIndex ModelBuilder::add_node(const std::string& name, const Pose& X_WN) {
@@ -114,6 +118,28 @@ HingeIndex ModelBuilder::add_hinge(const std::string& name, NodeIndex parent, co
   const HingeIndex hi(static_cast<int>(model_.hinges.size()));
   model_.hinges.push_back(h);
   model_.hinges.back().child = push_attached(name + ".child", parent, Pose{R_WC0, XP.p}, hi, h.phi0, h.axis_P);
+  return hi;
+}
+
+HingeIndex ModelBuilder::add_follower_hinge(const std::string& name, HingeIndex leader, double sign, double phi0) {
+  const std::string who = "hinge '" + name + "'";
+  if (!leader.valid() || leader.value >= static_cast<int>(model_.hinges.size()))
+    throw InputError(who + ": the leader is not a hinge of this model");
+  const Hinge& L = model_.hinges[static_cast<std::size_t>(leader.value)];
+  if (L.follower()) throw InputError(who + ": the leader '" + L.name + "' is itself a follower");
+  if (sign != 1.0 && sign != -1.0) throw InputError(who + ": the sign must be +1 or -1");
+  if (!std::isfinite(phi0)) throw InputError(who + ": initial angle must be finite");
+  Hinge h;
+  h.name = name;
+  h.parent = L.parent;
+  h.axis_P = sign * L.axis_P;
+  h.leader = leader;
+  h.follow_sign = sign;
+  h.follow_offset = phi0 - sign * L.phi0;
+  h.phi0 = phi0;
+  h.phidot0 = sign * L.phidot0;
+  const HingeIndex hi(static_cast<int>(model_.hinges.size()));
+  model_.hinges.push_back(h);
   return hi;
 }
 

@@ -48,6 +48,14 @@ void set_rigid_velocity(const Model& model, State& s, const Eigen::Vector3d& v_W
   }
 }
 
+void follow_leaders(const Model& model, State& s) {
+  for (std::size_t h = 0; h < model.hinges.size(); ++h) {
+    const Hinge& hg = model.hinges[h];
+    if (hg.follower())
+      s.phi[static_cast<Eigen::Index>(h)] = hg.follow_sign * s.phi[static_cast<Eigen::Index>(hg.leader.value)] + hg.follow_offset;
+  }
+}
+
 void apply_increment(const Model& model, State& s, const Eigen::Ref<const Eigen::VectorXd>& dx) {
   SEFLEX_DEMAND(dx.size() == model.num_dofs, "increment size");
   for (std::size_t k = 0; k < model.nodes.size(); ++k) {
@@ -58,6 +66,7 @@ void apply_increment(const Model& model, State& s, const Eigen::Ref<const Eigen:
   }
   for (std::size_t h = 0; h < model.hinges.size(); ++h)
     if (model.hinges[h].dof >= 0) s.phi[static_cast<Eigen::Index>(h)] += dx[model.hinges[h].dof];
+  follow_leaders(model, s);
   for (const auto& b : model.flexible_bodies) {
     const int m = model.superelement(b.se).m;
     if (m > 0) s.eta.segment(b.eta_offset, m) += dx.segment(b.eta_dof, m);

@@ -299,6 +299,7 @@ AdviseReport advise(const SceneDescription& scene, const AdviseOptions& o) {
     try {
       const Scene s = build_scene(variants[v].scene);
       row.dofs = s.model.num_dofs;
+      for (const std::string& line : s.redundant_hinges) row.redundant += (row.redundant.empty() ? "" : " | ") + line;
       row.stiffening = stiffened(s) && variants[v].formulation == mbd::Formulation::Aic;
       rec = std::make_unique<AngleRecorder>(false, match_nodes(s.model, o.nodes, p0, variants[v].scene.file));
       if (o.stress_tolerance > 0.0) rec->track_stresses(s);
@@ -309,6 +310,7 @@ AdviseReport advise(const SceneDescription& scene, const AdviseOptions& o) {
         if (run.ffrf) {
           row.dofs = run.ffrf->coordinates;
           row.multipliers = run.ffrf->constraints;
+          row.redundant = mbd::describe_redundant(run.ffrf->redundant);
         }
         row.steps = st.steps;
         row.ran = true;

@@ -1,7 +1,9 @@
 // Scene -> mbd::Model: loads the superelement files, merges interface nodes (connections, ground),
 // and creates nodes, hinges and bodies in an order the node forest accepts (parents first).
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <map>
 #include <numeric>
@@ -47,6 +49,8 @@ struct Builder {
   std::map<int, int> child_of_hinge;                 // class root -> hinge
   std::map<int, SceneWhere> grounded;                // class root -> where
   std::vector<mbd::HingeIndex> hinge_ids;
+  std::vector<int> leader_of;                        // per scene hinge: the hinge it follows, or -1
+  std::map<int, int> rigid_of;                       // class root -> the rigid scene body with a node there
   std::map<std::pair<std::string, int>, mbd::SuperelementIndex> se_ids;  // shared AIC data
 
   SceneBuildOptions options;
@@ -210,11 +214,23 @@ struct Builder {
     const std::size_t nb = d.bodies.size();
     std::vector<bool> hinge_done(d.hinges.size(), false), body_done(nb, false);
     hinge_ids.assign(d.hinges.size(), mbd::HingeIndex());
+    leader_of.assign(d.hinges.size(), -1);
     scene.bodies.assign(nb, SceneBodyRef{});
     auto slots = [&](std::size_t b) {
       std::vector<int> v;
       for (int j = 0; j < se_of(static_cast<int>(b)).num_interfaces(); ++j) v.push_back(find(first[b] + j));
       return v;
+    };
+    for (std::size_t b = 0; b < nb; ++b)
+      if (d.bodies[b].fidelity == Fidelity::Rigid)
+        for (int c : slots(b)) rigid_of.emplace(c, static_cast<int>(b));
+    // A rigid body with a node placed and another one still to come from a hinge: placed first, so
+    // that the hinge finds its child placed and closes the loop (close_rigid_loop).
+    auto rigid_pending_with_anchor = [&](int c) {
+      const auto it = rigid_of.find(c);
+      if (it == rigid_of.end() || body_done[static_cast<std::size_t>(it->second)]) return false;
+      const std::vector<int> cls = slots(static_cast<std::size_t>(it->second));
+      return std::any_of(cls.begin(), cls.end(), [&](int x) { return has(x); });
     };
     for (;;) {
       bool progress = true;
@@ -225,8 +241,12 @@ struct Builder {
           if (hinge_done[h]) continue;
           const int c = find(slot(hg.child));
           if (!hg.parent.ground && !has(find(slot(hg.parent)))) continue;
-          if (has(c))
-            hg.where.fail("closes a kinematic loop: " + hg.child.str() + " is already placed by a rigid body; use flexible bodies in loops");
+          if (!has(c) && rigid_pending_with_anchor(c)) continue;
+          if (has(c)) {
+            close_rigid_loop(h);
+            hinge_done[h] = progress = true;
+            continue;
+          }
           at(hg.where, [&] {
             const mbd::NodeIndex parent = hg.parent.ground ? mb.add_ground("ground:" + hg.name, mbd::Pose{Eigen::Matrix3d::Identity(), pose(c).p})
                                                            : created[find(slot(hg.parent))];
@@ -296,6 +316,50 @@ struct Builder {
     return seeded;
   }
 
+  /// Hinge h's child is already placed by a rigid body: the hinge closes a loop. Redundant (and built
+  /// as a follower of `leader`) when another hinge joins the same two rigid bodies (or ground) about
+  /// the same line: its position and the rotations across its axis are then fixed by the leader, and
+  /// its angle is the leader's. Anything else needs constraint equations the absolute interface
+  /// coordinates do not have: refused, naming the hinge.
+  void close_rigid_loop(std::size_t h) {
+    const SceneHinge& hg = d.hinges[h];
+    const int c = find(slot(hg.child));
+    auto body_of_class = [&](int cls) { const auto it = rigid_of.find(cls); return it == rigid_of.end() ? -1 : it->second; };
+    auto parent_side = [&](const SceneHinge& x) { return x.parent.ground ? -2 : body_of_class(find(slot(x.parent))); };
+    const int child_body = body_of_class(c), parent_body = parent_side(hg);
+    const std::string refuse = "closes a kinematic loop of rigid bodies: " + hg.child.str() + " is already placed by rigid body '" +
+                               (child_body >= 0 ? d.bodies[static_cast<std::size_t>(child_body)].name : std::string("?")) + "'";
+    const std::string remedy = " (the absolute interface coordinates have no constraint equations; make one body of the loop "
+                               "flexible, or run the rigid bodies with multipliers: --formulation rigid-lm)";
+    if (child_body < 0 || parent_body == -1) hg.where.fail(refuse + remedy);
+    const Eigen::Vector3d a = hg.axis_W.normalized(), p = pose(c).p;
+    for (std::size_t m = 0; m < d.hinges.size(); ++m) {
+      const SceneHinge& lm = d.hinges[m];
+      if (m == h || leader_of[m] >= 0 || !hinge_ids[m].valid()) continue;
+      if (body_of_class(find(slot(lm.child))) != child_body || parent_side(lm) != parent_body) continue;
+      const Eigen::Vector3d al = lm.axis_W.normalized(), pl = pose(find(slot(lm.child))).p;
+      const double misalign = a.cross(al).norm(), off_axis = (p - pl - (p - pl).dot(al) * al).norm();
+      char geo[160];
+      std::snprintf(geo, sizeof geo, "axes %.3g rad apart, %.3g m off its axis", std::asin(std::min(1.0, misalign)), off_axis);
+      if (misalign > 1e-6 || off_axis > 1e-6)
+        hg.where.fail(refuse + "; it is not coaxial with hinge '" + lm.name + "' between the same bodies (" + geo +
+                      "), so the loop is not redundant" + remedy);
+      const double sign = a.dot(al) > 0.0 ? 1.0 : -1.0;
+      if (sign < 0.0 || std::abs(hg.phi0 - lm.phi0) > 1e-12)
+        hg.where.fail(refuse + "; it is coaxial with hinge '" + lm.name +
+                      "' but turns the other way or starts at another angle, so its force elements cannot be moved to it" + remedy);
+      for (const SceneDrive& dr : d.drives)
+        if (dr.hinge == hg.name) hg.where.fail(refuse + "; it is driven, and its angle is hinge '" + lm.name + "''s" + remedy);
+      hinge_ids[h] = at(hg.where, [&] { return mb.add_follower_hinge(hg.name, hinge_ids[m], sign, hg.phi0); });
+      leader_of[h] = static_cast<int>(m);
+      scene.redundant_hinges.push_back("hinge '" + hg.name + "' follows hinge '" + lm.name + "' (coaxial between rigid bodies: " + geo +
+                                       "; its 3 translations and 2 rotations across the axis are redundant, its force elements act on '" +
+                                       lm.name + "')");
+      return;
+    }
+    hg.where.fail(refuse + "; no other hinge joins the same two bodies about the same line" + remedy);
+  }
+
   mbd::SuperelementIndex se_index(std::size_t b) {
     const auto key = std::make_pair(d.bodies[b].superelement.string(), se_of(static_cast<int>(b)).num_modes);
     auto it = se_ids.find(key);
@@ -307,9 +371,12 @@ struct Builder {
     const SceneBody& body = d.bodies[b];
     for (std::size_t j = 0; j < cls.size(); ++j) {
       if (static_cast<int>(j) == anchor) continue;
-      if (has(cls[j]) || child_of_hinge.count(cls[j]))
+      if (has(cls[j]))
         body.where.fail("rigid body '" + body.name + "' is attached at both " + slot_name(cls[static_cast<std::size_t>(anchor)]) +
-                        " and " + slot_name(cls[j]) + ": a closed kinematic loop of rigid bodies is not supported (make one body flexible)");
+                        " and " + slot_name(cls[j]) +
+                        ": a closed kinematic loop of rigid bodies, which the absolute interface coordinates cannot close "
+                        "(they have no constraint equations; make one body of the loop flexible, or run the rigid bodies with "
+                        "multipliers: --formulation rigid-lm, which removes the loop's redundant equations)");
     }
     const mbd::SuperelementIndex sei = se_index(b);
     const mbd::RigidBodyIndex rb = at(body.where, [&] {
@@ -342,7 +409,7 @@ struct Builder {
 
   mbd::HingeIndex hinge_id(const std::string& name) const {
     for (std::size_t h = 0; h < d.hinges.size(); ++h)
-      if (d.hinges[h].name == name) return hinge_ids[h];
+      if (d.hinges[h].name == name) return leader_of[h] >= 0 ? hinge_ids[static_cast<std::size_t>(leader_of[h])] : hinge_ids[h];
     SEFLEX_DEMAND(false, "hinge references are checked when reading");
     return {};
   }

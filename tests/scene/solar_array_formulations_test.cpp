@@ -24,12 +24,6 @@
 namespace seflex::test {
 namespace {
 
-void replace_once(std::string& s, const std::string& from, const std::string& to) {
-  const auto at = s.find(from);
-  ASSERT_NE(at, std::string::npos) << "the demo scene no longer contains '" << from << "'";
-  s.replace(at, from.size(), to);
-}
-
 /// Remove the line that starts with `start` (whatever follows on it).
 void erase_line(std::string& s, const std::string& start) {
   const auto at = s.find(start);

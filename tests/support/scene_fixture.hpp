@@ -2,6 +2,8 @@
 // Shared by the scene tests: a beam superelement file written in a temporary folder (the test-only
 // Craig-Bampton builder of tests/mbd, saved with io's writer), a scene file beside it, and a
 // reader of the CSV files `seflex run` writes.
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <cstdlib>
 #include <map>
@@ -71,5 +73,12 @@ inline Csv read_csv(const std::filesystem::path& p) {
 }
 
 inline std::string q(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+
+/// Replace the first `from` in s (a demo scene edited for a test); fails the test when it is missing.
+inline void replace_once(std::string& s, const std::string& from, const std::string& to) {
+  const auto at = s.find(from);
+  ASSERT_NE(at, std::string::npos) << "the demo scene no longer contains '" << from << "'";
+  s.replace(at, from.size(), to);
+}
 
 }  // namespace seflex::test

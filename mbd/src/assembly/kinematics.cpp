@@ -17,6 +17,7 @@ void update_kinematics(const Model& model, const State& s, Data& data, bool dyna
   for (std::size_t h = 0; h < model.hinges.size(); ++h) {
     const Hinge& hg = model.hinges[h];
     HingeKinematics& hk = data.hinges[h];
+    if (hg.follower()) continue;  // below, from its leader
     if (hg.drive) {
       const DriveValue d = hg.drive(s.t);
       hk.phi = d.phi;
@@ -27,6 +28,15 @@ void update_kinematics(const Model& model, const State& s, Data& data, bool dyna
       hk.phidot = dynamics ? s.v[hg.dof] : 0.0;
       hk.phiddot = dynamics ? s.vdot[hg.dof] : 0.0;
     }
+  }
+  for (std::size_t h = 0; h < model.hinges.size(); ++h) {
+    const Hinge& hg = model.hinges[h];
+    if (!hg.follower()) continue;
+    const HingeKinematics& L = data.hinges[static_cast<std::size_t>(hg.leader.value)];
+    HingeKinematics& hk = data.hinges[h];
+    hk.phi = hg.follow_sign * L.phi + hg.follow_offset;
+    hk.phidot = hg.follow_sign * L.phidot;
+    hk.phiddot = hg.follow_sign * L.phiddot;
   }
   for (std::size_t k = 0; k < model.nodes.size(); ++k) {
     const Node& n = model.nodes[k];
@@ -101,6 +111,9 @@ void update_kinematics(const Model& model, const State& s, Data& data, bool dyna
       }
     }
   }
+  for (std::size_t h = 0; h < model.hinges.size(); ++h)  // a follower's axis: its leader's, signed
+    if (model.hinges[h].follower())
+      data.hinges[h].axis_W = model.hinges[h].follow_sign * data.hinges[static_cast<std::size_t>(model.hinges[h].leader.value)].axis_W;
 }
 
 void store_derived(const Model& model, const Data& data, State& s) {
@@ -109,7 +122,7 @@ void store_derived(const Model& model, const Data& data, State& s) {
     s.R_WN[k] = data.nodes[k].R;
   }
   for (std::size_t h = 0; h < model.hinges.size(); ++h)
-    if (model.hinges[h].drive) s.phi[static_cast<Eigen::Index>(h)] = data.hinges[h].phi;
+    if (model.hinges[h].drive || model.hinges[h].follower()) s.phi[static_cast<Eigen::Index>(h)] = data.hinges[h].phi;
   for (std::size_t b = 0; b < model.flexible_bodies.size(); ++b) s.frames[b] = data.flex[b].kin.frame;
 }
 

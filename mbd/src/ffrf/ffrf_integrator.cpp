@@ -13,6 +13,7 @@
 #include "solvers/diagnosis.hpp"
 #include "ffrf/ffrf_detail.hpp"
 #include "ffrf/ffrf_iteration_matrix.hpp"
+#include "ffrf/ffrf_redundancy.hpp"
 #include "seflex/common/error.hpp"
 #include "seflex/common/so3.hpp"
 #include "seflex/mbd/assembly/assembly.hpp"
@@ -61,8 +62,11 @@ void configure(const FfrfSystem& sys, const FfrfState& s0, const AlphaCoefficien
 }
 
 /// Right-multiply the rotation columns of the triplets by J_l(h Dq) of their body (Lie tangent).
-void add_tangent(const FfrfSystem& sys, const VectorXd& hDq, const Triplets& in, double factor, int row_offset, Triplets& out) {
+/// skip_removed: the triplets are constraint rows, those of removed equations left out.
+void add_tangent(const FfrfSystem& sys, const VectorXd& hDq, const Triplets& in, double factor, int row_offset, Triplets& out,
+                 const FfrfSystem* skip_removed = nullptr) {
   for (const auto& t : in) {
+    if (skip_removed && skip_removed->is_removed(t.row())) continue;
     const int j = t.col();
     if (sys.kind[static_cast<std::size_t>(j)] != 'r') {
       out.emplace_back(t.row() + row_offset, j, factor * t.value());
@@ -91,6 +95,8 @@ void step_system(const FfrfSystem& sys, const FfrfState& s0, double h, const Alp
   R.resize(nq + nm);
   R.head(nq) = sc * ev.r;
   R.tail(nm) = ev.g;
+  // A removed (redundant) equation: its multiplier is held at zero, the row reads mu_i = 0.
+  for (const RedundantEquation& e : sys.redundant) R[nq + e.equation] = x[nq + e.equation];
   if (!matrices) return;
   const double bp = (1.0 - c.am) / ((1.0 - c.af) * c.beta * h * h), gp = c.gamma / (c.beta * h);
   const VectorXd& hDq = w.hDq = x.head(nq);
@@ -98,12 +104,14 @@ void step_system(const FfrfSystem& sys, const FfrfState& s0, double h, const Alp
   T.clear();
   // Capacity for the largest lists (a rotation column of K and G becomes three): constant once the
   // lists' capacities are (detail::ffrf_assemble), so T never grows after the first step.
-  T.reserve(3 * ev.K.capacity() + ev.C.capacity() + ev.M.capacity() + 4 * ev.G.capacity());
+  T.reserve(3 * ev.K.capacity() + ev.C.capacity() + ev.M.capacity() + 4 * ev.G.capacity() + sys.redundant.size());
   add_tangent(sys, hDq, ev.K, sc, 0, T);
   for (const auto& t : ev.C) T.emplace_back(t.row(), t.col(), sc * gp * t.value());
   for (const auto& t : ev.M) T.emplace_back(t.row(), t.col(), sc * bp * t.value());
-  add_tangent(sys, hDq, ev.G, 1.0, nq, T);
-  for (const auto& t : ev.G) T.emplace_back(t.col(), nq + t.row(), t.value());
+  add_tangent(sys, hDq, ev.G, 1.0, nq, T, &sys);
+  for (const auto& t : ev.G)
+    if (!sys.is_removed(t.row())) T.emplace_back(t.col(), nq + t.row(), t.value());
+  for (const RedundantEquation& e : sys.redundant) T.emplace_back(nq + e.equation, nq + e.equation, 1.0);
 }
 
 SparseMatrix<double> to_sparse(const Triplets& T, int rows, int cols) {
@@ -113,17 +121,20 @@ SparseMatrix<double> to_sparse(const Triplets& T, int rows, int cols) {
 }
 
 /// Solve [W G^T; G 0] [x; y] = [a; b]; throws ConvergenceError if singular.
-VectorXd saddle_solve(const SparseMatrix<double>& W, const SparseMatrix<double>& G, const VectorXd& a, const VectorXd& b,
-                      const std::string& what) {
+/// Removed (redundant) equations: their rows read y_i = 0 (FfrfSystem::removed).
+VectorXd saddle_solve(const FfrfSystem& sys, const SparseMatrix<double>& W, const SparseMatrix<double>& G, const VectorXd& a,
+                      const VectorXd& b, const std::string& what) {
   const auto n = W.rows(), m = G.rows();
   Triplets T;
   for (int k = 0; k < W.outerSize(); ++k)
     for (SparseMatrix<double>::InnerIterator it(W, k); it; ++it) T.emplace_back(static_cast<int>(it.row()), static_cast<int>(it.col()), it.value());
   for (int k = 0; k < G.outerSize(); ++k)
     for (SparseMatrix<double>::InnerIterator it(G, k); it; ++it) {
+      if (sys.is_removed(it.row())) continue;
       T.emplace_back(static_cast<int>(n + it.row()), static_cast<int>(it.col()), it.value());
       T.emplace_back(static_cast<int>(it.col()), static_cast<int>(n + it.row()), it.value());
     }
+  for (const RedundantEquation& e : sys.redundant) T.emplace_back(static_cast<int>(n + e.equation), static_cast<int>(n + e.equation), 1.0);
   const SparseMatrix<double> A = to_sparse(T, static_cast<int>(n + m), static_cast<int>(n + m));
   Eigen::SparseLU<SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
   lu.compute(A);
@@ -132,6 +143,7 @@ VectorXd saddle_solve(const SparseMatrix<double>& W, const SparseMatrix<double>&
                            " system is singular (redundant joints, or a coordinate without mass)");
   VectorXd rhs(n + m);
   rhs << a, b;
+  for (const RedundantEquation& e : sys.redundant) rhs[n + e.equation] = 0.0;
   return lu.solve(rhs);
 }
 
@@ -237,7 +249,7 @@ FfrfState ffrf_initial_state(const FfrfSystem& sys) {
     const double wh = 1e3 * std::max(1e-12, M.diagonal().cwiseAbs().maxCoeff());
     for (int i = 0; i < nq; ++i)
       if (sys.kind[static_cast<std::size_t>(i)] == 'h') W.coeffRef(i, i) += wh;
-    s.v += saddle_solve(W, G, VectorXd::Zero(nq), -gdot, "initial velocity").head(nq);
+    s.v += saddle_solve(sys, W, G, VectorXd::Zero(nq), -gdot, "initial velocity").head(nq);
   }
   // Accelerations and multipliers: M vdot + G^T lambda = -f, G vdot = -(d/dt G) v.
   ffrf_assemble(sys, s, false, ev);
@@ -249,7 +261,7 @@ FfrfState ffrf_initial_state(const FfrfSystem& sys) {
     ffrf_constraints(sys, advanced(sys, s, -eps), gm, gdm);
     conv = (gdp - gdm) / (2.0 * eps);
   }
-  const VectorXd sol = saddle_solve(M, G, -ev.r, -conv, "initial acceleration");
+  const VectorXd sol = saddle_solve(sys, M, G, -ev.r, -conv, "initial acceleration");
   s.vdot = sol.head(nq);
   s.a = s.vdot;
   s.lambda = sol.tail(nm);
@@ -319,6 +331,7 @@ class FfrfStepper final : public detail::Stepper {
   detail::ConstraintEval ce_;
   detail::SampleScratch sample_;
   detail::FfrfIterationMatrix iteration_;
+  detail::RankScratch rank_;
 };
 
 detail::StepResult FfrfStepper::attempt(double h) {
@@ -347,15 +360,13 @@ detail::StepResult FfrfStepper::attempt(double h) {
       return out;
     }
     double gw = 0.0;
-    for (Eigen::Index c = 0; c < nm / 6; ++c)
-      gw = std::max({gw, ev_.g.segment<3>(6 * c).cwiseAbs().maxCoeff() / L, ev_.g.segment<3>(6 * c + 3).cwiseAbs().maxCoeff()});
+    for (Eigen::Index i = 0; i < nm; ++i)
+      if (!sys_.is_removed(i)) gw = std::max(gw, std::abs(ev_.g[i]) / (i % 6 < 3 ? L : 1.0));
     const double tol = st_.newton_residual_tol * out.scale + 1e-14 * out.scale;
-    if (out.residual <= tol && inc <= st_.newton_increment_tol && gw <= st_.newton_increment_tol) {
-      out.converged = true;
-      return out;
-    }
-    if (inc <= 1e-15 && out.residual <= 1e4 * tol) {  // round-off floor (see the AIC integrator)
-      out.converged = true;
+    if ((out.residual <= tol && inc <= st_.newton_increment_tol && gw <= st_.newton_increment_tol) ||
+        (inc <= 1e-15 && out.residual <= 1e4 * tol)) {  // the latter: round-off floor (see the AIC integrator)
+      out.why = detail::rank_change(sys_, trial_, rank_);
+      out.converged = out.why.empty();
       return out;
     }
     if (it == st_.newton_max_iterations) break;
@@ -426,7 +437,8 @@ FfrfStats simulate_ffrf(const Model& model, const IntegratorSettings& st, const 
   FfrfState state = ffrf_initial_state(sys);
   FfrfStats stats;
   stats.coordinates = sys.num_coords;
-  stats.constraints = sys.num_multipliers();
+  stats.constraints = sys.num_multipliers() - static_cast<int>(sys.redundant.size());
+  stats.redundant = sys.redundant;
   FfrfStepper stepper(sys, state, st, stats);
   stats.run = detail::drive_steps(model, st, stepper, observer);
   return stats;

@@ -206,7 +206,14 @@ void hinge_values(const FfrfSystem& sys, const FfrfState& s, Eigen::VectorXd& ph
   phidot.resize(phi.size());
   for (std::size_t h = 0; h < model.hinges.size(); ++h) {
     const int c = sys.hinge_coord[h];
-    phidot[static_cast<Eigen::Index>(h)] = c >= 0 ? s.v[c] : model.hinges[h].drive(s.t).phidot;
+    if (!model.hinges[h].follower()) phidot[static_cast<Eigen::Index>(h)] = c >= 0 ? s.v[c] : model.hinges[h].drive(s.t).phidot;
+  }
+  for (std::size_t h = 0; h < model.hinges.size(); ++h) {  // a follower: from its leader (ModelBuilder::add_follower_hinge)
+    const Hinge& hg = model.hinges[h];
+    if (!hg.follower()) continue;
+    const auto i = static_cast<Eigen::Index>(h), l = static_cast<Eigen::Index>(hg.leader.value);
+    phi[i] = hg.follow_sign * phi[l] + hg.follow_offset;
+    phidot[i] = hg.follow_sign * phidot[l];
   }
 }
 

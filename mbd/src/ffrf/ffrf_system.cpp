@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "ffrf/ffrf_detail.hpp"
+#include "ffrf/ffrf_redundancy.hpp"
 #include "seflex/common/error.hpp"
 
 namespace seflex::mbd {
@@ -148,7 +149,7 @@ FfrfSystem make_ffrf_system(const Model& model, const FfrfOptions& options) {
     for (int m = 0; m < b.k; ++m) push('e', std::max(b.amplitude[m], 1e-12) / L, owner);
   }
   for (std::size_t h = 0; h < model.hinges.size(); ++h)
-    sys.hinge_coord.push_back(model.hinges[h].drive ? -1 : push('h', 1.0, static_cast<int>(h)));
+    sys.hinge_coord.push_back(model.hinges[h].drive || model.hinges[h].follower() ? -1 : push('h', 1.0, static_cast<int>(h)));
   // Node sources and constraints.
   using Kind = FfrfNodeSource::Kind;
   sys.node_source.assign(model.nodes.size(), FfrfNodeSource{});
@@ -181,6 +182,7 @@ FfrfSystem make_ffrf_system(const Model& model, const FfrfOptions& options) {
                             !sys.bodies[static_cast<std::size_t>(src.body)].flexible;
     if (!same_rigid) sys.constraints.push_back(FfrfConstraint{src.body, src.interface, NodeIndex(static_cast<int>(k)), true});
   }
+  detail::find_redundant(sys);
   return sys;
 }
 

@@ -32,6 +32,7 @@ void configure(const Model& model, const State& s0, const Coefficients& c, doubl
   }
   for (std::size_t i = 0; i < model.hinges.size(); ++i)
     if (model.hinges[i].dof >= 0) s1.phi[static_cast<Eigen::Index>(i)] = s0.phi[static_cast<Eigen::Index>(i)] + hDq[model.hinges[i].dof];
+  follow_leaders(model, s1);
   for (const auto& b : model.flexible_bodies) {
     const int m = model.superelement(b.se).m;
     if (m > 0) s1.eta.segment(b.eta_offset, m) = s0.eta.segment(b.eta_offset, m) + hDq.segment(b.eta_dof, m);

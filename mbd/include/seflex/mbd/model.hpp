@@ -59,7 +59,13 @@ struct Hinge {
   Eigen::Vector3d axis_P = Eigen::Vector3d::UnitZ();  ///< unit axis in the parent node's axes
   double phi0 = 0.0, phidot0 = 0.0;                   ///< initial angle and rate
   Drive drive;                                        ///< empty: phi is a dof
-  int dof = -1;                                       ///< -1 when driven
+  int dof = -1;                                       ///< -1 when driven or a follower
+  /// A follower (ModelBuilder::add_follower_hinge): a hinge made redundant by a closed loop of rigid
+  /// bodies (coaxial with `leader` between the same two bodies), no dof and no child node of its own;
+  /// phi = follow_sign phi_leader + follow_offset (for the output); force elements act on the leader.
+  HingeIndex leader;
+  double follow_sign = 1.0, follow_offset = 0.0;
+  bool follower() const { return leader.valid(); }
 };
 
 struct HingeOptions {
@@ -158,6 +164,10 @@ class ModelBuilder {
                        const HingeOptions& options = {});
   HingeIndex add_hinge(const std::string& name, NodeIndex parent, const Eigen::Vector3d& axis_W,
                        const Eigen::Matrix3d& R_WC0, const HingeOptions& options);
+  /// A hinge that the model's kinematics already fixes (docs/scenes.md, "Closed loops of rigid bodies"):
+  /// phi = sign phi_leader + (phi0 - sign phi0_leader), sign = +1 or -1 (axes the same or opposite).
+  /// No force element may act on it (put them on the leader: build() refuses them).
+  HingeIndex add_follower_hinge(const std::string& name, HingeIndex leader, double sign, double phi0 = 0.0);
   NodeIndex hinge_child(HingeIndex h) const { return model_.hinges.at(static_cast<std::size_t>(h.value)).child; }
   void set_initial_velocity(NodeIndex free_node, const Eigen::Vector3d& v_W, const Eigen::Vector3d& w_W);
 

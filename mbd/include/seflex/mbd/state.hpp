@@ -40,6 +40,8 @@ State initial_state(const Model& model);
 /// velocity v_W of the world origin and angular velocity w_W (hinge rates are left unchanged).
 void set_rigid_velocity(const Model& model, State& s, const Eigen::Vector3d& v_W, const Eigen::Vector3d& w_W);
 
+/// The angles of follower hinges (Hinge::leader) from their leaders' in s.
+void follow_leaders(const Model& model, State& s);
 /// x <- x (+) dx: Free nodes p += dr, R <- exp(dpi) R (spatial); hinge angles and modes add.
 void apply_increment(const Model& model, State& s, const Eigen::Ref<const Eigen::VectorXd>& dx);
 

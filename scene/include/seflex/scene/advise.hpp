@@ -47,6 +47,8 @@ struct AdviseRow {
   int multipliers = 0;            ///< Lagrange multipliers (FFRF-LM, rigid-LM)
   bool ran = false;              ///< built and integrated to the horizon
   std::string failure;           ///< why not (build or convergence error)
+  std::string redundant;         ///< the redundant joints: FFRF-LM, rigid-LM the equations removed (mbd::describe_redundant),
+                                 ///< AIC the follower hinges of closed loops of rigid bodies (Scene::redundant_hinges)
   double cpu_seconds = 0.0;      ///< process CPU time of the integration (not the file loading)
   long steps = 0;
   double max_error = 0.0;        ///< max over hinges and grid times of |phi - phi_ref| [rad]; inf if !ran

@@ -136,6 +136,10 @@ struct Scene {
   std::vector<std::shared_ptr<const se::StressModes>> stress;
   std::vector<SceneBodyRef> bodies;             ///< per scene body
   mbd::Model model;
+  /// Hinges that close a loop of rigid bodies coaxially with another hinge between the same two
+  /// bodies (docs/scenes.md, "Closed loops of rigid bodies"): built as followers of that hinge, their
+  /// force elements moved to it. One line each, e.g. "hinge 'HL2b' follows hinge 'HL2a' (...)".
+  std::vector<std::string> redundant_hinges;
 };
 
 /// Parse and check a scene file (structure, key names, values, references between items).

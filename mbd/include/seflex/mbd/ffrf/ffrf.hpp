@@ -50,27 +50,51 @@ struct FfrfOptions {
   /// by central differences over each element's coordinates (2 evaluations of the perturbed side's pose
   /// per coordinate) instead of analytically: the previous path, kept as the reference of the tests.
   bool fd_joint_jacobians = false;
+  /// Remove the constraint equations that depend on the others at the initial configuration (two
+  /// coaxial hinges on one rigid body: docs/ffrf.md, "Redundant constraints"), found by Gram-Schmidt
+  /// with re-orthogonalisation over the rows of the scaled constraint Jacobian, in the order of the
+  /// joints (the later of two dependent equations goes). Off: every equation is kept (a redundant
+  /// model then has a singular iteration matrix).
+  bool remove_redundant = true;
+  /// A row is dependent when its component orthogonal to the rows kept before it is at most this
+  /// fraction of the largest row norm (position rows divided by the model's length scale, columns
+  /// equilibrated to a largest entry of 1).
+  double redundancy_tolerance = 1e-6;
+};
+
+/// One constraint equation removed as dependent on the others (docs/ffrf.md, "Redundant constraints").
+struct RedundantEquation {
+  int equation = -1;       ///< row 6 c + k of the constraint equations (c: FfrfSystem::constraints)
+  std::string joint;       ///< "hinge 'HL2b'", or the body interface and node it joins
+  std::string direction;   ///< e.g. "translation along x", "rotation about (0, 0, 1)" (world, at t = 0)
 };
 
 /// What an FFRF run reports beyond RunStats.
 struct FfrfStats {
   RunStats run;
   int coordinates = 0;            ///< generalised coordinates (frames, modes, hinge angles)
-  int constraints = 0;            ///< constraint equations (multipliers)
+  int constraints = 0;            ///< constraint equations (multipliers), those removed as redundant not counted
   double drift_position = 0.0;    ///< max |g_position| over the accepted states [m]
   double drift_rotation = 0.0;    ///< max |g_rotation| [rad]
   double drift_velocity = 0.0;    ///< max |dg_position/dt| [m/s] (index 3: velocities are not enforced)
   double drift_angular = 0.0;     ///< max |dg_rotation/dt| [rad/s]
   double condition_min = 0.0;     ///< over the iteration matrices (condition_estimate only)
   double condition_max = 0.0;
+  std::vector<RedundantEquation> redundant;  ///< equations removed at t = 0 (their reactions are indeterminate: zero)
 };
+
+/// The removed equations joint by joint, e.g. "hinge 'HL2b': translation along x, y, z; rotation about
+/// (1, 0, 0), (0, 1, 0)" (joints separated by " | "); empty when none.
+std::string describe_redundant(const std::vector<RedundantEquation>& removed);
 
 /// Integrate `model` from t = 0 to settings.t_end with FFRF-LM (or rigid-LM). Samples go to
 /// `observer` as with `simulate` (flexible bodies report xi = V z in the superelement's order).
 /// Throws InputError when the model cannot be expressed (a Free node that no body carries; a
 /// flexible body whose superelement has neither inertia invariants nor FE recovery/mass data, or no
 /// FE data with Inertia::Nodal; unless options.rigid), and
-/// ConvergenceError (after delivering the last accepted state) when Newton fails at h_min.
+/// ConvergenceError (after delivering the last accepted state) when Newton fails at h_min, or when
+/// the rank of the constraint equations changes during the run (equations removed as redundant at
+/// t = 0 become independent, or kept ones dependent): the message names the joints.
 FfrfStats simulate_ffrf(const Model& model, const IntegratorSettings& settings, const FfrfOptions& options = {},
                         Observer* observer = nullptr);
 
@@ -127,10 +151,16 @@ struct FfrfSystem {
   std::vector<char> kind;                   ///< per coordinate: 't', 'r', 'e' (mode), 'h' (hinge)
   std::vector<int> owner;                   ///< per coordinate: its body ('t', 'r', 'e') or hinge ('h')
   Eigen::VectorXd weight;                   ///< per coordinate: 1 / natural scale
+  /// Per equation (6 per constraint): 1 when removed as redundant. A removed equation keeps its row
+  /// and multiplier, held at zero (the row of the iteration matrix is the identity on it).
+  std::vector<char> removed;
+  std::vector<RedundantEquation> redundant; ///< the removed equations, named
   int num_multipliers() const { return 6 * static_cast<int>(constraints.size()); }
+  bool is_removed(Eigen::Index equation) const { return !removed.empty() && removed[static_cast<std::size_t>(equation)] != 0; }
 };
 
-/// Build the FFRF system of a model (InputError as for simulate_ffrf).
+/// Build the FFRF system of a model (InputError as for simulate_ffrf), its redundant constraint
+/// equations at the initial configuration removed (FfrfOptions::remove_redundant).
 FfrfSystem make_ffrf_system(const Model& model, const FfrfOptions& options);
 
 struct FfrfState {
