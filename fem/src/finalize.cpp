@@ -55,6 +55,7 @@ class Finalizer {
     index_elements();
     resolve_coordinates(m_);
     check_elements();
+    offset_definition_without_offsets();
     check_constraints_and_loads();
     check_solution_control();
     m_.finalized = true;
@@ -227,6 +228,27 @@ class Finalizer {
     if (mat2_plies > 0) note("PCOMP ply of MAT2 (rigid in transverse shear: a MAT2 gives no transverse shear moduli)",
                              first_mat2_ply, mat2_plies);
     poisson_ratio_above_half();
+  }
+
+  /// MDLPRM OFFDEF (MSC: how element offsets behave) with no offset anywhere in the deck (CBAR/CBEAM
+  /// WA/WB, shell ZOFFS, CBUSH OCID/S1-S3, CONM2 X1-X3): there is nothing it could change, so the note
+  /// is replaced by a warning (pyNastran's rigid_rbe2.bdf, cbush_test.bdf: OFFDEF LROFF, no offsets).
+  /// With offsets it stays listed (as a model parameter seflex does not use).
+  void offset_definition_without_offsets() {
+    const std::string name = "MDLPRM OFFDEF (model parameter not used)";
+    const auto it = std::find_if(m_.unsupported.begin(), m_.unsupported.end(), [&](const UnsupportedCard& u) { return u.name == name; });
+    if (it == m_.unsupported.end()) return;
+    for (const auto& b : m_.bars)
+      if (!b.wa.isZero(0.0) || !b.wb.isZero(0.0)) return;
+    for (const auto& e : m_.shells)
+      if (e.zoffs != 0.0) return;
+    for (const auto& e : m_.bushes)
+      if (e.ocid >= 0) return;
+    for (const auto& e : m_.conm2)
+      if (e.cid < 0 || !e.x.isZero(0.0)) return;
+    warn_once(at(it->first) + ": MDLPRM OFFDEF: no element of the deck has an offset (CBAR/CBEAM WA/WB, shell ZOFFS, "
+                              "CBUSH OCID, CONM2 X): nothing for it to define; not used");
+    m_.unsupported.erase(it);
   }
 
   /// MAT1 NU above 0.5 (the QRG's range is -1 < NU <= 0.5; decks with E, G and NU = E/2G - 1 of an
@@ -565,6 +587,7 @@ class Finalizer {
     for (const auto& e : m_.omit) need_dof(e.grid, e.c, true, e.ref, "OMIT/OMIT1", e.grid, "");
     for (const auto& e : m_.bset) need_dof(e.grid, e.c, true, e.ref, "BSET/BSET1", e.grid, "");
     for (const auto& e : m_.suport) need_dof(e.grid, e.c, true, e.ref, "SUPORT", e.grid, "");
+    for (const auto& e : m_.suport1) need_dof(e.dofs.grid, e.dofs.c, true, e.dofs.ref, "SUPORT1", e.sid, "");
   }
 
   /// SPCADD / MPCADD / LOAD: a unique id, not also a set id of the cards it combines. (Whether the

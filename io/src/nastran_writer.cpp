@@ -498,6 +498,14 @@ void write_solution_cards(const fem::Model& m, CardWriter& w) {
       e.nd ? w.i(*e.nd) : w.blank();
       w.next_line().t(e.norm);
       if (e.norm == "POINT") w.i(e.norm_grid).i(e.norm_component);
+    } else if (e.is_eigb) {
+      w.start("EIGB").i(e.sid).t(e.method);
+      opt_r(e.f1);
+      opt_r(e.f2);
+      w.blank();
+      e.nd ? w.i(*e.nd) : w.blank();
+      w.next_line().t(e.norm);
+      if (e.norm == "POINT") w.i(e.norm_grid).i(e.norm_component);
     } else {
       w.start("EIGRL").i(e.sid);
       opt_r(e.f1);

@@ -111,6 +111,8 @@ void parse_aset1(const Card&, ReaderState&);
 void parse_bset(const Card&, ReaderState&);
 void parse_bset1(const Card&, ReaderState&);
 void parse_suport(const Card&, ReaderState&);
+void parse_suport1(const Card&, ReaderState&);
+void parse_eigb(const Card&, ReaderState&);
 void parse_force(const Card&, ReaderState&);
 void parse_moment(const Card&, ReaderState&);
 void parse_force12(const Card&, ReaderState&);  ///< FORCE1, FORCE2, MOMENT1, MOMENT2
