@@ -43,6 +43,7 @@ int run_advise(seflex::app::Args& args) {
   while (const auto a = args.value("alternative")) alternatives.push_back(*a);
   while (const auto n = args.value("node")) nodes.push_back(*n);
   const auto tol_position = args.value("tol-position");
+  const auto tol_stress = args.value("tol-stress");
   const auto modes = args.value("modes");
   const auto csv = args.value("csv");
   const std::string scene_path = args.positional("SCENE");
@@ -59,12 +60,14 @@ int run_advise(seflex::app::Args& args) {
     if (n.empty()) throw UsageError("option --node expects a node name (body.grid, e.g. beam.11), got ''");
   o.nodes = nodes;
   if (tol_position) o.position_tolerance = seflex::app::positive_number("tol-position", *tol_position, "a length > 0 (metres)");
+  if (tol_stress) o.stress_tolerance = seflex::app::positive_number("tol-stress", *tol_stress, "a percentage > 0") / 100.0;
   const scene::SceneDescription d = scene::read_scene(scene_path);
   for (const auto& a : alternatives) o.alternatives.push_back(scene::read_scene(a));
 
   std::printf("seflex advise %s --tol %s", scene_path.c_str(), tol->c_str());
   for (const auto& n : nodes) std::printf(" --node %s", n.c_str());
   if (tol_position) std::printf(" --tol-position %s", tol_position->c_str());
+  if (tol_stress) std::printf(" --tol-stress %s", tol_stress->c_str());
   for (const auto& a : alternatives) std::printf(" --alternative %s", a.c_str());
   std::printf("\n");
   std::fflush(stdout);
@@ -78,10 +81,17 @@ int run_advise(seflex::app::Args& args) {
   std::size_t width = 48;
   for (const auto& row : r.rows) width = std::max(width, row.name.size());
   const int w = static_cast<int>(width);
-  std::printf("\n%-*s %8s %10s %7s %14s%s  %s\n", w, "variant", "unknowns", "CPU [s]", "steps", "max err [deg]", pos ? "   max pos [m]" : "", "within");
+  const bool str = r.stress_tolerance > 0.0;
+  std::printf("\n%-*s %8s %10s %7s %14s%s%s  %s\n", w, "variant", "unknowns", "CPU [s]", "steps", "max err [deg]", pos ? "   max pos [m]" : "",
+              str ? " stress err [%]" : "", "within");
   for (std::size_t i = 0; i < r.rows.size(); ++i) {
     const scene::AdviseRow& row = r.rows[i];
-    char err[32], perr[32] = "";
+    char err[32], perr[32] = "", serr[32] = "";
+    if (str) {
+      if (row.reference) std::snprintf(serr, sizeof serr, " %14s", "(reference)");
+      else if (!row.ran) std::snprintf(serr, sizeof serr, " %14s", "failed");
+      else std::snprintf(serr, sizeof serr, " %14.3g", 100.0 * row.max_stress_error);
+    }
     if (row.reference) std::snprintf(err, sizeof err, "(reference)");
     else if (!row.ran) std::snprintf(err, sizeof err, "failed");
     else std::snprintf(err, sizeof err, "%.3g", row.max_error * deg);
@@ -92,7 +102,7 @@ int run_advise(seflex::app::Args& args) {
     }
     std::string unknowns = std::to_string(row.dofs);
     if (row.multipliers > 0) unknowns += '+' + std::to_string(row.multipliers);
-    std::printf("%-*s %8s %10.3f %7ld %14s%s  %s%s\n", w, row.name.c_str(), unknowns.c_str(), row.cpu_seconds, row.steps, err, perr,
+    std::printf("%-*s %8s %10.3f %7ld %14s%s%s  %s%s\n", w, row.name.c_str(), unknowns.c_str(), row.cpu_seconds, row.steps, err, perr, serr,
                 row.within ? "yes" : "no", static_cast<int>(i) == r.recommended ? "  <- recommended" : "");
   }
   std::printf("(unknowns: dofs of the AIC variants; coordinates + Lagrange multipliers of FFRF-LM and rigid-LM)\n");
@@ -103,19 +113,20 @@ int run_advise(seflex::app::Args& args) {
               best.name.c_str(), best.cpu_seconds, r.rows[0].cpu_seconds > 0 ? best.cpu_seconds / r.rows[0].cpu_seconds : 1.0,
               r.rows[0].cpu_seconds, best.max_error * deg, tol->c_str());
   if (pos) std::printf("; max position error %.3g m <= %s m", best.max_position_error, tol_position->c_str());
+  if (str) std::printf("; peak element results within %.3g %% <= %s %%", 100.0 * best.max_stress_error, tol_stress->c_str());
   std::printf(")\n");
   if (csv) {
     std::ofstream f(*csv);
     if (!f) throw seflex::InputError("option --csv: cannot write " + *csv);
     f << "variant,reference,dofs,multipliers,stiffening,ran,cpu_seconds,steps,max_error_deg,worst_hinge,worst_time,max_position_error_m,worst_node,"
-         "worst_node_time,within,recommended\n";
+         "worst_node_time,within,recommended,max_stress_error,worst_element\n";
     f.precision(10);
     for (std::size_t i = 0; i < r.rows.size(); ++i) {
       const scene::AdviseRow& row = r.rows[i];
       f << '"' << row.name << "\"," << row.reference << ',' << row.dofs << ',' << row.multipliers << ',' << row.stiffening << ',' << row.ran << ','
         << row.cpu_seconds << ',' << row.steps << ',' << row.max_error * deg << ',' << row.worst_hinge << ',' << row.worst_time << ','
         << row.max_position_error << ',' << row.worst_node << ',' << row.worst_node_time << ',' << row.within << ','
-        << (static_cast<int>(i) == r.recommended) << '\n';
+        << (static_cast<int>(i) == r.recommended) << ',' << row.max_stress_error << ",\"" << row.worst_element << "\"\n";
     }
   }
   return seflex::app::kOk;
@@ -124,11 +135,12 @@ int run_advise(seflex::app::Args& args) {
 }  // namespace
 
 SEFLEX_COMMAND(advise,
-               "SCENE --tol ANGLE_DEG [--node NAME]... [--tol-position METRES] [--t-end T] [--alternative SCENE2]... [--modes K1,K2] "
+               "SCENE --tol ANGLE_DEG [--node NAME]... [--tol-position METRES] [--tol-stress PCT] [--t-end T] [--alternative SCENE2]... [--modes K1,K2] "
                "[--csv FILE]",
                "the cheapest model of a scene (rigid; fewer internal modes; simplified mass; no geometric stiffening; alternative "
                "reductions, e.g. a beam in fewer superelements; the classic floating frame FFRF-LM and rigid-LM with Lagrange multipliers) "
-               "whose hinge angles stay within ANGLE_DEG (and the positions of the --node nodes, e.g. a tip, within METRES) of the "
+               "whose hinge angles stay within ANGLE_DEG (and the positions of the --node nodes, e.g. a tip, within METRES; the peak "
+               "element results of the bodies reduced with --stresses within PCT %) of the "
                "finest model (flexible, full inertia, all modes, geometric stiffening where the files have it) up to its first lock "
                "(or T), with the evidence table",
                run_advise);

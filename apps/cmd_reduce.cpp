@@ -64,6 +64,36 @@ std::vector<int> interface_ids(const seflex::fem::Model& model, const std::strin
   return ids;
 }
 
+/// --stresses: "all" (every element with results: an empty list) or element ids and ranges separated by
+/// commas ("101,205,300:399").
+std::vector<int> stress_element_ids(const std::string& spec) {
+  if (lower(spec) == "all") return {};
+  std::vector<int> ids;
+  std::size_t pos = 0;
+  const auto bad = [&]() {
+    return UsageError("option --stresses: '" + spec + "': expected all, or element ids and ranges separated by commas (e.g. 101,205,300:399)");
+  };
+  const auto number = [&](const std::string& t) {
+    if (t.empty() || t.size() > 9 || t.find_first_not_of("0123456789") != std::string::npos) throw bad();
+    return std::stoi(t);
+  };
+  while (pos <= spec.size()) {
+    const std::size_t comma = std::min(spec.find(',', pos), spec.size());
+    std::string item = spec.substr(pos, comma - pos);
+    item.erase(std::remove(item.begin(), item.end(), ' '), item.end());
+    pos = comma + 1;
+    const std::size_t colon = item.find(':');
+    if (colon == std::string::npos) {
+      ids.push_back(number(item));
+      continue;
+    }
+    const int a = number(item.substr(0, colon)), b = number(item.substr(colon + 1));
+    if (b < a || b - a > 10000000) throw bad();
+    for (int id = a; id <= b; ++id) ids.push_back(id);
+  }
+  return ids;
+}
+
 /// --frame: a grid id, or the name of a node set holding one grid.
 int frame_id(const seflex::fem::Model& model, const std::string& spec) {
   if (!spec.empty() && spec.size() <= 9 && spec.find_first_not_of("0123456789") == std::string::npos)
@@ -150,6 +180,7 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
   const bool no_stiffening = args.flag("no-stiffening");
   const bool force = args.flag("force");
   const bool ignore_unknown = args.flag("ignore-unknown");
+  const auto stresses = args.value("stresses");
   const seflex::io::ModelReadOptions model_options = seflex::app::model_read_options(args);
   const std::string model_path = args.positional("MODEL");
   args.finish();
@@ -223,9 +254,11 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
   o.name = name ? *name : std::filesystem::path(model_path).stem().string();
   o.full_mesh = true;  // the inertia invariants are computed from the mesh part before --no-mesh drops it
   o.stiffening = !no_stiffening;
+  if (stresses) o.stress_elements = stress_element_ids(*stresses);
   const auto t1 = std::chrono::steady_clock::now();
   red::SuperelementInfo info;
-  seflex::se::Superelement s = red::reduce_to_superelement(model, o, &info);
+  seflex::se::StressModes stress;
+  seflex::se::Superelement s = red::reduce_to_superelement(model, o, &info, &stress);
   const auto t2 = std::chrono::steady_clock::now();
   seflex::io::record_source(s, model, model_path);  // the rest of the provenance is the library's
   const std::size_t mesh_nodes = s.fe_node_ids.size(), mesh_cells = s.cells.size();
@@ -242,7 +275,7 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
   if (compare != kAbsent) full = red::full_model_eigenvalues(model, 6 + compare, *backend);
   print_free_free(s, compare != kAbsent ? compare : 10, compare != kAbsent ? &full : nullptr);
   std::fflush(stdout);
-  if (writer) seflex::io::save_superelement(s, *out, seflex::io::SaveOptions{force});
+  if (writer) seflex::io::save_superelement(s, *out, seflex::io::SaveOptions{force, &stress});
   const auto t3 = std::chrono::steady_clock::now();
   const auto sec = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };
   if (writer)
@@ -257,6 +290,18 @@ int reduce(seflex::app::Args& args, seflex::parallel::Session* session) {
                 seflex::se::StiffeningInvariants::kInertiaCases, s.stiffening.interface.size(), info.seconds_stiffening);
   else
     std::printf("  geometric-stiffness invariants: not computed (--no-stiffening: no stress stiffening in the run)\n");
+  for (const auto& [card, count] : info.stress_missing) {
+    if (card.rfind("unknown element id ", 0) == 0)
+      std::fprintf(stderr, "warning: --stresses: element %s is not in the model\n", card.substr(19).c_str());
+    else
+      std::fprintf(stderr, "warning: --stresses: %d %s element%s: no element results in seflex (left out of the stress modes)\n",
+                   count, card.c_str(), count > 1 ? "s" : "");
+  }
+  if (stress.present())
+    std::printf("  stress modes: %zu element%s, %ld result rows x %d basis vectors (element forces and stresses)\n",
+                stress.element_ids.size(), stress.element_ids.size() > 1 ? "s" : "", static_cast<long>(stress.S.rows()), s.size());
+  else if (stresses)
+    std::printf("  stress modes: none (no selected element has element results)\n");
   if (no_mesh)
     std::printf("  mesh part: left out (--no-mesh; %zu FE nodes, %zu cells not written: no animation or recovery)\n",
                 mesh_nodes, mesh_cells);
@@ -288,11 +333,12 @@ int run_reduce(seflex::app::Args& args) {
 
 SEFLEX_COMMAND(reduce,
                "MODEL --interface IDS|SETS|aset|bset|suport [--modes N | --fmax HZ] [--frame NODE|SET] [--name NAME] "
-               "[--compare K] [--eigensolver block|spectra|arpack|dense] [--backend serial|slepc] [--no-mesh] [--no-stiffening] -o FILE.se [--force] "
+               "[--compare K] [--eigensolver block|spectra|arpack|dense] [--backend serial|slepc] [--no-mesh] [--no-stiffening] [--stresses all|IDS] -o FILE.se [--force] "
                "[--properties FILE] [--set NAME=VALUE]... [--symbol NAME=DIR]... [--ignore-unknown]",
                "Craig-Bampton reduction to an absolute-interface-coordinate superelement: constraint modes of all six "
                "dofs of the interface grids plus fixed-interface modes; prints mass properties, the truncation report "
                "and the reduced model's free-free frequencies (--compare K: against the full model's); --no-mesh writes the "
                "dynamics only (reduced matrices and inertia invariants, no FE mesh, recovery or FE mass); --no-stiffening leaves out "
-               "the geometric-stiffness invariants (docs/geometric-stiffening.md)",
+               "the geometric-stiffness invariants (docs/geometric-stiffening.md); --stresses all|IDS stores the element "
+               "results of those elements per basis vector (stress modes, docs/stresses.md)",
                run_reduce);

@@ -14,7 +14,9 @@
 #include "model_args.hpp"
 #include "usage_warnings.hpp"
 #include "seflex/io/model_reader.hpp"
+#include "seflex/io/element_results_csv.hpp"
 #include "seflex/io/results_csv.hpp"
+#include "seflex/fem/element_results.hpp"
 #include "seflex/solutions/card_usage.hpp"
 #include "seflex/solutions/grid_results.hpp"
 #include "seflex/solutions/statics.hpp"
@@ -81,6 +83,7 @@ int run_static(seflex::app::Args& args) {
     throw UsageError("option --system expects basic or global (each grid's displacement system CD), got '" + system + "'");
   const bool global = system == "global";
   const bool force = args.flag("force");
+  const auto element_csv = args.value("element-results");
   o.ignore_unknown_cards = args.flag("ignore-unknown");
   const seflex::io::ModelReadOptions model_options = seflex::app::model_read_options(args);
   const std::string deck = args.positional("DECK");
@@ -88,6 +91,7 @@ int run_static(seflex::app::Args& args) {
   const std::filesystem::path csv = out ? std::filesystem::path(*out)
                                         : std::filesystem::path(std::filesystem::path(deck).stem().string() + "_displacements.csv");
   seflex::io::check_writable(csv, force);  // before the work, not after it
+  if (element_csv) seflex::io::check_writable(*element_csv, force);
 
   const auto t0 = std::chrono::steady_clock::now();
   const seflex::fem::Model model = seflex::io::read_model(deck, model_options);
@@ -120,13 +124,29 @@ int run_static(seflex::app::Args& args) {
     print_summary(model, solutions[k], tables[k], global ? "global (CD)" : "basic");
   std::printf("\nwrote %s (%sgrid,t1,t2,t3,r1,r2,r3; %s)\n", csv.string().c_str(), several ? "subcase," : "",
               global ? "each grid's displacement system CD, as Nastran prints them" : "basic system");
+  if (element_csv) {
+    const seflex::fem::ElementResultMap map = seflex::fem::make_element_result_map(model);
+    for (const auto& [card, n] : map.missing)
+      std::fprintf(stderr, "warning: %d %s element%s: no element results in seflex\n", n, card.c_str(), n > 1 ? "s" : "");
+    Eigen::MatrixXd results(map.rows, static_cast<Eigen::Index>(solutions.size()));
+    std::vector<int> ids;
+    for (std::size_t k = 0; k < solutions.size(); ++k) {
+      results.col(static_cast<Eigen::Index>(k)) = map.apply(solutions[k].u_g);
+      ids.push_back(solutions[k].selection.subcase_id);
+    }
+    seflex::io::write_element_results_csv(*element_csv, map, ids, results, force);
+    std::printf("wrote %s (subcase,element,card,component,value: %zu elements; Nastran element force/stress "
+                "conventions, element coordinate systems)\n",
+                element_csv->c_str(), map.entries.size());
+  }
   std::fflush(stdout);
   return seflex::app::kOk;
 }
 
 }  // namespace
 
-SEFLEX_COMMAND(static, "DECK [-o results.csv] [--subcase ID] [--system basic|global] [--force] [--ignore-unknown] [--symbol NAME=DIR]...",
+SEFLEX_COMMAND(static, "DECK [-o results.csv] [--element-results FILE.csv] [--subcase ID] [--system basic|global] [--force] [--ignore-unknown] [--symbol NAME=DIR]...",
                "linear statics (SOL 101) of every subcase (or --subcase ID): grid displacements to CSV (basic system, "
-               "or --system global: each grid's CD system as Nastran prints them), load and SPC-force resultants",
+               "or --system global: each grid's CD system as Nastran prints them), load and SPC-force resultants; --element-results: element forces and stresses "
+               "(Nastran's conventions) to CSV",
                run_static);

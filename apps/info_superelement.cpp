@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <utility>
 
 #include "seflex/io/superelement_file.hpp"
 
@@ -85,6 +86,23 @@ void print_superelement_info(const std::string& path) {
                 se::StiffeningInvariants::kInertiaCases, s.stiffening.interface.size(), size_text(bytes).c_str());
   } else {
     std::printf("absent (reduced with --no-stiffening or before format 1.3: no geometric stiffening in a run)\n");
+  }
+  std::printf("stress modes                 ");  // datasets stress.* (format 1.4)
+  if (info.stress.present()) {
+    std::uint64_t bytes = 0;
+    for (const auto& d : info.datasets)
+      if (d.name.rfind("stress.", 0) == 0) bytes += d.bytes;
+    int count[6] = {};
+    for (const std::int32_t k : info.stress.kinds) ++count[k];
+    static const char* kind_names[6] = {"shell", "bar", "rod", "solid", "spring", "bush"};
+    std::printf("present: %zu elements (", info.stress.element_ids.size());
+    bool first = true;
+    for (int k = 0; k < 6; ++k)
+      if (count[k]) std::printf("%s%d %s", std::exchange(first, false) ? "" : ", ", count[k], kind_names[k]);
+    std::printf("), %ld result rows; %s (element results in a run)\n", static_cast<long>(info.stress.S.rows()),
+                size_text(bytes).c_str());
+  } else {
+    std::printf("absent (reduced without --stresses: no element results in a run)\n");
   }
   std::printf("mesh part                    ");
   if (info.has_mesh())

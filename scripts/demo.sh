@@ -5,7 +5,8 @@
 #   scripts/demo.sh [OUTDIR] [--force] [--bin SEFLEX] [--t-end T] [--no-plots] [--jobs N]
 #   (--jobs: runs and reductions at a time, default $SEFLEX_JOBS or 2)
 #
-# 1. reduces meshes/yoke.bdf and meshes/panel.bdf to the four Craig-Bampton superelements
+# 1. reduces meshes/yoke.bdf and meshes/panel.bdf to the four Craig-Bampton superelements, with
+#    their stress modes (--stresses all: stress_envelope.csv and the peak element results of each run)
 #    (beam-like: yoke {1,5}, panel {5,6}; 3D: yoke {1,3,4}, panel {1,2,3,4}) in OUTDIR/superelements/;
 # 2. copies the four scenes of examples/solar_array/ ({unsync,sync} x {beam,3d}) to OUTDIR/;
 # 3. runs them with `seflex run` (OUTDIR/<case>/: history.csv, events.csv, summary.json, animation.pvd);
@@ -79,7 +80,7 @@ t0=$(now)
 list="$out/.reduce.cmds"
 : > "$list"
 while read -r body set tag modes; do
-  echo "'$bin' reduce '$root/meshes/$body.bdf' --interface $set --modes $modes --name $body-$tag -o '$out/superelements/$body-$tag.se' --force > '$out/superelements/$body-$tag.log' 2>&1 || { echo 'demo: seflex reduce failed, see $out/superelements/$body-$tag.log' >&2; exit 1; }" >> "$list"
+  echo "'$bin' reduce '$root/meshes/$body.bdf' --interface $set --modes $modes --stresses all --name $body-$tag -o '$out/superelements/$body-$tag.se' --force > '$out/superelements/$body-$tag.log' 2>&1 || { echo 'demo: seflex reduce failed, see $out/superelements/$body-$tag.log' >&2; exit 1; }" >> "$list"
 done <<EOF
 yoke 1,5 beam 10
 panel 5,6 beam 10

@@ -49,12 +49,15 @@ Vector12 end_displacements(const BarElement& e, const Eigen::Matrix3d& R_BE, con
 
 }  // namespace
 
-double bar_axial_force(const BarElement& e, const Vector12& u_basic) {
+Vector12 bar_end_forces(const BarElement& e, const Vector12& u_basic) {
   const Matrix12 K = bar_stiffness_element_axes(e);
   const Matrix12 T = pin_transform(e, K);
   const Vector12 q = end_displacements(e, bar_axes(e), u_basic);
-  const Vector12 f = T.transpose() * (K * (T * q));
-  return f(6);  // x force on end B: tension positive
+  return T.transpose() * (K * (T * q));
+}
+
+double bar_axial_force(const BarElement& e, const Vector12& u_basic) {
+  return bar_end_forces(e, u_basic)(6);  // x force on end B: tension positive
 }
 
 NodeMatrix<2> bar_geometric_stiffness(const BarElement& e, double N) {

@@ -1,12 +1,14 @@
 // CQUAD4: QM6 membrane + MITC4 plate + drilling penalty on the mean plane, with rigid-link warping
 // correction (see element_shell_quad4.hpp for the formulation and references).
 #include "seflex/fem/element_shell_quad4.hpp"
+#include "seflex/fem/element_results.hpp"
 
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 
 #include "model_lookup.hpp"
+#include "shell_results.hpp"
 #include "seflex/fem/element_membrane_drilling.hpp"
 #include "seflex/fem/element_plate_min4t.hpp"
 #include "seflex/common/error.hpp"
@@ -331,6 +333,38 @@ Quad4Element make_quad4_element(const Model& model, const Shell& shell, const Sh
   e.section = (section ? *section : make_shell_section(model, shell)).in_element_axes(theta).offset(shell.zoffs);
   e.drilling = shell.drilling;
   return e;
+}
+
+
+Eigen::Matrix<double, 14, 1> quad4_results(const Quad4Element& e, const ShellFibres& f, const Eigen::Matrix<double, 24, 1>& u) {
+  const Geometry g = geometry(e);
+  const ShellSection& sec = e.section;
+  // Membrane resultants: the mean of the 2 x 2 Gauss points' (the centre value: the compatible strain
+  // is linear in xi, eta on a parallelogram and the incompatible modes' odd).
+  Eigen::Vector3d N = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& n : quad4_membrane_resultants(e, u)) N += 0.25 * n;
+  // Plate dofs (w, theta_x, theta_y) in the mean-plane axes (the warping links move neither).
+  Eigen::Matrix<double, 12, 1> q;
+  for (int i = 0; i < 4; ++i) {
+    const Eigen::Vector3d t = g.R_BL.transpose() * u.segment<3>(6 * i);
+    const Eigen::Vector3d r = g.R_BL.transpose() * u.segment<3>(6 * i + 3);
+    q.segment<3>(3 * i) << t.z(), r.x(), r.y();
+  }
+  const Shape s0 = shape(0, 0);
+  const Eigen::Vector3d kappa = curvature_B(cartesian_derivatives(g, s0)) * q;
+  Eigen::Vector2d Q = Eigen::Vector2d::Zero();
+  if (sec.shear_flexible) {  // MITC4's assumed shear at the centre, times the element's (stabilised) shear stiffness
+    double h2 = 0.0;
+    for (int k = 0; k < 4; ++k) h2 = std::max(h2, (g.p[(k + 1) % 4] - g.p[k]).squaredNorm());
+    Eigen::Matrix<double, 2, 12> Gcov;
+    Gcov.row(0) = 0.5 * (covariant_shear(g, 0, -1, 0) + covariant_shear(g, 0, 1, 0));
+    Gcov.row(1) = 0.5 * (covariant_shear(g, -1, 0, 1) + covariant_shear(g, 1, 0, 1));
+    Q = sec.stabilised_shear(h2) * (jacobian(g, s0).inverse() * (Gcov * q));
+  }
+  // Nastran's element x axis bisects the angle between the diagonals G1-G3 and G2-G4.
+  const Eigen::Vector2d d13 = (g.p[2] - g.p[0]).normalized(), d24 = (g.p[3] - g.p[1]).normalized();
+  const Eigen::Vector2d xn = d13 - d24;
+  return detail::shell_results(sec, f, N, kappa, Q, std::atan2(xn.y(), xn.x()));
 }
 
 }  // namespace seflex::fem

@@ -1,10 +1,12 @@
 // CTRIA3: CST membrane + MITC3 (or DKT) plate + drilling penalty (see element_shell_tria3.hpp).
 #include "seflex/fem/element_shell_tria3.hpp"
+#include "seflex/fem/element_results.hpp"
 
 #include <Eigen/LU>
 #include <algorithm>
 
 #include "model_lookup.hpp"
+#include "shell_results.hpp"
 #include "seflex/fem/element_membrane_drilling.hpp"
 #include "seflex/fem/element_plate_dkt.hpp"
 #include "seflex/fem/element_plate_min3.hpp"
@@ -42,6 +44,29 @@ Geometry geometry(const Tria3Element& e) {
     g.c[i] = (g.p[k].x() - g.p[j].x()) / (2 * g.area);
   }
   return g;
+}
+
+// MITC3 shear: gamma(x, y) = (a_x - b y, a_y + b x), tangential component at each edge midpoint
+// tied to the edge's (w_j - w_i)/L + (beta_i + beta_j)/2 . t, beta = (theta_y, -theta_x); returns
+// (a_x, a_y, b) from the dofs (3 x 18, element axes).
+Eigen::Matrix<double, 3, 18> mitc3_shear_coefficients(const Geometry& g) {
+  Eigen::Matrix3d G;
+  Eigen::Matrix<double, 3, 18> R = Eigen::Matrix<double, 3, 18>::Zero();
+  for (int k = 0; k < 3; ++k) {
+    const int i = k, j = (k + 1) % 3;
+    const Eigen::Vector2d d = g.p[j] - g.p[i];
+    const double L = d.norm();
+    const Eigen::Vector2d t = d / L;
+    const Eigen::Vector2d mid = 0.5 * (g.p[i] + g.p[j]);
+    G.row(k) << t.x(), t.y(), -mid.y() * t.x() + mid.x() * t.y();
+    R(k, 6 * j + kW) += 1.0 / L;
+    R(k, 6 * i + kW) -= 1.0 / L;
+    for (int n : {i, j}) {
+      R(k, 6 * n + kRy) += 0.5 * t.x();
+      R(k, 6 * n + kRx) -= 0.5 * t.y();
+    }
+  }
+  return G.inverse() * R;
 }
 
 }  // namespace
@@ -115,24 +140,7 @@ NodeMatrix<3> tria3_stiffness(const Tria3Element& e, double k6rot, const Mystran
   if (!kirchhoff && !mystran) {
     std::array<Eigen::Vector2d, 3> mid;
     for (int k = 0; k < 3; ++k) mid[k] = 0.5 * (g.p[k] + g.p[(k + 1) % 3]);
-    // MITC3 shear: gamma(x, y) = (a_x - b y, a_y + b x), tangential component at each edge midpoint
-    // tied to the edge's (w_j - w_i)/L + (beta_i + beta_j)/2 . t, beta = (theta_y, -theta_x).
-    Eigen::Matrix3d G;
-    Eigen::Matrix<double, 3, 18> R = Eigen::Matrix<double, 3, 18>::Zero();
-    for (int k = 0; k < 3; ++k) {
-      const int i = k, j = (k + 1) % 3;
-      const Eigen::Vector2d d = g.p[j] - g.p[i];
-      const double L = d.norm();
-      const Eigen::Vector2d t = d / L;
-      G.row(k) << t.x(), t.y(), -mid[k].y() * t.x() + mid[k].x() * t.y();
-      R(k, 6 * j + kW) += 1.0 / L;
-      R(k, 6 * i + kW) -= 1.0 / L;
-      for (int n : {i, j}) {
-        R(k, 6 * n + kRy) += 0.5 * t.x();
-        R(k, 6 * n + kRx) -= 0.5 * t.y();
-      }
-    }
-    const Eigen::Matrix<double, 3, 18> C = G.inverse() * R;  // (a_x, a_y, b) from the dofs
+    const Eigen::Matrix<double, 3, 18> C = mitc3_shear_coefficients(g);
     // Shear stabilisation of Lyly, Stenberg & Vihinen (ShellSection::stabilised_shear_stiffness),
     // h the longest edge; it removes the residual shear locking of the linear triangle in thin plates.
     double h2 = 0.0;
@@ -210,6 +218,28 @@ Tria3Element make_tria3_element(const Model& model, const Shell& shell, const Sh
   e.section = (section ? *section : make_shell_section(model, shell)).in_element_axes(theta).offset(shell.zoffs);
   e.drilling = shell.drilling;
   return e;
+}
+
+
+Eigen::Matrix<double, 14, 1> tria3_results(const Tria3Element& e, const ShellFibres& f, const Eigen::Matrix<double, 18, 1>& u) {
+  const Geometry g = geometry(e);
+  const ShellSection& sec = e.section;
+  Eigen::Matrix<double, 18, 1> uL;  // element axes
+  Eigen::Matrix<double, 9, 1> q;     // plate dofs (w, theta_x, theta_y) per corner
+  for (int i = 0; i < 6; ++i) uL.segment<3>(3 * i) = g.R_BL.transpose() * u.segment<3>(3 * i);
+  for (int i = 0; i < 3; ++i) q.segment<3>(3 * i) << uL(6 * i + kW), uL(6 * i + kRx), uL(6 * i + kRy);
+  Eigen::Vector3d kappa = Eigen::Vector3d::Zero();
+  Eigen::Vector2d Q = Eigen::Vector2d::Zero();
+  if (!sec.shear_flexible) {  // DKT (its curvature at the centroid); no transverse shear, as Nastran prints
+    kappa = dkt_curvature(g.p).mean() * q;
+  } else {  // linear rotations: constant curvature; MITC3's assumed shear at the centroid
+    for (int i = 0; i < 3; ++i)
+      kappa += Eigen::Vector3d(g.b[i] * q(3 * i + 2), -g.c[i] * q(3 * i + 1), g.c[i] * q(3 * i + 2) - g.b[i] * q(3 * i + 1));
+    double h2 = 0.0;
+    for (int k = 0; k < 3; ++k) h2 = std::max(h2, (g.p[(k + 1) % 3] - g.p[k]).squaredNorm());
+    Q = sec.stabilised_shear(h2) * (mitc3_shear_coefficients(g) * uL).head<2>();
+  }
+  return detail::shell_results(sec, f, tria3_membrane_resultants(e, u), kappa, Q, 0.0);
 }
 
 }  // namespace seflex::fem

@@ -241,6 +241,7 @@ class Reader {
 
   int major() const { return major_; }
   int minor() const { return minor_; }
+  const se::StressModes& stress() const { return stress_; }  ///< format 1.4 (empty when absent)
   std::int64_t num_fe_nodes() const { return nfe_; }
   std::int64_t num_cells() const { return ncells_; }
   const std::vector<DatasetEntry>& table() const { return entries_; }
@@ -367,6 +368,28 @@ class Reader {
       s.stiffening.n = s.size();
   }
 
+  // Format 1.4: the stress modes, all four datasets or none (kept beside the superelement: stress()).
+  void read_stress_modes(const YAML::Node& table, Eigen::Index n) {
+    const char* names[4] = {"stress.element_id", "stress.kind", "stress.row", "stress.modes"};
+    int present = 0;
+    for (const char* name : names) present += table[name] ? 1 : 0;
+    if (present == 0) return;
+    if (present < 4)
+      for (const char* name : names)
+        if (!table[name])
+          fail("dataset '" + std::string(name) +
+               "' is missing; the file has other stress.* datasets, and the stress modes are stored complete or not at all");
+    const auto shape = [&](const char* name) { return get<std::vector<std::int64_t>>(table[name], "shape"); };
+    const std::vector<std::int64_t> ne = shape("stress.element_id"), sm = shape("stress.modes");
+    if (ne.size() != 1 || sm.size() != 2 || ne[0] <= 0 || sm[0] < ne[0] || static_cast<std::uint64_t>(sm[0]) > src_.size())
+      fail("datasets 'stress.*': inconsistent shapes");
+    stress_.element_ids = array<std::int32_t>(table, "stress.element_id", "int32", ne[0]);
+    stress_.kinds = array<std::int32_t>(table, "stress.kind", "int32", ne[0]);
+    stress_.rows = array<std::int32_t>(table, "stress.row", "int32", ne[0]);
+    stress_.S = matrix(table, "stress.modes", sm[0], n);
+    const auto problems = se::check_consistency(stress_, n);
+    if (!problems.empty()) fail("datasets 'stress.*': " + problems.front());
+  }
   void list_table(const YAML::Node& table) {
     for (const auto& kv : table) {
       DatasetEntry e;
@@ -436,6 +459,7 @@ class Reader {
     s.Phi_f = matrix(table, "Phi_f", 6, n);
     read_invariants(table, s);
     read_stiffening(table, s);
+    read_stress_modes(table, s.size());
 
     const std::int64_t nfe = get<std::int64_t>(h, "num_fe_nodes");
     if (nfe < 0 || static_cast<std::uint64_t>(nfe) > src_.size()) fail("header: 'num_fe_nodes' out of range");
@@ -529,13 +553,14 @@ class Reader {
   SuperelementParts parts_;
   std::uint64_t data_begin_ = 0, data_end_ = 0;
   int major_ = 0, minor_ = 0;
+  se::StressModes stress_;
   std::int64_t nfe_ = 0, ncells_ = 0;
   std::vector<DatasetEntry> entries_;
 };
 
 }  // namespace
 
-std::string serialize_superelement(const se::Superelement& s) {
+std::string serialize_superelement(const se::Superelement& s, const se::StressModes* stress) {
   const auto problems = se::check_consistency(s);
   if (!problems.empty()) {
     std::string msg = "cannot save an inconsistent superelement:";
@@ -580,6 +605,15 @@ std::string serialize_superelement(const se::Superelement& s) {
                                                                  std::to_string(c) + " matrix");
                                           data.push_back(make_dataset(name, "float64", A.data(), {r, c}));
                                         });
+  }
+  if (stress && stress->present()) {  // format 1.4
+    const auto problems = se::check_consistency(*stress, s.size());
+    if (!problems.empty()) throw InvariantError("cannot save superelement '" + s.name + "': " + problems.front());
+    const auto E = static_cast<std::int64_t>(stress->element_ids.size());
+    data.push_back(make_dataset("stress.element_id", "int32", stress->element_ids.data(), {E}));
+    data.push_back(make_dataset("stress.kind", "int32", stress->kinds.data(), {E}));
+    data.push_back(make_dataset("stress.row", "int32", stress->rows.data(), {E}));
+    data.push_back(matrix_dataset("stress.modes", stress->S));
   }
   if (nfe > 0) {  // format 1.2: no mesh part, no fe_node_ids/fe_positions
     std::vector<std::int32_t> ids(s.fe_node_ids.begin(), s.fe_node_ids.end());
@@ -688,17 +722,23 @@ std::string serialize_superelement(const se::Superelement& s) {
 void save_superelement(const se::Superelement& s, const std::filesystem::path& path, const SaveOptions& options) {
   if (!options.overwrite && std::filesystem::exists(path))  // before serialising a large body
     throw InputError(SourceRef{path.string(), 0}, "exists already; refusing to overwrite it (use --force to replace it)");
-  detail::write_file_atomically(path, serialize_superelement(s), options.overwrite);
+  detail::write_file_atomically(path, serialize_superelement(s, options.stress), options.overwrite);
 }
 
 se::Superelement parse_superelement(const std::string& bytes, const std::string& name, const LoadOptions& options) {
   const StringSource src(bytes);
-  return Reader(src, name, options.parts).read();
+  Reader r(src, name, options.parts);
+  se::Superelement s = r.read();
+  if (options.stress) *options.stress = r.stress();
+  return s;
 }
 
 se::Superelement load_superelement(const std::filesystem::path& path, const LoadOptions& options) {
   const FileSource src(path);
-  return Reader(src, path.string(), options.parts).read();
+  Reader r(src, path.string(), options.parts);
+  se::Superelement s = r.read();
+  if (options.stress) *options.stress = r.stress();
+  return s;
 }
 
 SuperelementFileInfo inspect_superelement(const std::filesystem::path& path) {
@@ -712,6 +752,7 @@ SuperelementFileInfo inspect_superelement(const std::filesystem::path& path) {
   info.num_fe_nodes = r.num_fe_nodes();
   info.num_cells = r.num_cells();
   info.datasets = r.table();
+  info.stress = r.stress();
   return info;
 }
 

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <cstdio>
+#include <unordered_map>
 
 #include "seflex/common/error.hpp"
 #include "vtk_writer.hpp"
@@ -35,7 +36,10 @@ struct PvdSeries::Vtk {
   std::vector<std::int32_t> cell_types;
   std::vector<std::int64_t> offsets{0}, connectivity;
   std::vector<int> body, element_id;
-  std::array<vtk_plugin::Array, 2> point_data, cell_data;
+  std::vector<double> element_result;         // per cell (when some body has stress modes)
+  std::vector<std::int64_t> result_index;     // per cell: index into its body's element values, -1 none
+  std::array<vtk_plugin::Array, 2> point_data;
+  std::vector<vtk_plugin::Array> cell_data;
   vtk_plugin::Grid grid;
   std::unique_ptr<VtkGridWriter> writer;
 };
@@ -63,8 +67,17 @@ void PvdSeries::write_step(double time, const std::vector<BodySnapshot>& snapsho
     v->elastic.resize(v->points.size());
     v->displacement.resize(v->points.size());
     Eigen::Index offset = 0;
+    bool results = false;
+    for (const auto& sn : snapshots) results = results || (sn.element_ids && sn.element_values);
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
+      std::unordered_map<int, std::int64_t> where;  // element id -> index in the body's element values
+      if (const auto* ids = snapshots[b].element_ids)
+        for (std::size_t e = 0; e < ids->size(); ++e) where.emplace((*ids)[e], static_cast<std::int64_t>(e));
       for (const auto& c : bodies_[b]->cells) {
+        if (results) {
+          const auto it = where.find(c.element_id);
+          v->result_index.push_back(it == where.end() ? -1 : it->second);
+        }
         const int nn = static_cast<int>(c.type);
         for (int k = 0; k < nn; ++k) v->connectivity.push_back(offset + c.nodes[k]);
         v->offsets.push_back(static_cast<std::int64_t>(v->connectivity.size()));
@@ -79,6 +92,10 @@ void PvdSeries::write_step(double time, const std::vector<BodySnapshot>& snapsho
                      vtk_plugin::Array{"displacement", vtk_plugin::ValueType::kDouble, 3, total, v->displacement.data()}};
     v->cell_data = {vtk_plugin::Array{"body", vtk_plugin::ValueType::kInt, 1, cells, v->body.data()},
                     vtk_plugin::Array{"element_id", vtk_plugin::ValueType::kInt, 1, cells, v->element_id.data()}};
+    if (results) {
+      v->element_result.assign(static_cast<std::size_t>(cells), 0.0);
+      v->cell_data.push_back(vtk_plugin::Array{"element_result", vtk_plugin::ValueType::kDouble, 1, cells, v->element_result.data()});
+    }
     vtk_plugin::Grid& g = v->grid;
     g.point_count = total;
     g.points = v->points.data();
@@ -110,6 +127,14 @@ void PvdSeries::write_step(double time, const std::vector<BodySnapshot>& snapsho
       }
     }
     offset += positions_.cols();
+  }
+  if (!v.element_result.empty()) {
+    std::size_t c = 0;
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+      for (std::size_t k = 0; k < bodies_[b]->cells.size(); ++k, ++c) {
+        const std::int64_t i = v.result_index[c];
+        v.element_result[c] = i >= 0 && snapshots[b].element_values ? snapshots[b].element_values[i] : 0.0;
+      }
   }
   if (!v.writer) v.writer = std::make_unique<VtkGridWriter>(v.grid, false);  // loads the plugin at the first step
 

@@ -33,6 +33,7 @@ struct Writer {
   vtkNew<vtkPoints> points;
   vtkNew<vtkUnstructuredGrid> grid;
   std::vector<vtkSmartPointer<vtkDataArray>> point_data;  ///< in the order of Grid::point_data
+  std::vector<vtkSmartPointer<vtkDataArray>> cell_data;   ///< in the order of Grid::cell_data
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
 };
 
@@ -84,9 +85,9 @@ Writer* create(const Grid* g, std::int32_t compress, char* error, std::size_t er
     }
     if (g->active_vectors != nullptr) w->grid->GetPointData()->SetActiveVectors(g->active_vectors);
     for (std::int32_t k = 0; k < g->cell_data_count; ++k) {
-      vtkSmartPointer<vtkDataArray> a = make_array(g->cell_data[k]);
-      copy_values(g->cell_data[k], a);
-      w->grid->GetCellData()->AddArray(a);
+      w->cell_data.push_back(make_array(g->cell_data[k]));
+      copy_values(g->cell_data[k], w->cell_data.back());
+      w->grid->GetCellData()->AddArray(w->cell_data.back());
     }
     for (std::int32_t k = 0; k < g->field_data_count; ++k) {
       vtkSmartPointer<vtkDataArray> a = make_array(g->field_data[k]);
@@ -124,6 +125,15 @@ std::int32_t write(Writer* w, const Grid* g, const char* path, char* error, std:
       copy_values(a, out);
       out->Modified();
     }
+    // Cell data may change from step to step too (element results); same sizes as at creation.
+    if (g->cell_data_count == static_cast<std::int32_t>(w->cell_data.size()))
+      for (std::size_t k = 0; k < w->cell_data.size(); ++k) {
+        const Array& a = g->cell_data[k];
+        vtkDataArray* out = w->cell_data[k];
+        if (a.tuples != out->GetNumberOfTuples() || a.components != out->GetNumberOfComponents()) continue;
+        copy_values(a, out);
+        out->Modified();
+      }
     w->grid->Modified();
     w->writer->SetFileName(path);
     if (w->writer->Write() != 1) {

@@ -1,6 +1,7 @@
 // An FE model reduced to the absolute-interface-coordinate superelement (craig_bampton_superelement.hpp).
 #include "seflex/reduction/craig_bampton_superelement.hpp"
 
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -16,6 +17,7 @@
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/components.hpp"
 #include "seflex/fem/constraints.hpp"
+#include "seflex/fem/element_results.hpp"
 #include "seflex/fem/element_solid.hpp"
 #include "seflex/fem/finalize.hpp"
 #include "seflex/solutions/card_usage.hpp"
@@ -243,7 +245,8 @@ Eigen::VectorXd full_model_eigenvalues(const fem::Model& model, int count, linal
 }
 
 se::Superelement reduce_to_superelement(const fem::Model& model, const SuperelementOptions& options,
-                                        SuperelementInfo* info) {
+                                        SuperelementInfo* info, se::StressModes* stress) {
+  if (stress) *stress = {};
   SEFLEX_DEMAND(model.finalized, "reduce_to_superelement needs a finalized model");
   SuperelementInfo local;
   SuperelementInfo& inf = info ? *info : local;
@@ -438,6 +441,21 @@ se::Superelement reduce_to_superelement(const fem::Model& model, const Superelem
   s.recovery.resize(6 * ng, n);
   s.recovery.leftCols(nb) = Eigen::MatrixXd(c.T * cb.Psi).topRows(6 * ng);
   if (m > 0) s.recovery.rightCols(m) = Eigen::MatrixXd(c.T * cb.Phi).topRows(6 * ng);
+  if (options.stress_elements && stress) {  // stress modes: element results of each basis vector (g-set, CD components)
+    const fem::ElementResultMap map = fem::make_element_result_map(model, *options.stress_elements);
+    inf.stress_missing = map.missing;
+    if (!map.entries.empty()) {
+      Eigen::MatrixXd U_g(c.T.rows(), n);
+      U_g.leftCols(nb) = c.T * cb.Psi;
+      if (m > 0) U_g.rightCols(m) = c.T * cb.Phi;
+      stress->S = map.apply_columns(U_g);
+      for (const auto& e : map.entries) {
+        stress->element_ids.push_back(e.id);
+        stress->kinds.push_back(static_cast<std::int32_t>(e.kind));
+        stress->rows.push_back(static_cast<std::int32_t>(e.row));
+      }
+    }
+  }
   to_basic_rows(s.recovery, 0);
   s.Phi_f = s.recovery.middleRows(6 * static_cast<Eigen::Index>(frame), 6);
 

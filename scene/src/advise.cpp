@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 
+#include "seflex/fem/element_results.hpp"
 #include "seflex/scene/solve_scene.hpp"
 
 namespace seflex::scene {
@@ -43,6 +44,7 @@ class AngleRecorder : public mbd::Observer {
     std::vector<Eigen::Vector3d> x;
     for (std::size_t k : track_) x.push_back(s.nodes[k].p);
     pos.push_back(std::move(x));
+    update_stress_peaks(s);
     if (s.event && first_lock.empty())
       for (std::size_t i = 0; i < s.elements.size(); ++i)
         if (s.elements[i].latched && s.elements[i].t_latch == s.t) {
@@ -52,6 +54,22 @@ class AngleRecorder : public mbd::Observer {
   }
   bool stop_requested() const override { return stop_at_lock_ && !first_lock.empty(); }
 
+  /// Track the peak element results of the bodies of `scene` that carry stress modes.
+  void track_stresses(const Scene& scene) { stress_scene_ = &scene; }
+  void update_stress_peaks(const mbd::Sample& s) {
+    if (!stress_scene_) return;
+    for (std::size_t b = 0; b < stress_scene_->bodies.size(); ++b) {
+      const SceneBodyRef& r = stress_scene_->bodies[b];
+      if (r.rigid || b >= stress_scene_->stress.size() || !stress_scene_->stress[b]) continue;
+      const se::StressModes& st = *stress_scene_->stress[b];
+      const Eigen::VectorXd res = st.S * s.flexible[static_cast<std::size_t>(r.index)].xi;
+      for (std::size_t e = 0; e < st.element_ids.size(); ++e) {
+        double& p = peak[{b, st.element_ids[e]}];
+        p = std::max(p, fem::element_result_peak(static_cast<fem::ResultKind>(st.kinds[e]), res.data() + st.rows[e]).value);
+      }
+    }
+  }
+
   std::vector<std::string> names;
   std::vector<double> t;
   std::vector<bool> event;
@@ -59,8 +77,10 @@ class AngleRecorder : public mbd::Observer {
   std::vector<std::vector<Eigen::Vector3d>> pos;  ///< per sample, per tracked node
   std::string first_lock;
   double t_lock = 0.0;
+  std::map<std::pair<std::size_t, int>, double> peak;  ///< (scene body, element id) -> peak over the run
 
  private:
+  const Scene* stress_scene_ = nullptr;
   bool stop_at_lock_;
   std::vector<std::size_t> track_;
 };
@@ -198,6 +218,8 @@ AdviseReport advise(const SceneDescription& scene, const AdviseOptions& o) {
   rep.tolerance = o.tolerance;
   rep.position_tolerance = o.position_tolerance;
   rep.nodes = o.nodes;
+  if (!(o.stress_tolerance >= 0.0) || !std::isfinite(o.stress_tolerance)) throw InputError("advise: the stress tolerance must be >= 0");
+  rep.stress_tolerance = o.stress_tolerance;
 
   // The finest variant first: it fixes the horizon and the comparison grid.
   const SceneDescription finest = with_bodies(scene, Fidelity::Flexible, mbd::InertiaModel::Full, {});
@@ -241,6 +263,12 @@ AdviseReport advise(const SceneDescription& scene, const AdviseOptions& o) {
   base.output_interval = base.output_interval > 0.0 ? std::min(base.output_interval, spacing) : spacing;
 
   AngleRecorder ref(!o.t_end, match_nodes(ref_scene.model, o.nodes, p0, scene.file));
+  if (o.stress_tolerance > 0.0) {
+    ref.track_stresses(ref_scene);
+    bool any = false;
+    for (const auto& sp : ref_scene.stress) any = any || (sp && sp->present());
+    if (!any) throw InputError(scene.file.string() + ": advise: a stress tolerance needs bodies reduced with --stresses (stress modes)");
+  }
   {
     const double c0 = cpu_now();
     AdviseRow row;
@@ -266,12 +294,14 @@ AdviseReport advise(const SceneDescription& scene, const AdviseOptions& o) {
     row.name = variants[v].name;
     row.max_error = kInf;
     row.max_position_error = o.nodes.empty() ? 0.0 : kInf;
+    row.max_stress_error = o.stress_tolerance > 0.0 ? kInf : 0.0;
     std::unique_ptr<AngleRecorder> rec;
     try {
       const Scene s = build_scene(variants[v].scene);
       row.dofs = s.model.num_dofs;
       row.stiffening = stiffened(s) && variants[v].formulation == mbd::Formulation::Aic;
       rec = std::make_unique<AngleRecorder>(false, match_nodes(s.model, o.nodes, p0, variants[v].scene.file));
+      if (o.stress_tolerance > 0.0) rec->track_stresses(s);
       const double c0 = cpu_now();
       try {
         const mbd::SimulationRun run = solve_scene(s, short_run, variants[v].formulation, rec.get());
@@ -317,7 +347,22 @@ AdviseReport advise(const SceneDescription& scene, const AdviseOptions& o) {
           }
         }
       row.max_position_error = worst_p;
-      row.within = worst <= o.tolerance && (o.nodes.empty() || worst_p <= o.position_tolerance);
+      if (o.stress_tolerance > 0.0) {  // peak element results against the reference's, per body
+        std::map<std::size_t, double> scale;
+        for (const auto& [key, p] : ref.peak) scale[key.first] = std::max(scale[key.first], p);
+        double worst_s = 0.0;
+        for (const auto& [key, p] : ref.peak) {
+          const auto it = rec->peak.find(key);
+          const double e = std::abs((it == rec->peak.end() ? 0.0 : it->second) - p) / std::max(scale[key.first], 1e-300);
+          if (!(e <= worst_s)) {
+            worst_s = std::isfinite(e) ? e : kInf;
+            row.worst_element = scene.bodies[key.first].name + " element " + std::to_string(key.second);
+          }
+        }
+        row.max_stress_error = worst_s;
+      }
+      row.within = worst <= o.tolerance && (o.nodes.empty() || worst_p <= o.position_tolerance) &&
+                   (o.stress_tolerance == 0.0 || row.max_stress_error <= o.stress_tolerance);
     }
     rep.rows.push_back(row);
   }

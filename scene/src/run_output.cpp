@@ -1,8 +1,12 @@
 #include "seflex/scene/run_output.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <sstream>
+
+#include "seflex/fem/element_results.hpp"
+#include "seflex/io/interface_subcase.hpp"
 
 namespace seflex::scene {
 
@@ -68,8 +72,10 @@ std::ofstream open(const std::filesystem::path& p) {
 }  // namespace
 
 const std::vector<std::string>& RunOutput::result_files() {
-  static const std::vector<std::string> files{"history.csv", "events.csv", "poses.csv", "summary.txt", "summary.json",
-                                              "animation.pvd", "animation"};
+  static const std::vector<std::string> files{"history.csv", "events.csv",          "poses.csv",
+                                              "summary.txt", "summary.json",        "animation.pvd",
+                                              "animation",   "stress_envelope.csv", "interface_loads.csv",
+                                              "static_subcases"};
   return files;
 }
 
@@ -116,6 +122,30 @@ RunOutput::RunOutput(const Scene& scene, const RunOutputOptions& o) : scene_(sce
   poses_ << "\n";
   poses_.flush();
 
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    if (scene.bodies[b].rigid || b >= scene.stress.size() || !scene.stress[b] || !scene.stress[b]->present()) continue;
+    StressBody sb;
+    sb.body = b;
+    sb.modes = scene.stress[b].get();
+    const std::size_t E = sb.modes->element_ids.size();
+    sb.results = Eigen::VectorXd::Zero(sb.modes->S.rows());
+    sb.current.assign(E, 0.0);
+    sb.peak.assign(E, -1.0);
+    sb.t_peak.assign(E, 0.0);
+    sb.fibre.assign(E, 0);
+    sb.after_lock.assign(lock_elements_.size(), LockPeak{});
+    stress_.push_back(std::move(sb));
+  }
+  if (scene.description.output.interface_loads) {
+    interface_loads_ = open(folder_ / "interface_loads.csv");
+    interface_loads_ << "t,body,node,fx,fy,fz,mx,my,mz,FX,FY,FZ,MX,MY,MZ\n";
+    interface_loads_.flush();
+    int n_max = 0;
+    for (const auto& sp : scene.superelements)
+      if (sp) n_max = std::max(n_max, 6 * sp->num_interfaces());
+    f_b_ = Eigen::VectorXd::Zero(n_max);
+  }
+
   if (o.animation && scene.description.output.animation_interval) {
     std::vector<const se::Superelement*> bodies;
     for (const auto& s : scene.superelements) bodies.push_back(s.get());
@@ -133,8 +163,99 @@ void RunOutput::on_sample(const mbd::Model& model, const mbd::Sample& s) {
   track_locks(model, s);
   write_history(model, s);
   write_poses(s);
+  recover_stresses(s);
+  write_interface_loads(s);
+  write_static_subcases(s);
   write_animation(s);
   flush_if_due();
+}
+
+void RunOutput::recover_stresses(const mbd::Sample& s) {
+  for (StressBody& sb : stress_) {
+    const SceneBodyRef& r = scene_.bodies[sb.body];
+    sb.results.noalias() = sb.modes->S * s.flexible[static_cast<std::size_t>(r.index)].xi;
+    const auto& st = *sb.modes;
+    for (std::size_t e = 0; e < st.element_ids.size(); ++e) {
+      const auto kind = static_cast<fem::ResultKind>(st.kinds[e]);
+      const fem::ResultPeak p = fem::element_result_peak(kind, sb.results.data() + st.rows[e]);
+      sb.current[e] = p.value;
+      if (p.value > sb.peak[e]) {
+        sb.peak[e] = p.value;
+        sb.t_peak[e] = s.t;
+        sb.fibre[e] = p.fibre;
+      }
+      if (last_latched_ >= 0)  // every lock that latched at that instant (hinge lines of two hinges)
+        for (std::size_t k = 0; k < lock_elements_.size(); ++k) {
+          if (t_latch_[k] != t_latch_[static_cast<std::size_t>(last_latched_)]) continue;
+          LockPeak& lp = sb.after_lock[k];
+          if (p.value > lp.value) lp = {p.value, s.t, st.element_ids[e], p.fibre};
+        }
+    }
+  }
+}
+
+void RunOutput::write_interface_loads(const mbd::Sample& s) {
+  if (!interface_loads_.is_open()) return;
+  const auto& d = scene_.description;
+  for (std::size_t b = 0; b < d.bodies.size(); ++b) {
+    const SceneBodyRef& r = scene_.bodies[b];
+    if (r.rigid) continue;
+    const se::Superelement& body = *scene_.superelements[b];
+    const mbd::FlexibleBodySample& fb = s.flexible[static_cast<std::size_t>(r.index)];
+    const Eigen::Index nb = 6 * body.num_interfaces();
+    // K is block-diagonal between the interface coordinates and the modal ones: the interface rows
+    // of K xi are K_bb q_b.
+    f_b_.head(nb).noalias() = body.K.topRows(nb) * fb.xi;
+    for (int j = 0; j < body.num_interfaces(); ++j) {
+      append_number(interface_buf_, s.t);
+      interface_buf_ += ',';
+      interface_buf_ += csv_field(d.bodies[b].name);
+      interface_buf_ += ',';
+      interface_buf_ += std::to_string(body.interfaces[static_cast<std::size_t>(j)].id);
+      for (int k = 0; k < 6; ++k) append_field(interface_buf_, f_b_(6 * j + k));
+      for (int h = 0; h < 2; ++h) {
+        const Eigen::Vector3d w = fb.frame.R * f_b_.segment<3>(6 * j + 3 * h);
+        for (int k = 0; k < 3; ++k) append_field(interface_buf_, w(k));
+      }
+      interface_buf_ += '\n';
+    }
+  }
+}
+
+void RunOutput::write_static_subcases(const mbd::Sample& s) {
+  const auto& times = scene_.description.output.static_subcases;
+  if (next_subcase_ >= times.size() || s.t < times[next_subcase_] - 1e-12 * std::max(1.0, std::abs(s.t))) return;
+  const std::size_t k = next_subcase_;
+  while (next_subcase_ < times.size() && times[next_subcase_] <= s.t + 1e-12 * std::max(1.0, std::abs(s.t))) ++next_subcase_;
+  std::error_code ec;
+  std::filesystem::create_directories(folder_ / "static_subcases", ec);
+  const auto& d = scene_.description;
+  for (std::size_t b = 0; b < d.bodies.size(); ++b) {
+    const SceneBodyRef& r = scene_.bodies[b];
+    if (r.rigid) continue;
+    const std::string what = "body " + d.bodies[b].name + " at t = " + num(s.t) + " s (output.static_subcases[" +
+                             std::to_string(k) + "] = " + num(times[k]) + " s) of " + d.file.string();
+    io::write_interface_subcase(folder_ / "static_subcases" / (d.bodies[b].name + "_" + std::to_string(k) + ".bdf"),
+                                *scene_.superelements[b], s.flexible[static_cast<std::size_t>(r.index)].xi,
+                                9001 + static_cast<int>(k), what);
+  }
+}
+
+void RunOutput::write_stress_envelope() {
+  if (stress_.empty()) return;
+  std::ofstream f = open(folder_ / "stress_envelope.csv");
+  f << "body,element,kind,quantity,peak,t,fibre\n";
+  static const char* kinds[fem::kResultKinds] = {"shell", "bar", "rod", "solid", "spring", "bush"};
+  for (const StressBody& sb : stress_) {
+    const auto& st = *sb.modes;
+    for (std::size_t e = 0; e < st.element_ids.size(); ++e) {
+      const auto kind = static_cast<fem::ResultKind>(st.kinds[e]);
+      f << csv_field(scene_.description.bodies[sb.body].name) << ',' << st.element_ids[e] << ',' << kinds[st.kinds[e]]
+        << ',' << fem::element_result_peak_name(kind) << ',' << num(std::max(0.0, sb.peak[e])) << ',' << num(sb.t_peak[e])
+        << ',' << sb.fibre[e] << '\n';
+    }
+  }
+  f.flush();
 }
 
 void RunOutput::track_locks(const mbd::Model& model, const mbd::Sample& s) {
@@ -144,6 +265,7 @@ void RunOutput::track_locks(const mbd::Model& model, const mbd::Sample& s) {
     const mbd::ElementSample& e = s.elements[i];
     if (e.latched && !t_latch_[k]) {
       t_latch_[k] = e.t_latch;
+      if (last_latched_ < 0 || *t_latch_[k] >= *t_latch_[static_cast<std::size_t>(last_latched_)]) last_latched_ = static_cast<int>(k);
       const auto& l = std::get<mbd::HingeLock>(model.force_elements[i].element);
       std::ostringstream os;
       os << "latched at phi = " << s.hinges[static_cast<std::size_t>(l.hinge.value)].phi * kRad2Deg << " deg (lock angle "
@@ -251,7 +373,8 @@ void RunOutput::write_poses(const mbd::Sample& s) {
 
 void RunOutput::flush_if_due() {
   const auto now = std::chrono::steady_clock::now();
-  if (now - last_flush_ < kFlushInterval && history_buf_.size() + poses_buf_.size() < kBufferBytes) return;
+  if (now - last_flush_ < kFlushInterval && history_buf_.size() + poses_buf_.size() + interface_buf_.size() < kBufferBytes)
+    return;
   write_out();
   last_flush_ = now;
 }
@@ -263,6 +386,11 @@ void RunOutput::write_out() {
   poses_buf_.clear();
   history_.flush();
   poses_.flush();
+  if (interface_loads_.is_open()) {
+    interface_loads_ << interface_buf_;
+    interface_buf_.clear();
+    interface_loads_.flush();
+  }
 }
 
 void RunOutput::write_animation(const mbd::Sample& s) {
@@ -276,6 +404,11 @@ void RunOutput::write_animation(const mbd::Sample& s) {
     b.R_WB = X.R;
     b.p_WBo = X.p;
     if (!r.rigid) b.q = s.flexible[static_cast<std::size_t>(r.index)].xi;
+    for (const StressBody& sb : stress_)
+      if (sb.body == snaps.size()) {
+        b.element_ids = &sb.modes->element_ids;
+        b.element_values = sb.current.data();
+      }
     snaps.push_back(std::move(b));
   }
   animation_->write_step(s.t, snaps);
@@ -334,8 +467,52 @@ void RunOutput::finish(const RunEnd& end) {
        << ": {\"t_latch\": " << (t_latch_[k] ? json_number(*t_latch_[k]) : "null")
        << ", \"peak_abs_torque_after_latch\": " << (t_latch_[k] ? json_number(peak_after_latch_[k]) : "null") << "}";
   }
-  js << (lock_elements_.empty() ? "}" : "\n  }") << "\n}\n";
+  js << (lock_elements_.empty() ? "}" : "\n  }");
+  if (!stress_.empty() && !lock_elements_.empty()) {  // the latch shocks: per lock and body, the most loaded element
+    js << ",\n  \"element_peaks_after_lock\": {";
+    for (std::size_t k = 0; k < lock_elements_.size(); ++k) {
+      js << (k ? "," : "") << "\n    " << json_string(m.force_elements[static_cast<std::size_t>(lock_elements_[k])].name) << ": {";
+      for (std::size_t b = 0; b < stress_.size(); ++b) {
+        const LockPeak& lp = stress_[b].after_lock[k];
+        js << (b ? ", " : "") << json_string(scene_.description.bodies[stress_[b].body].name) << ": ";
+        if (lp.value < 0) js << "null";
+        else
+          js << "{\"element\": " << lp.element << ", \"peak\": " << json_number(lp.value) << ", \"t\": " << json_number(lp.t)
+             << ", \"fibre\": " << lp.fibre << "}";
+      }
+      js << "}";
+    }
+    js << "\n  }";
+  }
+  // The largest element results per body (stress modes), most loaded first.
+  const auto top = [](const StressBody& sb) {
+    std::vector<std::size_t> order(sb.peak.size());
+    for (std::size_t e = 0; e < order.size(); ++e) order[e] = e;
+    const std::size_t n = std::min<std::size_t>(kTopElements, order.size());
+    std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(n), order.end(),
+                      [&](std::size_t a, std::size_t b) { return sb.peak[a] > sb.peak[b]; });
+    order.resize(n);
+    return order;
+  };
+  if (!stress_.empty()) {
+    js << ",\n  \"element_peaks\": {";
+    for (std::size_t k = 0; k < stress_.size(); ++k) {
+      const StressBody& sb = stress_[k];
+      js << (k ? "," : "") << "\n    " << json_string(scene_.description.bodies[sb.body].name) << ": [";
+      const auto order = top(sb);
+      for (std::size_t i = 0; i < order.size(); ++i) {
+        const std::size_t e = order[i];
+        js << (i ? ", " : "") << "{\"element\": " << sb.modes->element_ids[e] << ", \"quantity\": \""
+           << fem::element_result_peak_name(static_cast<fem::ResultKind>(sb.modes->kinds[e])) << "\", \"peak\": "
+           << json_number(sb.peak[e]) << ", \"t\": " << json_number(sb.t_peak[e]) << ", \"fibre\": " << sb.fibre[e] << "}";
+      }
+      js << "]";
+    }
+    js << "\n  }";
+  }
+  js << "\n}\n";
   js.flush();
+  write_stress_envelope();
 
   std::ofstream tx = open(folder_ / "summary.txt");
   tx << "seflex run " << scene_.description.file.string() << "\n" << scene_.description.title << "\n\n";
@@ -357,6 +534,33 @@ void RunOutput::finish(const RunEnd& end) {
     for (std::size_t pad = m.force_elements[static_cast<std::size_t>(lock_elements_[k])].name.size(); pad < 24; ++pad) tx << ' ';
     if (t_latch_[k]) tx << num(*t_latch_[k]) << "   " << num(peak_after_latch_[k]) << "\n";
     else tx << "never latched\n";
+  }
+  if (!stress_.empty() && !lock_elements_.empty()) {
+    tx << "\nlargest element result of each body from each lock's latch until the next lock latches\n";
+    for (std::size_t k = 0; k < lock_elements_.size(); ++k)
+      for (const StressBody& sb : stress_) {
+        const LockPeak& lp = sb.after_lock[k];
+        tx << "  " << m.force_elements[static_cast<std::size_t>(lock_elements_[k])].name << "  "
+           << scene_.description.bodies[sb.body].name << ": ";
+        if (lp.value < 0) {
+          tx << "-\n";
+          continue;
+        }
+        const auto it = std::find(sb.modes->element_ids.begin(), sb.modes->element_ids.end(), lp.element);
+        const auto kind = static_cast<fem::ResultKind>(sb.modes->kinds[static_cast<std::size_t>(it - sb.modes->element_ids.begin())]);
+        tx << fem::element_result_peak_name(kind) << " " << num(lp.value) << " at element " << lp.element << ", t = " << num(lp.t)
+           << " s" << (lp.fibre ? (lp.fibre == 1 ? " (fibre Z1)" : " (fibre Z2)") : "") << "\n";
+      }
+  }
+  for (const StressBody& sb : stress_) {
+    tx << "\nlargest element results of " << scene_.description.bodies[sb.body].name
+       << " (stress modes x elastic coordinates; stress_envelope.csv has every element)\n";
+    for (const std::size_t e : top(sb)) {
+      const auto kind = static_cast<fem::ResultKind>(sb.modes->kinds[e]);
+      tx << "  element " << sb.modes->element_ids[e] << "  " << fem::element_result_peak_name(kind) << " " << num(sb.peak[e])
+         << " at t = " << num(sb.t_peak[e]) << " s" << (sb.fibre[e] ? (sb.fibre[e] == 1 ? " (fibre Z1)" : " (fibre Z2)") : "")
+         << "\n";
+    }
   }
   tx.flush();
 }

@@ -84,9 +84,9 @@ struct Builder {
 
   /// A superelement file with the parts the run needs. `full_inertia`: the first body that uses the
   /// file with full inertia (nullptr: none does).
-  se::Superelement load_file(const SceneBody& b, const SceneBody* full_inertia) const {
+  se::Superelement load_file(const SceneBody& b, const SceneBody* full_inertia, se::StressModes& stress) const {
     const auto load = [&](io::SuperelementParts parts) {
-      return at(b.file_where, [&] { return io::load_superelement(b.superelement, io::LoadOptions{parts}); });
+      return at(b.file_where, [&] { return io::load_superelement(b.superelement, io::LoadOptions{parts, &stress}); });
     };
     se::Superelement s = load(options.keep_mesh ? io::SuperelementParts::All : io::SuperelementParts::Dynamics);
     if (!full_inertia || s.invariants.present()) return s;
@@ -114,11 +114,15 @@ struct Builder {
     // of modes for bodies that keep fewer.
     std::map<std::string, std::shared_ptr<const se::Superelement>> files;
     std::map<std::pair<std::string, int>, std::shared_ptr<const se::Superelement>> truncated;
+    std::map<std::string, std::shared_ptr<const se::StressModes>> file_stress;
+    std::map<std::pair<std::string, int>, std::shared_ptr<const se::StressModes>> truncated_stress;
     for (const SceneBody& b : d.bodies) {
       const std::string key = b.superelement.string();
       if (!files.count(key)) {
         const auto it = full_inertia.find(key);
-        files[key] = std::make_shared<const se::Superelement>(load_file(b, it == full_inertia.end() ? nullptr : it->second));
+        se::StressModes stress;
+        files[key] = std::make_shared<const se::Superelement>(load_file(b, it == full_inertia.end() ? nullptr : it->second, stress));
+        if (stress.present()) file_stress[key] = std::make_shared<const se::StressModes>(std::move(stress));
       }
       const se::Superelement& full = *files[key];
       int m = full.num_modes;
@@ -128,12 +132,18 @@ struct Builder {
                        std::to_string(full.num_modes) + " fixed-interface modes");
         m = b.internal_modes;
       }
+      const auto st = file_stress.find(key);
       if (m == full.num_modes) {
         scene.superelements.push_back(files[key]);
+        scene.stress.push_back(st == file_stress.end() ? nullptr : st->second);
       } else {
         auto& kept = truncated[{key, m}];
         if (!kept) kept = std::make_shared<const se::Superelement>(io::keep_internal_modes(full, m));
         scene.superelements.push_back(kept);
+        auto& kept_stress = truncated_stress[{key, m}];
+        if (!kept_stress && st != file_stress.end())
+          kept_stress = std::make_shared<const se::StressModes>(st->second->first_columns(kept->size()));
+        scene.stress.push_back(kept_stress);
       }
       const se::Superelement& s = *scene.superelements.back();
       X_WB.push_back(mbd::Pose{b.X_WF.R, b.X_WF.p + b.X_WF.R * s.p_OBo});

@@ -338,8 +338,15 @@ struct Reader {
   }
 
   void output(const YamlField& f) {
-    f.check_keys({"interval", "animation"});
+    f.check_keys({"interval", "animation", "interface_loads", "static_subcases"});
+    if (f.has("static_subcases")) {
+      d.output.static_subcases = f["static_subcases"].numbers();
+      for (std::size_t k = 0; k < d.output.static_subcases.size(); ++k)
+        if (d.output.static_subcases[k] < 0 || (k > 0 && d.output.static_subcases[k] <= d.output.static_subcases[k - 1]))
+          f["static_subcases"].fail("expected increasing times >= 0 [s]");
+    }
     if (f.has("interval")) d.output.interval = f["interval"].positive();
+    if (f.has("interface_loads")) d.output.interface_loads = f["interface_loads"].boolean();
     if (f.has("animation")) {
       const YamlField a = f["animation"];
       a.check_keys({"interval"});

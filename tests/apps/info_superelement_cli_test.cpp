@@ -39,7 +39,7 @@ TEST(InfoSuperelementCli, DescribesAReducedYoke) {
 
   EXPECT_TRUE(has(o, "superelement " + se_path.string() + "\n")) << o;
   EXPECT_TRUE(has(o, "  name                         yoke\n")) << o;
-  EXPECT_TRUE(has(o, "  format                       1.3, ")) << o;
+  EXPECT_TRUE(has(o, "  format                       1.4, ")) << o;
   EXPECT_TRUE(has(o, "  source                       " + yoke().string() + "\n")) << o;
   EXPECT_TRUE(has(o, "  source SHA-256               " + io::sha256_file_hex(yoke()) + "\n")) << o;
   EXPECT_TRUE(has(o, "  units                        SI\n")) << o;

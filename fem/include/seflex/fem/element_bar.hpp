@@ -89,6 +89,10 @@ Eigen::Matrix<double, 12, 1> bar_thermal_load(const BarElement& e, double alpha,
 /// or a section with I1 I2 <= I12^2.
 BarElement make_bar_element(const Model& model, const Bar& bar);
 
+/// Forces and moments (12: end A then end B, element axes) that the grids exert on the bar ends for grid
+/// displacements u (12, basic): K T q of the pinned, offset stiffness. Implemented in element_bar_kg.cpp.
+Eigen::Matrix<double, 12, 1> bar_end_forces(const BarElement& e, const Eigen::Matrix<double, 12, 1>& u_basic);
+
 /// Axial force N (tension positive) of the bar for grid displacements u (12, basic): the element-axis
 /// end force of the (pinned, offset) stiffness, N = f_x at end B. Implemented in element_bar_kg.cpp.
 double bar_axial_force(const BarElement& e, const Eigen::Matrix<double, 12, 1>& u_basic);

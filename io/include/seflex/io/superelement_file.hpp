@@ -16,16 +16,18 @@
 #include <string>
 #include <vector>
 
+#include "seflex/superelement/stress_modes.hpp"
 #include "seflex/superelement/superelement.hpp"
 
 namespace seflex::io {
 
 inline constexpr int kSuperelementFormatMajor = 1;
-inline constexpr int kSuperelementFormatMinor = 3;
+inline constexpr int kSuperelementFormatMinor = 4;
 
 
 struct SaveOptions {
   bool overwrite = false;  ///< refuse to replace an existing file unless set
+  const se::StressModes* stress = nullptr;  ///< stress modes to store with the body (format 1.4; null: none)
 };
 
 /// Write `se` to `path` (atomically: a temporary file renamed into place).
@@ -42,6 +44,7 @@ enum class SuperelementParts {
 
 struct LoadOptions {
   SuperelementParts parts = SuperelementParts::All;
+  se::StressModes* stress = nullptr;  ///< receives the file's stress modes (empty when it has none); null: not read
 };
 
 /// Read a superelement file. Checks magic, format version, header, sizes, the SHA-256 trailer
@@ -69,6 +72,7 @@ struct SuperelementFileInfo {
   std::uint64_t file_bytes = 0;
   std::int64_t num_fe_nodes = 0, num_cells = 0;  ///< of the mesh part (0 when absent)
   std::vector<DatasetEntry> datasets;
+  se::StressModes stress;              ///< the stress modes (format 1.4; empty when absent)
   bool has_invariants() const { return dynamics.invariants.present(); }
   bool has_mesh() const;               ///< fe_positions with at least one node, recovery or M_fe
   bool has(const std::string& dataset) const;
@@ -85,7 +89,7 @@ std::uint64_t superelement_memory_bytes(const se::Superelement& se);
 void drop_mesh(se::Superelement& se);
 
 /// Serialise to bytes (what save_superelement writes).
-std::string serialize_superelement(const se::Superelement& se);
+std::string serialize_superelement(const se::Superelement& se, const se::StressModes* stress = nullptr);
 
 /// The superelement with only its first `modes` fixed-interface modes (exact truncation of the
 /// Craig-Bampton basis: K, M, Phi_f, recovery and the inertia invariants lose the trailing columns).

@@ -8,8 +8,11 @@
 // Point coordinates are the deformed positions p_WI = p_WBo + R_WB (p_BoI_B + U_I), U = recovery q.
 // Point data: "elastic_displacement" (R_WB U_I, world axes) - apply ParaView's "Warp By Vector" with
 // scale factor s - 1 to exaggerate the elastic deformation s times; "displacement" (from the position
-// in the first step written). Cell data: "body" (index of the body), "element_id" (FE element id).
+// in the first step written). Cell data: "body" (index of the body), "element_id" (FE element id) and,
+// when a snapshot of the first step carries element results, "element_result" (BodySnapshot::element_values
+// at the cell's element: von Mises stress, moment, force; 0 where a body has none).
 #include <Eigen/Core>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -25,6 +28,10 @@ struct BodySnapshot {
   Eigen::Matrix3d R_WB = Eigen::Matrix3d::Identity();  ///< floating-frame orientation in world
   Eigen::Vector3d p_WBo = Eigen::Vector3d::Zero();     ///< floating-frame origin in world
   Eigen::VectorXd q;                                   ///< local elastic coordinates (size se.size(); empty = rigid)
+  /// Element results to colour the cells by (docs/stresses.md): element_values[k] the value (von Mises
+  /// stress, moment, force) of element (*element_ids)[k]; null: none. Given at the first step or never.
+  const std::vector<std::int32_t>* element_ids = nullptr;
+  const double* element_values = nullptr;
 };
 
 class PvdSeries {

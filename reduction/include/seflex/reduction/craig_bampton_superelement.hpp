@@ -36,6 +36,7 @@
 #include "seflex/fem/constraints.hpp"
 #include "seflex/fem/model.hpp"
 #include "seflex/reduction/craig_bampton.hpp"
+#include "seflex/superelement/stress_modes.hpp"
 #include "seflex/superelement/superelement.hpp"
 
 namespace seflex::reduction {
@@ -63,6 +64,10 @@ struct SuperelementOptions {
   /// `basis` below solves the inertia load cases on its factor, CraigBamptonOptions::interior_loads).
   bool stiffening = true;
   bool ignore_unknown_cards = false;  ///< reduce without the cards seflex does not know (check_card_usage)
+  /// Stress modes (se::StressModes, format 1.4; reduce_to_superelement's `stress`): the element results
+  /// (fem/element_results.hpp) of these element ids per basis vector; an empty list: every element with
+  /// results. Unset: none.
+  std::optional<std::vector<int>> stress_elements;
   /// The distributed backend's partitioned assembly (parallel/, `reduce --backend slepc`): when both
   /// are set, step 1 takes the g-set matrices from `assemble` (M whole; K only as far as
   /// apply_constraints needs it: each grid's diagonal block, enough when no dof is dependent) and
@@ -88,6 +93,8 @@ struct SuperelementInfo {
   Eigen::Index autospc_dofs = 0;    ///< dofs removed by AUTOSPC
   Eigen::Index dependent_dofs = 0;  ///< dependent dofs (rigid elements, RBE3, MPC) eliminated
   double seconds_stiffening = 0;    ///< the geometric-stiffness invariants (0 when not computed)
+  /// Stress modes: the selected elements' cards without element results (and unknown ids), with counts.
+  std::vector<std::pair<std::string, int>> stress_missing;
 };
 
 /// Reduce a finalized model. Fills every field of se::Superelement, of the provenance the version and
@@ -97,8 +104,10 @@ struct SuperelementInfo {
 /// frame node (naming the node and why: missing, a scalar point, SPC'd, an RBE2 dependent,
 /// without stiffness in a component, listed twice) and for an interior the interface does not hold
 /// (a part connected to no interface node, or a mechanism: names a grid and component).
+/// With options.stress_elements and `stress`, the stress modes (se::StressModes) of those elements
+/// are computed into *stress (empty when none of them has element results).
 se::Superelement reduce_to_superelement(const fem::Model& model, const SuperelementOptions& options,
-                                        SuperelementInfo* info = nullptr);
+                                        SuperelementInfo* info = nullptr, se::StressModes* stress = nullptr);
 
 /// The rigid-body modes of the interface (6N x 6) for unit translations along and rotations about
 /// the basic axes through the frame origin: rows of node j = [I, -skew(x_j); 0, I] (formulation.md

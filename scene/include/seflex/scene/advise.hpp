@@ -30,6 +30,11 @@ struct AdviseOptions {
   /// in an alternative scene, the node of the same name, else the node at the same initial position.
   std::vector<std::string> nodes;
   double position_tolerance = 0.0;               ///< largest acceptable node-position error [m] (> 0 with nodes)
+  /// Largest acceptable error of the peak element results (stress modes, docs/stresses.md) as a fraction
+  /// of the largest reference peak of the same body (0: not compared). Each element's peak over the
+  /// horizon (von Mises, moment, force) is compared with the finest variant's; a variant without stress
+  /// modes (rigid bodies) has none, an error of 1.
+  double stress_tolerance = 0.0;
   std::vector<int> few_modes = {2};              ///< "a few" internal modes per body (besides 0 and all)
   int grid_points = 400;                         ///< comparison grid over the horizon (at least)
 };
@@ -49,9 +54,12 @@ struct AdviseRow {
   double worst_time = 0.0;       ///< [s]
   double max_position_error = 0.0;  ///< max over the nodes and grid times of |p - p_ref| [m]; inf if !ran; 0 without nodes
   std::string worst_node;        ///< where max_position_error occurred (the scene's node name)
+  double max_stress_error = 0.0;  ///< max over bodies and elements of |peak - peak_ref| / max peak_ref of the body; 0 when not compared
+  std::string worst_element;      ///< where max_stress_error occurred ("body element ID")
   double worst_node_time = 0.0;  ///< [s]
   bool stiffening = false;       ///< some flexible body of the variant has geometric stiffening
-  bool within = false;           ///< ran, max_error <= tolerance and max_position_error <= position_tolerance
+  bool within = false;           ///< ran, max_error <= tolerance, max_position_error <= position_tolerance and
+                                 ///< max_stress_error <= stress_tolerance (when compared)
 };
 
 struct AdviseReport {
@@ -60,6 +68,7 @@ struct AdviseReport {
   std::string horizon_lock;      ///< which lock (when horizon_at_lock)
   double tolerance = 0.0;        ///< [rad]
   double position_tolerance = 0.0;  ///< [m] (nodes given)
+  double stress_tolerance = 0.0;    ///< fraction (0: stresses not compared)
   std::vector<std::string> nodes;   ///< the compared nodes
   std::vector<AdviseRow> rows;   ///< reference first, then the variants in the order made
   int recommended = -1;          ///< index into rows (the reference qualifies if nothing cheaper does)

@@ -10,6 +10,15 @@
 //   poses.csv     t,body,R00..R22,px,py,pz,q0.. per sample and body: floating-frame pose and local
 //                 elastic coordinates (rigid bodies: no q) - enough to re-animate the FE meshes
 //   animation.pvd + animation/*.vtu  deformed FE meshes at the scene's animation interval
+//   stress_envelope.csv  (bodies reduced with --stresses) per body and element: the largest von Mises
+//                 stress (shells: of the fibres Z1, Z2; solids), moment (bars), axial stress (rods) or
+//                 force (springs, bushes) over the run, its time and fibre: element results = the body's
+//                 stress modes x its local elastic coordinates at every sample (docs/stresses.md)
+//   interface_loads.csv  (output.interface_loads) t,body,node, the elastic load K_bb q_b the body takes at
+//                 each interface node in its frame B (fx..mz) and in the scene's basic axes (FX..MZ)
+//   static_subcases/BODY_K.bdf  (output.static_subcases: times) at the first sample at or after time K of
+//                 the list, each flexible body's interface displacements as SPC1 + SPCD, set 9001 + K
+//                 (io/interface_subcase.hpp): a static subcase of the body's own deck
 //   summary.txt, summary.json        written by finish()
 // It also carries the scene's stop rule (integrator.stop.after_all_locked) as stop_requested().
 #include <chrono>
@@ -83,6 +92,10 @@ class RunOutput : public mbd::Observer {
   void write_poses(const mbd::Sample& s);
   void write_animation(const mbd::Sample& s);
   void track_locks(const mbd::Model& model, const mbd::Sample& s);
+  void recover_stresses(const mbd::Sample& s);
+  void write_interface_loads(const mbd::Sample& s);
+  void write_stress_envelope();
+  void write_static_subcases(const mbd::Sample& s);
   /// Write and flush the buffered rows of history and poses if kFlushInterval has passed since the
   /// last time or kBufferBytes are waiting (the demo run made 5,700 write calls with a flush per
   /// sample, and a poses row longer than the stream's buffer is a write call of its own).
@@ -90,6 +103,7 @@ class RunOutput : public mbd::Observer {
   void write_out();
   static constexpr std::chrono::milliseconds kFlushInterval{200};
   static constexpr std::size_t kBufferBytes = 1 << 20;
+  static constexpr std::size_t kTopElements = 5;  ///< element results per body in the summary
 
   const Scene& scene_;
   std::filesystem::path folder_;
@@ -106,6 +120,26 @@ class RunOutput : public mbd::Observer {
   std::vector<std::optional<double>> t_latch_;  ///< per lock
   std::vector<double> peak_after_latch_;        ///< per lock, max |torque| once latched
   std::optional<double> all_locked_at_;
+  struct LockPeak {
+    double value = -1.0, t = 0.0;
+    int element = 0, fibre = 0;
+  };
+  /// A body with stress modes: its results at the last sample and, per element, the largest peak so far.
+  struct StressBody {
+    std::size_t body = 0;  ///< scene body
+    const se::StressModes* modes = nullptr;
+    Eigen::VectorXd results;
+    std::vector<double> current, peak, t_peak;  ///< per element: the ranking value now (animation), its peak and time
+    std::vector<int> fibre;
+    /// Per lock: the largest element result from its latch until the next lock latches (the latch shock).
+    std::vector<LockPeak> after_lock;
+  };
+  std::vector<StressBody> stress_;
+  std::ofstream interface_loads_;
+  std::string interface_buf_;
+  Eigen::VectorXd f_b_;  ///< interface loads of one body (scratch)
+  std::size_t next_subcase_ = 0;  ///< the next of output.static_subcases to write
+  int last_latched_ = -1;         ///< the lock latched most recently (index into lock_elements_), -1 none
   bool stop_announced_ = false;
 };
 

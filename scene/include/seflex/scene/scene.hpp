@@ -18,6 +18,7 @@
 #include "seflex/mbd/solvers/integrator.hpp"
 #include "seflex/mbd/solvers/simulate.hpp"
 #include "seflex/mbd/model.hpp"
+#include "seflex/superelement/stress_modes.hpp"
 #include "seflex/superelement/superelement.hpp"
 
 namespace seflex::scene {
@@ -96,6 +97,10 @@ struct SceneDrive {
 struct SceneOutput {
   double interval = 0.0;                     ///< CSV sampling [s] (0: every step)
   std::optional<double> animation_interval;  ///< VTK series [s] (absent: none)
+  bool interface_loads = false;              ///< write interface_loads.csv (run_output.hpp)
+  /// Instants [s] at which each flexible body's interface displacements are written as a Nastran static
+  /// subcase (static_subcases/BODY_K.bdf, run_output.hpp), at the first sample at or after each.
+  std::vector<double> static_subcases;
 };
 
 struct SceneDescription {
@@ -126,6 +131,9 @@ struct Scene {
   /// Per scene body, as used (internal modes kept); bodies that use the same file with the same modes
   /// share one copy.
   std::vector<std::shared_ptr<const se::Superelement>> superelements;
+  /// Per scene body, the stress modes of its file (as many columns as the body keeps; null: none;
+  /// docs/stresses.md).
+  std::vector<std::shared_ptr<const se::StressModes>> stress;
   std::vector<SceneBodyRef> bodies;             ///< per scene body
   mbd::Model model;
 };
