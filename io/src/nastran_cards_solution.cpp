@@ -20,6 +20,14 @@ std::optional<int> optional_count(const Card& card, std::size_t i, const char* w
   return n;
 }
 
+/// G and C of NORM = POINT (EIGR, EIGB: fields 9 and 10 of the card, the continuation's 2 and 3).
+void norm_point(const Card& card, fem::EigenMethod& m) {
+  m.norm_grid = card.id(9, "G");
+  m.norm_component = card.integer(10, "C");
+  if (m.norm_component < 0 || m.norm_component > 6)
+    card.fail(10, "C", card.got(10) + "; expected one component 1-6 (0 for a scalar point)");
+}
+
 /// The DMIG of this name, created on first sight.
 fem::Dmig& dmig_named(ReaderState& st, const std::string& name, const fem::CardRef& ref) {
   auto [it, inserted] = st.dmig_index.try_emplace(name, st.model.dmigs.size());
@@ -90,12 +98,7 @@ void parse_eigr(const Card& card, ReaderState& st) {
   m.norm = card.text_or(8, "NORM", "MASS");
   if (m.norm != "MASS" && m.norm != "MAX" && m.norm != "POINT")
     card.fail(8, "NORM", card.got(8) + "; expected MASS, MAX, POINT or blank");
-  if (m.norm == "POINT") {
-    m.norm_grid = card.id(9, "G");
-    m.norm_component = card.integer(10, "C");
-    if (m.norm_component < 0 || m.norm_component > 6)
-      card.fail(10, "C", card.got(10) + "; expected one component 1-6 (0 for a scalar point)");
-  }
+  if (m.norm == "POINT") norm_point(card, m);
   m.ref = card.ref();
   st.model.eigen_methods.push_back(std::move(m));
 }
@@ -119,12 +122,7 @@ void parse_eigb(const Card& card, ReaderState& st) {
   if (!card.blank(6)) optional_count(card, 6, "NDN");
   m.norm = card.text_or(8, "NORM", "MAX");
   if (m.norm != "MAX" && m.norm != "POINT") card.fail(8, "NORM", card.got(8) + "; expected MAX, POINT or blank");
-  if (m.norm == "POINT") {
-    m.norm_grid = card.id(9, "G");
-    m.norm_component = card.integer(10, "C");
-    if (m.norm_component < 0 || m.norm_component > 6)
-      card.fail(10, "C", card.got(10) + "; expected one component 1-6 (0 for a scalar point)");
-  }
+  if (m.norm == "POINT") norm_point(card, m);
   m.ref = card.ref();
   st.model.eigen_methods.push_back(std::move(m));
 }
