@@ -66,9 +66,9 @@ family() {
       "PBUSH RCV (stress recovery coefficients ignored)") echo output ;;
     # other solutions' data a linear static or modal reduction does not read: nonlinear-analysis
     # control and material data, temperature-dependent materials and their tables, DMAP sets and
-    # matrices, inertia relief and buckling methods of other solution sequences
+    # matrices
     NLPARM | NLPCI | NLCNTL | NLCNTLG | NLCNTL2 | NLSTEP | MATS1 | MATS3 | MATS8 | TABLES1 | MATT1 | MATT2 | MATT3 | \
-      MATT8 | MATT9 | MATT11 | TABLEM[1-5] | PBUSH1D | USET | USET1 | DMI | DTI | SUPORT1 | EIGB | \
+      MATT8 | MATT9 | MATT11 | TABLEM[1-5] | PBUSH1D | USET | USET1 | DMI | DTI | \
       "PARAM in the bulk data overridden by the case control") echo other ;;
     *) echo structural ;;
   esac

@@ -10,6 +10,7 @@
 #include <set>
 #include <string>
 #include <tuple>
+#include <sstream>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -54,6 +55,7 @@ class Finalizer {
     index_elements();
     resolve_coordinates(m_);
     check_elements();
+    offset_definition_without_offsets();
     check_constraints_and_loads();
     check_solution_control();
     m_.finalized = true;
@@ -96,21 +98,33 @@ class Finalizer {
       dense_grids_.assign(static_cast<std::size_t>(max_id) + 1, false);
       for (const auto& g : m_.grids) dense_grids_[static_cast<std::size_t>(g.id)] = true;
     }
-    // An SPOINT listed twice defines the same scalar point twice: one is kept (pyNastran reads such
-    // decks, e.g. freq_sine/good_sine.dat; a scalar point carries no data that could differ).
+    // An SPOINT listed twice defines the same scalar point twice: one is kept, as Nastran does
+    // (pyNastran's freq_sine/good_sine.dat lists SPOINT 1000 twice and carries the results Nastran
+    // computed from it, good_sine.op2; a scalar point carries no data that could differ). Said in a
+    // warning, not listed as unsupported: nothing is approximated.
     {
       std::unordered_set<int> seen;
       std::size_t repeats = 0;
-      CardRef first_repeat;
+      int first_repeat_id = 0;
+      CardRef first_repeat_ref;
       auto& sp = m_.spoints;
+      std::unordered_map<int, CardRef> first_at;
+      for (const ScalarPoint& s : sp) first_at.emplace(s.id, s.ref);
       sp.erase(std::remove_if(sp.begin(), sp.end(),
                               [&](const ScalarPoint& s) {
                                 if (seen.insert(s.id).second) return false;
-                                if (repeats++ == 0) first_repeat = s.ref;
+                                if (repeats++ == 0) {
+                                  first_repeat_id = s.id;
+                                  first_repeat_ref = s.ref;
+                                }
                                 return true;
                               }),
                sp.end());
-      if (repeats > 0) note("SPOINT id given twice (one scalar point kept)", first_repeat, repeats);
+      if (repeats > 0)
+        warn_once(at(first_repeat_ref) + ": SPOINT " + std::to_string(first_repeat_id) +
+                                   " given again (first at " + at(first_at.at(first_repeat_id)) + ")" +
+                                   (repeats > 1 ? " and " + std::to_string(repeats - 1) + " more repeated ids" : "") +
+                                   ": one scalar point kept, as Nastran does");
       // A scalar point that appears on a scalar element (CELAS3/4, CMASS3/4, or CELAS1/2, CMASS1/2
       // with component 0 and no GRID of that id) needs no SPOINT (MSC QRG, SPOINT remarks).
       auto implicit = [&](int g, int c, bool scalar_points, const CardRef& ref) {
@@ -213,6 +227,72 @@ class Finalizer {
       }
     if (mat2_plies > 0) note("PCOMP ply of MAT2 (rigid in transverse shear: a MAT2 gives no transverse shear moduli)",
                              first_mat2_ply, mat2_plies);
+    poisson_ratio_above_half();
+  }
+
+  /// MDLPRM OFFDEF (MSC: how element offsets behave) with no offset anywhere in the deck (CBAR/CBEAM
+  /// WA/WB, shell ZOFFS, CBUSH OCID/S1-S3, CONM2 X1-X3): there is nothing it could change, so the note
+  /// is replaced by a warning (pyNastran's rigid_rbe2.bdf, cbush_test.bdf: OFFDEF LROFF, no offsets).
+  /// With offsets it stays listed (as a model parameter seflex does not use).
+  void offset_definition_without_offsets() {
+    const std::string name = "MDLPRM OFFDEF (model parameter not used)";
+    const auto it = std::find_if(m_.unsupported.begin(), m_.unsupported.end(), [&](const UnsupportedCard& u) { return u.name == name; });
+    if (it == m_.unsupported.end()) return;
+    for (const auto& b : m_.bars)
+      if (!b.wa.isZero(0.0) || !b.wb.isZero(0.0)) return;
+    for (const auto& e : m_.shells)
+      if (e.zoffs != 0.0) return;
+    for (const auto& e : m_.bushes)
+      if (e.ocid >= 0) return;
+    for (const auto& e : m_.conm2)
+      if (e.cid < 0 || !e.x.isZero(0.0)) return;
+    warn_once(at(it->first) + ": MDLPRM OFFDEF: no element of the deck has an offset (CBAR/CBEAM WA/WB, shell ZOFFS, "
+                              "CBUSH OCID, CONM2 X): nothing for it to define; not used");
+    m_.unsupported.erase(it);
+  }
+
+  /// MAT1 NU above 0.5 (the QRG's range is -1 < NU <= 0.5; decks with E, G and NU = E/2G - 1 of an
+  /// "equivalent" plate material have it, e.g. pyNastran's freedlm.bdf). Rods, bars, beams, tubes and
+  /// bends use E and G only, so a MAT1 that only they use is read with a warning, as Nastran warns of
+  /// an inconsistent E, G, NU; a shell, composite ply, shear panel or solid would use NU: listed (every
+  /// solution refuses the deck, naming the MAT1 card).
+  void poisson_ratio_above_half() {
+    std::unordered_map<int, std::string> needs_nu;  // MID -> the first property that uses its NU
+    auto uses = [&](int mid, const char* card, int pid) {
+      if (mid > 0) needs_nu.emplace(mid, std::string(card) + " " + std::to_string(pid));
+    };
+    for (const auto& p : m_.shell_props)
+      for (const int mid : {p.mid1, p.mid2, p.mid3, p.mid4}) uses(mid, "PSHELL", p.id);
+    for (const auto& p : m_.composite_props)
+      for (const auto& ply : p.plies) uses(ply.mid, p.global ? "PCOMPG" : "PCOMP", p.id);
+    for (const auto& p : m_.shear_props) uses(p.mid, "PSHEAR", p.id);
+    for (const auto& p : m_.solid_props) uses(p.mid, "PSOLID", p.id);
+    std::size_t refused = 0;
+    CardRef first;
+    for (const auto& m : m_.mat1) {
+      if (!(m.nu > 0.5)) continue;
+      const std::string what = at(m.ref) + ": MAT1 " + std::to_string(m.id) + " NU = " + number(m.nu) +
+                               " is above 0.5 (the QRG's range is -1 < NU <= 0.5)";
+      if (const auto it = needs_nu.find(m.id); it != needs_nu.end()) {
+        if (refused++ == 0 || std::tie(m.ref.file, m.ref.line) < std::tie(first.file, first.line)) first = m.ref;
+        warn_once(what + " and " + it->second + " uses it: seflex does not model such a material on shells or solids");
+      } else {
+        warn_once(what + "; only rods, bars and beams use it, which take E and G, not NU: read as given");
+      }
+    }
+    if (refused > 0) note("MAT1 NU above 0.5", first, refused);
+  }
+
+  static std::string number(double x) {
+    std::ostringstream os;
+    os << x;
+    return os.str();
+  }
+
+  /// A warning every command prints (Model::read_warnings), once however often finalize runs.
+  void warn_once(const std::string& text) {
+    if (std::find(m_.read_warnings.begin(), m_.read_warnings.end(), text) == m_.read_warnings.end())
+      m_.read_warnings.push_back(text);
   }
 
   /// A note of a feature read with an approximation (listed with the unsupported cards, as the
@@ -507,6 +587,7 @@ class Finalizer {
     for (const auto& e : m_.omit) need_dof(e.grid, e.c, true, e.ref, "OMIT/OMIT1", e.grid, "");
     for (const auto& e : m_.bset) need_dof(e.grid, e.c, true, e.ref, "BSET/BSET1", e.grid, "");
     for (const auto& e : m_.suport) need_dof(e.grid, e.c, true, e.ref, "SUPORT", e.grid, "");
+    for (const auto& e : m_.suport1) need_dof(e.dofs.grid, e.dofs.c, true, e.dofs.ref, "SUPORT1", e.sid, "");
   }
 
   /// SPCADD / MPCADD / LOAD: a unique id, not also a set id of the cards it combines. (Whether the

@@ -1,6 +1,8 @@
 // Elements on properties or materials seflex does not model: left out and listed (finalize_unsupported.hpp).
 #include "finalize_unsupported.hpp"
 
+#include "seflex/fem/finalize.hpp"
+
 #include <algorithm>
 #include <string>
 #include <unordered_map>
@@ -22,6 +24,15 @@ class LeaveOut {
         for (const auto& mb : u.members) unsupported_prop_.emplace(mb.sid, u.name);
     }
     if (unsupported_mat_.empty() && unsupported_prop_.empty() && m_.mat2.empty() && m_.mat8.empty()) return;
+    // the properties some element references (one id space for all properties)
+    for (const auto& e : m_.bars) used_pids_.insert(e.pid);
+    for (const auto& e : m_.rods)
+      if (!e.inline_property) used_pids_.insert(e.pid);
+    for (const auto& e : m_.bends) used_pids_.insert(e.pid);
+    for (const auto& e : m_.shear_panels) used_pids_.insert(e.pid);
+    for (const auto& e : m_.solids) used_pids_.insert(e.pid);
+    for (const auto& e : m_.shells) used_pids_.insert(e.pid);
+    for (const auto& e : m_.shells8) used_pids_.insert(e.shell.pid);
     for (const auto& x : m_.mat1) mat1_.insert(x.id);
     for (const auto& x : m_.mat2) other_mat_.emplace(x.id, "MAT2");
     for (const auto& x : m_.mat8) other_mat_.emplace(x.id, "MAT8");
@@ -51,7 +62,13 @@ class LeaveOut {
                                [&](const auto& p) {
                                  const std::string reason = why(p);
                                  if (reason.empty()) return false;
-                                 note(reason + " (left out)", p.ref);
+                                 // a property no element uses changes nothing: Nastran runs such decks
+                                 // (pyNastran's bwb_saero_trim.f06: PBEAML 5 and 999 on MAT8, no CBEAM
+                                 // on them); a warning, not a note that solutions refuse
+                                 if (used_pids_.count(p.id))
+                                   note(reason + " (left out)", p.ref);
+                                 else
+                                   unused_property(reason, p.id, p.ref);
                                  dropped.emplace(p.id, reason);
                                  return true;
                                }),
@@ -163,7 +180,15 @@ class LeaveOut {
     ++m_.unsupported[it->second].count;
   }
 
+  /// "deck.bdf:12: PBEAML 5 on MAT8: no element uses it; ..." (reason: "PBEAML on MAT8").
+  void unused_property(const std::string& reason, int pid, const CardRef& ref) {
+    const std::size_t card_end = reason.find(' ');
+    m_.read_warnings.push_back(where(m_, ref).str() + ": " + reason.substr(0, card_end) + " " + std::to_string(pid) +
+                               reason.substr(card_end) + ": no element uses it; left out (seflex does not model it)");
+  }
+
   Model& m_;
+  std::unordered_set<int> used_pids_;  ///< properties some element references
   std::unordered_map<int, std::string> unsupported_mat_, unsupported_prop_, other_mat_;
   std::unordered_set<int> mat1_;
   std::unordered_map<std::string, std::unordered_map<int, std::string>> dropped_;  ///< kind -> pid -> reason

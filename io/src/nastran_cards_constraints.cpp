@@ -54,12 +54,12 @@ std::vector<int> id_list(const Card& card, std::size_t first, const char* what, 
 
 namespace {
 
-void dof_pairs(const Card& card, std::vector<fem::DofSetEntry>& out) {
+void dof_pairs(const Card& card, std::vector<fem::DofSetEntry>& out, std::size_t first = 0) {
   static const char* ids[4] = {"ID1", "ID2", "ID3", "ID4"};
   static const char* comps[4] = {"C1", "C2", "C3", "C4"};
   bool any = false;
-  for (std::size_t i = 0; i + 1 < card.size() || i == 0; i += 2) {
-    const std::size_t k = (i / 2) % 4;
+  for (std::size_t i = first; i + 1 < card.size() || i == first; i += 2) {
+    const std::size_t k = ((i - first) / 2) % 4;
     if (card.blank(i) && card.blank(i + 1)) continue;
     fem::DofSetEntry e;
     e.grid = card.id(i, ids[k]);
@@ -68,7 +68,7 @@ void dof_pairs(const Card& card, std::vector<fem::DofSetEntry>& out) {
     out.push_back(e);
     any = true;
   }
-  if (!any) card.fail(0, "ID1", "blank; expected grid or scalar point ids with components");
+  if (!any) card.fail(first, "ID1", "blank; expected grid or scalar point ids with components");
 }
 
 void dof_list(const Card& card, std::vector<fem::DofSetEntry>& out) {
@@ -169,6 +169,15 @@ void parse_omit1(const Card& card, ReaderState& st) { dof_list(card, st.model.om
 void parse_bset(const Card& card, ReaderState& st) { dof_pairs(card, st.model.bset); }
 void parse_bset1(const Card& card, ReaderState& st) { dof_list(card, st.model.bset); }
 void parse_suport(const Card& card, ReaderState& st) { dof_pairs(card, st.model.suport); }
+
+// SUPORT1 SID ID1 C1 ID2 C2 ID3 C3: SUPORT's supports, used by the subcases whose case control selects
+// SUPORT1 = SID (MSC QRG SUPORT1; several cards may share a SID)
+void parse_suport1(const Card& card, ReaderState& st) {
+  const int sid = card.id(0, "SID");
+  std::vector<fem::DofSetEntry> pairs;
+  dof_pairs(card, pairs, 1);
+  for (const fem::DofSetEntry& e : pairs) st.model.suport1.push_back({sid, e});
+}
 
 // FORCE SID G CID F N1 N2 N3; MOMENT SID G CID M N1 N2 N3
 void parse_force(const Card& card, ReaderState& st) { point_load(card, st, fem::PointLoad::Kind::Force); }

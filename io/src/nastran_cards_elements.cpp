@@ -7,16 +7,14 @@ namespace seflex::io::nastran {
 namespace {
 
 /// OFFT: three letters, B or G for the orientation vector, then G or O for each end's offset.
-/// An integer there is COSMIC NASTRAN's orientation flag F (1: X1-X3 is a vector, 2: X1 is G0; the
-/// offsets then are at the grids in global axes, MSC's GGG): read as blank (the default) and listed.
-std::string offt(const Card& card, std::size_t i, ReaderState& st) {
+/// An integer there is COSMIC NASTRAN's orientation flag F (COSMIC NASTRAN User's Manual, CBAR: 1:
+/// X1-X3 is a vector, 2: X1 is G0, both in GA's displacement system; offsets at the grids in their
+/// displacement systems): exactly MSC's GGG, the default, so read as blank; F must agree with field 6.
+std::string offt(const Card& card, std::size_t i, ReaderState&) {
   if (card.kind(i) == FieldKind::Integer) {
     const int f = card.integer(i, "OFFT");
     const bool g0 = card.kind(i - 3) == FieldKind::Integer;
-    if ((f == 1 && !g0) || (f == 2 && g0)) {
-      st.note_unsupported("CBAR/CBEAM/BAROR field 9 as COSMIC's orientation flag F (read as OFFT blank)", card.ref());
-      return "";
-    }
+    if ((f == 1 && !g0) || (f == 2 && g0)) return "";
     card.fail(i, "OFFT", card.got(i) + "; expected one of GGG, BGG, GGO, BGO, GOG, BOG, GOO, BOO (or COSMIC's flag F: 1 with a vector X1-X3, 2 with G0)");
   }
   std::string s = card.text_or(i, "OFFT", "");

@@ -74,9 +74,8 @@ void parse_mat1(const Card& card, ReaderState& st) {
   if (m.E < 0.0) card.fail(1, "E", card.got(1) + "; expected E >= 0");
   if (m.G < 0.0) card.fail(2, "G", card.got(2) + "; expected G >= 0");
   if (has_nu && !(m.nu > -1.0)) card.fail(3, "NU", card.got(3) + "; expected -1 < NU <= 0.5");
-  // NU above 0.5 (the QRG's range is -1 < NU <= 0.5): decks with E, G and NU = E/2G - 1 of an
-  // "equivalent" plate material have it. Read, listed; every solution refuses the deck.
-  if (has_nu && m.nu > 0.5) st.note_unsupported(kMat1NuAboveHalf, card.ref());
+  // NU above 0.5 (the QRG's range is -1 < NU <= 0.5): read; fem::finalize warns, or lists it when a
+  // shell or solid would use NU.
   // Nastran's rules (QRG MAT1, remarks 2-4): E or G must be given; if E and NU, or G and NU, are
   // both blank they are both 0 (e.g. an E-only truss material); otherwise a single blank one follows
   // from E = 2 (1 + NU) G.

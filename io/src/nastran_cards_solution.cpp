@@ -1,4 +1,4 @@
-// EIGRL, EIGR, PARAM, DMIG.
+// EIGRL, EIGR, EIGB, PARAM, DMIG.
 #include <charconv>
 #include <string>
 
@@ -18,6 +18,14 @@ std::optional<int> optional_count(const Card& card, std::size_t i, const char* w
   const int n = card.integer(i, what);
   if (n <= 0) card.fail(i, what, card.got(i) + "; expected a number of roots > 0 or blank");
   return n;
+}
+
+/// G and C of NORM = POINT (EIGR, EIGB: fields 9 and 10 of the card, the continuation's 2 and 3).
+void norm_point(const Card& card, fem::EigenMethod& m) {
+  m.norm_grid = card.id(9, "G");
+  m.norm_component = card.integer(10, "C");
+  if (m.norm_component < 0 || m.norm_component > 6)
+    card.fail(10, "C", card.got(10) + "; expected one component 1-6 (0 for a scalar point)");
 }
 
 /// The DMIG of this name, created on first sight.
@@ -90,12 +98,31 @@ void parse_eigr(const Card& card, ReaderState& st) {
   m.norm = card.text_or(8, "NORM", "MASS");
   if (m.norm != "MASS" && m.norm != "MAX" && m.norm != "POINT")
     card.fail(8, "NORM", card.got(8) + "; expected MASS, MAX, POINT or blank");
-  if (m.norm == "POINT") {
-    m.norm_grid = card.id(9, "G");
-    m.norm_component = card.integer(10, "C");
-    if (m.norm_component < 0 || m.norm_component > 6)
-      card.fail(10, "C", card.got(10) + "; expected one component 1-6 (0 for a scalar point)");
-  }
+  if (m.norm == "POINT") norm_point(card, m);
+  m.ref = card.ref();
+  st.model.eigen_methods.push_back(std::move(m));
+}
+
+// EIGB SID METHOD L1 L2 NEP NDP NDN - / NORM G C (MSC QRG EIGB: the load factors in [L1, L2]; NDP
+// and NDN default to 3 NEP; NORM MAX (default) or POINT). seflex's eigensolver finds the positive
+// roots whatever METHOD (INV or SINV) names; NDN (negative roots) is read for its type.
+void parse_eigb(const Card& card, ReaderState& st) {
+  fem::EigenMethod m;
+  m.sid = card.id(0, "SID");
+  m.is_eigb = true;
+  m.method = card.text_or(1, "METHOD", "");
+  if (m.method != "INV" && m.method != "SINV") card.fail(1, "METHOD", card.got(1) + "; expected INV or SINV");
+  m.f1 = card.real(2, "L1");
+  m.f2 = card.real(3, "L2");
+  if (!(*m.f2 > *m.f1)) card.fail(3, "L2", card.got(3) + "; expected L2 > L1 (L1 = " + card.got(2) + ")");
+  const int nep = card.integer_or(4, "NEP", 0);
+  if (nep < 0) card.fail(4, "NEP", card.got(4) + "; expected an estimated number of roots >= 0 or blank");
+  m.nd = optional_count(card, 5, "NDP");
+  if (!m.nd && nep > 0) m.nd = 3 * nep;
+  if (!card.blank(6)) optional_count(card, 6, "NDN");
+  m.norm = card.text_or(8, "NORM", "MAX");
+  if (m.norm != "MAX" && m.norm != "POINT") card.fail(8, "NORM", card.got(8) + "; expected MAX, POINT or blank");
+  if (m.norm == "POINT") norm_point(card, m);
   m.ref = card.ref();
   st.model.eigen_methods.push_back(std::move(m));
 }

@@ -490,8 +490,8 @@ void write_bush_mass_cards(const fem::Model& m, CardWriter& w) {
 void write_solution_cards(const fem::Model& m, CardWriter& w) {
   for (const auto& e : m.eigen_methods) {
     auto opt_r = [&](const std::optional<double>& v) { v ? w.r(*v) : w.blank(); };
-    if (e.is_eigr) {
-      w.start("EIGR").i(e.sid).t(e.method);
+    if (e.is_eigr || e.is_eigb) {  // EIGR F1 F2 NE ND, EIGB L1 L2 NEP NDP: the same fields
+      w.start(fem::method_card(e)).i(e.sid).t(e.method);
       opt_r(e.f1);
       opt_r(e.f2);
       w.blank();

@@ -11,6 +11,7 @@
 #include "seflex/common/error.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/constraints.hpp"
+#include "seflex/fem/dof_map.hpp"
 #include "seflex/fem/finalize.hpp"
 #include "seflex/fem/geometric_stiffness.hpp"
 #include "seflex/solutions/card_usage.hpp"
@@ -85,18 +86,18 @@ BucklingSolution solve_buckling(const fem::Model& model, const BucklingOptions& 
   require_usable(model, check_card_usage(model, Solution::Buckling, buckling_case_list(model), kInterfaceNone,
                                          options.ignore_unknown_cards));
 
-  // The EIGRL of METHOD (check_card_usage has refused EIGB and undefined methods).
+  // The EIGRL or EIGB of METHOD (check_card_usage has refused undefined methods).
   const fem::EigenMethod* method = nullptr;
   for (const fem::EigenMethod& e : model.eigen_methods)
     if (e.sid == *bc.method) method = &e;
   if (!method)
     throw InputError(fem::where(model, bc.ref),
-                     solutions::case_name(bc) + ": METHOD = " + std::to_string(*bc.method) + " selects no EIGRL card");
+                     solutions::case_name(bc) + ": METHOD = " + std::to_string(*bc.method) + " selects no EIGRL or EIGB card");
   if (method->is_eigr)
     throw InputError(fem::where(model, method->ref),
                      "EIGR " + std::to_string(method->sid) +
                          " is selected by METHOD of the buckling subcase; seflex finds buckling load factors with "
-                         "EIGRL (ND, V1, V2)");
+                         "EIGRL (ND, V1, V2) or EIGB (L1, L2, NEP, NDP)");
   linalg::EigenOptions eo;
   eo.backend = options.backend;
   eo.count = options.count ? options.count : method->nd;
@@ -176,6 +177,8 @@ BucklingSolution solve_buckling(const fem::Model& model, const BucklingOptions& 
   }
   std::sort(modes.begin(), modes.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   const Eigen::Index m = static_cast<Eigen::Index>(modes.size());
+  const std::optional<Eigen::Index> point_dof =
+      method->norm == "POINT" ? fem::find_dof(model, g.dofs, method->norm_grid, method->norm_component) : std::nullopt;
   s.load_factors.resize(m);
   s.shapes_g.resize(g.dofs.size(), m);
   s.generalized_stiffness.resize(m);
@@ -184,6 +187,8 @@ BucklingSolution solve_buckling(const fem::Model& model, const BucklingOptions& 
     Eigen::VectorXd phi = c.T * modes[k].second;
     Eigen::Index imax = 0;
     phi.cwiseAbs().maxCoeff(&imax);
+    // NORM = POINT (EIGB, EIGR): 1 at that dof, where the shape moves it; otherwise MAX
+    if (point_dof && phi(*point_dof) != 0.0) imax = *point_dof;
     const double scale = phi(imax);
     phi /= scale;
     s.shapes_g.col(k) = phi;

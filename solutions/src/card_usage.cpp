@@ -234,10 +234,27 @@ class Classifier {
               }
         if (!found)
           report_.add(Kind::Refused, "case control METHOD", at,
-                      in + ": METHOD = " + std::to_string(*c.method) + " selects no EIGRL or EIGR card");
+                      in + ": METHOD = " + std::to_string(*c.method) + " selects no EIGRL, EIGR or EIGB card");
       }
+      if (c.suport1) suport1_selection(c);
       for (const fem::CaseCommand& cmd : c.other) command(c, cmd);
     }
+  }
+
+  /// SUPORT1 = SID of a subcase: statics holds its supports as it holds SUPORT's (statics.hpp);
+  /// buckling refuses it; normal modes and reductions do not use it.
+  void suport1_selection(const CaseSelection& c) {
+    const std::string what = case_name(c) + ": SUPORT1 = " + std::to_string(*c.suport1);
+    if (s_ == Solution::Buckling)
+      return report_.add(Kind::Refused, "case control SUPORT1", c.ref,
+                         what + " selects supports (SUPORT1), which seflex does not apply in buckling");
+    if (s_ != Solution::Statics)
+      return report_.add(Kind::Unused, "case control SUPORT1", c.ref,
+                         what + ": not used by " + std::string(sol()) +
+                             " (rigid-body modes come out of the eigensolution directly)");
+    bool found = false;
+    for (const auto& e : m_.suport1) found = found || e.sid == *c.suport1;
+    if (!found) report_.add(Kind::Refused, "case control SUPORT1", c.ref, what + " selects no SUPORT1 card");
   }
 
   /// TEMPERATURE(LOAD) of a subcase: applied by statics (bars, rods, shells, solids), refused by
@@ -308,8 +325,8 @@ class Classifier {
     if (s_ == Solution::Statics || s_ == Solution::Buckling) {
       if (n == "DEFORM")
         return report_.add(Kind::Refused, card, cmd.ref, what + " selects enforced element deformations (DEFORM), which seflex does not apply");
-      if (n == "SUPORT1")
-        return report_.add(Kind::Refused, card, cmd.ref, what + " selects SUPORT1 (inertia relief / free-body supports), which seflex does not model");
+      if (n == "SUPORT1")  // case_selection took every SUPORT1 = SID
+        return report_.add(Kind::Refused, card, cmd.ref, what + ": expected the set id of SUPORT1 cards (an integer > 0)");
       if (n == "P2G")
         return report_.add(Kind::Refused, card, cmd.ref, what + " selects direct load matrices (P2G), which seflex does not apply");
     }
@@ -436,8 +453,11 @@ class Classifier {
 
   void methods() {
     for (const auto& e : m_.eigen_methods) {
-      const char* card = e.is_eigr ? "EIGR" : "EIGRL";
+      const char* card = fem::method_card(e);
       const bool used = uses_methods() && used_method_.count(e.sid);
+      if (used && e.is_eigb && s_ == Solution::NormalModes)
+        report_.add(Kind::Refused, card, e.ref,
+                    "METHOD = " + std::to_string(e.sid) + " selects EIGB, a buckling method; normal modes need an EIGRL or EIGR");
       if (e.norm == "POINT" && !fem::find_dof(m_, fem::make_dof_map(m_), e.norm_grid, e.norm_component))
         report_.add(used ? Kind::Approximated : Kind::Unused, card, e.ref,
                     "NORM = POINT names grid " + std::to_string(e.norm_grid) + " component " + std::to_string(e.norm_component) +
@@ -479,6 +499,14 @@ class Classifier {
                      : "rigid-body modes come out of the eigensolution directly (the same eigenvalues as Nastran's "
                        "r-set partition when the SUPORT is statically determinate)");
     }
+    std::set<int> selected;
+    for (const CaseSelection& c : cases_)
+      if (c.suport1) selected.insert(*c.suport1);
+    for (const auto& e : m_.suport1)
+      if (s_ != Solution::Statics)
+        report_.add(Kind::Unused, "SUPORT1", e.dofs.ref, std::string("supports of statics: not used by ") + sol());
+      else if (!selected.count(e.sid))
+        not_selected("SUPORT1", "SUPORT1 set", e.sid, e.dofs.ref);
   }
 
   void dmigs() {
@@ -576,10 +604,6 @@ class Classifier {
         case Role::MpcSet:
           report_.add(runs(s_) && s_ != Solution::Convert ? Kind::Refused : Kind::Unused, u.name, u.first,
                       "axisymmetric constraints are not supported", u.count);
-          break;
-        case Role::Suport1:
-          report_.add(Kind::Unused, u.name, u.first,
-                      std::string("SUPORT1 is not used by ") + sol() + " (refused if the case control selects it)", u.count);
           break;
         default: report_.add(Kind::Unused, u.name, u.first, role_phrase(r->role), u.count); break;
       }

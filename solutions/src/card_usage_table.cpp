@@ -141,9 +141,9 @@ const CardRole kRows[] = {
     {"OMIT", R::Omit, Y, nullptr}, {"OMIT1", R::Omit, Y, nullptr}, {"BSET", R::Bset, Y, nullptr},
     {"BSET1", R::Bset, Y, nullptr}, {"CSET", R::Bset, N, nullptr}, {"CSET1", R::Bset, N, nullptr},
     {"QSET", R::Bset, N, nullptr}, {"QSET1", R::Bset, N, nullptr}, {"SUPORT", R::Suport, Y, nullptr},
-    {"SUPORT1", R::Suport1, N, nullptr},
+    {"SUPORT1", R::Suport1, Y, nullptr},
     // eigenvalue methods
-    {"EIGR", R::EigenMethod, Y, nullptr}, {"EIGRL", R::EigenMethod, Y, nullptr}, {"EIGB", R::BucklingMethod, N, nullptr},
+    {"EIGR", R::EigenMethod, Y, nullptr}, {"EIGRL", R::EigenMethod, Y, nullptr}, {"EIGB", R::BucklingMethod, Y, nullptr},
     {"EIGC", R::ComplexMethod, N, nullptr}, {"EIGP", R::ComplexMethod, N, nullptr},
     // dynamics
     {"DLOAD", R::Dynamics, N, nullptr}, {"RLOAD1", R::Dynamics, N, nullptr}, {"RLOAD2", R::Dynamics, N, nullptr},

@@ -1,6 +1,8 @@
 // Case-control selection of the subcases a solution runs (case_selection.hpp).
 #include "seflex/solutions/case_selection.hpp"
 
+#include <cstdlib>
+
 #include "seflex/common/error.hpp"
 
 namespace seflex::solutions {
@@ -25,6 +27,17 @@ CaseSelection from(const fem::CaseControl& cc, const fem::Subcase* chosen) {
     if (chosen->temperature) sel.temperature = chosen->temperature;
     if (!chosen->label.empty()) sel.label = chosen->label;
     if (!chosen->other.empty()) sel.other = chosen->other;
+  }
+  // SUPORT1 = SID (an integer; anything else stays in `other`, which card usage refuses)
+  for (auto it = sel.other.begin(); it != sel.other.end(); ++it) {
+    if (it->name != "SUPORT1") continue;
+    char* end = nullptr;
+    const long sid = std::strtol(it->value.c_str(), &end, 10);
+    while (end && (*end == ' ' || *end == '\t')) ++end;
+    if (end == it->value.c_str() || (end && *end != '\0') || sid <= 0 || sid > 99999999) continue;
+    sel.suport1 = static_cast<int>(sid);
+    sel.other.erase(it);
+    break;
   }
   return sel;
 }

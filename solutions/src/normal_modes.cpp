@@ -90,7 +90,7 @@ NormalModes solve_normal_modes(const fem::Model& model, const ModesOptions& opti
     if (method->f2) eo.lambda_max = lambda_of_hz(*method->f2);
     if (!eo.count && !eo.lambda_max)
       throw InputError(card_source(model, method->ref),
-                       std::string(method->is_eigr ? "EIGR " : "EIGRL ") + std::to_string(method->sid) +
+                       std::string(fem::method_card(*method)) + " " + std::to_string(method->sid) +
                            ": neither ND (number of roots) nor F2 (upper frequency) is given, so nothing bounds the "
                            "number of modes; set one of them or use --count");
     if (method->norm == "MAX") r.normalization = ModeNormalization::Max;
@@ -98,7 +98,7 @@ NormalModes solve_normal_modes(const fem::Model& model, const ModesOptions& opti
     else if (method->norm == "MASS" || method->norm.empty()) r.normalization = ModeNormalization::Mass;
     else
       throw InputError(card_source(model, method->ref),
-                       std::string(method->is_eigr ? "EIGR " : "EIGRL ") + std::to_string(method->sid) + ": NORM '" +
+                       std::string(fem::method_card(*method)) + " " + std::to_string(method->sid) + ": NORM '" +
                            method->norm + "' is not MASS, MAX or POINT");
   }
 

@@ -1,6 +1,9 @@
 // Linear statics (statics.hpp).
 #include "seflex/solutions/statics.hpp"
 
+#include <algorithm>
+#include <optional>
+
 #include "seflex/common/error.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/constraints.hpp"
@@ -14,17 +17,24 @@
 namespace seflex::solutions {
 namespace {
 
-/// g-set dofs of the SUPORT entries (held at zero in statics).
-std::vector<Eigen::Index> suport_dofs(const fem::Model& model, const fem::DofMap& dofs) {
+/// g-set dofs of the SUPORT entries and of the SUPORT1 entries of set `suport1` (held at zero in
+/// statics).
+std::vector<Eigen::Index> suport_dofs(const fem::Model& model, const fem::DofMap& dofs, std::optional<int> suport1) {
   std::vector<Eigen::Index> out;
-  for (const fem::DofSetEntry& e : model.suport) {
+  auto hold = [&](const fem::DofSetEntry& e) {
     if (model.spoint_index.count(e.grid)) {
       out.push_back(dofs.spoint_dof(model.spoint_index.at(e.grid)));
-      continue;
+      return;
     }
     for (int c = 1; c <= 6; ++c)
       if ((e.c >> (c - 1)) & 1u) out.push_back(dofs.grid_dof(model.grid_index.at(e.grid), c));
-  }
+  };
+  for (const fem::DofSetEntry& e : model.suport) hold(e);
+  if (suport1)
+    for (const fem::Suport1Entry& e : model.suport1)
+      if (e.sid == *suport1) hold(e.dofs);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
 
@@ -43,11 +53,11 @@ std::vector<StaticSolution> solve(const fem::Model& model, const std::vector<Cas
   std::vector<bool> done(cases.size(), false);
   for (std::size_t first = 0; first < cases.size(); ++first) {
     if (done[first]) continue;
-    // every subcase with the same SPC and MPC sets shares the constrained system and its factor
+    // every subcase with the same SPC, MPC and SUPORT1 sets shares the constrained system and its factor
     fem::ConstraintOptions co;
     co.spc_set = cases[first].spc;
     co.mpc_set = cases[first].mpc;
-    co.fixed_dofs = suport_dofs(model, g.dofs);
+    co.fixed_dofs = suport_dofs(model, g.dofs, cases[first].suport1);
     co.autospc = fem::autospc_enabled(model);
     const fem::ConstrainedSystem c = fem::apply_constraints(model, g, co);
     require_free_dofs(model, g, c, Solution::Statics);
@@ -66,7 +76,8 @@ std::vector<StaticSolution> solve(const fem::Model& model, const std::vector<Cas
       norm_K = linalg::norm1_symmetric(c.K_ff);
     }
     for (std::size_t k = first; k < cases.size(); ++k) {
-      if (done[k] || cases[k].spc != co.spc_set || cases[k].mpc != co.mpc_set) continue;
+      if (done[k] || cases[k].spc != co.spc_set || cases[k].mpc != co.mpc_set || cases[k].suport1 != cases[first].suport1)
+        continue;
       done[k] = true;
       StaticSolution& s = out[k];
       s.selection = cases[k];

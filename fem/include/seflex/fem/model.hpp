@@ -93,6 +93,7 @@ struct Model {
   std::vector<MpcEquation> mpcs;
   std::vector<MpcAdd> mpcadds;
   std::vector<DofSetEntry> aset, omit, bset, suport;
+  std::vector<Suport1Entry> suport1;  ///< SUPORT1 (selected by case control SUPORT1 = SID)
   std::vector<PointLoad> point_loads;
   std::vector<PressureLoad> pressure_loads;
   std::vector<ScalarLoad> scalar_loads;            ///< SLOAD

@@ -14,6 +14,7 @@ namespace seflex::fem {
 struct EigenMethod {
   int sid = 0;
   bool is_eigr = false;
+  bool is_eigb = false;             ///< EIGB: a buckling method (f1, f2 = L1, L2: a range of load factors)
   std::string method = "LAN";
   std::optional<double> f1, f2;     ///< frequency range (Hz); EIGRL V1/V2
   std::optional<int> nd;            ///< number of roots
@@ -21,6 +22,9 @@ struct EigenMethod {
   int norm_grid = 0, norm_component = 0;
   CardRef ref;
 };
+
+/// "EIGRL", "EIGR" or "EIGB": the card an eigenvalue method was read from, for messages.
+inline const char* method_card(const EigenMethod& e) { return e.is_eigb ? "EIGB" : e.is_eigr ? "EIGR" : "EIGRL"; }
 
 struct Param {
   std::string name;

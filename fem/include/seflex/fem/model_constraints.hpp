@@ -153,4 +153,9 @@ struct DofSetEntry {  ///< ASET/ASET1/OMIT/OMIT1/BSET/BSET1/SUPORT entries (grid
   CardRef ref;
 };
 
+struct Suport1Entry {  ///< one (ID, C) pair of a SUPORT1 card: the supports of set `sid` (case control SUPORT1)
+  int sid = 0;
+  DofSetEntry dofs;
+};
+
 }  // namespace seflex::fem

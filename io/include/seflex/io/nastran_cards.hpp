@@ -41,7 +41,6 @@ using CardParser = void (*)(const Card&, ReaderState&);
 
 // Features of supported cards that seflex reads for `seflex info` but no solution may use (listed
 // as unsupported; solutions/src/card_usage_table.cpp gives them the role Structure: refused).
-inline constexpr const char* kMat1NuAboveHalf = "MAT1 NU above 0.5";
 inline constexpr const char* kShellTflagFraction = "CQUAD4/CTRIA3 TFLAG a fraction";
 inline constexpr const char* kFluidGrid = "GRID CD = -1 (fluid)";
 inline constexpr const char* kFluidSolid = "PSOLID FCTN = PFLUID";
@@ -112,6 +111,8 @@ void parse_aset1(const Card&, ReaderState&);
 void parse_bset(const Card&, ReaderState&);
 void parse_bset1(const Card&, ReaderState&);
 void parse_suport(const Card&, ReaderState&);
+void parse_suport1(const Card&, ReaderState&);
+void parse_eigb(const Card&, ReaderState&);
 void parse_force(const Card&, ReaderState&);
 void parse_moment(const Card&, ReaderState&);
 void parse_force12(const Card&, ReaderState&);  ///< FORCE1, FORCE2, MOMENT1, MOMENT2

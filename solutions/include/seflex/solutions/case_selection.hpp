@@ -17,6 +17,7 @@ struct CaseSelection {
   std::string label;
   std::optional<int> spc, load, method, mpc;
   std::optional<int> temperature;       ///< TEMPERATURE(LOAD) (or BOTH): thermal load set
+  std::optional<int> suport1;           ///< SUPORT1: the SUPORT1 set whose supports statics holds
   std::vector<fem::CaseCommand> other;  ///< selections seflex does not use (fem::Subcase::other)
   fem::CardRef ref;                     ///< the SUBCASE line (line 0: the global level)
 };

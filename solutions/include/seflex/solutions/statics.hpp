@@ -9,9 +9,10 @@
 // p_g is the load of the subcase's LOAD set plus the thermal load of its TEMPERATURE(LOAD) set
 // (fem/loads.hpp; GRAV and RFORCE through the assembled mass matrix). A subcase without either is
 // solved with zero load (its enforced displacements, SPC D, drive it).
-// SUPORT dofs are held at zero, as Nastran's SOL 101 does without inertia relief (PARAM INREL).
-// ASET/OMIT need nothing: static condensation is exact in statics. Subcases that share their SPC and
-// MPC sets share one factorisation of K_ff. K_ff is factorised by the default sparse backend (CHOLMOD
+// SUPORT dofs, and those of the SUPORT1 set the subcase selects (case control SUPORT1 = SID), are
+// held at zero, as Nastran's SOL 101 does without inertia relief (PARAM INREL).
+// ASET/OMIT need nothing: static condensation is exact in statics. Subcases that share their SPC,
+// MPC and SUPORT1 sets share one factorisation of K_ff. K_ff is factorised by the default sparse backend (CHOLMOD
 // supernodal Cholesky).
 //
 // Before anything is assembled, check_card_usage(Statics) must find nothing Refused (a selected
