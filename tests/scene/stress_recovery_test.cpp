@@ -173,6 +173,8 @@ TEST(StressRecovery, SuddenTipLoadPeakRootMomentMatchesFullTransient) {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(24);
   f(18 + 1) = P;  // grid 5, T2
   const fem::ElementResultMap map = fem::make_element_result_map(m, {1});
+  const double t_sub = 0.03;
+  double at_sub = 0;  // the full transient's root moment m2_a at t_sub (h = 1e-5 s)
   const auto peak_of = [&](double h) {
     const Eigen::MatrixXd A = K + (4.0 / (h * h)) * M;
     const Eigen::PartialPivLU<Eigen::MatrixXd> lu(A);
@@ -180,7 +182,8 @@ TEST(StressRecovery, SuddenTipLoadPeakRootMomentMatchesFullTransient) {
     for (int i = 0; i < 24; ++i)
       if (M(i, i) > 0) a(i) = f(i) / M(i, i);  // M a0 = f - K u0 (lumped M; massless dofs do not enter M a)
     double peak = 0;
-    for (double t = 0; t < T; t += h) {
+    const long n_sub = std::lround(t_sub / h);
+    for (long n = 0; n * h < T; ++n) {
       const Eigen::VectorXd un = lu.solve(f + M * ((4.0 / (h * h)) * u + (4.0 / h) * v + a));
       const Eigen::VectorXd vn = (2.0 / h) * (un - u) - v;
       a = (4.0 / (h * h)) * (un - u) - (4.0 / h) * v - a;
@@ -189,6 +192,7 @@ TEST(StressRecovery, SuddenTipLoadPeakRootMomentMatchesFullTransient) {
       ug.tail(24) = u;
       const Eigen::VectorXd r = map.apply(ug);
       peak = std::max(peak, fem::element_result_peak(fem::ResultKind::Bar, r.data()).value);
+      if (n + 1 == n_sub && h == 1e-5) at_sub = r[1];
     }
     return peak;
   };
@@ -224,32 +228,42 @@ output:
   const std::string summary = read_file(dir.path() / "results/summary.txt");
   EXPECT_NE(summary.find("largest element results of link"), std::string::npos) << summary;
 
-  // The instant t = 0.03 s as a static subcase of the deck (interface displacements as SPCD), solved by
-  // seflex static: it gives the constraint modes' share S_b q_b of the run's results exactly (to the
-  // SPCD's 10 digits); the rest, S_eta eta, is the fixed-interface modes' dynamic share (docs/stresses.md).
+  // The instant t = 0.03 s as a static subcase of the deck (interface displacements as SPCD, the inertia
+  // loads -M a of the interior grids as FORCE/MOMENT), solved by seflex static. The kept modes' dynamic
+  // share is carried by the inertia loads; what the static solution adds to the run's S xi is the static
+  // response of the truncated modes to those loads (the mode-acceleration correction), so it lands closer
+  // to the full transient than the run's recovery does.
   const std::filesystem::path sub = dir.path() / "results/static_subcases/link_0.bdf";
   ASSERT_TRUE(std::filesystem::exists(sub));
+  const std::string sub_text = read_file(sub);
+  EXPECT_NE(sub_text.find("FORCE*"), std::string::npos) << sub_text;
   {
     std::ofstream f(dir.path() / "static.bdf");
-    f << "SOL 101\nCEND\nSUBCASE 1\n  SPC = 9001\n  LOAD = 9001\n" << deck.substr(0, deck.rfind("ENDDATA")) << read_file(sub)
+    f << "SOL 101\nCEND\nSUBCASE 1\n  SPC = 9001\n  LOAD = 9001\n" << deck.substr(0, deck.rfind("ENDDATA")) << sub_text
       << "ENDDATA\n";
   }
   const auto st = run_seflex("static static.bdf --element-results elements.csv", dir.path());
   ASSERT_EQ(st.exit_code, 0) << st.out << st.err;
-  const double m1a_static = element_csv(dir.path() / "elements.csv").at(1).at("m2_a");  // load along basic y = element z
+  const double m2a_static = element_csv(dir.path() / "elements.csv").at(1).at("m2_a");  // load along basic y = element z
   se::StressModes modes;
   const se::Superelement body = io::load_superelement(dir.path() / "link.se", io::LoadOptions{io::SuperelementParts::Dynamics, &modes});
   const Csv poses = read_csv(dir.path() / "results/poses.csv");
   std::size_t i = 0;
-  while (i < poses.rows.size() && poses.rows[i][0] < 0.03 - 1e-12) ++i;
+  while (i < poses.rows.size() && poses.rows[i][0] < t_sub - 1e-12) ++i;
   ASSERT_LT(i, poses.rows.size());
   Eigen::VectorXd xi(body.size());
   for (Eigen::Index k = 0; k < xi.size(); ++k) xi[k] = poses.rows[i][14 + static_cast<std::size_t>(k)];
   const Eigen::Index nb = 6 * body.num_interfaces();
-  const double run_m1a = (modes.S * xi)[1], constraint_m1a = (modes.S.leftCols(nb) * xi.head(nb))[1];
-  std::printf("t = %.4g s: run m2_a %.6g, static subcase %.6g (constraint-mode share %.6g; modal share %.2e of the run's)\n",
-              poses.rows[i][0], run_m1a, m1a_static, constraint_m1a, (run_m1a - m1a_static) / run_m1a);
-  EXPECT_NEAR(m1a_static, constraint_m1a, 1e-8 * std::abs(run_m1a));
+  const double run_m2a = (modes.S * xi)[1], constraint_m2a = (modes.S.leftCols(nb) * xi.head(nb))[1];
+  std::printf("t = %.4g s: root m2_a: full transient %.6g, run %.6g (%.2e), static subcase %.6g (%.2e); constraint-mode share %.6g\n",
+              poses.rows[i][0], at_sub, run_m2a, run_m2a / at_sub - 1, m2a_static, m2a_static / at_sub - 1, constraint_m2a);
+  // Measured: the subcase gives -4.40205 against the run's -4.41619 (3.2e-3 of it: the truncated modes'
+  // static share; the central differences of the inertia loads change it by 4e-5 when the output interval
+  // is halved), where the interface displacements alone miss 7.2 %. Both are 1.1-1.4 % off the full
+  // transient at this instant (the kept modes' phase), within the 2 % the peak is held to.
+  EXPECT_GT(std::abs(constraint_m2a - run_m2a), 0.05 * std::abs(run_m2a));
+  EXPECT_NEAR(m2a_static, run_m2a, 5e-3 * std::abs(run_m2a));
+  EXPECT_NEAR(m2a_static, at_sub, 0.02 * std::abs(at_sub));
 }
 
 
