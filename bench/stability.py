@@ -3,9 +3,12 @@
 foil, of the implicit generalized-alpha (AIC) and of FFRF-LM (seflex run --formulation ffrf-lm), with
 and without a lock; FFRF-LM constraint drift (printed by seflex run) at fixed and adaptive steps; Newton failures at a lock with
 large steps; the simplified mass and FFRF-LM against the AIC full inertia as the spin rate of the
-spin-up beam grows.
+spin-up beam grows. With --radau, only Radau IIA-5 (integrator.method radau5): its largest steps on the
+falling link with and without its stiff lock, its measured order with and without the lock crossing,
+and the numerical damping of a mode (the panels' 33 Hz) per period at large steps against
+generalized-alpha at rho_inf 0.8 / 0.9 / 1.0.
 
-  /usr/bin/python3 bench/stability.py [--bin build/apps/seflex] [--out stability-output] [--img docs/img]
+  /usr/bin/python3 bench/stability.py [--bin build/apps/seflex] [--out stability-output] [--img docs/img] [--radau]
 
 Models: bench/study/link_lock.yaml (flexible link of examples/scenes/link.bdf, 3 modes, falling 1 s;
 "without lock": the lock removed) and bench/study/spinup.yaml (10 m spin-up beam, 6 modes).
@@ -62,6 +65,112 @@ def solar(text, h, adaptive):
     return t
 
 
+def radau(text):
+    """The link scene (flow-style integrator map) with method radau5."""
+    return text.replace("integrator: {rho_inf: 0.8, ", "integrator: {method: radau5, ")
+
+
+def with_tol(text, tol):
+    return text.replace("integrator: {", f"integrator: {{tolerance: {{position: {tol:g}, angle: {tol:g}}}, ", 1)
+
+
+def final_angle(folder, hinge="H1"):
+    """The hinge's angle at the run's end [deg] (last row of history.csv)."""
+    with open(os.path.join(folder, "history.csv")) as f:
+        head = f.readline().strip().split(",")
+        last = None
+        for line in f:
+            last = line
+    return float(last.strip().split(",")[head.index(f"{hinge}.phi_deg")])
+
+
+def amplitude_per_period(method, w_h, rho=None):
+    """Amplitude ratio over one period 2 pi / w of the undamped oscillator x'' = -w^2 x integrated at
+    steps h (w_h = w h): |eigenvalue|^(2 pi / w_h) of the one-step map. Radau IIA-5: its stability
+    function R(z) = 1 + z b^T (I - z A)^-1 1 at z = i w h (Hairer and Wanner II, IV.3). Generalized-alpha
+    in Arnold and Bruls' form (mbd/src/solvers/integrator.cpp, coefficients of step_control.hpp): the
+    spectral radius of its map on (x, v, xddot, a)."""
+    if method == "radau5":
+        s6 = np.sqrt(6.0)
+        A = np.array([[(88 - 7 * s6) / 360, (296 - 169 * s6) / 1800, (-2 + 3 * s6) / 225],
+                      [(296 + 169 * s6) / 1800, (88 + 7 * s6) / 360, (-2 - 3 * s6) / 225],
+                      [(16 - s6) / 36, (16 + s6) / 36, 1.0 / 9]])
+        z = 1j * w_h
+        r = abs(1 + z * A[2] @ np.linalg.solve(np.eye(3) - z * A, np.ones(3)))
+    else:
+        am, af = (2 * rho - 1) / (rho + 1), rho / (rho + 1)
+        g = 0.5 + af - am
+        b = 0.25 * (g + 0.5) ** 2
+        h, w2 = 1.0, w_h * w_h  # h = 1: w = w_h
+        # Unknowns of a step (x1, v1, xdd1, a1) from (x0, v0, xdd0, a0):
+        #   x1 - b h^2 a1 = x0 + h v0 + (0.5 - b) h^2 a0;  v1 - g h a1 = v0 + (1 - g) h a0;
+        #   xdd1 + w^2 x1 = 0;  (1 - am) a1 - (1 - af) xdd1 = af xdd0 - am a0.
+        L = np.array([[1, 0, 0, -b * h * h], [0, 1, 0, -g * h], [w2, 0, 1, 0], [0, 0, -(1 - af), 1 - am]], dtype=float)
+        R = np.array([[1, h, 0, (0.5 - b) * h * h], [0, 1, 0, (1 - g) * h], [0, 0, 0, 0], [0, 0, af, -am]], dtype=float)
+        r = max(abs(np.linalg.eigvals(np.linalg.solve(L, R))))
+    return r ** (2 * np.pi / w_h)
+
+
+def radau_study(b, a, link, nolock, cmd):
+    """Radau IIA-5 where it fails: largest steps, order through the lock, numerical damping."""
+    d = lambda n: os.path.join(a.out, n)
+    rows = []
+    for h in (1e-3, 5e-3, 1e-2, 2e-2, 5e-2, 1e-1):
+        for name, text in (("link, no lock", nolock), ("link, lock", link)):
+            sf = run(b, fixed(radau(text), "radau5", h), d("radau-fixed"))
+            tf, why = failure(d("radau-fixed"))
+            sa = run(b, capped(radau(text), h), d("radau-adaptive"))
+            lk = sa["locks"].get("lock.H1", {})
+            rows.append(dict(model=name, h=h, fixed=sf["status"], fixed_t=tf, fixed_why=why, adaptive=sa["status"], steps=sa["steps"],
+                             rejected_error=sa.get("rejected_error"), rejected_newton=sa.get("rejected_newton"),
+                             t_latch=lk.get("t_latch"), peak=lk.get("peak_abs_torque_after_latch")))
+            print(f"  radau5 {name:14s} h {h:g}: fixed {sf['status']}" + (f" (t = {tf:.4g} s: {why})" if tf is not None else "") +
+                  f"; adaptive, largest step h: {sa['status']}, {sa['steps']} steps, {sa.get('rejected_error')} + {sa.get('rejected_newton')} rejected"
+                  + (f", t_latch {lk.get('t_latch')}, peak lock torque {lk.get('peak_abs_torque_after_latch', 0):.4g} N m" if lk else ""), flush=True)
+    # Order at constant steps (Newton to round-off: 30 iterations, tolerance 1e-12): error of the final
+    # angle (t = 1 s) against h = 0.125 ms; with the lock the step that crosses it is cut to the crossing.
+    fixed_order = []
+    for name, text in (("link, no lock", nolock), ("link, lock", link)):
+        tight = lambda h: fixed(with_tol(radau(text), 1e-12).replace("integrator: {", "integrator: {radau: {max_iterations: 30}, ", 1), "radau5", h)
+        ref = run(b, tight(1.25e-4), d("radau-fixed-ref"))
+        a_ref = final_angle(d("radau-fixed-ref"))
+        pts = []
+        for h in (2e-3, 1e-3, 5e-4):
+            s = run(b, tight(h), d("radau-fixed-h"))
+            pts.append((h, s["status"], abs(final_angle(d("radau-fixed-h")) - a_ref) if s["status"] == "ok" else float("nan")))
+        ok = [p for p in pts if p[1] == "ok"]
+        slope = np.polyfit(np.log([p[0] for p in ok]), np.log([max(p[2], 1e-14) for p in ok]), 1)[0] if len(ok) > 1 else float("nan")
+        fixed_order.append(dict(model=name, reference_status=ref["status"], points=pts, order=slope))
+        print(f"  radau5 {name}, constant steps: final angle error against h = 0.125 ms ({ref['status']}): " +
+              ", ".join(f"h {h:g}: {st}, {err:.2e} deg" for h, st, err in pts) + f"; order {slope:.2f}", flush=True)
+    # Order: error of the final angle (t = 1 s) against local error 1e-10 over the steps taken.
+    order = []
+    for name, text in (("link, no lock", nolock), ("link, lock", link)):
+        ref = run(b, with_tol(radau(text), 1e-10), d("radau-ref"))
+        a_ref = final_angle(d("radau-ref"))
+        pts = []
+        for tol in (1e-4, 1e-5, 1e-6, 1e-7, 1e-8):
+            s = run(b, with_tol(radau(text), tol), d("radau-tol"))
+            pts.append((tol, s["steps"], abs(final_angle(d("radau-tol")) - a_ref)))
+        n, e = np.log([p[1] for p in pts[-3:]]), np.log([max(p[2], 1e-14) for p in pts[-3:]])
+        slope = -np.polyfit(n, e, 1)[0]  # the three tightest: the loosest are not asymptotic
+        order.append(dict(model=name, reference_steps=ref["steps"], points=pts, order=slope))
+        print(f"  radau5 {name}: final angle error against local error 1e-10 ({ref['steps']} steps): " +
+              ", ".join(f"tol {t:g}: {st} steps, {err:.2e} deg" for t, st, err in pts) + f"; order (error ~ steps^-p) p = {slope:.2f}", flush=True)
+    # Numerical damping of a 33 Hz mode (the panels' first) per period at the demo's steps and above.
+    f_mode = 33.0
+    damping = []
+    for h in (2.5e-3, 5e-3, 1e-2, 2e-2):
+        wh = 2 * np.pi * f_mode * h
+        r = dict(h=h, radau5=amplitude_per_period("radau5", wh), **{f"ga{rho:g}": amplitude_per_period("ga", wh, rho) for rho in (0.8, 0.9, 1.0)})
+        damping.append(r)
+        print(f"  33 Hz mode, h {h:g} s (w h = {wh:.3f}): amplitude per period radau5 {r['radau5']:.4f}, generalized-alpha rho_inf 0.8 "
+              f"{r['ga0.8']:.4f}, 0.9 {r['ga0.9']:.4f}, 1.0 {r['ga1']:.4f}", flush=True)
+    with open(os.path.join(a.out, "stability-radau.json"), "w") as f:
+        json.dump(dict(command=cmd, rows=rows, fixed_order=fixed_order, order=order, damping=damping), f, indent=1)
+    print(f"wrote {os.path.join(a.out, 'stability-radau.json')}")
+
+
 def failure(folder):
     ev = open(os.path.join(folder, "events.csv")).read()
     m = re.search(r"stopped at t = ([0-9.eE+-]+) s.*?\): ([^;]+)", ev)
@@ -89,6 +198,7 @@ def main():
     ap.add_argument("--out", default="stability-output")
     ap.add_argument("--img", default=None)
     ap.add_argument("--replot", action="store_true", help="only redraw the chart from OUT/stability.json")
+    ap.add_argument("--radau", action="store_true", help="only the Radau IIA-5 study (OUT/stability-radau.json)")
     a = ap.parse_args()
     if a.replot:
         with open(os.path.join(a.out, "stability.json")) as f:
@@ -106,6 +216,9 @@ def main():
                        check=True, capture_output=True)
     link = open(os.path.join(a.out, "link_lock.yaml")).read()
     nolock = re.sub(r"locks:\n  - [^\n]+\n", "", link)
+    if a.radau:
+        radau_study(b, a, link, nolock, cmd)
+        return
     spin = edit_scene(open(os.path.join(a.out, "spinup.yaml")).read(), t_end=4.0)
     d = lambda n: os.path.join(a.out, n)
     # 1. Largest stable constant step.

@@ -137,8 +137,8 @@ double slope(const std::vector<double>& h, const std::vector<double>& err) {
 // Order 5 on a smooth problem without locks: the 3-D flexible double pendulum (the nodes' rotations do
 // not commute) over 0.3 s with constant steps h = 8, 4, 2 ms (h omega_max = 3.6 .. 0.9), errors of all
 // node positions and rotation vectors and of the hinge angles against the same integrator at h = 0.25
-// ms (whose own error is 2^-15 of the smallest step's at order 5). Measured slopes: positions 4.78,
-// rotations 4.92, hinge angles 4.92 (errors 9.6e-8 m .. 1.3e-10 m, 1.5e-6 .. 1.6e-9 rad). Smaller steps
+// ms (whose own error is 2^-15 of the smallest step's at order 5). Measured slopes: positions 4.77,
+// rotations 4.81, hinge angles 4.89 (errors 9.6e-8 m .. 1.3e-10 m, 1.5e-6 .. 1.9e-9 rad). Smaller steps
 // reach a floor near 1e-11 m / 1e-9 rad (h = 1 ms: slope 3 between 2 and 1 ms), larger ones the stiff
 // regime (E = 7e8: rotations 2.9 at h = 8 .. 2 ms); at E = 7e6, 0.2 s: 4.63, 4.81, 5.22.
 TEST(Radau5, FifthOrderOnA3dFlexiblePendulum) {
@@ -177,10 +177,13 @@ TEST(Radau5, RigidDoublePendulumMatchesReference) {
     test::Recorder rec;
     const RunStats stats = simulate_radau5(model, s, data, st, &rec);
     const test::ReferenceErrors err = test::reference_errors(rec.samples, ref);
-    // Measured: phi 1.6e-6, 2.7e-8, 2.5e-10 rad; energy 1.8e-6, 1.4e-8, 1.7e-10 (J/kg scale) at the three
-    // tolerances: the global error follows the local tolerance (a factor 100 each).
+    // Measured: phi 2.2e-6, 1.3e-8, 1.8e-10 rad; energy 8.3e-7, 1.2e-8, 2.9e-10 (J/kg scale) at the three
+    // tolerances: the global error follows the local tolerance (a factor 100 each), within 0.8-2.9 times
+    // it. Other Newton policies take other steps at the same tolerance: with the Jacobian at the step's
+    // start, phi 1.6e-6, 2.7e-8, 2.5e-10, energy 1.8e-6, 1.4e-8, 1.7e-10; at the second stage without
+    // the refresh in a slow iteration, phi 2.0e-6, 1.5e-8, 1.6e-10, energy 9.7e-7, 1.4e-8, 4.2e-10.
     EXPECT_LT(err.phi, 5.0 * tol);
-    EXPECT_LT(err.energy, 3.0 * tol);
+    EXPECT_LT(err.energy, 5.0 * tol);
     EXPECT_EQ(rec.samples.size(), 201u);  // every 10 ms from the dense output, t = 0 and 2 s included
     std::printf("radau5 double pendulum tol %.0e: max errors phi %.2e rad, rate %.2e rad/s, energy %.2e; %ld steps (%ld + %ld rejected), %ld Newton its, %ld jac, %ld evals\n",
                 tol, err.phi, err.rate, err.energy, stats.steps, stats.rejected_error, stats.rejected_newton, stats.newton_iterations,

@@ -1,10 +1,13 @@
 #pragma once
 // Helpers shared by the tests: paths, temporary folders, and running the seflex command.
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <random>
 #include <sstream>
 #include <string>
@@ -51,6 +54,14 @@ inline std::string read_file(const std::filesystem::path& p) {
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+/// Largest |a_k - b_k| of two series of the same length; +infinity when the lengths differ.
+inline double max_abs_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  if (a.size() != b.size()) return std::numeric_limits<double>::infinity();
+  double d = 0.0;
+  for (std::size_t k = 0; k < a.size(); ++k) d = std::max(d, std::abs(a[k] - b[k]));
+  return d;
 }
 
 /// Rows of a numeric CSV file (the header line dropped), e.g. the --csv output of seflex.

@@ -33,7 +33,7 @@ constexpr double kSafe = 0.9, kMinRatio = 0.2, kMaxRatio = 8.0;
 // The step is kept (no new factorisation) when the controller asks for 1 to 1.2 times it.
 constexpr double kKeepLow = 1.0, kKeepHigh = 1.2;
 // The step may grow until simplified Newton is predicted to contract at this rate (step_after_accept).
-constexpr double kThetaTarget = 0.1;
+constexpr double kThetaTarget = 0.05;
 
 /// One of the two transformed Newton systems: the modal dofs condensed while the retained dofs fit
 /// a dense LU (condensed_lu.hpp), else a sparse LU.
@@ -153,7 +153,7 @@ class RadauStepper final : public detail::Stepper {
   StageSystem<Complex> complex_;
   double h_factored_ = 0.0;     // step of the factorisations (0: none valid)
   bool need_jacobian_ = true;   // evaluate K, C, M at the next attempt's start
-  bool caljac_ = false;         // the Jacobian was evaluated at the current step's start
+  bool caljac_ = false;         // the Jacobian was evaluated for the current step
 
   // Newton and controller state.
   MatrixXd U_, Up_, V_, A_, R_, F_;  // n x 3: stage increments, their rates, velocities, accelerations, residuals
@@ -282,9 +282,21 @@ detail::StepResult RadauStepper::attempt(double h) {
   }
   predict(h);
   try {
-    if (need_jacobian_) evaluate_jacobian(state_);
+    // A new Jacobian at the predicted second stage (c = 0.64), not at the step's start: the stages
+    // lie on both sides of it, which halves how far the bodies turn between the Jacobian's
+    // configuration and the stages' (sync-3d, largest step 50 ms, at local error 1e-4 / 1e-5:
+    // 1006 -> 917 / 1441 -> 1248 steps, 8,193 -> 7,548 / 12,285 -> 11,471 residuals, 802 -> 590 /
+    // 848 -> 657 Jacobians). Turning each Free node's rows and columns of the iteration matrix with
+    // the node from there to each stage gained 3-9 % more on sync-3d but made simplified Newton fail
+    // on the flexible 3-D pendulum at 8 ms steps (radau5_test.cpp): the hinges' attached nodes turn
+    // with their bodies, not with a Free node, so that partial transport is not a similarity of the
+    // true iteration matrix; it is not used.
+    if (need_jacobian_) {
+      form_stages(h);
+      evaluate_jacobian(stage_[1]);
+    }
   } catch (const ConvergenceError& e) {
-    return failed(out, std::string("the Jacobian at the step's start: ") + e.what(), 0.5);
+    return failed(out, std::string("the Jacobian at the predicted second stage: ") + e.what(), 0.5);
   }
   if (h != h_factored_) {
     if (!factorize(h))
@@ -298,22 +310,47 @@ detail::StepResult RadauStepper::attempt(double h) {
   const Eigen::Matrix3d& T = rk_.T;
   const Eigen::Matrix3d& Ti = rk_.Tinv;
   newt_ = 0;
-  for (;;) {
-    if (newt_ >= nit_)
-      return failed(out, "no convergence in " + std::to_string(nit_) + " simplified Newton iterations", 0.5);
-    form_stages(h);
-    out.residual = 0.0;
+  int k = 0;               // iterations with the present factorisation
+  bool refreshed = false;  // the Jacobian was re-evaluated at an iterate of this attempt
+  // A slow or diverging iteration gets one new Jacobian at the present iterate's second stage (which
+  // is closer to the solution than the prediction) before the step is given up: sync-3d, largest step
+  // 50 ms, local error 1e-4 / 1e-5: 917 -> 701 / 1248 -> 976 steps, 212 -> 16 / 248 -> 20 rejected,
+  // residuals + Jacobians + factorisations about as many (Newton takes more iterations per step).
+  auto refresh = [&]() {
+    if (refreshed) return false;
+    refreshed = true;
     try {
-      for (int i = 0; i < 3; ++i) {
-        assemble(model_, stage_[i], data_, opt_residual_);
-        ++evaluations_;
-        R_.col(i) = data_.residual;
-        out.residual = std::max(out.residual, data_.residual.norm());
-        for (std::size_t b = 0; b < model_.flexible_bodies.size(); ++b) stage_[i].frames[b] = data_.flex[b].kin.frame;
-      }
-    } catch (const ConvergenceError& e) {
-      return failed(out, e.what(), 0.5);
+      evaluate_jacobian(stage_[1]);
+    } catch (const ConvergenceError&) {
+      return false;
     }
+    if (!factorize(h)) return false;
+    ++out.factorizations;
+    k = 0;
+    dyno_old = thq_old = 0.0;
+    theta_measured_ = false;
+    return true;
+  };
+  bool evaluated = false;  // R_ holds the residuals at U_ (after a refresh without an increment)
+  for (;;) {
+    if (k >= nit_)
+      return failed(out, "no convergence in " + std::to_string(nit_) + " simplified Newton iterations", 0.5);
+    if (!evaluated) {
+      form_stages(h);
+      out.residual = 0.0;
+      try {
+        for (int i = 0; i < 3; ++i) {
+          assemble(model_, stage_[i], data_, opt_residual_);
+          ++evaluations_;
+          R_.col(i) = data_.residual;
+          out.residual = std::max(out.residual, data_.residual.norm());
+          for (std::size_t b = 0; b < model_.flexible_bodies.size(); ++b) stage_[i].frames[b] = data_.flex[b].kin.frame;
+        }
+      } catch (const ConvergenceError& e) {
+        return failed(out, e.what(), 0.5);
+      }
+    }
+    evaluated = false;
     if (!std::isfinite(out.residual)) return failed(out, "the residual is not finite", 0.5);
     // Transformed residuals: W = T^-1 U, one real and one complex system.
     r1_ = Ti(0, 0) * R_.col(0) + Ti(0, 1) * R_.col(1) + Ti(0, 2) * R_.col(2);
@@ -322,6 +359,7 @@ detail::StepResult RadauStepper::attempt(double h) {
     real_.solve_negated(r1_, dw1_);
     complex_.solve_negated(rc_, dwc_);
     ++newt_;
+    ++k;
     double sum = 0.0, largest = 0.0;
     for (Eigen::Index i = 0; i < n_; ++i) {
       const double a = dw1_[i] * w_[i], b = dwc_[i].real() * w_[i], c = dwc_[i].imag() * w_[i];
@@ -332,12 +370,16 @@ detail::StepResult RadauStepper::attempt(double h) {
     if (!std::isfinite(dyno)) return failed(out, "the Newton increment is not finite", 0.5);
     // Round-off floor: an increment of 1e-14 of the dofs' scales changes nothing that matters.
     const bool floor = largest * std::min(st_.tol_position, st_.tol_angle) <= 1e-14;
-    if (!floor && newt_ > 1 && newt_ < nit_) {
+    if (!floor && k > 1 && k < nit_) {
       const double thq = dyno / dyno_old;
-      theta_ = newt_ == 2 ? thq : std::sqrt(thq * thq_old);
+      theta_ = k == 2 ? thq : std::sqrt(thq * thq_old);
       theta_measured_ = true;
       thq_old = thq;
       if (!(theta_ < 0.99)) {
+        if (refresh()) {  // from the present iterate, without its increment: its residuals again
+          evaluated = true;
+          continue;
+        }
         std::ostringstream os;
         os.precision(3);
         os << "simplified Newton diverges (contraction rate " << theta_ << " at iteration " << newt_ << ")";
@@ -346,13 +388,18 @@ detail::StepResult RadauStepper::attempt(double h) {
       faccon_ = theta_ / (1.0 - theta_);
       // Distance to the solution after the remaining iterations, predicted from the rate: too far,
       // and a smaller step (theta ~ h) is the remedy.
-      const double dyth = faccon_ * dyno * std::pow(theta_, nit_ - 1 - newt_) / fnewt_;
+      const double dyth = faccon_ * dyno * std::pow(theta_, nit_ - 1 - k) / fnewt_;
       if (dyth >= 1.0 && st_.adaptive) {
+        if (refresh()) {
+          for (int i = 0; i < 3; ++i) F_.col(i) = T(i, 0) * dw1_ + T(i, 1) * dwc_.real() + T(i, 2) * dwc_.imag();
+          U_ += F_;
+          continue;
+        }
         const double q = std::clamp(dyth, 1e-4, 20.0);
         std::ostringstream os;
         os.precision(3);
         os << "simplified Newton too slow (contraction rate " << theta_ << " at iteration " << newt_ << ")";
-        return failed(out, os.str(), 0.8 * std::pow(q, -1.0 / (4.0 + nit_ - 1 - newt_)));
+        return failed(out, os.str(), 0.8 * std::pow(q, -1.0 / (4.0 + nit_ - 1 - k)));
       }
     }
     dyno_old = std::max(dyno, kRoundoff);
@@ -454,11 +501,16 @@ double RadauStepper::step_after_accept(double h, double /*h_wanted*/, double err
   err_accepted_ = std::max(1e-2, err);
   double h_new = h * q;
   if (after_rejection) h_new = std::min(h_new, h);
-  // Newton's limit: with the Jacobian of the step's start, a stiff element that turns with its body
-  // makes the contraction rate grow like h^3 (its stiffness, turned by ~ omega h, against the soft
+  // Newton's limit: with one Jacobian for all stages, a stiff element that turns with its body makes
+  // the contraction rate grow like h^3 (its stiffness, turned by ~ omega h, against the soft
   // directions' (gamma/h)^2 M). Growing the step beyond h (kThetaTarget / theta)^(1/3) made simplified
   // Newton fail at the next step (sync-3d at local error 1e-5, largest step 50 ms: 947 retries and
-  // 1.74 s CPU without this limit; 150 and 1.21 s with it; targets 0.05 / 0.2 / 0.3: 1.27 / 1.51 / 1.49 s).
+  // 1.74 s CPU without this limit; 150 and 1.21 s with it; targets 0.05 / 0.2 / 0.3: 1.27 / 1.51 / 1.49 s;
+  // with the Jacobian at the second stage and one refresh of it in a slow iteration (attempt), residuals
+  // + 4.6 Jacobians + 2 factorisations (their measured costs in residuals) at 1e-4 / 1e-5: target 0.05
+  // 11,687 / 15,133, 0.1 11,968 / 15,883, 0.2 13,131 / 16,382, no limit 15,424 / 17,075). Without the
+  // refresh, 94 % of the steps after the demo's last lock were set by this limit, not by the error (the
+  // error would allow 7-9 ms where Newton allowed 3.6-6.5 ms at 1e-5).
   if (theta_measured_ && theta_ > 0.0) h_new = std::min(h_new, std::max(h, h * std::cbrt(kThetaTarget / theta_)));
   if (theta_ <= st_.radau.jacobian_theta && h_new >= kKeepLow * h && h_new <= kKeepHigh * h) h_new = h;  // same matrices
   return h_new;

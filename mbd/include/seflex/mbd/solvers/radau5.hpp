@@ -9,7 +9,8 @@
 // A_i = (1/h) sum_j (A^-1)_ij (V_j - v_0), so the 3n stage unknowns are the U_i alone (the velocities
 // of the first-order form are eliminated) and the stage equations are the residual itself,
 //   r(x_0 (+) U_i, V_i, A_i, t_0 + c_i h) = 0,   i = 1, 2, 3,   x_1 = x_0 (+) U_3, v_1 = V_3.
-// Simplified Newton with the Jacobian K, C, M of the last evaluation (at a step's start) has the
+// Simplified Newton with the Jacobian K, C, M of the last evaluation (at the predicted second stage
+// of the step that needed it) has the
 // matrix I (x) K + (A^-1/h) (x) C + (A^-1/h)^2 (x) M; A^-1 = T Lambda T^-1 transforms it into one real
 // system K + (gamma/h) C + (gamma/h)^2 M and one complex system with mu = (alpha + i beta)/h, each
 // factorised with the modal coordinates condensed (condensed_lu.hpp). As RADAU5: the Jacobian is kept
