@@ -108,11 +108,11 @@ int run_run(seflex::app::Args& args) {
   }
   const auto t0 = std::chrono::steady_clock::now();
   const std::clock_t c0 = std::clock();
-  // The mesh part of the superelement files serves the animation only; without it a run reads the
-  // dynamics (reduced matrices, inertia and stiffening invariants). The floating-frame baseline takes
+  // The mesh part of the superelement files serves the animation and the static subcases' inertia loads
+  // only; without it a run reads the dynamics (reduced matrices, inertia and stiffening invariants). The floating-frame baseline takes
   // its inertia from the invariants too (and may sum over the FE nodes of a small mesh that is read).
   scene::SceneBuildOptions bo;
-  bo.keep_mesh = !no_animation && d.output.animation_interval;
+  bo.keep_mesh = (!no_animation && d.output.animation_interval) || !d.output.static_subcases.empty();
   bo.full_inertia_everywhere = formulation == mbd::Formulation::FfrfLm;
   const scene::Scene scene = scene::build_scene(d, bo);
   std::uint64_t se_bytes = 0;

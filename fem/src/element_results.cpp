@@ -245,6 +245,16 @@ ElementResultMap make_element_result_map(const Model& model, const std::vector<i
   for (const Bend& s : model.bends) none(s.id, "CBEND");
   for (const QuadraticShell& s : model.shells8) none(s.shell.id, quadratic_shell_card(s));
   for (const Genel& s : model.genels) none(s.id, "GENEL");
+  for (const Rbe2& r : model.rbe2) none(r.id, "RBE2");
+  for (const Rbar& r : model.rbars) none(r.id, "RBAR");
+  for (const Rbe3& r : model.rbe3) none(r.id, "RBE3");
+  static const char* rigid_cards[] = {"RBE1", "CRIGD1", "CRIGD2", "CRIGD3"};
+  for (const RigidBody& r : model.rigid_bodies) none(r.id, rigid_cards[static_cast<int>(r.card)]);
+  for (const RigidRod& r : model.rigid_rods) none(r.id, r.card == RigidRod::Card::Rrod ? "RROD" : "CRIGDR");
+  for (const Conm2& m : model.conm2) none(m.id, "CONM2");
+  for (const Conm1& m : model.conm1) none(m.id, "CONM1");
+  static const char* mass_cards[2][2] = {{"CMASS1", "CMASS2"}, {"CMASS3", "CMASS4"}};
+  for (const ScalarMass& m : model.scalar_masses) none(m.id, mass_cards[m.scalar_points][m.inline_property]);
   for (const int id : ids)
     if (!found.count(id)) ++missing["unknown element id " + std::to_string(id)];
   for (const auto& [card, n] : missing) map.missing.emplace_back(card, n);

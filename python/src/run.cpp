@@ -158,7 +158,7 @@ void bind_run(py::module_& m) {
           const auto t0 = std::chrono::steady_clock::now();
           const std::clock_t c0 = std::clock();
           scene::SceneBuildOptions bo;  // as `seflex run`: the mesh parts only for an animation
-          bo.keep_mesh = animation && d.output.animation_interval;
+          bo.keep_mesh = (animation && d.output.animation_interval) || !d.output.static_subcases.empty();  // static subcases: inertia loads
           bo.full_inertia_everywhere = formulation == mbd::Formulation::FfrfLm;
           const scene::Scene sc = scene::build_scene(d, bo);
           scene::RunOutputOptions oo;

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <sstream>
 
+#include <Eigen/Geometry>
+
 #include "seflex/fem/element_results.hpp"
 #include "seflex/io/interface_subcase.hpp"
 
@@ -222,23 +224,98 @@ void RunOutput::write_interface_loads(const mbd::Sample& s) {
   }
 }
 
-void RunOutput::write_static_subcases(const mbd::Sample& s) {
-  const auto& times = scene_.description.output.static_subcases;
-  if (next_subcase_ >= times.size() || s.t < times[next_subcase_] - 1e-12 * std::max(1.0, std::abs(s.t))) return;
-  const std::size_t k = next_subcase_;
-  while (next_subcase_ < times.size() && times[next_subcase_] <= s.t + 1e-12 * std::max(1.0, std::abs(s.t))) ++next_subcase_;
+namespace {
+
+/// Second derivative at the middle of three unevenly spaced values.
+template <class V>
+V second_difference(const V& x0, const V& x1, const V& x2, double h0, double h1) {
+  return 2.0 * ((x2 - x1) / h1 - (x1 - x0) / h0) / (h0 + h1);
+}
+
+/// The inertia loads -M_fe (a - g) of every FE grid of `body` at the middle instant, body axes: a from
+/// central differences of the grids' world positions (translations) and of the frame's rotation plus the
+/// elastic rotations (the small rotations of the recovery), g the gravity in body axes.
+Eigen::VectorXd inertia_loads(const se::Superelement& body, const mbd::Pose* F[3], const Eigen::VectorXd* xi[3],
+                              const double t[3], const Eigen::Vector3d& g_W) {
+  const Eigen::Index nfe = static_cast<Eigen::Index>(body.fe_node_ids.size());
+  const double h0 = t[1] - t[0], h1 = t[2] - t[1];
+  Eigen::MatrixXd U[3];
+  for (int k = 0; k < 3; ++k) {
+    const Eigen::VectorXd u = body.recovery * *xi[k];
+    U[k] = Eigen::Map<const Eigen::MatrixXd>(u.data(), 6, nfe);
+  }
+  const Eigen::Matrix3d& R = F[1]->R;
+  // Body angular velocities over the two intervals (log of the relative rotations), their difference.
+  const Eigen::AngleAxisd r0(Eigen::Matrix3d(F[0]->R.transpose() * R)), r1(Eigen::Matrix3d(R.transpose() * F[2]->R));
+  const Eigen::Vector3d alpha_B = (r1.axis() * r1.angle() / h1 - r0.axis() * r0.angle() / h0) * 2.0 / (h0 + h1);
+  const Eigen::Vector3d g_B = R.transpose() * g_W;
+  Eigen::VectorXd a(6 * nfe);
+  for (Eigen::Index i = 0; i < nfe; ++i) {
+    Eigen::Vector3d x[3];
+    for (int k = 0; k < 3; ++k) x[k] = F[k]->p + F[k]->R * (body.p_BoI_B.col(i) + U[k].col(i).head<3>());
+    a.segment<3>(6 * i) = R.transpose() * second_difference(x[0], x[1], x[2], h0, h1) - g_B;
+    const Eigen::Vector3d th = second_difference<Eigen::Vector3d>(U[0].col(i).tail<3>(), U[1].col(i).tail<3>(), U[2].col(i).tail<3>(), h0, h1);
+    a.segment<3>(6 * i + 3) = alpha_B + th;
+  }
+  return -(body.M_fe * a);
+}
+
+}  // namespace
+
+void RunOutput::write_subcase_files(std::size_t k, const Snapshot& mid, const Snapshot* before, const Snapshot* after) {
   std::error_code ec;
   std::filesystem::create_directories(folder_ / "static_subcases", ec);
   const auto& d = scene_.description;
+  const auto& times = d.output.static_subcases;
   for (std::size_t b = 0; b < d.bodies.size(); ++b) {
     const SceneBodyRef& r = scene_.bodies[b];
     if (r.rigid) continue;
-    const std::string what = "body " + d.bodies[b].name + " at t = " + num(s.t) + " s (output.static_subcases[" +
-                             std::to_string(k) + "] = " + num(times[k]) + " s) of " + d.file.string();
-    io::write_interface_subcase(folder_ / "static_subcases" / (d.bodies[b].name + "_" + std::to_string(k) + ".bdf"),
-                                *scene_.superelements[b], s.flexible[static_cast<std::size_t>(r.index)].xi,
-                                9001 + static_cast<int>(k), what);
+    const se::Superelement& body = *scene_.superelements[b];
+    const auto f = static_cast<std::size_t>(r.index);
+    std::string what = "body " + d.bodies[b].name + " at t = " + num(mid.t) + " s (output.static_subcases[" + std::to_string(k) +
+                       "] = " + num(times[k]) + " s) of " + d.file.string();
+    Eigen::VectorXd loads;
+    if (body.recovery.size() == 0 || body.M_fe.size() == 0)
+      what += "; no inertia loads: the superelement file has no mesh part (recovery and FE mass)";
+    else if (!before || !after)
+      what += "; no inertia loads: they need the samples before and after this one";
+    else {
+      const mbd::Pose* F[3] = {&before->frames[f], &mid.frames[f], &after->frames[f]};
+      const Eigen::VectorXd* xi[3] = {&before->xi[f], &mid.xi[f], &after->xi[f]};
+      const double t[3] = {before->t, mid.t, after->t};
+      loads = inertia_loads(body, F, xi, t, scene_.model.gravity);
+      what += "; inertia loads from the samples at t = " + num(before->t) + " and " + num(after->t) + " s";
+    }
+    io::write_interface_subcase(folder_ / "static_subcases" / (d.bodies[b].name + "_" + std::to_string(k) + ".bdf"), body,
+                                mid.xi[f], 9001 + static_cast<int>(k), what, loads.size() ? &loads : nullptr);
   }
+}
+
+void RunOutput::write_static_subcases(const mbd::Sample& s) {
+  const auto& times = scene_.description.output.static_subcases;
+  if (times.empty()) return;
+  current_.t = s.t;
+  current_.frames.resize(s.flexible.size());
+  current_.xi.resize(s.flexible.size());
+  for (std::size_t f = 0; f < s.flexible.size(); ++f) {
+    current_.frames[f] = s.flexible[f].frame;
+    current_.xi[f] = s.flexible[f].xi;
+  }
+  if (pending_subcase_ && s.t > newer_.t) {
+    write_subcase_files(*pending_subcase_, newer_, &older_, &current_);
+    pending_subcase_.reset();
+  }
+  if (next_subcase_ < times.size() && s.t >= times[next_subcase_] - 1e-12 * std::max(1.0, std::abs(s.t))) {
+    const std::size_t k = next_subcase_;
+    while (next_subcase_ < times.size() && times[next_subcase_] <= s.t + 1e-12 * std::max(1.0, std::abs(s.t))) ++next_subcase_;
+    if (snapshots_ > 0 && s.t > newer_.t)
+      pending_subcase_ = k;  // written with the next sample
+    else
+      write_subcase_files(k, current_, nullptr, nullptr);
+  }
+  std::swap(older_, newer_);
+  std::swap(newer_, current_);
+  ++snapshots_;
 }
 
 void RunOutput::write_stress_envelope() {
@@ -434,6 +511,8 @@ void RunOutput::event(double t, const std::string& kind, const std::string& name
 
 void RunOutput::finish(const RunEnd& end) {
   write_out();
+  if (pending_subcase_) write_subcase_files(*pending_subcase_, newer_, nullptr, nullptr);  // the run ended right after it
+  pending_subcase_.reset();
   const mbd::Model& m = scene_.model;
   const long steps = end.stats ? end.stats->steps : steps_;
   const long newton = end.stats ? end.stats->newton_iterations : newton_;

@@ -60,11 +60,54 @@ std::map<int, std::map<std::string, double>> element_csv(const std::filesystem::
 }
 
 /// The link of examples/scenes (link.bdf) copied to `dir` and reduced there to link.se (interfaces 1 and 5,
-/// frame 3, 3 fixed-interface modes) with `--stresses ELSET`; returns the deck's text and the command's output.
-std::pair<std::string, RunResult> reduce_link(const TempDir& dir, const std::string& elset) {
+/// frame 3, `modes` fixed-interface modes) with `--stresses ELSET`; returns the deck's text and the command's output.
+std::pair<std::string, RunResult> reduce_link(const TempDir& dir, const std::string& elset, int modes = 3) {
   const std::string deck = read_file(source_dir() / "examples/scenes/link.bdf");
   { std::ofstream(dir.path() / "link.bdf") << deck; }
-  return {deck, run_seflex("reduce link.bdf --interface 1,5 --frame 3 --modes 3 --stresses " + elset + " -o link.se", dir.path())};
+  return {deck, run_seflex("reduce link.bdf --interface 1,5 --frame 3 --modes " + std::to_string(modes) + " --stresses " + elset + " -o link.se", dir.path())};
+}
+
+/// The link (grid 1 welded) under a tip load P along basic y applied at t = 0, full FE: average-acceleration
+/// Newmark on the deck's K and M (the 24 dofs of grids 2-5, u = v = 0 at t = 0) with step h over [0, T]:
+/// the peak root moment of element 1 and its m2_a at t_sub.
+struct FullTransient {
+  double peak = 0, at_sub = 0;
+};
+FullTransient full_transient(const std::filesystem::path& deck, double P, double T, double h, double t_sub) {
+  const fem::Model m = io::read_nastran(deck);
+  const fem::GlobalMatrices g = fem::assemble(m, fem::assembly_options(m));
+  const Eigen::MatrixXd K = Eigen::MatrixXd(g.K).bottomRightCorner(24, 24), M = Eigen::MatrixXd(g.M).bottomRightCorner(24, 24);
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(24);
+  f(18 + 1) = P;  // grid 5, T2
+  const fem::ElementResultMap map = fem::make_element_result_map(m, {1});
+  const Eigen::MatrixXd A = K + (4.0 / (h * h)) * M;
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(A);
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(24), v = u, a = u, ug = Eigen::VectorXd::Zero(30);
+  for (int i = 0; i < 24; ++i)
+    if (M(i, i) > 0) a(i) = f(i) / M(i, i);  // M a0 = f - K u0 (lumped M; massless dofs do not enter M a)
+  FullTransient out;
+  const long n_sub = std::lround(t_sub / h);
+  for (long n = 0; n * h < T; ++n) {
+    const Eigen::VectorXd un = lu.solve(f + M * ((4.0 / (h * h)) * u + (4.0 / h) * v + a));
+    const Eigen::VectorXd vn = (2.0 / h) * (un - u) - v;
+    a = (4.0 / (h * h)) * (un - u) - (4.0 / h) * v - a;
+    u = un;
+    v = vn;
+    ug.tail(24) = u;
+    const Eigen::VectorXd r = map.apply(ug);
+    out.peak = std::max(out.peak, fem::element_result_peak(fem::ResultKind::Bar, r.data()).value);
+    if (n + 1 == n_sub) out.at_sub = r[1];
+  }
+  return out;
+}
+
+/// The sudden-tip-load scene on link.se (2 N along basic y at grid 5 from t = 0, 0.1 s) with `body_extra`
+/// added to the body's entry (e.g. ", internal_modes: 2") and `output_extra` to its output block.
+std::string tip_load_scene(const std::string& body_extra, const std::string& output_extra) {
+  return "title: link under a sudden tip load\nbodies:\n  - {name: link, superelement: link.se" + body_extra +
+         "}\nground: [link.1]\nloads:\n  nodal:\n    - {node: link.5, force: [0.0, 2.0, 0.0]}\nintegrator:\n  rho_inf: 1.0\n"
+         "  t_end: 0.1\n  step: 1.0e-5\n  max_step: 1.0e-4\n  tolerance: {position: 1.0e-9, angle: 1.0e-9}\noutput:\n"
+         "  interval: 1.0e-4\n" + output_extra;
 }
 
 TEST(StressRecovery, QuasiStaticRunMatchesSeflexStaticOnTheDeck) {
@@ -166,53 +209,13 @@ TEST(StressRecovery, SuddenTipLoadPeakRootMomentMatchesFullTransient) {
   ASSERT_EQ(red.exit_code, 0) << red.out << red.err;
   const double P = 2.0, T = 0.1;
 
-  // Full FE: u = 0, v = 0 at t = 0; K and M on the 24 dofs of grids 2-5.
-  const fem::Model m = io::read_nastran(dir.path() / "link.bdf");
-  const fem::GlobalMatrices g = fem::assemble(m, fem::assembly_options(m));
-  const Eigen::MatrixXd K = Eigen::MatrixXd(g.K).bottomRightCorner(24, 24), M = Eigen::MatrixXd(g.M).bottomRightCorner(24, 24);
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(24);
-  f(18 + 1) = P;  // grid 5, T2
-  const fem::ElementResultMap map = fem::make_element_result_map(m, {1});
-  const auto peak_of = [&](double h) {
-    const Eigen::MatrixXd A = K + (4.0 / (h * h)) * M;
-    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(A);
-    Eigen::VectorXd u = Eigen::VectorXd::Zero(24), v = u, a = u, ug = Eigen::VectorXd::Zero(30);
-    for (int i = 0; i < 24; ++i)
-      if (M(i, i) > 0) a(i) = f(i) / M(i, i);  // M a0 = f - K u0 (lumped M; massless dofs do not enter M a)
-    double peak = 0;
-    for (double t = 0; t < T; t += h) {
-      const Eigen::VectorXd un = lu.solve(f + M * ((4.0 / (h * h)) * u + (4.0 / h) * v + a));
-      const Eigen::VectorXd vn = (2.0 / h) * (un - u) - v;
-      a = (4.0 / (h * h)) * (un - u) - (4.0 / h) * v - a;
-      u = un;
-      v = vn;
-      ug.tail(24) = u;
-      const Eigen::VectorXd r = map.apply(ug);
-      peak = std::max(peak, fem::element_result_peak(fem::ResultKind::Bar, r.data()).value);
-    }
-    return peak;
-  };
-  const double full = peak_of(1e-5);
+  const double t_sub = 0.03;
+  const FullTransient ft = full_transient(dir.path() / "link.bdf", P, T, 1e-5, t_sub);
+  const double full = ft.peak, at_sub = ft.at_sub;
   std::printf("full-FE Newmark peak root moment %.9g N m (h = 1e-5 s), %.9g (h = 2e-5 s); static P L = %.3g\n", full,
-              peak_of(2e-5), P * 1.0);
+              full_transient(dir.path() / "link.bdf", P, T, 2e-5, t_sub).peak, P * 1.0);
 
-  { std::ofstream(dir.path() / "scene.yaml") << R"(title: link under a sudden tip load
-bodies:
-  - {name: link, superelement: link.se}
-ground: [link.1]
-loads:
-  nodal:
-    - {node: link.5, force: [0.0, 2.0, 0.0]}
-integrator:
-  rho_inf: 1.0
-  t_end: 0.1
-  step: 1.0e-5
-  max_step: 1.0e-4
-  tolerance: {position: 1.0e-9, angle: 1.0e-9}
-output:
-  interval: 1.0e-4
-  static_subcases: [0.03]
-)"; }
+  { std::ofstream(dir.path() / "scene.yaml") << tip_load_scene("", "  static_subcases: [0.03]\n"); }
   const auto run = run_seflex("run scene.yaml -o results", dir.path());
   ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
   const Csv env = read_csv(dir.path() / "results/stress_envelope.csv");
@@ -224,32 +227,84 @@ output:
   const std::string summary = read_file(dir.path() / "results/summary.txt");
   EXPECT_NE(summary.find("largest element results of link"), std::string::npos) << summary;
 
-  // The instant t = 0.03 s as a static subcase of the deck (interface displacements as SPCD), solved by
-  // seflex static: it gives the constraint modes' share S_b q_b of the run's results exactly (to the
-  // SPCD's 10 digits); the rest, S_eta eta, is the fixed-interface modes' dynamic share (docs/stresses.md).
+  // The instant t = 0.03 s as a static subcase of the deck (interface displacements as SPCD, the inertia
+  // loads -M a of the interior grids as FORCE/MOMENT), solved by seflex static. The kept modes' dynamic
+  // share is carried by the inertia loads; what the static solution adds to the run's S xi is the static
+  // response of the truncated modes to those loads (the mode-acceleration correction), so it lands closer
+  // to the full transient than the run's recovery does.
   const std::filesystem::path sub = dir.path() / "results/static_subcases/link_0.bdf";
   ASSERT_TRUE(std::filesystem::exists(sub));
+  const std::string sub_text = read_file(sub);
+  EXPECT_NE(sub_text.find("FORCE*"), std::string::npos) << sub_text;
   {
     std::ofstream f(dir.path() / "static.bdf");
-    f << "SOL 101\nCEND\nSUBCASE 1\n  SPC = 9001\n  LOAD = 9001\n" << deck.substr(0, deck.rfind("ENDDATA")) << read_file(sub)
+    f << "SOL 101\nCEND\nSUBCASE 1\n  SPC = 9001\n  LOAD = 9001\n" << deck.substr(0, deck.rfind("ENDDATA")) << sub_text
       << "ENDDATA\n";
   }
   const auto st = run_seflex("static static.bdf --element-results elements.csv", dir.path());
   ASSERT_EQ(st.exit_code, 0) << st.out << st.err;
-  const double m1a_static = element_csv(dir.path() / "elements.csv").at(1).at("m2_a");  // load along basic y = element z
+  const double m2a_static = element_csv(dir.path() / "elements.csv").at(1).at("m2_a");  // load along basic y = element z
   se::StressModes modes;
   const se::Superelement body = io::load_superelement(dir.path() / "link.se", io::LoadOptions{io::SuperelementParts::Dynamics, &modes});
   const Csv poses = read_csv(dir.path() / "results/poses.csv");
   std::size_t i = 0;
-  while (i < poses.rows.size() && poses.rows[i][0] < 0.03 - 1e-12) ++i;
+  while (i < poses.rows.size() && poses.rows[i][0] < t_sub - 1e-12) ++i;
   ASSERT_LT(i, poses.rows.size());
   Eigen::VectorXd xi(body.size());
   for (Eigen::Index k = 0; k < xi.size(); ++k) xi[k] = poses.rows[i][14 + static_cast<std::size_t>(k)];
   const Eigen::Index nb = 6 * body.num_interfaces();
-  const double run_m1a = (modes.S * xi)[1], constraint_m1a = (modes.S.leftCols(nb) * xi.head(nb))[1];
-  std::printf("t = %.4g s: run m2_a %.6g, static subcase %.6g (constraint-mode share %.6g; modal share %.2e of the run's)\n",
-              poses.rows[i][0], run_m1a, m1a_static, constraint_m1a, (run_m1a - m1a_static) / run_m1a);
-  EXPECT_NEAR(m1a_static, constraint_m1a, 1e-8 * std::abs(run_m1a));
+  const double run_m2a = (modes.S * xi)[1], constraint_m2a = (modes.S.leftCols(nb) * xi.head(nb))[1];
+  std::printf("t = %.4g s: root m2_a: full transient %.6g, run %.6g (%.2e), static subcase %.6g (%.2e); constraint-mode share %.6g\n",
+              poses.rows[i][0], at_sub, run_m2a, run_m2a / at_sub - 1, m2a_static, m2a_static / at_sub - 1, constraint_m2a);
+  // Measured: the subcase gives -4.40205 against the run's -4.41619 (3.2e-3 of it: the truncated modes'
+  // static share; the central differences of the inertia loads change it by 4e-5 when the output interval
+  // is halved), where the interface displacements alone miss 7.2 %. Both are 1.1-1.4 % off the full
+  // transient at this instant (the kept modes' phase), within the 2 % the peak is held to.
+  EXPECT_GT(std::abs(constraint_m2a - run_m2a), 0.05 * std::abs(run_m2a));
+  EXPECT_NEAR(m2a_static, run_m2a, 5e-3 * std::abs(run_m2a));
+  EXPECT_NEAR(m2a_static, at_sub, 0.02 * std::abs(at_sub));
+}
+
+
+// The issue's dynamic target with the modes the advisor recommends (not hand-picked): the link reduced
+// with 5 fixed-interface modes (with 6 the run stops at t = 2-4 ms: singular iteration matrix, reported),
+// `seflex advise` on the sudden-tip-load scene with a 2 % stress tolerance
+// (the variants' peak element results against its finest, all 5 modes, full inertia) and 1 or 2 modes as
+// "a few" (`--modes 1,2,3,4`); the recommended variant run on its own, its peak root moment against the
+// full-FE Newmark transient within 2 %.
+TEST(StressRecovery, SuddenTipLoadWithTheAdvisedModesMatchesFullTransient) {
+  TempDir dir;
+  const auto red = reduce_link(dir, "1", 5).second;
+  ASSERT_EQ(red.exit_code, 0) << red.out << red.err;
+  { std::ofstream(dir.path() / "scene.yaml") << tip_load_scene("", ""); }
+  scene::AdviseOptions o;
+  o.tolerance = 1.0 * M_PI / 180.0;  // no hinges: the stress tolerance decides
+  o.t_end = 0.1;
+  o.stress_tolerance = 0.02;
+  o.few_modes = {1, 2, 3, 4};
+  const scene::AdviseReport rep = scene::advise(scene::read_scene(dir.path() / "scene.yaml"), o);
+  ASSERT_GE(rep.recommended, 0);
+  const scene::AdviseRow& best = rep.rows[static_cast<std::size_t>(rep.recommended)];
+  for (const auto& row : rep.rows)
+    std::printf("%-50s stress error %.3e%s\n", row.name.c_str(), row.max_stress_error, &row == &best ? "  <- recommended" : "");
+  // The recommendation's settings: formulation, inertia model and mode count (variants are named
+  // "flexible / INERTIA / N modes" or "FFRF-LM / flexible / all modes").
+  const bool ffrf = best.name.rfind("FFRF-LM / ", 0) == 0;
+  ASSERT_TRUE(ffrf || best.name.rfind("flexible / ", 0) == 0) << best.name;
+  ASSERT_EQ(best.name.find("stiffening"), std::string::npos) << best.name;
+  const bool full_inertia = best.name.find("full inertia") != std::string::npos;
+  const std::size_t slash = best.name.rfind("/ ");
+  const std::string modes = best.name.substr(slash + 2);
+  std::string body = full_inertia ? ", inertia: full" : "";
+  if (modes != "all modes") body += ", internal_modes: " + std::to_string(std::stoi(modes));
+  { std::ofstream(dir.path() / "advised.yaml") << tip_load_scene(body, ""); }
+  const auto run = run_seflex(std::string("run advised.yaml -o results") + (ffrf ? " --formulation ffrf-lm" : ""), dir.path());
+  ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
+  const double recovered = read_csv(dir.path() / "results/stress_envelope.csv").rows.at(0)[4];
+  const double full = full_transient(dir.path() / "link.bdf", 2.0, 0.1, 1e-5, 0.03).peak;
+  std::printf("advised (%s): peak root moment %.9g N m, full transient %.9g: %.3e\n", best.name.c_str(), recovered, full,
+              recovered / full - 1.0);
+  EXPECT_NEAR(recovered, full, 0.02 * full);  // the issue's target; measured -4.1e-3 (FFRF-LM, all 5 modes recommended)
 }
 
 

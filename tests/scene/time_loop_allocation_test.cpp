@@ -6,7 +6,8 @@
 // scene's output interval included (the observer itself keeps nothing). Required: zero.
 //
 // Radau IIA-5 on the same scene, to 100 steps and through the first latch. FFRF-LM on the same scene and rigid-LM on its beam-like variant (sync-beam): the same requirement
-// over 100 steps.
+// over 100 steps. The run output (RunOutput::on_sample) with stress recovery on allocates no more than
+// with it off (the link of examples/scenes with and without stress modes, 199 samples).
 //
 // The allocator hooks replace glibc's malloc family in this executable only (its own folder, so
 // no other test runs with them) and forward to glibc's __libc_* entry points.
@@ -15,10 +16,12 @@
 #include <atomic>
 #include <cstdlib>
 #include <execinfo.h>
+#include <fstream>
 #include <new>
 #include <unistd.h>
 
 #include "scene_fixture.hpp"
+#include "seflex/scene/run_output.hpp"
 #include "seflex/scene/scene.hpp"
 #include "seflex/scene/solve_scene.hpp"
 
@@ -203,6 +206,48 @@ TEST_F(TimeLoopAllocations, DemoSync3dFfrfLmHundredStepsAllocateNothing) {
 
 TEST_F(TimeLoopAllocations, DemoSyncBeamRigidLmHundredStepsAllocateNothing) {
   expect_no_allocations_in_hundred_steps(*beam_scene_, mbd::Formulation::RigidLm);
+}
+
+// The run output with stress recovery on: the link of examples/scenes reduced with --stresses all (4 CBARs,
+// 3 modes) and without, the same scene (tip load from t = 0, a sample every step) written by RunOutput;
+// the allocations inside RunOutput::on_sample from the 2nd to the 200th sample (history and poses
+// buffers, flushes) must be the same with and without the recovery: it allocates nothing per sample.
+long run_output_allocations(const TempDir& dir, const std::string& se) {
+  std::string text = "title: link\nbodies:\n  - {name: link, superelement: " + se +
+                     "}\nground: [link.1]\nloads:\n  nodal:\n    - {node: link.5, force: [0.0, 2.0, 0.0]}\n"
+                     "integrator:\n  t_end: 0.02\n  step: 1.0e-4\n  adaptive: false\n";
+  const scene::Scene sc = scene::build_scene(scene::read_scene(dir.write(se + ".yaml", text)), scene::SceneBuildOptions{false});
+  scene::RunOutput out(sc, {dir.path() / ("results-" + se), true, false});
+  struct Counted : mbd::Observer {
+    scene::RunOutput* out = nullptr;
+    long samples = 0, allocations = 0;
+    void on_sample(const mbd::Model& m, const mbd::Sample& s) override {
+      ++samples;
+      const bool counting = samples > 1 && samples <= 200;
+      const long before = g_allocations.load();
+      g_counting = counting;
+      out->on_sample(m, s);
+      g_counting = false;
+      if (counting) allocations += g_allocations.load() - before;
+    }
+  } obs;
+  obs.out = &out;
+  scene::solve_scene(sc, sc.description.integrator, mbd::Formulation::Aic, &obs);
+  out.finish(scene::RunEnd{});
+  EXPECT_GE(obs.samples, 200);
+  return obs.allocations;
+}
+
+TEST(TimeLoopAllocationCounter, StressRecoveryInTheRunOutputAllocatesNothing) {
+  TempDir dir;
+  { std::ofstream(dir.path() / "link.bdf") << read_file(source_dir() / "examples/scenes/link.bdf"); }
+  for (const char* args : {"--stresses all -o stress.se", "-o plain.se"}) {
+    const auto r = run_seflex(std::string("reduce link.bdf --interface 1,5 --frame 3 --modes 3 --no-mesh ") + args, dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  const long with = run_output_allocations(dir, "stress.se"), without = run_output_allocations(dir, "plain.se");
+  std::printf("allocations in 199 samples of RunOutput: %ld with stress recovery, %ld without\n", with, without);
+  EXPECT_EQ(with, without);
 }
 
 TEST(TimeLoopAllocationCounter, SeesAllocations) {  // the hook is live: a vector and an Eigen matrix count

@@ -264,5 +264,20 @@ TEST(ElementResults, SolidsRecoverUniformStrainExactly) {
   }
 }
 
+
+// Rigid elements and masses have no element results: a map asked for them lists them (card and count)
+// among the missing, as for CSHEAR and the other unsupported cards, so that commands can warn.
+TEST(ElementResults, RigidElementsAndMassesAreListedAsMissing) {
+  const fem::Model mm = io::read_nastran_text(
+      "SOL 101\nCEND\nBEGIN BULK\n"
+      "GRID,1,,0.,0.,0.\nGRID,2,,1.,0.,0.\nGRID,3,,2.,0.,0.\nCBAR,1,1,1,2,0.,1.,0.\nPBAR,1,1,1.e-3,2.e-7,3.e-7,4.e-7\n"
+      "MAT1,1,7.e10,,0.3\nRBE2,5,2,123456,3\nCONM2,6,3,,2.\nCONM2,7,2,,1.\nCMASS2,8,1.,3,1\nENDDATA\n",
+      "element_results_test");
+  const fem::ElementResultMap map = fem::make_element_result_map(mm);
+  EXPECT_EQ(map.entries.size(), 1u);
+  const std::vector<std::pair<std::string, int>> expected{{"CMASS2", 1}, {"CONM2", 2}, {"RBE2", 1}};
+  EXPECT_EQ(map.missing, expected);
+}
+
 }  // namespace
 }  // namespace seflex

@@ -28,7 +28,7 @@
 // - Bush (CBUSH): forces Fx Fy Fz and moments Mx My Mz in element axes, K (u_B - u_A) at the spring
 //   point (GB blank: u_B = 0).
 // Elements with no results (CSHEAR, CTRIA6, CQUAD8, CBEND, GENEL, rigid elements, masses) are listed
-// by element_results_missing so that a caller can warn.
+// in ElementResultMap::missing (card and count) so that a caller can warn.
 #include <Eigen/Core>
 #include <array>
 #include <string>

@@ -18,7 +18,10 @@
 //                 each interface node in its frame B (fx..mz) and in the scene's basic axes (FX..MZ)
 //   static_subcases/BODY_K.bdf  (output.static_subcases: times) at the first sample at or after time K of
 //                 the list, each flexible body's interface displacements as SPC1 + SPCD, set 9001 + K
-//                 (io/interface_subcase.hpp): a static subcase of the body's own deck
+//                 (io/interface_subcase.hpp): a static subcase of the body's own deck, with the inertia
+//                 loads of the instant (-M a at every FE grid, a from the samples before and after by
+//                 central differences; the file is written when the next sample arrives) when the body's
+//                 file has its mesh part (recovery and FE mass)
 //   summary.txt, summary.json        written by finish()
 // It also carries the scene's stop rule (integrator.stop.after_all_locked) as stop_requested().
 #include <chrono>
@@ -96,6 +99,14 @@ class RunOutput : public mbd::Observer {
   void write_interface_loads(const mbd::Sample& s);
   void write_stress_envelope();
   void write_static_subcases(const mbd::Sample& s);
+  /// The subcase files of output.static_subcases[k] for the instant `mid`; `before`/`after` (both or
+  /// neither) give the inertia loads.
+  struct Snapshot {
+    double t = 0.0;
+    std::vector<mbd::Pose> frames;   ///< per flexible body
+    std::vector<Eigen::VectorXd> xi;
+  };
+  void write_subcase_files(std::size_t k, const Snapshot& mid, const Snapshot* before, const Snapshot* after);
   /// Write and flush the buffered rows of history and poses if kFlushInterval has passed since the
   /// last time or kBufferBytes are waiting (the demo run made 5,700 write calls with a flush per
   /// sample, and a poses row longer than the stream's buffer is a write call of its own).
@@ -139,6 +150,9 @@ class RunOutput : public mbd::Observer {
   std::string interface_buf_;
   Eigen::VectorXd f_b_;  ///< interface loads of one body (scratch)
   std::size_t next_subcase_ = 0;  ///< the next of output.static_subcases to write
+  Snapshot older_, newer_, current_;  ///< the last two samples and this one (static subcases only)
+  long snapshots_ = 0;
+  std::optional<std::size_t> pending_subcase_;  ///< output.static_subcases index waiting for the sample after newer_
   int last_latched_ = -1;         ///< the lock latched most recently (index into lock_elements_), -1 none
   bool stop_announced_ = false;
 };
