@@ -234,7 +234,8 @@ class Classifier {
               }
         if (!found)
           report_.add(Kind::Refused, "case control METHOD", at,
-                      in + ": METHOD = " + std::to_string(*c.method) + " selects no EIGRL, EIGR or EIGB card");
+                      in + ": METHOD = " + std::to_string(*c.method) +
+                          (s_ == Solution::Buckling ? " selects no EIGRL, EIGR or EIGB card" : " selects no EIGRL or EIGR card"));
       }
       if (c.suport1) suport1_selection(c);
       for (const fem::CaseCommand& cmd : c.other) command(c, cmd);

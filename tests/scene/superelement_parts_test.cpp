@@ -154,8 +154,8 @@ TEST(SuperelementParts, InvariantsRoundTripBitExactly) {
   s.invariants = random_invariants(s.size(), s.num_modes, 11);
   io::save_superelement(s, tmp / "body.se");
   const std::string bytes = test::read_file(tmp / "body.se");
-  EXPECT_EQ(bytes.substr(8, 8), std::string("\x01\0\0\0\x03\0\0\0", 8));  // format 1.3
-  EXPECT_NE(bytes.find("\"format_version\": \"1.3\""), std::string::npos);
+  EXPECT_EQ(bytes.substr(8, 8), std::string("\x01\0\0\0\x04\0\0\0", 8));  // format 1.4 (the invariants came with 1.2/1.3)
+  EXPECT_NE(bytes.find("\"format_version\": \"1.4\""), std::string::npos);
   EXPECT_NE(bytes.find("\"inv.PmLP.5\""), std::string::npos);
   EXPECT_NE(bytes.find("\"inv.EgOV.2\""), std::string::npos);
   const se::Superelement r = io::load_superelement(tmp / "body.se");
@@ -208,7 +208,7 @@ TEST(SuperelementParts, DynamicsLoadSkipsTheMeshButChecksEveryByte) {
   // inspect_superelement: what `seflex info` prints.
   const io::SuperelementFileInfo info = io::inspect_superelement(tmp / "body.se");
   EXPECT_EQ(info.format_major, 1);
-  EXPECT_EQ(info.format_minor, 3);
+  EXPECT_EQ(info.format_minor, 4);
   EXPECT_TRUE(info.has_invariants());
   EXPECT_TRUE(info.has_mesh());
   EXPECT_EQ(info.num_fe_nodes, 5);
@@ -260,9 +260,9 @@ TEST(SuperelementParts, MissingFileOrFolderIsNamed) {
 }
 
 TEST(SuperelementParts, Format11FileIsStillRead) {
-  // A 1.1 file: the same bytes as 1.3 without invariants, with minor version 1.
+  // A 1.1 file: the same bytes as today's (1.4) without invariants or stress modes, with minor version 1.
   const se::Superelement s = beam(2);
-  std::string bytes = edit_header(io::serialize_superelement(s), "\"format_version\": \"1.3\"", "\"format_version\": \"1.1\"");
+  std::string bytes = edit_header(io::serialize_superelement(s), "\"format_version\": \"1.4\"", "\"format_version\": \"1.1\"");
   bytes[12] = 1;
   io::Sha256 h;
   h.update(bytes.data(), bytes.size() - 40);
