@@ -102,7 +102,7 @@ def prepare(case, b, work, quick):
     return text, d
 
 
-def scene_for(text, kind, rho=None, max_step=None):
+def scene_for(text, rho=None, max_step=None):
     if rho is not None:
         text, k = re.subn(r"rho_inf: [0-9.eE+-]+", f"rho_inf: {rho:g}", text, count=1)
         if not k:
@@ -164,11 +164,11 @@ def study(case, a, work):
     ga_cap = 5e-3 if case == "sync-3d" else None  # the output interval (5 ms; the others' scenes have it already)
     ref_tol = 1e-7 if a.quick else c["ref_tol"]
     # References: Radau IIA-5 tight (the errors' reference) and generalized-alpha tight (the check).
-    ref_folder, ref_s, ref_cpu = run(a.bin, scene_for(text, "radau5", max_step=RADAU_MAX_STEP), d, "reference-radau5",
+    ref_folder, ref_s, ref_cpu = run(a.bin, scene_for(text, max_step=RADAU_MAX_STEP), d, "reference-radau5",
                                      ["--method", "radau5", "--tolerance", f"{ref_tol:g}"], a.timeout * 4)
     if ref_s["status"] != "ok":
         sys.exit(f"work_precision: the {case} reference run failed: {ref_s.get('message', '')}\n{ref_s['output_tail']}")
-    chk_folder, chk_s, chk_cpu = run(a.bin, scene_for(text, "ga", rho=0.9), d, "reference-ga",
+    chk_folder, chk_s, chk_cpu = run(a.bin, scene_for(text, rho=0.9), d, "reference-ga",
                                      ["--method", "generalized-alpha", "--tolerance", f"{ref_tol:g}"],
                                      a.timeout * 4)
     agree = case_errors(case, chk_folder, chk_s, ref_folder, ref_s) if chk_s["status"] == "ok" else {}
@@ -180,10 +180,10 @@ def study(case, a, work):
     for label, kind, rho in METHODS:
         if kind == "ga":
             for tol in (c["ga_tols"][1:3] if a.quick else c["ga_tols"]):
-                points.append((label, kind, tol, scene_for(text, kind, rho=rho, max_step=ga_cap), ["--method", "generalized-alpha", "--tolerance", f"{tol:g}"]))
+                points.append((label, kind, tol, scene_for(text, rho=rho, max_step=ga_cap), ["--method", "generalized-alpha", "--tolerance", f"{tol:g}"]))
         elif kind == "radau5":
             for tol in (c["radau_tols"][1:3] if a.quick else c["radau_tols"]):
-                points.append((label, kind, tol, scene_for(text, kind, max_step=RADAU_MAX_STEP), ["--method", "radau5", "--tolerance", f"{tol:g}"]))
+                points.append((label, kind, tol, scene_for(text, max_step=RADAU_MAX_STEP), ["--method", "radau5", "--tolerance", f"{tol:g}"]))
         elif kind == "published":
             if case == "sync-3d" and not a.quick:
                 points.append((label, kind, 1e-5, text, []))
