@@ -17,10 +17,8 @@
 #include <variant>
 
 #include "scene_fixture.hpp"
-#include "seflex/mbd/data.hpp"
 #include "seflex/mbd/forces/force_element.hpp"
-#include "seflex/mbd/solvers/statics.hpp"
-#include "seflex/mbd/state.hpp"
+#include "static_run.hpp"
 #include "seflex/scene/run_output.hpp"
 #include "seflex/scene/scene.hpp"
 #include "seflex/scene/solve_scene.hpp"
@@ -182,17 +180,7 @@ integrator:
 output:
   interface_loads: true
 )")));
-  scene::RunOutput out(sc, {dir.path() / "results", true, false});
-  Recorder rec;
-  rec.out = &out;
-  mbd::State state = mbd::initial_state(sc.model);
-  mbd::Data data(sc.model);
-  mbd::StaticSettings settings;
-  settings.residual_tol = 1e-10;
-  settings.increment_tol = 1e-12;
-  mbd::solve_static(sc.model, state, data, settings, &rec);
-  out.finish(scene::RunEnd{});
-  const mbd::Sample& s = rec.samples.back();
+  const mbd::Sample s = solve_static_with_output(sc, dir.path() / "results");
   const Eigen::VectorXd& f = s.flexible[0].interface_load;
   const Eigen::Vector3d mg = kMass * Eigen::Vector3d(0, 0, -9.81);
   const Eigen::Vector3d p1 = s.nodes[static_cast<std::size_t>(sc.model.flexible_bodies[0].nodes[0].value)].p;

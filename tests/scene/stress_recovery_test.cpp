@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "scene_fixture.hpp"
+#include "static_run.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/element_results.hpp"
 #include "seflex/io/nastran.hpp"
@@ -29,15 +30,6 @@
 
 namespace seflex::test {
 namespace {
-
-struct Last : mbd::Observer {
-  scene::RunOutput* out = nullptr;
-  mbd::Sample last;
-  void on_sample(const mbd::Model& m, const mbd::Sample& s) override {
-    last = s;
-    out->on_sample(m, s);
-  }
-};
 
 /// element id -> component name -> value, of `seflex static --element-results` (one subcase).
 std::map<int, std::map<std::string, double>> element_csv(const std::filesystem::path& p) {
@@ -132,19 +124,10 @@ output:
 )"; }
   const scene::Scene sc = scene::build_scene(scene::read_scene(dir.path() / "scene.yaml"));
   ASSERT_TRUE(sc.stress.at(0) && sc.stress[0]->present());
-  scene::RunOutput out(sc, {dir.path() / "results", true, false});
-  Last obs;
-  obs.out = &out;
-  mbd::State state = mbd::initial_state(sc.model);
-  mbd::Data data(sc.model);
-  mbd::StaticSettings settings;
-  settings.residual_tol = 1e-10;
-  settings.increment_tol = 1e-12;
-  mbd::solve_static(sc.model, state, data, settings, &obs);
-  out.finish(scene::RunEnd{});
+  const mbd::Sample last = solve_static_with_output(sc, dir.path() / "results");
   const se::Superelement& body = *sc.superelements[0];
   const se::StressModes& modes = *sc.stress[0];
-  const Eigen::VectorXd& xi = obs.last.flexible[0].xi;
+  const Eigen::VectorXd& xi = last.flexible[0].xi;
   const Eigen::VectorXd run = modes.S * xi;
 
   // The instant as a static subcase of the deck, solved by seflex static.
