@@ -201,8 +201,8 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
   std::vector<std::int32_t> bush_nodes;  // two per CBUSH (the second = the first when grounded)
   for (const Bush& b : model.bushes) {
     bushes.push_back(make_bush_element(model, b));
-    const std::int32_t a = node_of_grid(model, b.ga, b.ref, "CBUSH", b.id, "4 (GA)");
-    const std::int32_t n[2] = {a, b.gb ? node_of_grid(model, b.gb, b.ref, "CBUSH", b.id, "5 (GB)") : a};
+    const std::int32_t a = node_of_grid(model, b.ga, b.ref, bush_card(b), b.id, "4 (GA)");
+    const std::int32_t n[2] = {a, b.gb ? node_of_grid(model, b.gb, b.ref, bush_card(b), b.id, "5 (GB)") : a};
     conn.add(n, n + (b.gb ? 2 : 1));
     bush_nodes.insert(bush_nodes.end(), n, n + 2);
   }
@@ -334,6 +334,18 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
     shear_panels.scatter(pattern, axes, w, shear_panel_mass, g.M);
     bends.scatter(pattern, axes, w, bend_mass, g.M);
     shells8.scatter(pattern, axes, w, [&](const QuadraticShellElement& e) { return quadratic_shell_mass(e, options.mass); }, g.M);
+    for (std::size_t i = 0; i < bushes.size(); ++i) {
+      if (bushes[i].mass == 0.0) continue;
+      NodeMatrix<2> M = w * bush_mass(bushes[i]);
+      if (bushes[i].grounded) {
+        NodeMatrix<1> M1 = M.topLeftCorner<6, 6>();
+        to_cd<1>(&bush_nodes[2 * i], axes, M1);
+        pattern.scatter<1>(&bush_nodes[2 * i], M1, g.M);
+      } else {
+        to_cd<2>(&bush_nodes[2 * i], axes, M);
+        pattern.scatter<2>(&bush_nodes[2 * i], M, g.M);
+      }
+    }
     for (std::size_t i = 0; i < masses.size(); ++i) {
       NodeMatrix<1> M = w * conm2_mass(masses[i]);
       to_cd<1>(&mass_nodes[i], axes, M);
