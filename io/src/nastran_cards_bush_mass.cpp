@@ -114,8 +114,9 @@ void parse_conm1(const Card& card, ReaderState& st) {
   st.model.conm1.push_back(c);
 }
 
-// CBUSH EID PID GA GB GO/X1 X2 X3 CID / S OCID S1 S2 S3
-void parse_cbush(const Card& card, ReaderState& st) {
+namespace {
+/// EID PID GA GB of CBUSH and CBUSH1D (blank PID = EID; blank GB = grounded).
+fem::Bush bush_ends(const Card& card) {
   fem::Bush b;
   b.id = card.id(0, "EID");
   b.pid = card.id_or(1, "PID", b.id);
@@ -123,6 +124,13 @@ void parse_cbush(const Card& card, ReaderState& st) {
   b.gb = card.integer_or(3, "GB", 0);
   if (b.gb < 0) card.fail(3, "GB", card.got(3) + "; expected a grid id or blank (grounded)");
   if (b.gb == b.ga) card.fail(3, "GB", "GB is GA; expected a second grid or blank (grounded)");
+  return b;
+}
+}  // namespace
+
+// CBUSH EID PID GA GB GO/X1 X2 X3 CID / S OCID S1 S2 S3
+void parse_cbush(const Card& card, ReaderState& st) {
+  fem::Bush b = bush_ends(card);
   switch (card.kind(4)) {
     case FieldKind::Integer:
       b.g0 = card.id(4, "GO");
@@ -191,14 +199,8 @@ void parse_pbush(const Card& card, ReaderState& st) {
 
 // CBUSH1D EID PID GA GB CID (QRG CBUSH1D): the rod-type spring, a CBUSH along the element axis.
 void parse_cbush1d(const Card& card, ReaderState& st) {
-  fem::Bush b;
+  fem::Bush b = bush_ends(card);
   b.one_d = true;
-  b.id = card.id(0, "EID");
-  b.pid = card.id_or(1, "PID", b.id);
-  b.ga = card.id(2, "GA");
-  b.gb = card.integer_or(3, "GB", 0);
-  if (b.gb < 0) card.fail(3, "GB", card.got(3) + "; expected a grid id or blank (grounded)");
-  if (b.gb == b.ga) card.fail(3, "GB", "GB is GA; expected a second grid or blank (grounded)");
   b.cid = card.integer_or(4, "CID", -1);
   if (b.cid < -1) card.fail(4, "CID", card.got(4) + "; expected a coordinate system id >= 0 or blank");
   if (card.used() > 5) card.fail(5, "", card.got(5) + " after CID; expected nothing more");
