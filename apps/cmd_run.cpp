@@ -140,17 +140,13 @@ int run_run(seflex::app::Args& args) {
   oo.animation = !no_animation;
   scene::RunOutput output(scene, oo);
   Progress progress(output);
-  scene::RunEnd end;
-  end.formulation = mbd::formulation_name(formulation);
-  end.method = mbd::integrator_method_name(d.method);
+  scene::RunEnd end = scene::run_end(scene, formulation);
   const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   const auto cpu_seconds = [&] { return static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC; };
   try {
     const mbd::SimulationRun r = scene::solve_scene(scene, d.integrator, formulation, &progress);
-    end.stats = r.run;
+    scene::record_run(r, end);
     if (r.ffrf) {
-      end.coordinates = r.ffrf->coordinates;
-      end.multipliers = r.ffrf->constraints;
       progress.done();
       std::printf("  %s: %d coordinates, %d multipliers; largest constraint drift %.2e m, %.2e rad (%.2e m/s)\n",
                   formulation_arg.c_str(), r.ffrf->coordinates, r.ffrf->constraints, r.ffrf->drift_position,

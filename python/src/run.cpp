@@ -168,9 +168,7 @@ void bind_run(py::module_& m) {
           scene::RunOutput out(sc, oo);
           r->columns = scene::history_columns(sc.model);
           Collector collector(out, *r, progress, progress_interval);
-          scene::RunEnd end;
-          end.formulation = mbd::formulation_name(formulation);
-          end.method = mbd::integrator_method_name(d.method);
+          scene::RunEnd end = scene::run_end(sc, formulation);
           const auto finish = [&] {
             end.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
             end.cpu_seconds = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
@@ -178,11 +176,7 @@ void bind_run(py::module_& m) {
           };
           try {
             const mbd::SimulationRun run = scene::solve_scene(sc, d.integrator, formulation, &collector);
-            end.stats = run.run;
-            if (run.ffrf) {
-              end.coordinates = run.ffrf->coordinates;
-              end.multipliers = run.ffrf->constraints;
-            }
+            scene::record_run(run, end);
           } catch (const seflex::Error& e) {  // what was computed is on disk, as with the command
             end.ok = false;
             end.message = e.what();

@@ -13,4 +13,19 @@ mbd::SimulationRun solve_scene(const Scene& scene, const mbd::IntegratorSettings
   return mbd::simulate(scene.model, settings, scene.description.method, formulation, observer);
 }
 
+RunEnd run_end(const Scene& scene, mbd::Formulation formulation) {
+  RunEnd end;
+  end.formulation = mbd::formulation_name(formulation);
+  end.method = mbd::integrator_method_name(scene.description.method);
+  return end;
+}
+
+void record_run(const mbd::SimulationRun& run, RunEnd& end) {
+  end.stats = run.run;
+  if (run.ffrf) {
+    end.coordinates = run.ffrf->coordinates;
+    end.multipliers = run.ffrf->constraints;
+  }
+}
+
 }  // namespace seflex::scene
