@@ -740,14 +740,17 @@ class Assembler {
     if (!dropped.empty())
       res_.read_warnings.push_back(where(res_, se_->begin).str() + ": " + part + ": " + dropped +
                                    " not used: they set the part's own reduction, and seflex solves the assembled model in full");
-    // Parameters: the residual's value holds for the assembled model; a part's differing value is listed.
+    // Parameters: the residual's value holds for the assembled model (the first PARAM of a name: the
+    // case control's, if any); a part's PARAM that the residual lacks or sets otherwise is listed.
     for (const auto& p : m.params) {
       const Param* r = nullptr;
       for (const auto& q : res_.params)
-        if (q.name == p.name) r = &q;
-      if (!r) res_.params.push_back(p);
-      else if (r->values != p.values)
-        note(res_, "PARAM of a part superelement differing from the residual's (the residual's value used)", 1, p.ref);
+        if (q.name == p.name) {
+          r = &q;
+          break;
+        }
+      if (!r || r->values != p.values)
+        note(res_, "PARAM of a part superelement other than the residual's (the residual's value or the default used)", 1, p.ref);
     }
     note_kind(res_, m.spoints, "SPOINT");
     note_kind(res_, m.mass_props, "PMASS");

@@ -21,7 +21,8 @@
 //   largest element id is below 1000); load, SPC and method set ids are shared (case control selects
 //   them in every part, as SUPER = ALL does);
 // - what a part's static reduction alone uses (its ASET/OMIT/BSET, its EIGRL) is dropped, with a
-//   warning; cards of a part seflex does not assemble (GRAV, LOAD, SPOINT, ...) are listed as
+//   warning; a part's PARAM holds if the residual sets the same value, else it is listed (the
+//   residual's value or the default used); cards of a part seflex does not assemble (GRAV, LOAD, SPOINT, ...) are listed as
 //   unsupported ("part superelement: GRAV (not assembled)": every solution refuses them), as are parts
 //   of SEBULK types other than PRIMARY (mirrors, repeats, external matrices), which are not assembled.
 // Errors (InputError, naming file:line, the card and the part): a SELOC, SEBULK or SECONCT naming a
