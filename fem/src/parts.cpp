@@ -439,13 +439,19 @@ class Assembler {
     return se_name(se_->seid) + ", " + card + " " + std::to_string(id);
   }
 
+  /// A reference of the part's card `card` `id` to `kind` `ref_id`, which the part does not define.
+  [[noreturn]] void undefined(const CardRef& ref, const char* card, int id, const char* kind, int ref_id,
+                              const char* expected) const {
+    fail(ref, what(card, id) + ": references " + kind + " " + std::to_string(ref_id) + ", which " + se_name(se_->seid) +
+                  " does not define; expected " + expected);
+  }
+
   /// The assembled id of the part's grid `id` (0 stays 0 where `zero_ok`).
   int grid(int id, const CardRef& ref, const char* card, int eid, bool zero_ok = false) const {
     if (id == 0 && zero_ok) return 0;
     const auto it = se_->model->grid_index.find(id);
     if (it == se_->model->grid_index.end())
-      fail(ref, what(card, eid) + ": references grid " + std::to_string(id) + ", which " + se_name(se_->seid) +
-                    " does not define; expected a GRID of the same part (a part's cards name its own grids)");
+      undefined(ref, card, eid, "grid", id, "a GRID of the same part (a part's cards name its own grids)");
     const std::size_t l = lead_[se_->base + it->second];
     const Se& owner = ses_[node_se_[l]];
     return static_cast<int>(owner.model->grids[node_grid_[l]].id + owner.grid_off);
@@ -459,21 +465,18 @@ class Assembler {
     if (cid == 0) return se_->basic_cid;
     if (cid < 0) return cid;
     if (!se_->model->coord_index.count(cid))
-      fail(ref, what(card, eid) + ": references coordinate system " + std::to_string(cid) + ", which " + se_name(se_->seid) +
-                    " does not define; expected a CORD1x or CORD2x of the same part (or 0)");
+      undefined(ref, card, eid, "coordinate system", cid, "a CORD1x or CORD2x of the same part (or 0)");
     return static_cast<int>(cid + se_->coord_off);
   }
   int prop(int pid, const CardRef& ref, const char* card, int eid) const {
     if (!se_->props.count(pid))
-      fail(ref, what(card, eid) + ": references property " + std::to_string(pid) + ", which " + se_name(se_->seid) +
-                    " does not define; expected a property of the same part");
+      undefined(ref, card, eid, "property", pid, "a property of the same part");
     return static_cast<int>(pid + se_->prop_off);
   }
   int mat(int mid, const CardRef& ref, const char* card, int id) const {
     if (mid <= 0) return mid;
     if (!se_->mats.count(mid))
-      fail(ref, what(card, id) + ": references material " + std::to_string(mid) + ", which " + se_name(se_->seid) +
-                    " does not define; expected a material of the same part");
+      undefined(ref, card, id, "material", mid, "a material of the same part");
     return static_cast<int>(mid + se_->mat_off);
   }
   int elem(int eid) const { return static_cast<int>(eid + se_->elem_off); }
@@ -497,6 +500,7 @@ class Assembler {
     sum.grid_offset = se_->grid_off;
     sum.element_offset = se_->elem_off;
     sum.property_offset = se_->prop_off;
+    sum.material_offset = se_->mat_off;
     sum.grids = m.grids.size();
     for (std::size_t i = 0; i < m.grids.size(); ++i) sum.boundary_grids += boundary_[se_->base + i];
     merge_geometry(m);
@@ -695,8 +699,7 @@ class Assembler {
       if (!l.thru)
         for (const int e : l.elements)
           if (!se_->elems.count(e))
-            fail(l.ref, what("PLOAD2", l.sid) + ": references element " + std::to_string(e) + ", which " + se_name(se_->seid) +
-                            " does not define; expected an element of the same part");
+            undefined(l.ref, "PLOAD2", l.sid, "element", e, "an element of the same part");
       for (auto& e : l.elements) e = elem(e);
       res_.pressure_loads.push_back(l);
     }
@@ -706,8 +709,7 @@ class Assembler {
     }
     for (auto l : m.face_loads) {
       if (l.eid_last == 0 && !se_->elems.count(l.eid))
-        fail(l.ref, what("PLOAD4", l.sid) + ": references element " + std::to_string(l.eid) + ", which " + se_name(se_->seid) +
-                        " does not define; expected an element of the same part");
+        undefined(l.ref, "PLOAD4", l.sid, "element", l.eid, "an element of the same part");
       l.eid = elem(l.eid);
       if (l.eid_last > 0) l.eid_last = elem(l.eid_last);
       l.g1 = grid(l.g1, l.ref, "PLOAD4", l.sid, true), l.g34 = grid(l.g34, l.ref, "PLOAD4", l.sid, true);

@@ -6,6 +6,19 @@
 #include "seflex/io/nastran_lines.hpp"
 
 namespace seflex::io::nastran {
+namespace {
+
+/// TOL (a real >= 0, blank: QRG's 1.0E-5) and LOC (YES, NO, blank: YES) in data fields i and i + 1
+/// of SEBULK and SECONCT.
+void tolerance_and_location(const Card& card, std::size_t i, double& tol, bool& loc) {
+  tol = card.real_or(i, "TOL", 1e-5);
+  if (tol < 0) card.fail(i, "TOL", card.got(i) + "; expected a tolerance >= 0");
+  const std::string yes_no = upper(card.text_or(i + 1, "LOC", "YES"));
+  if (yes_no != "YES" && yes_no != "NO") card.fail(i + 1, "LOC", card.got(i + 1) + "; expected YES, NO or blank");
+  loc = yes_no == "YES";
+}
+
+}  // namespace
 
 // POINT ID CP X1 X2 X3
 void parse_point(const Card& card, ReaderState& st) {
@@ -45,11 +58,7 @@ void parse_sebulk(const Card& card, ReaderState& st) {
   const std::string method = upper(card.text_or(3, "METHOD", "AUTO"));
   if (method != "AUTO" && method != "MANUAL") card.fail(3, "METHOD", card.got(3) + "; expected AUTO, MANUAL or blank");
   b.manual = method == "MANUAL";
-  b.tol = card.real_or(4, "TOL", 1e-5);
-  if (b.tol < 0) card.fail(4, "TOL", card.got(4) + "; expected a tolerance >= 0");
-  const std::string loc = upper(card.text_or(5, "LOC", "YES"));
-  if (loc != "YES" && loc != "NO") card.fail(5, "LOC", card.got(5) + "; expected YES, NO or blank");
-  b.loc = loc == "YES";
+  tolerance_and_location(card, 4, b.tol, b.loc);
   b.ref = card.ref();
   st.model.part_bulks.push_back(b);
 }
@@ -62,11 +71,7 @@ void parse_seconct(const Card& card, ReaderState& st) {
   if (c.seid_a < 0) card.fail(0, "SEIDA", card.got(0) + "; expected a part id (0 = the residual)");
   if (c.seid_b < 0 || c.seid_b == c.seid_a)
     card.fail(1, "SEIDB", card.got(1) + "; expected a part id (0 = the residual) other than SEIDA");
-  c.tol = card.real_or(2, "TOL", 1e-5);
-  if (c.tol < 0) card.fail(2, "TOL", card.got(2) + "; expected a tolerance >= 0");
-  const std::string loc = upper(card.text_or(3, "LOC", "YES"));
-  if (loc != "YES" && loc != "NO") card.fail(3, "LOC", card.got(3) + "; expected YES, NO or blank");
-  c.loc = loc == "YES";
+  tolerance_and_location(card, 2, c.tol, c.loc);
   for (std::size_t i = 4; i < 8; ++i)
     if (!card.blank(i)) card.fail(i, "(blank)", card.got(i) + "; expected a blank field (the grid pairs start on the continuation)");
   std::vector<std::size_t> f;  // the filled fields after the first line

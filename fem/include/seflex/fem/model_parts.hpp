@@ -56,7 +56,8 @@ struct PartSummary {
   bool moved = false;             ///< by SELOC
   long long grid_offset = 0;      ///< added to its interior grid ids (0: kept)
   long long element_offset = 0;   ///< added to its element ids
-  long long property_offset = 0;  ///< added to its property and material ids
+  long long property_offset = 0;  ///< added to its property ids
+  long long material_offset = 0;  ///< added to its material ids
 };
 
 }  // namespace seflex::fem
