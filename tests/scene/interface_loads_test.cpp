@@ -168,11 +168,13 @@ output:
 }
 
 // The free link of FreeBodyMomentumBalance, pulled across at grid 5 (2 N along z from t = 0): it turns about
-// y (by 0.05 rad in 0.05 s) while it bends and vibrates, so its inertia about G changes. The moment of its interface loads about the deformed centre of mass G (each node's moment plus
-// (p_j - p_G) x f_j) equals dH_G/dt, the angular momentum about G taken from the FE mesh the run's states
-// recover: H_G = sum_i m_i (p_i - p_G) x v_i + R_i J_i R_i^T w_i over the FE grids (lumped masses m_i and the
-// CONM2 rotary inertias J_i of the deck's mass matrix; p_i, R_i from the frame and the recovery matrix times
-// xi, v_i and w_i by central differences, dH_G/dt by a central difference of H_G).
+// y (by 0.05 rad in 0.05 s) while it bends and vibrates, so its inertia about G changes. The moment of its
+// interface loads about the deformed centre of mass G (each node's moment plus (p_j - p_G) x f_j) equals
+// dH_G/dt, the angular momentum about G taken from the FE mesh the run's states recover:
+//   H_G = sum_i m_i (p_i - p_G) x v_i + R_i J_i R_i^T w_i
+// over the FE grids (lumped masses m_i and CONM2 rotary inertias J_i of the deck's mass matrix; p_i, R_i from
+// the frame and the recovery matrix times xi; v_i, w_i and dH_G/dt by central differences). The loads are all
+// that acts on a free body: this is the run's balance of angular momentum.
 TEST(InterfaceLoads, FreeBodyMomentBalanceAboutTheCentreOfMass) {
   TempDir dir;
   reduce_link(dir, true);
