@@ -369,11 +369,7 @@ TEST(PyramidElement, Pload4OnATriangularFaceGivesPressureTimesAreaInward) {
     l.g1 = 102, l.g34 = 101;  // base corners G3 and G2: the face G2 G3 G5
     m.face_loads.push_back(l);
     finalize_for_test(m);
-    const DofMap dofs = make_dof_map(m);
-    const Eigen::VectorXd f = load_vector(m, dofs, 4);
-    Eigen::Vector3d F = Eigen::Vector3d::Zero();
-    for (Eigen::Index gi = 0; gi < static_cast<Eigen::Index>(m.grids.size()); ++gi)
-      for (int c = 0; c < 3; ++c) F[c] += f[dofs.grid_dof(gi, c + 1)];
+    const Eigen::Vector3d F = load_resultant(m, 4);
     const Eigen::Vector3d x1 = m.grids[m.grid_index.at(101)].x, x2 = m.grids[m.grid_index.at(102)].x,
                           x5 = m.grids[m.grid_index.at(104)].x;
     Eigen::Vector3d nA = 0.5 * (x2 - x1).cross(x5 - x1);  // G2 G3 G5 counter-clockwise seen from outside

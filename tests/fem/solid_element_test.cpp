@@ -296,11 +296,7 @@ TEST(SolidElement, Pload4OnSolidFacesGivesPressureTimesAreaInward) {
         const auto lattice = add_box_solids(m, box, type, 1e3, 0.3, 1.0);
         pload4_on_plane(m, lattice, axis, side * 4, 3, 5.0);
         finalize_for_test(m);
-        const DofMap dofs = make_dof_map(m);
-        const Eigen::VectorXd f = load_vector(m, dofs, 3);
-        Eigen::Vector3d F = Eigen::Vector3d::Zero();
-        for (Eigen::Index gi = 0; gi < static_cast<Eigen::Index>(m.grids.size()); ++gi)
-          for (int c = 0; c < 3; ++c) F[c] += f[dofs.grid_dof(gi, c + 1)];
+        const Eigen::Vector3d F = load_resultant(m, 3);
         const double area = 2.0 * 3.0 * 4.0 / (axis == 0 ? 2.0 : axis == 1 ? 3.0 : 4.0);
         Eigen::Vector3d expected = Eigen::Vector3d::Zero();
         expected[axis] = (side == 0 ? 1.0 : -1.0) * 5.0 * area;  // inward

@@ -17,6 +17,7 @@
 
 #include "fem_test_util.hpp"
 #include "seflex/fem/assembly.hpp"
+#include "seflex/fem/loads.hpp"
 
 namespace seflex::fem::test {
 
@@ -152,6 +153,16 @@ inline Eigen::VectorXd solve_translations(const Model& m, const GlobalMatrices& 
 inline Eigen::Vector3d translation(const Model& m, const GlobalMatrices& g, const Eigen::VectorXd& u, int grid) {
   const Eigen::Index gi = m.grid_index.at(grid);
   return {u[g.dofs.grid_dof(gi, 1)], u[g.dofs.grid_dof(gi, 2)], u[g.dofs.grid_dof(gi, 3)]};
+}
+
+/// Resultant force (basic) of the grid loads of load set sid of a finalized model.
+inline Eigen::Vector3d load_resultant(const Model& m, int sid) {
+  const DofMap dofs = make_dof_map(m);
+  const Eigen::VectorXd f = load_vector(m, dofs, sid);
+  Eigen::Vector3d F = Eigen::Vector3d::Zero();
+  for (Eigen::Index gi = 0; gi < static_cast<Eigen::Index>(m.grids.size()); ++gi)
+    for (int c = 0; c < 3; ++c) F[c] += f[dofs.grid_dof(gi, c + 1)];
+  return F;
 }
 
 /// Cantilever along x clamped at lattice x = 0 (every translation) under the loads p: the mean
