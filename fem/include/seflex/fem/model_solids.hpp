@@ -81,7 +81,7 @@ struct FaceLoad {
   int sid = 0;
   int eid = 0, eid_last = 0;         ///< eid_last > 0: the THRU form, elements eid..eid_last
   std::array<double, 4> p{};
-  int g1 = 0, g34 = 0;               ///< solids: face corner G1 and G3 (HEXA/PENTA) or G4 (TETRA)
+  int g1 = 0, g34 = 0;               ///< solids: face corner G1 and G3 (HEXA/PENTA/PYRAM) or G4 (TETRA)
   int cid = 0;
   Eigen::Vector3d n = Eigen::Vector3d::Zero();
   CardRef ref;
