@@ -71,6 +71,28 @@ std::vector<mbd::Sample> run_scene(const TempDir& dir, const scene::Scene& sc) {
   return rec.samples;
 }
 
+/// The link alone in space (reduce_link(dir, true): nothing grounded, no gravity, full inertia), pulled at
+/// grid 5 by a constant 2 N along z from t = 0 to 0.05 s, sampled every kFreeLinkInterval with its loads.
+constexpr double kFreeLinkInterval = 1.0e-4;
+scene::Scene free_link(const TempDir& dir) {
+  reduce_link(dir, true);
+  return build(dir, R"(title: a free link pulled at one end
+bodies:
+  - {name: link, superelement: link.se, inertia: full}
+loads:
+  nodal:
+    - {node: link.5, force: [0.0, 0.0, 2.0]}
+integrator:
+  t_end: 0.05
+  step: 1.0e-5
+  max_step: 1.0e-4
+  tolerance: {position: 1.0e-7, angle: 1.0e-7}
+output:
+  interval: 1.0e-4
+  interface_loads: true
+)");
+}
+
 Eigen::Vector3d com_W(const mbd::Model& model, const mbd::Sample& s, std::size_t b) {
   const mbd::FlexibleBodySample& f = s.flexible[b];
   return f.frame.p + f.frame.R * mbd::deformed_com(model.superelement(model.flexible_bodies[b].se), f.xi);
@@ -130,24 +152,9 @@ output:
 // sample (a_G by second differences of the deformed centre of mass over the samples) and the applied force.
 TEST(InterfaceLoads, FreeBodyMomentumBalance) {
   TempDir dir;
-  reduce_link(dir, true);
-  const double h = 1.0e-4;
-  const scene::Scene sc = build(dir, R"(title: a free link pulled at one end
-bodies:
-  - {name: link, superelement: link.se, inertia: full}
-loads:
-  nodal:
-    - {node: link.5, force: [0.0, 0.0, 2.0]}
-integrator:
-  t_end: 0.05
-  step: 1.0e-5
-  max_step: 1.0e-4
-  tolerance: {position: 1.0e-7, angle: 1.0e-7}
-output:
-  interval: 1.0e-4
-  interface_loads: true
-)");
+  const scene::Scene sc = free_link(dir);
   const auto samples = run_scene(dir, sc);
+  const double h = kFreeLinkInterval;
   ASSERT_GT(samples.size(), 450u);
   const double m = sc.model.superelements[0].mass;
   EXPECT_NEAR(m, kMass, 1e-9 * kMass);
@@ -177,24 +184,9 @@ output:
 // that acts on a free body: this is the run's balance of angular momentum.
 TEST(InterfaceLoads, FreeBodyMomentBalanceAboutTheCentreOfMass) {
   TempDir dir;
-  reduce_link(dir, true);
-  const double h = 1.0e-4;
-  const scene::Scene sc = build(dir, R"(title: a free link pulled at one end
-bodies:
-  - {name: link, superelement: link.se, inertia: full}
-loads:
-  nodal:
-    - {node: link.5, force: [0.0, 0.0, 2.0]}
-integrator:
-  t_end: 0.05
-  step: 1.0e-5
-  max_step: 1.0e-4
-  tolerance: {position: 1.0e-7, angle: 1.0e-7}
-output:
-  interval: 1.0e-4
-  interface_loads: true
-)");
+  const scene::Scene sc = free_link(dir);
   const auto samples = run_scene(dir, sc);
+  const double h = kFreeLinkInterval;
   ASSERT_GT(samples.size(), 450u);
   // The FE mesh of the file (the run reads the dynamics only): positions, recovery and the lumped mass.
   const se::Superelement body = io::load_superelement(dir.path() / "link.se");
