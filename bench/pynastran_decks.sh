@@ -50,7 +50,8 @@ family() {
       TSTEP1 | TSTEPNL | TABLED[1-5] | TABDMP1 | TABRND1 | TABRNDG | RANDPS | RANDT1 | RANDVAR | RCROSS | EPOINT | \
       TIC | NOLIN[1-4] | TF | EIGC | EIGP | CDAMP[1-5] | PDAMP | PDAMP5 | PDAMPT | CVISC | PVISC | PELAST | PBUSHT | ACSRCE | \
       "PBUSH B (viscous damping ignored: statics and real modes)" | \
-      "PBUSH GE (structural damping ignored: statics and real modes)") echo dynamics ;;
+      "PBUSH GE (structural damping ignored: statics and real modes)" | \
+      "PBUSH1D C (viscous damping ignored: statics and real modes)") echo dynamics ;;
     # design optimisation
     DESVAR | DVPREL1 | DVPREL2 | DVMREL1 | DVMREL2 | DVCREL1 | DVCREL2 | DVTREL1 | DVGRID | DVSHAP | DRESP1 | \
       DRESP2 | DRESP3 | DCONSTR | DCONADD | DOPTPRM | DTABLE | DEQATN | DLINK | DSCREEN | TOPVAR | MODTRAK | \
@@ -69,6 +70,8 @@ family() {
     # matrices
     NLPARM | NLPCI | NLCNTL | NLCNTLG | NLCNTL2 | NLSTEP | MATS1 | MATS3 | MATS8 | TABLES1 | MATT1 | MATT2 | MATT3 | \
       MATT8 | MATT9 | MATT11 | TABLEM[1-5] | PBUSH1D | USET | USET1 | DMI | DTI | \
+      "PBUSH1D SHOCKA (nonlinear: linear solutions use K and C)" | "PBUSH1D SPRING (nonlinear: linear solutions use K and C)" | \
+      "PBUSH1D DAMPER (nonlinear: linear solutions use K and C)" | "PBUSH1D GENER (nonlinear: linear solutions use K and C)" | \
       "PARAM in the bulk data overridden by the case control") echo other ;;
     *) echo structural ;;
   esac

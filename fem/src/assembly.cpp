@@ -201,8 +201,8 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
   std::vector<std::int32_t> bush_nodes;  // two per CBUSH (the second = the first when grounded)
   for (const Bush& b : model.bushes) {
     bushes.push_back(make_bush_element(model, b));
-    const std::int32_t a = node_of_grid(model, b.ga, b.ref, "CBUSH", b.id, "4 (GA)");
-    const std::int32_t n[2] = {a, b.gb ? node_of_grid(model, b.gb, b.ref, "CBUSH", b.id, "5 (GB)") : a};
+    const std::int32_t a = node_of_grid(model, b.ga, b.ref, bush_card(b), b.id, "4 (GA)");
+    const std::int32_t n[2] = {a, b.gb ? node_of_grid(model, b.gb, b.ref, bush_card(b), b.id, "5 (GB)") : a};
     conn.add(n, n + (b.gb ? 2 : 1));
     bush_nodes.insert(bush_nodes.end(), n, n + 2);
   }
@@ -243,6 +243,18 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
                 static_cast<std::int32_t>(g.dofs.node_of_dof(e.dof2))});
   }
 
+  // A CBUSH's (CBUSH1D's) 12 x 12 matrix on its grids; grounded: its GA block alone.
+  auto scatter_bush = [&](const detail::BlockPattern& pattern, std::size_t i, NodeMatrix<2> A, auto& target) {
+    if (bushes[i].grounded) {
+      NodeMatrix<1> A1 = A.topLeftCorner<6, 6>();
+      to_cd<1>(&bush_nodes[2 * i], axes, A1);
+      pattern.scatter<1>(&bush_nodes[2 * i], A1, target);
+    } else {
+      to_cd<2>(&bush_nodes[2 * i], axes, A);
+      pattern.scatter<2>(&bush_nodes[2 * i], A, target);
+    }
+  };
+
   // Stiffness.
   {
     const MystranPlate* mystran = options.mystran_plate ? &*options.mystran_plate : nullptr;
@@ -268,17 +280,7 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
       to_cd<3>(&tria_nodes[3 * i], axes, K);
       pattern.scatter<3>(&tria_nodes[3 * i], K, g.K);
     }
-    for (std::size_t i = 0; i < bushes.size(); ++i) {
-      NodeMatrix<2> K = bush_stiffness(bushes[i]);
-      if (bushes[i].grounded) {
-        NodeMatrix<1> K1 = K.topLeftCorner<6, 6>();
-        to_cd<1>(&bush_nodes[2 * i], axes, K1);
-        pattern.scatter<1>(&bush_nodes[2 * i], K1, g.K);
-      } else {
-        to_cd<2>(&bush_nodes[2 * i], axes, K);
-        pattern.scatter<2>(&bush_nodes[2 * i], K, g.K);
-      }
-    }
+    for (std::size_t i = 0; i < bushes.size(); ++i) scatter_bush(pattern, i, bush_stiffness(bushes[i]), g.K);
     for (std::size_t i = 0; i < solids.size(); ++i) {
       Eigen::MatrixXd K = solid_stiffness(solids[i]);
       to_cd_translations(&solid_nodes[solid_ptr[i]], solids[i].nnode, axes, K);
@@ -334,6 +336,8 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
     shear_panels.scatter(pattern, axes, w, shear_panel_mass, g.M);
     bends.scatter(pattern, axes, w, bend_mass, g.M);
     shells8.scatter(pattern, axes, w, [&](const QuadraticShellElement& e) { return quadratic_shell_mass(e, options.mass); }, g.M);
+    for (std::size_t i = 0; i < bushes.size(); ++i)
+      if (bushes[i].mass != 0.0) scatter_bush(pattern, i, w * bush_mass(bushes[i]), g.M);
     for (std::size_t i = 0; i < masses.size(); ++i) {
       NodeMatrix<1> M = w * conm2_mass(masses[i]);
       to_cd<1>(&mass_nodes[i], axes, M);

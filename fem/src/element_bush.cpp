@@ -1,17 +1,27 @@
 // CBUSH element (see element_bush.hpp).
 #include "seflex/fem/element_bush.hpp"
 
+#include <cmath>
+#include <string>
+
 #include "model_lookup.hpp"
 
 namespace seflex::fem {
 
 BushElement make_bush_element(const Model& model, const Bush& b) {
-  const char* card = "CBUSH";
+  const char* card = bush_card(b);
+  const char* prop_card = b.one_d ? "PBUSH1D" : "PBUSH";
+  const char* cid_field = b.one_d ? "6 (CID)" : "9 (CID)";
   BushElement e;
   const auto it = model.bush_prop_index.find(b.pid);
   if (it == model.bush_prop_index.end())
-    detail::fail(model, b.ref, card, b.id, "3 (PID)", "references PBUSH " + std::to_string(b.pid) + ", which is not defined");
-  e.k = model.bush_props[it->second].k;
+    detail::fail(model, b.ref, card, b.id, "3 (PID)", "references " + std::string(prop_card) + " " + std::to_string(b.pid) + ", which is not defined");
+  const BushProperty& p = model.bush_props[it->second];
+  if (p.one_d != b.one_d)
+    detail::fail(model, b.ref, card, b.id, "3 (PID)", "references " + std::string(p.one_d ? "PBUSH1D" : "PBUSH") + " " + std::to_string(b.pid) +
+                                                          "; expected a " + prop_card + " card");
+  e.k = p.k;
+  e.mass = p.one_d ? p.mass : 0.0;
   const Grid& ga = model.grids[detail::grid_index(model, b.ga, b.ref, card, b.id, "4 (GA)")];
   e.x_A = ga.x_basic;
   e.grounded = b.gb == 0;
@@ -21,11 +31,19 @@ BushElement make_bush_element(const Model& model, const Bush& b) {
   // QRG CBUSH remark: with GA and GB closer than 1e-4 (or GB blank) the axes come from CID.
   const bool coincident = e.grounded || L < 1e-4;
   if (b.cid >= 0) {
-    e.R_BE = detail::axes_at(model, b.cid, e.x_A, b.ref, card, b.id, "9 (CID)");
+    e.R_BE = detail::axes_at(model, b.cid, e.x_A, b.ref, card, b.id, cid_field);
   } else if (coincident) {
-    detail::fail(model, b.ref, card, b.id, "9 (CID)",
+    detail::fail(model, b.ref, card, b.id, cid_field,
                  e.grounded ? "blank, and GB is blank (grounded); expected a coordinate system for the element axes"
                             : "blank, and GA and GB coincide; expected a coordinate system for the element axes");
+  } else if (b.one_d) {  // only x matters (K along it): y, z any pair completing a right-handed frame
+    const Eigen::Vector3d ex = d / L;
+    Eigen::Vector3d t = Eigen::Vector3d::Unit(0);
+    if (std::abs(ex.x()) > 0.9) t = Eigen::Vector3d::Unit(1);
+    const Eigen::Vector3d ez = ex.cross(t).normalized();
+    e.R_BE.col(0) = ex;
+    e.R_BE.col(1) = ez.cross(ex);
+    e.R_BE.col(2) = ez;
   } else {
     Eigen::Vector3d v;
     if (b.has_g0) {
@@ -73,6 +91,15 @@ NodeMatrix<2> bush_stiffness(const BushElement& e) {
   K.bottomLeftCorner<6, 6>() = -K1;
   apply_node_offsets<2>({e.p_P - e.x_A, e.p_P - e.x_B}, K);
   return K;
+}
+
+NodeMatrix<2> bush_mass(const BushElement& e) {
+  NodeMatrix<2> M = NodeMatrix<2>::Zero();
+  for (int i = 0; i < 3; ++i) {
+    M(i, i) = 0.5 * e.mass;
+    if (!e.grounded) M(6 + i, 6 + i) = 0.5 * e.mass;
+  }
+  return M;
 }
 
 }  // namespace seflex::fem

@@ -20,14 +20,14 @@ std::vector<std::pair<std::string, std::size_t>> element_counts(const Model& m) 
   n["RBE3"] += m.rbe3.size();
   for (const auto& r : m.rigid_bodies) ++n[rigid_body_card(r)];
   for (const auto& r : m.rigid_rods) ++n[rigid_rod_card(r)];
-  n["CBUSH"] += m.bushes.size();
+  for (const auto& b : m.bushes) ++n[bush_card(b)];
   n["CMASS1-4"] += m.scalar_masses.size();
   n["CONM1"] += m.conm1.size();
   for (const auto& s : m.solids) ++n[s.shape == Solid::Shape::Hexa ? "CHEXA" : s.shape == Solid::Shape::Penta ? "CPENTA" : "CTETRA"];
   n["GENEL"] += m.genels.size();
   static const char* order[] = {"CBAR",  "CBEAM",  "CROD",  "CONROD", "CTUBE",  "CBEND",  "CQUAD4", "CTRIA3", "CQUAD8", "CTRIA6",
                                 "CSHEAR", "CONM2", "CELAS1", "CELAS2", "RBE2",   "RBAR",   "RBE3",   "RBE1",
-                                "CRIGD1", "CRIGD2", "CRIGD3", "RROD",  "CRIGDR", "CBUSH",  "CELAS3/CELAS4",
+                                "CRIGD1", "CRIGD2", "CRIGD3", "RROD",  "CRIGDR", "CBUSH", "CBUSH1D",  "CELAS3/CELAS4",
                                 "CMASS1-4", "CONM1", "CHEXA", "CPENTA", "CTETRA", "GENEL"};
   std::vector<std::pair<std::string, std::size_t>> out;
   for (const char* name : order)

@@ -213,10 +213,10 @@ ElementResultMap make_element_result_map(const Model& model, const std::vector<i
   for (const Bush& r : model.bushes) {
     if (!selected(r.id)) continue;
     const BushElement e = make_bush_element(model, r);
-    const std::int32_t a = b.node(r.ga, r.ref, "CBUSH", r.id);
-    const std::vector<std::int32_t> nodes = r.gb ? std::vector<std::int32_t>{a, b.node(r.gb, r.ref, "CBUSH", r.id)}
+    const std::int32_t a = b.node(r.ga, r.ref, bush_card(r), r.id);
+    const std::vector<std::int32_t> nodes = r.gb ? std::vector<std::int32_t>{a, b.node(r.gb, r.ref, bush_card(r), r.id)}
                                                  : std::vector<std::int32_t>{a};
-    b.add(r.id, ResultKind::Bush, "CBUSH", nodes, 6, [&](const Eigen::VectorXd& u) {
+    b.add(r.id, ResultKind::Bush, bush_card(r), nodes, 6, [&](const Eigen::VectorXd& u) {
       Eigen::Matrix<double, 12, 1> v = Eigen::Matrix<double, 12, 1>::Zero();
       v.head(u.size()) = u;
       return bush_results(e, v);

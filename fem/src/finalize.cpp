@@ -56,6 +56,7 @@ class Finalizer {
     resolve_coordinates(m_);
     check_elements();
     offset_definition_without_offsets();
+    material_tables();
     check_constraints_and_loads();
     check_solution_control();
     m_.finalized = true;
@@ -191,14 +192,14 @@ class Finalizer {
     seen.model = &m_;
     auto add = [&](int id, const CardRef& ref, const char* card) {
       seen.add(id, ref, card, "field 2 (PID)", "property",
-               "expected unique property ids across PBAR, PBARL, PBEAM, PBEAML, PROD, PTUBE, PSHEAR, PBEND, PSHELL, PCOMP, PCOMPG, PELAS, PBUSH, PMASS, PSOLID");
+               "expected unique property ids across PBAR, PBARL, PBEAM, PBEAML, PROD, PTUBE, PSHEAR, PBEND, PSHELL, PCOMP, PCOMPG, PELAS, PBUSH, PBUSH1D, PMASS, PSOLID");
     };
     for (const auto& p : m_.bar_props) add(p.id, p.ref, card_name(p.source));
     for (const auto& p : m_.rod_props) add(p.id, p.ref, rod_property_card(p));
     for (const auto& p : m_.shell_props) add(p.id, p.ref, "PSHELL");
     for (const auto& p : m_.composite_props) add(p.id, p.ref, p.global ? "PCOMPG" : "PCOMP");
     for (const auto& p : m_.spring_props) add(p.id, p.ref, "PELAS");
-    for (const auto& p : m_.bush_props) add(p.id, p.ref, "PBUSH");
+    for (const auto& p : m_.bush_props) add(p.id, p.ref, p.one_d ? "PBUSH1D" : "PBUSH");
     for (const auto& p : m_.mass_props) add(p.id, p.ref, "PMASS");
     for (const auto& p : m_.shear_props) add(p.id, p.ref, "PSHEAR");
     for (const auto& p : m_.bend_props) add(p.id, p.ref, "PBEND");
@@ -256,6 +257,18 @@ class Finalizer {
   /// bends use E and G only, so a MAT1 that only they use is read with a warning, as Nastran warns of
   /// an inconsistent E, G, NU; a shell, composite ply, shear panel or solid would use NU: listed (every
   /// solution refuses the deck, naming the MAT1 card).
+  /// TABLEM1-4: ids unique among them (QRG); kept but used by no solution (the MATTi that would use
+  /// them are not modelled, and are listed when present): one warning.
+  void material_tables() {
+    if (m_.material_tables.empty()) return;
+    std::unordered_map<int, std::uint32_t> ids;
+    index(m_.material_tables, ids, "TABLEM", "TABLEMi");
+    const MaterialTable& t = m_.material_tables.front();
+    warn_once(at(t.ref) + ": TABLEM" + std::to_string(t.type) + " " + std::to_string(t.id) +
+              (m_.material_tables.size() > 1 ? " and " + std::to_string(m_.material_tables.size() - 1) + " more TABLEMi" : std::string()) +
+              ": read; seflex models no temperature-dependent material (MATTi), so no card uses them");
+  }
+
   void poisson_ratio_above_half() {
     std::unordered_map<int, std::string> needs_nu;  // MID -> the first property that uses its NU
     auto uses = [&](int mid, const char* card, int pid) {
@@ -339,7 +352,7 @@ class Finalizer {
     for (const auto& e : m_.shells) add(e.id, e.ref, shell_card(e));
     for (const auto& e : m_.conm2) add(e.id, e.ref, "CONM2");
     for (const auto& e : m_.springs) add(e.id, e.ref, spring_card(e));
-    for (const auto& e : m_.bushes) add(e.id, e.ref, "CBUSH");
+    for (const auto& e : m_.bushes) add(e.id, e.ref, bush_card(e));
     for (const auto& e : m_.scalar_masses) add(e.id, e.ref, scalar_mass_card(e));
     for (const auto& e : m_.conm1) add(e.id, e.ref, "CONM1");
     for (const auto& e : m_.genels) add(e.id, e.ref, "GENEL");
@@ -498,13 +511,21 @@ class Finalizer {
         fail(s.ref, card, s.id, "field 3 (PID)", "references property " + std::to_string(s.pid) + undefined(s.pid) + "; expected the id of a PMASS card");
     }
     for (const auto& b : m_.bushes) {
-      need_grid(b.ga, b.ref, "CBUSH", b.id, "field 4 (GA)");
-      if (b.gb != 0) need_grid(b.gb, b.ref, "CBUSH", b.id, "field 5 (GB)");
-      if (b.has_g0) need_grid(b.g0, b.ref, "CBUSH", b.id, "field 6 (GO)");
-      if (b.cid > 0) need_coord(b.cid, b.ref, "CBUSH", b.id, "field 9 (CID)");
-      if (b.ocid > 0) need_coord(b.ocid, b.ref, "CBUSH", b.id, "field 3 of continuation 1 (OCID)");
-      if (!m_.bush_prop_index.count(b.pid))
-        fail(b.ref, "CBUSH", b.id, "field 3 (PID)", "references property " + std::to_string(b.pid) + undefined(b.pid) + "; expected the id of a PBUSH card");
+      const char* card = bush_card(b);
+      const char* prop_card = b.one_d ? "PBUSH1D" : "PBUSH";
+      need_grid(b.ga, b.ref, card, b.id, "field 4 (GA)");
+      if (b.gb != 0) need_grid(b.gb, b.ref, card, b.id, "field 5 (GB)");
+      if (b.has_g0) need_grid(b.g0, b.ref, card, b.id, "field 6 (GO)");
+      if (b.cid > 0) need_coord(b.cid, b.ref, card, b.id, b.one_d ? "field 6 (CID)" : "field 9 (CID)");
+      if (b.ocid > 0) need_coord(b.ocid, b.ref, card, b.id, "field 3 of continuation 1 (OCID)");
+      const auto it = m_.bush_prop_index.find(b.pid);
+      if (it == m_.bush_prop_index.end())
+        fail(b.ref, card, b.id, "field 3 (PID)",
+             "references property " + std::to_string(b.pid) + undefined(b.pid) + "; expected the id of a " + prop_card + " card");
+      if (const BushProperty& p = m_.bush_props[it->second]; p.one_d != b.one_d)
+        fail(b.ref, card, b.id, "field 3 (PID)",
+             "references property " + std::to_string(b.pid) + ", a " + (p.one_d ? "PBUSH1D" : "PBUSH") + " card (" + at(p.ref) +
+                 "); expected the id of a " + prop_card + " card");
     }
     for (const auto& e : m_.shear_panels) {
       static const char* gfields[4] = {"field 4 (G1)", "field 5 (G2)", "field 6 (G3)", "field 7 (G4)"};

@@ -11,6 +11,7 @@
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/element_bar.hpp"
 #include "seflex/fem/element_bend.hpp"
+#include "seflex/fem/element_bush.hpp"
 #include "seflex/fem/element_conm1.hpp"
 #include "seflex/fem/element_conm2.hpp"
 #include "seflex/fem/element_rod.hpp"
@@ -114,6 +115,10 @@ MassProperties mass_properties(const Model& model, std::optional<int> reference_
   for (const ShearPanel& s : model.shear_panels) {
     const ShearPanelElement e = make_shear_panel_element(model, s);
     add_element<4>(e.x, ref, shear_panel_mass(e), M0);
+  }
+  for (const Bush& b : model.bushes) {
+    const BushElement e = make_bush_element(model, b);
+    if (e.mass != 0.0) add_element<2>({e.x_A, e.x_B}, ref, bush_mass(e), M0);
   }
   for (const Conm2& c : model.conm2) {
     const Conm2Element e = make_conm2_element(model, c);

@@ -1,4 +1,4 @@
-// CBUSH, PBUSH, CELAS3, CELAS4, CMASS1-4, PMASS, CONM1. Field layouts: MSC Nastran Quick Reference
+// CBUSH, PBUSH, CBUSH1D, PBUSH1D, CELAS3, CELAS4, CMASS1-4, PMASS, CONM1, TABLEM1-4. Field layouts: MSC Nastran Quick Reference
 // Guide (docs/nastran-support.md).
 #include <string>
 
@@ -114,8 +114,9 @@ void parse_conm1(const Card& card, ReaderState& st) {
   st.model.conm1.push_back(c);
 }
 
-// CBUSH EID PID GA GB GO/X1 X2 X3 CID / S OCID S1 S2 S3
-void parse_cbush(const Card& card, ReaderState& st) {
+namespace {
+/// EID PID GA GB of CBUSH and CBUSH1D (blank PID = EID; blank GB = grounded).
+fem::Bush bush_ends(const Card& card) {
   fem::Bush b;
   b.id = card.id(0, "EID");
   b.pid = card.id_or(1, "PID", b.id);
@@ -123,6 +124,13 @@ void parse_cbush(const Card& card, ReaderState& st) {
   b.gb = card.integer_or(3, "GB", 0);
   if (b.gb < 0) card.fail(3, "GB", card.got(3) + "; expected a grid id or blank (grounded)");
   if (b.gb == b.ga) card.fail(3, "GB", "GB is GA; expected a second grid or blank (grounded)");
+  return b;
+}
+}  // namespace
+
+// CBUSH EID PID GA GB GO/X1 X2 X3 CID / S OCID S1 S2 S3
+void parse_cbush(const Card& card, ReaderState& st) {
+  fem::Bush b = bush_ends(card);
   switch (card.kind(4)) {
     case FieldKind::Integer:
       b.g0 = card.id(4, "GO");
@@ -187,6 +195,103 @@ void parse_pbush(const Card& card, ReaderState& st) {
   if (p.has_ge) st.note_unsupported("PBUSH GE (structural damping ignored: statics and real modes)", card.ref());
   p.ref = card.ref();
   st.model.bush_props.push_back(p);
+}
+
+// CBUSH1D EID PID GA GB CID (QRG CBUSH1D): the rod-type spring, a CBUSH along the element axis.
+void parse_cbush1d(const Card& card, ReaderState& st) {
+  fem::Bush b = bush_ends(card);
+  b.one_d = true;
+  b.cid = card.integer_or(4, "CID", -1);
+  if (b.cid < -1) card.fail(4, "CID", card.got(4) + "; expected a coordinate system id >= 0 or blank");
+  if (card.used() > 5) card.fail(5, "", card.got(5) + " after CID; expected nothing more");
+  b.ref = card.ref();
+  st.model.bushes.push_back(b);
+}
+
+// PBUSH1D PID K C M - SA SE / SHOCKA|SPRING|DAMPER|GENER ... (QRG PBUSH1D). The continuation lines
+// are used by nonlinear solutions only (QRG remark 3): listed. C is ignored by statics (remark 2) and
+// real modes: listed as damping.
+void parse_pbush1d(const Card& card, ReaderState& st) {
+  fem::BushProperty p;
+  p.one_d = true;
+  p.id = card.id(0, "PID");
+  if (card.blank(1) && card.blank(2)) card.fail(1, "K", "K and C blank; expected a stiffness K or a damping C (QRG PBUSH1D remark 1)");
+  p.k[0] = card.real_or(1, "K", 0.0);
+  if (p.k[0] < 0.0) card.fail(1, "K", card.got(1) + "; expected a stiffness >= 0");
+  p.b[0] = card.real_or(2, "C", 0.0);
+  p.has_b = p.b[0] != 0.0;
+  p.mass = card.real_or(3, "M", 0.0);
+  if (p.mass < 0.0) card.fail(3, "M", card.got(3) + "; expected a mass >= 0");
+  if (!card.blank(4)) card.fail(4, "blank", card.got(4) + "; expected a blank field 6 (SA is field 7)");
+  p.sa = card.real_or(5, "SA", 1.0);
+  p.se = card.real_or(6, "SE", 1.0);
+  for (std::size_t k = 8; k < card.size(); k += 8) {
+    const std::string key = card.text_or(k, "keyword", "");
+    if (key != "SHOCKA" && key != "SPRING" && key != "DAMPER" && key != "GENER")
+      card.fail(k, "keyword", card.got(k) + "; expected SHOCKA, SPRING, DAMPER or GENER on a continuation line");
+    st.note_unsupported("PBUSH1D " + key + " (nonlinear: linear solutions use K and C)", card.ref());
+  }
+  if (p.has_b) st.note_unsupported("PBUSH1D C (viscous damping ignored: statics and real modes)", card.ref());
+  p.ref = card.ref();
+  st.model.bush_props.push_back(p);
+}
+
+// TABLEM1 ID XAXIS YAXIS / x1 y1 x2 y2 ... ENDT; TABLEM2 ID X1; TABLEM3 ID X1 X2; TABLEM4 ID X1 X2 X3
+// X4 / A0 A1 ... ENDT (QRG TABLEM1-4). Checked (x in ascending or descending order, SKIP pairs,
+// X2 != 0, X3 < X4, ENDT) and kept; no solution uses them (fem::MaterialTable).
+void parse_tablem(const Card& card, ReaderState& st) {
+  fem::MaterialTable t;
+  t.type = card.name().back() - '0';
+  t.id = card.id(0, "ID");
+  if (t.type == 1) {
+    for (std::size_t i : {std::size_t{1}, std::size_t{2}}) {
+      const std::string a = card.text_or(i, i == 1 ? "XAXIS" : "YAXIS", "");
+      if (!a.empty() && a != "LINEAR" && a != "LOG") card.fail(i, i == 1 ? "XAXIS" : "YAXIS", card.got(i) + "; expected LINEAR, LOG or blank");
+      (i == 1 ? t.xaxis : t.yaxis) = a;
+    }
+  } else {
+    static const char* names[4] = {"X1", "X2", "X3", "X4"};
+    const int n = t.type == 2 ? 1 : t.type == 3 ? 2 : 4;
+    for (int i = 0; i < n; ++i) t.x[static_cast<std::size_t>(i)] = card.real_or(static_cast<std::size_t>(1 + i), names[i], 0.0);
+    if (t.type >= 3 && t.x[1] == 0.0) card.fail(2, "X2", card.got(2) + "; expected a real other than 0 (it divides x)");
+    if (t.type == 4 && !(t.x[2] < t.x[3])) card.fail(3, "X3", card.got(3) + " and X4 " + card.got(4) + "; expected X3 < X4 (the range of x)");
+  }
+  std::size_t i = 8;
+  bool ended = false;
+  for (; i < card.size(); ++i) {
+    if (card.blank(i)) continue;
+    if (card.kind(i) == FieldKind::Text && card.text_or(i, "value", "") == "ENDT") { ended = true; break; }
+    if (t.type == 4) {
+      t.values.push_back(card.real(i, "A"));
+      continue;
+    }
+    const bool skip = card.kind(i) == FieldKind::Text && card.text_or(i, "x", "") == "SKIP";
+    if (skip) {  // a SKIP pair: both of its fields SKIP (QRG)
+      if (card.kind(i + 1) != FieldKind::Text || card.text_or(i + 1, "y", "") != "SKIP")
+        card.fail(i + 1, "y", card.got(i + 1) + " after x SKIP; expected SKIP");
+      ++i;
+      continue;
+    }
+    const double x = card.real(i, "x");
+    if (i + 1 >= card.size() || card.blank(i + 1)) card.fail(i + 1, "y", "blank after x; expected a y value");
+    t.values.push_back(x);
+    t.values.push_back(card.real(i + 1, "y"));
+    ++i;
+  }
+  if (!ended) card.fail_card("has no ENDT; expected its table to end with ENDT");
+  if (t.values.empty()) card.fail_card(t.type == 4 ? "has no coefficient; expected A0 ... before ENDT" : "has no (x, y) pair; expected at least one before ENDT");
+  if (t.type != 4) {  // x in ascending or descending order (QRG TABLEM1 remark 2)
+    int order = 0;
+    for (std::size_t k = 2; k < t.values.size(); k += 2) {
+      const double d = t.values[k] - t.values[k - 2];
+      const int s = d > 0 ? 1 : d < 0 ? -1 : 0;
+      if (s != 0 && order != 0 && s != order)
+        card.fail_card("x values " + std::to_string(t.values[k - 2]) + ", " + std::to_string(t.values[k]) + " change direction; expected x in ascending or descending order");
+      if (s != 0) order = s;
+    }
+  }
+  t.ref = card.ref();
+  st.model.material_tables.push_back(std::move(t));
 }
 
 }  // namespace seflex::io::nastran

@@ -71,7 +71,8 @@ constexpr CardType kCardTypes[] = {
     {"CTUBE", parse_crod},      {"PTUBE", parse_ptube},     {"GENEL", parse_genel},    {"CSHEAR", parse_cshear},
     {"MDLPRM", parse_mdlprm},   {"PSHEAR", parse_pshear},   {"CBEND", parse_cbend},     {"PBEND", parse_pbend},    {"CQUAD8", parse_shell8},
     {"CTRIA6", parse_shell8},   {"CQUADR", parse_cquad4},   {"CTRIAR", parse_ctria3},  {"SLOAD", parse_sload},
-    {"PLOAD", parse_pload},
+    {"PLOAD", parse_pload},     {"CBUSH1D", parse_cbush1d}, {"PBUSH1D", parse_pbush1d}, {"TABLEM1", parse_tablem},
+    {"TABLEM2", parse_tablem},  {"TABLEM3", parse_tablem},  {"TABLEM4", parse_tablem},
 };
 constexpr std::size_t kNumCardTypes = sizeof(kCardTypes) / sizeof(kCardTypes[0]);
 
@@ -254,9 +255,10 @@ class DeckReader {
           }
           break;
         case Section::CaseControl:
-          if (is_begin_bulk(line.text)) {
+          if (is_begin_bulk(line.text) || is_begin_super(line.text)) {  // parts may come first (pyNastran writes them so)
             section_ = Section::Bulk;
             state_.case_control_params = model_.params.size();
+            if (is_begin_super(line.text)) part_line(src, line);
           }
           else
             case_control_.case_line(line, src.name, src.index);
@@ -319,8 +321,8 @@ class DeckReader {
     stack.pop_back();
   }
 
-  /// A line of a part superelement's bulk data (BEGIN [BULK] SUPER = n up to the next BEGIN or
-  /// ENDDATA): skipped, INCLUDE lines too. Each part is listed as "BEGIN SUPER" (first at its BEGIN
+  /// A line of a part superelement's bulk data (BEGIN [BULK] SUPER = n up to the next BEGIN SUPER,
+  /// BEGIN BULK (the residual's, when the parts come first) or ENDDATA): skipped, INCLUDE lines too. Each part is listed as "BEGIN SUPER" (first at its BEGIN
   /// line); check_card_usage refuses it in every solution, as seflex reads the residual structure only.
   void part_line(const Source& src, const Line& line) {
     const std::string_view t = trim(line.text);
@@ -328,6 +330,9 @@ class DeckReader {
       in_part_ = true;
       have_previous_ = have_pattern_ = false;
       state_.note_unsupported(kPartSuperelement, {src.index, line.number});
+    } else if (is_begin_bulk(t)) {  // the residual's bulk data after the parts
+      in_part_ = false;
+      have_previous_ = have_pattern_ = false;
     } else if (starts_with_word(t, "ENDDATA")) {
       done_ = true;
     }

@@ -432,9 +432,13 @@ void write_constraints_and_loads(const fem::Model& m, CardWriter& w) {
   }
 }
 
-/// PBUSH, PMASS, CBUSH, CMASS1-4, CONM1, PLOAD1, SPCD.
+/// PBUSH, PBUSH1D, PMASS, TABLEM1-4, CBUSH, CBUSH1D, CMASS1-4, CONM1, PLOAD1, SPCD.
 void write_bush_mass_cards(const fem::Model& m, CardWriter& w) {
   for (const auto& p : m.bush_props) {
+    if (p.one_d) {
+      w.start("PBUSH1D").i(p.id).r(p.k[0]).r(p.b[0]).r(p.mass).blank().r(p.sa).r(p.se).end();
+      continue;
+    }
     w.start("PBUSH").i(p.id).t("K");
     for (const double k : p.k) w.r(k);
     if (p.has_b) {
@@ -452,7 +456,28 @@ void write_bush_mass_cards(const fem::Model& m, CardWriter& w) {
     for (std::size_t j = k; j < m.mass_props.size() && j < k + 4; ++j) w.i(m.mass_props[j].id).r(m.mass_props[j].m);
     w.end();
   }
+  for (const auto& t : m.material_tables) {
+    static const char* names[4] = {"TABLEM1", "TABLEM2", "TABLEM3", "TABLEM4"};
+    w.start(names[t.type - 1]).i(t.id);
+    if (t.type == 1) {
+      t.xaxis.empty() ? w.blank() : w.t(t.xaxis);
+      t.yaxis.empty() ? w.blank() : w.t(t.yaxis);
+      w.blank(5);
+    } else {
+      const int n = t.type == 2 ? 1 : t.type == 3 ? 2 : 4;
+      for (int i = 0; i < n; ++i) w.r(t.x[static_cast<std::size_t>(i)]);
+      w.blank(7 - n);
+    }
+    for (const double v : t.values) w.r(v);
+    w.t("ENDT").end();
+  }
   for (const auto& b : m.bushes) {
+    if (b.one_d) {
+      w.start("CBUSH1D").i(b.id).i(b.pid).i(b.ga).id0(b.gb);
+      b.cid >= 0 ? w.i(b.cid) : w.blank();
+      w.end();
+      continue;
+    }
     w.start("CBUSH").i(b.id).i(b.pid).i(b.ga).id0(b.gb);
     if (b.has_g0)
       w.i(b.g0).blank(2);

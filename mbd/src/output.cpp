@@ -24,6 +24,12 @@ Energies energies(const Model& model, const State& s, const Data& data) {
   return E;
 }
 
+void interface_load(const Model& model, const Data& data, int body, Eigen::VectorXd& f) {
+  const FlexibleBodyData& fd = data.flex.at(static_cast<std::size_t>(body));
+  const auto nb = 6 * static_cast<Eigen::Index>(model.flexible_bodies[static_cast<std::size_t>(body)].nodes.size());
+  f = fd.f_el.head(nb) + fd.f_in.head(nb) + fd.f_damp.head(nb);
+}
+
 namespace {
 
 void fill_element_sample(const HingeForceResult& r, const LockState* lock, ElementSample& es) {
@@ -62,6 +68,7 @@ void make_sample(const Model& model, const State& s, const Data& data, Sample& o
     fs.xi = fd.kin.xi;
     fs.kinetic = fd.kinetic;
     fs.elastic = fd.elastic;
+    if (model.flexible_bodies[b].options.interface_loads) interface_load(model, data, static_cast<int>(b), fs.interface_load);
   }
   out.rigid.resize(model.rigid_bodies.size());
   for (std::size_t b = 0; b < model.rigid_bodies.size(); ++b) {

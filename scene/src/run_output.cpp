@@ -140,7 +140,7 @@ RunOutput::RunOutput(const Scene& scene, const RunOutputOptions& o) : scene_(sce
   }
   if (scene.description.output.interface_loads) {
     interface_loads_ = open(folder_ / "interface_loads.csv");
-    interface_loads_ << "t,body,node,fx,fy,fz,mx,my,mz,FX,FY,FZ,MX,MY,MZ\n";
+    interface_loads_ << "t,body,node,fx,fy,fz,mx,my,mz,FX,FY,FZ,MX,MY,MZ,el_fx,el_fy,el_fz,el_mx,el_my,el_mz\n";
     interface_loads_.flush();
     int n_max = 0;
     for (const auto& sp : scene.superelements)
@@ -205,20 +205,27 @@ void RunOutput::write_interface_loads(const mbd::Sample& s) {
     const se::Superelement& body = *scene_.superelements[b];
     const mbd::FlexibleBodySample& fb = s.flexible[static_cast<std::size_t>(r.index)];
     const Eigen::Index nb = 6 * body.num_interfaces();
-    // K is block-diagonal between the interface coordinates and the modal ones: the interface rows
-    // of K xi are K_bb q_b.
+    // The elastic share K_bb q_b: K is block-diagonal between the interface coordinates and the modal
+    // ones, so the interface rows of K xi.
     f_b_.head(nb).noalias() = body.K.topRows(nb) * fb.xi;
+    const bool full = fb.interface_load.size() == nb;  // the AIC formulation's assembled load
+    const Eigen::Matrix3d R_BW = fb.frame.R.transpose();
     for (int j = 0; j < body.num_interfaces(); ++j) {
       append_number(interface_buf_, s.t);
       interface_buf_ += ',';
       interface_buf_ += csv_field(d.bodies[b].name);
       interface_buf_ += ',';
       interface_buf_ += std::to_string(body.interfaces[static_cast<std::size_t>(j)].id);
-      for (int k = 0; k < 6; ++k) append_field(interface_buf_, f_b_(6 * j + k));
-      for (int h = 0; h < 2; ++h) {
-        const Eigen::Vector3d w = fb.frame.R * f_b_.segment<3>(6 * j + 3 * h);
-        for (int k = 0; k < 3; ++k) append_field(interface_buf_, w(k));
+      if (full) {
+        for (int h = 0; h < 2; ++h) {  // body frame B, then the scene's axes W
+          const Eigen::Vector3d w = R_BW * fb.interface_load.segment<3>(6 * j + 3 * h);
+          for (int k = 0; k < 3; ++k) append_field(interface_buf_, w(k));
+        }
+        for (int k = 0; k < 6; ++k) append_field(interface_buf_, fb.interface_load(6 * j + k));
+      } else {  // a formulation that does not assemble it (ffrf-lm): empty fields
+        interface_buf_.append(12, ',');
       }
+      for (int k = 0; k < 6; ++k) append_field(interface_buf_, f_b_(6 * j + k));
       interface_buf_ += '\n';
     }
   }

@@ -394,6 +394,7 @@ struct Builder {
     o.inertia = body.inertia;
     o.stiffness_damping = body.stiffness_damping;
     o.modal_damping = body.modal_damping;
+    o.interface_loads = d.output.interface_loads;  // interface_loads.csv (run_output.hpp)
     const bool has_stiffening = se_of(static_cast<int>(b)).stiffening.present();
     if (body.geometric_stiffening.value_or(false) && !has_stiffening)
       body.where.fail("geometric_stiffening: on, but " + body.superelement.string() +

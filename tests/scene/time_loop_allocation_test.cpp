@@ -147,6 +147,23 @@ TEST_F(TimeLoopAllocations, DemoSync3dHundredStepsAllocateNothing) {
                                      << " steps (SEFLEX_TRACE_ALLOCATIONS=1 prints where)";
 }
 
+// The same with output.interface_loads: every output sample also forms the flexible bodies' inertia and
+// damping forces for their interface loads (mbd::interface_load).
+TEST_F(TimeLoopAllocations, DemoSync3dWithInterfaceLoadsAllocatesNothing) {
+  std::string text = read_file(source_dir() / "examples" / "solar_array" / "sync-3d.yaml");
+  replace_all(text, "superelements/", "");
+  replace_all(text, "\noutput:\n", "\noutput:\n  interface_loads: true\n");
+  const scene::Scene scene = scene::build_scene(scene::read_scene(dir_->write("sync-3d-loads.yaml", text)), scene::SceneBuildOptions{false});
+  ASSERT_TRUE(scene.model.flexible_bodies[0].options.interface_loads);
+  g_allocations = 0;
+  const long steps = 100;
+  StepWindow window(steps, false);
+  scene::solve_scene(scene, scene.description.integrator, mbd::Formulation::Aic, &window);
+  g_counting = false;
+  ASSERT_EQ(window.accepted(), 1 + steps);
+  EXPECT_EQ(g_allocations.load(), 0) << "heap allocations in " << steps << " steps with interface loads";
+}
+
 // The same from step 1 through the first lock latch (t ~ 2.4 s: event location, redone steps, the
 // lock's stiffness entering the matrix) and 50 steps after it.
 TEST_F(TimeLoopAllocations, DemoSync3dThroughTheFirstLatchAllocatesNothing) {

@@ -118,6 +118,16 @@ TEST(PublicDecks, PartSuperelementsAreSkippedListedAndRefusedBySolutions) {
   EXPECT_TRUE(mentions(statics_refusal(m), {"deck.bdf:13: BEGIN SUPER", "superelement partitioning of the bulk data is not supported"}));
   // without parts the same deck runs
   EXPECT_EQ(statics_refusal(read_deck(statics_deck(""))), "");
+  // parts before BEGIN BULK (flyswatter_renumber.bdf, as pyNastran writes them): they end the case
+  // control, are listed, and the residual's bulk data after BEGIN BULK is read (it was taken for
+  // case control, the parts lost unsaid)
+  const fem::Model first = read_deck(statics_deck("", "BEGIN SUPER=1\nPARAM,WTMASS,.5\nGRID,1,,5.,5.,5.\n"));
+  const auto* f = listed(first, "BEGIN SUPER");
+  ASSERT_NE(f, nullptr);
+  EXPECT_EQ(f->first.line, 5u);
+  EXPECT_EQ(first.grids.size(), 2u);
+  EXPECT_EQ(first.grids[0].x.x(), 0.0);
+  EXPECT_EQ(fem::param_number(first, "WTMASS", 1.0), 1.0);  // the part's PARAM is not the residual's
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -132,7 +132,7 @@ void assemble_flexible(const Model& model, const State& s, Data& data, const Ass
     elastic_force(e, fd.kin, body.options.tangent, fd.f_el, opt.matrices ? &sc.Kl : nullptr, sc.aic, axes);
     fd.elastic = 0.5 * fd.kin.xi.dot(sc.aic.g);  // g = K xi
   }
-  if (opt.energies_only) {  // an output sample: the energies, no forces
+  if (opt.energies_only && !body.options.interface_loads) {  // an output sample: the energies, no forces
     fd.kinetic = opt.dynamics ? kinetic_energy(e, fd.kin, body.options.inertia, sc.v, sc.aic) : 0.0;
     return;
   }
@@ -178,6 +178,8 @@ void assemble_flexible(const Model& model, const State& s, Data& data, const Ass
   } else {
     fd.f_damp.setZero(n);
   }
+  // An output sample with interface loads reads f_el, f_in and f_damp (mbd::interface_load): no residual.
+  if (opt.energies_only) return;
   sc.f = fd.f_el + fd.f_in + fd.f_damp;
   for (int j = 0; j < N; ++j) data.nodes[node_of(j)].wrench += sc.f.segment<6>(6 * j);
   for (int k = 0; k < m; ++k) data.residual[body.eta_dof + k] += sc.f[6 * N + k];

@@ -13,6 +13,9 @@
 //   T = blockdiag(rigid_link(P - x_A), rigid_link(P - x_B));
 // grounded (GB blank): K_A = rigid_link(P - x_A)^T Ke rigid_link(P - x_A) with P = x_A unless OCID
 // gives an offset. 12 x 12 (6 x 6 grounded) on the grids' dofs in basic.
+// CBUSH1D / PBUSH1D (Bush::one_d): the same with K1 = K and K2-K6 = 0; with CID blank the x axis runs
+// from GA to GB and y, z are any perpendicular pair (nothing acts along them); its mass M is lumped,
+// half on each grid's translations (grounded: half on GA's, the other half on the ground).
 #include <Eigen/Core>
 
 #include "seflex/fem/element_common.hpp"
@@ -26,6 +29,7 @@ struct BushElement {
   Eigen::Matrix3d R_BE = Eigen::Matrix3d::Identity(); ///< element axes (columns) in basic
   std::array<double, 6> k{};                          ///< K1..K6 in element axes
   bool grounded = false;                              ///< GB blank
+  double mass = 0;                                    ///< PBUSH1D M (total); 0 for a CBUSH
 };
 
 /// Resolve a CBUSH of a finalized model. Throws InputError for an undefined PBUSH, grid or system,
@@ -34,5 +38,9 @@ BushElement make_bush_element(const Model& model, const Bush& b);
 
 /// 12 x 12 stiffness on (GA, GB) in basic (grounded: only the top-left 6 x 6 block is non-zero).
 NodeMatrix<2> bush_stiffness(const BushElement& e);
+
+/// 12 x 12 lumped mass on (GA, GB) in basic: mass / 2 on each grid's translations (grounded: on GA's
+/// only). Zero for a CBUSH (PBUSH M is not modelled).
+NodeMatrix<2> bush_mass(const BushElement& e);
 
 }  // namespace seflex::fem

@@ -66,6 +66,7 @@ struct Model {
   std::vector<MassProperty> mass_props;        ///< PMASS
   std::vector<ShearProperty> shear_props;      ///< PSHEAR
   std::vector<BendProperty> bend_props;        ///< PBEND
+  std::vector<MaterialTable> material_tables;  ///< TABLEM1-4 (no solution uses them)
 
   BarDefaults baror, beamor;
   std::vector<Bar> bars;

@@ -127,8 +127,12 @@ struct Spring {
 /// CBUSH: generalized spring between GA and GB (gb = 0: grounded) at the point S of the line GA-GB
 /// (OCID = -1) or at GA + (S1, S2, S3) in system OCID. Element axes: system CID (cid >= 0) or x along
 /// GA -> GB, y in the plane of x and the orientation vector (GO or X1-X3 in GA's CD system).
+/// CBUSH1D (one_d): EID PID GA GB CID, the rod-type spring on a PBUSH1D: the CBUSH of stiffness K along
+/// the element axis only (x of CID, or GA -> GB when CID is blank), as linear Nastran solutions
+/// convert it (OptiStruct's reference says so in its CBUSH1D remarks); no orientation vector, S = 0.5.
 struct Bush {
   int id = 0, pid = 0, ga = 0, gb = 0;
+  bool one_d = false;                           ///< CBUSH1D
   bool has_g0 = false, has_v = false;
   int g0 = 0;
   Eigen::Vector3d v = Eigen::Vector3d::Zero();
@@ -138,6 +142,8 @@ struct Bush {
   Eigen::Vector3d s_ocid = Eigen::Vector3d::Zero();  ///< S1 S2 S3 (OCID >= 0)
   CardRef ref;
 };
+
+inline const char* bush_card(const Bush& b) { return b.one_d ? "CBUSH1D" : "CBUSH"; }
 
 /// CMASS1 (pid -> PMASS), CMASS2 (inline m): grid components or scalar points; CMASS3 (pid), CMASS4
 /// (inline m): scalar points only. g2 = 0 means grounded:

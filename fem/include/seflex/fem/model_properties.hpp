@@ -158,10 +158,16 @@ struct SpringProperty {  ///< PELAS
 
 /// PBUSH: stiffness K1-K6 in the CBUSH element axes (T1 T2 T3 R1 R2 R3; blank = 0). B (damping),
 /// GE, RCV and M are read and kept for `seflex convert`; statics and modes do not use them.
+/// PBUSH K1-K6, B1-B6, GE1-GE6; or PBUSH1D (one_d): K in k[0], C in b[0], M the total mass of the
+/// element (lumped half at each grid's translations; the mass of a grounded element's ground half is
+/// left out, as a CROD's would be).
 struct BushProperty {
   int id = 0;
   std::array<double, 6> k{}, b{}, ge{};
   bool has_b = false, has_ge = false;
+  bool one_d = false;  ///< PBUSH1D
+  double mass = 0;     ///< PBUSH1D M
+  double sa = 1.0, se = 1.0;  ///< PBUSH1D stress and strain recovery coefficients (read, written back)
   CardRef ref;
 };
 
@@ -169,6 +175,19 @@ struct BushProperty {
 struct MassProperty {
   int id = 0;
   double m = 0;
+  CardRef ref;
+};
+
+/// TABLEM1-TABLEM4: a material property table, for the temperature-dependent materials (MATTi)
+/// that seflex does not model: read, checked and written back, used by no solution (a MATTi naming
+/// it is listed as unsupported). values: x1 y1 x2 y2 ... (TABLEM1-3, SKIP pairs left out) or the
+/// coefficients A0 A1 ... (TABLEM4).
+struct MaterialTable {
+  int id = 0;
+  int type = 1;                       ///< 1-4
+  std::string xaxis, yaxis;           ///< TABLEM1: LINEAR (blank) or LOG
+  std::array<double, 4> x{};          ///< TABLEM2 X1; TABLEM3 X1 X2; TABLEM4 X1 X2 X3 X4
+  std::vector<double> values;
   CardRef ref;
 };
 

@@ -137,6 +137,9 @@ void parse_temprb(const Card&, ReaderState&);
 // Bushings, scalar springs and masses, CONM1 (nastran_cards_bush_mass.cpp)
 void parse_cbush(const Card&, ReaderState&);
 void parse_pbush(const Card&, ReaderState&);
+void parse_cbush1d(const Card&, ReaderState&);
+void parse_pbush1d(const Card&, ReaderState&);
+void parse_tablem(const Card&, ReaderState&);
 void parse_celas3(const Card&, ReaderState&);
 void parse_celas4(const Card&, ReaderState&);
 void parse_cmass1(const Card&, ReaderState&);  ///< CMASS1 and CMASS3

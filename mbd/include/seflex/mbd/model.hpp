@@ -84,6 +84,9 @@ struct FlexibleBodyOptions {
   /// Stress stiffening from the superelement's geometric-stiffness invariants, when it has them
   /// (docs/geometric-stiffening.md); false: the linear elastic body.
   bool geometric_stiffening = true;
+  /// Evaluate the body's interface loads in every output sample (FlexibleBodySample::interface_load):
+  /// an output sample without the residual then also forms the inertia and damping forces.
+  bool interface_loads = false;
 };
 
 struct FlexibleBody {

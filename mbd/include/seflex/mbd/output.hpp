@@ -31,6 +31,10 @@ struct FlexibleBodySample {
   Pose frame;           ///< floating frame B in W
   Eigen::VectorXd xi;   ///< local elastic coordinates [q; eta] (superelement order)
   double kinetic = 0.0, elastic = 0.0;
+  /// 6N, with FlexibleBodyOptions::interface_loads (else empty): per interface j, [force; moment about
+  /// the interface node] in world axes, the load the body receives there from the rest of the
+  /// mechanism = its own share of the assembled residual at the node (interface_load).
+  Eigen::VectorXd interface_load;
 };
 
 struct RigidBodySample {
@@ -80,6 +84,17 @@ ElementSample element_sample(const HingeForceResult& r, const LockState* lock);
 Sample make_sample(const Model& model, const State& state, const Data& data);
 /// Same, into `out`, reusing its storage (no allocation once `out` has been filled for this model).
 void make_sample(const Model& model, const State& state, const Data& data, Sample& out);
+
+/// The load flexible body b receives from the rest of the mechanism at its interface nodes: its own
+/// share of the residual at the nodes' translations and rotations, as assemble() forms it,
+///   f = f_inertia + f_elastic + f_damping
+/// (inertia with gravity as the uniform field -g, the velocity-quadratic terms and the elastic modes'
+/// coupling; elastic force with the stress stiffening when the body has it), so that at a converged state
+/// the loads of all bodies at a node balance the node's applied loads and force elements. `f` (6N): per
+/// interface j, [force; moment about the node] in world axes (the moment is conjugate to the node's
+/// spatial rotation increment, R <- exp(dpi) R). `data` must be assembled at the state with the residual,
+/// or as an output sample with FlexibleBodyOptions::interface_loads. Allocates nothing once f is sized.
+void interface_load(const Model& model, const Data& data, int body, Eigen::VectorXd& f);
 
 /// Energies of `data` assembled at `state`.
 Energies energies(const Model& model, const State& state, const Data& data);

@@ -14,8 +14,10 @@
 //                 stress (shells: of the fibres Z1, Z2; solids), moment (bars), axial stress (rods) or
 //                 force (springs, bushes) over the run, its time and fibre: element results = the body's
 //                 stress modes x its local elastic coordinates at every sample (docs/stresses.md)
-//   interface_loads.csv  (output.interface_loads) t,body,node, the elastic load K_bb q_b the body takes at
-//                 each interface node in its frame B (fx..mz) and in the scene's basic axes (FX..MZ)
+//   interface_loads.csv  (output.interface_loads) t,body,node, the load the body receives at each interface
+//                 node (its own assembled share: inertia with gravity, elastic, damping; mbd::interface_load)
+//                 in its frame B (fx..mz) and in the scene's axes (FX..MZ), then its elastic share
+//                 K_bb q_b in B (el_fx..el_mz); the full load's fields are empty with ffrf-lm
 //   static_subcases/BODY_K.bdf  (output.static_subcases: times) at the first sample at or after time K of
 //                 the list, each flexible body's interface displacements as SPC1 + SPCD, set 9001 + K
 //                 (io/interface_subcase.hpp): a static subcase of the body's own deck, with the inertia
