@@ -245,8 +245,9 @@ TEST(Radau5, LockCrossingIsLocatedToEventTol) {
 // The spin-up beam of Simo and Vu-Quoc (1986; tests/mbd/spinup_test.cpp): one AIC superelement
 // (10 elements, 6 modes, as bench/study/spinup.yaml) on a hub driven to 6 rad/s over 15 s, 20 s.
 // Its Free tip node turns with the beam over every step; one iteration matrix for the three stages
-// made simplified Newton diverge at the loose local error 1e-3 (step below 1e-10 s at t = 14.1 s
-// without the transport of radau5.cpp). Radau IIA-5 at 1e-3 is checked against the other method,
+// made simplified Newton diverge at the loose local error 1e-3 (without the transport of radau5.cpp:
+// a step below 1e-10 s at t = 14.1 s with Hairer and Wanner's Newton stop, 4,974 steps with a tenth
+// of it, against 557 with the transport). Radau IIA-5 at 1e-3 is checked against the other method,
 // generalized-alpha at 1e-7.
 TEST(Radau5, SpinupBeamAtLooseTolerance) {
   const double L = 10.0;
@@ -296,7 +297,7 @@ TEST(Radau5, SpinupBeamAtLooseTolerance) {
   std::printf("spin-up beam, radau5 at 1e-3: %ld steps (%ld + %ld rejected), %ld Newton its; tip lag peak %.4f m "
               "(generalized-alpha at 1e-7: %.4f m, %ld steps), largest difference %.2e m\n",
               rs.steps, rs.rejected_error, rs.rejected_newton, rs.newton_iterations, peak, peak_ref, rs_ref.steps, err);
-  EXPECT_LT(err, 0.03);  // measured 2.41e-2 m (2026-12-07), of a 0.76 m peak lag
+  EXPECT_LT(err, 5e-3);  // measured 3.15e-3 m (2026-12-07), of a 0.75 m peak lag
 }
 
 }  // namespace

@@ -34,6 +34,18 @@ constexpr double kSafe = 0.9, kMinRatio = 0.2, kMaxRatio = 8.0;
 constexpr double kKeepLow = 1.0, kKeepHigh = 1.2;
 // The step may grow until simplified Newton is predicted to contract at this rate (step_after_accept).
 constexpr double kThetaTarget = 0.05;
+// Newton stops at this share of Hairer and Wanner's distance to the solution, min(0.03, sqrt(tol)) of
+// the local error tolerance. Their rule left a distance that accumulates over the steps: simplified
+// Newton approaches the stage solution from the predictor's side, so what it leaves has one sign
+// from step to step and dominated the global error. Measured on sync-3d (2026-12-07, largest step
+// 50 ms, against Radau IIA-5 at local error 1e-9 with three more Newton iterations per step, which
+// agrees with 1e-8 to 7e-10 s in the lock times): at local error 1e-4 their rule gave lock times
+// 1.65e-4 s, peak lock torques 0.31 %, hinge angles 0.077 deg to the last lock and 0.17 deg over the
+// whole run; three more iterations per step, from the same step sequence logic, 1.0e-5 s, 0.019 %,
+// 0.012 and 0.026 deg. A tenth of their fraction: 1.8e-5 s, 0.018 %, 0.011 and 0.017 deg for 23 %
+// more residual evaluations (8,577 against 6,978); at 1e-5, 1.0e-5 s, 0.002 %, 0.0045 and 0.010 deg
+// against 2.1e-5 s, 0.018 %, 0.0081 and 0.017 deg for 18 % more.
+constexpr double kNewtonShare = 0.1;
 
 /// One of the two transformed Newton systems: the modal dofs condensed while the retained dofs fit
 /// a dense LU (condensed_lu.hpp), else a sparse LU.
@@ -77,7 +89,7 @@ class RadauStepper final : public detail::Stepper {
     for (const Hinge& h : model.hinges) has_drives_ = has_drives_ || static_cast<bool>(h.drive);
     const double tol = std::min(st.tol_position, st.tol_angle);
     fnewt_ = st.radau.newton_fraction > 0.0 ? st.radau.newton_fraction
-                                             : std::max(10.0 * kRoundoff / tol, std::min(0.03, std::sqrt(tol)));
+                                             : std::max(10.0 * kRoundoff / tol, kNewtonShare * std::min(0.03, std::sqrt(tol)));
     for (MatrixXd* m : {&U_, &Up_, &V_, &A_, &R_, &F_, &Rt_, &U_acc_, &V_acc_, &A_acc_}) m->setZero(n_, 3);
     R_J_ = state.R_WN;
     for (const Node& nd : model.nodes) has_free_ = has_free_ || nd.kind == NodeKind::Free;
@@ -300,11 +312,14 @@ detail::StepResult RadauStepper::attempt(double h) {
   // iteration matrix fail keeps turning). Measured (2026-12-07): the fifth-order test on the flexible
   // 3-D pendulum (radau5_test.cpp) never needs it and is unchanged (slopes 4.769 / 4.814 / 4.894);
   // the spin-up beam (bench/study/spinup.yaml, largest step 50 ms) switches once and then at local
-  // error 1e-3 / 1e-4 / 1e-5 takes 403 / 451 / 654 steps with deflection errors 0.18 / 0.0029 /
-  // 0.00068 deg against Radau at 1e-8 (without: stops at t = 11.5 s / 5,482 steps, 0.043 deg /
+  // error 1e-3 / 1e-4 / 1e-5 takes 402 / 409 / 653 steps with deflection errors 0.020 / 0.0022 /
+  // 0.00020 deg against Radau at 1e-8 (without the transport: 4,974 / 7,499 / 1,297 steps; with Hairer
+  // and Wanner's looser Newton stop, which main used: stops at t = 11.5 s / 5,482 steps, 0.043 deg /
   // 1,187 steps, 0.00098 deg). The fallback for the failing step alone, without keeping it, left
-  // 1.39 / 0.029 / 0.0035 deg (640 / 504 / 553 steps): plain Newton's fast but poor convergence on
-  // the other steps.
+  // 1.39 / 0.029 / 0.0035 deg (640 / 504 / 553 steps, with their stop): plain Newton's fast but poor
+  // convergence on the other steps. sync-3d switches at t = 1.1-1.3 s (before the first lock); with
+  // their stop the transport changed the Newton remainder that dominated its errors (lock times at
+  // 1e-4: 1.65e-4 -> 3.6e-4 s), with a tenth of it every error is smaller than main's (kNewtonShare).
   if (transported_) return newton(h, true);
   const bool reject = reject_;
   detail::StepResult out = newton(h, false);
