@@ -90,6 +90,10 @@ class RadauStepper final : public detail::Stepper {
     const double tol = std::min(st.tol_position, st.tol_angle);
     fnewt_ = st.radau.newton_fraction > 0.0 ? st.radau.newton_fraction
                                              : std::max(10.0 * kRoundoff / tol, kNewtonShare * std::min(0.03, std::sqrt(tol)));
+    // A distance of 10 eps / tol asks for round-off, which the round-off floor of newton() ends; a
+    // slower assumed rate there only iterates in round-off noise (the fifth-order test at tol 1e-12:
+    // rotation slope 4.81 -> 4.59).
+    faccon_floor_ = fnewt_ > 10.0 * kRoundoff / tol ? kThetaTarget / (1.0 - kThetaTarget) : 0.0;
     for (MatrixXd* m : {&U_, &Up_, &V_, &A_, &R_, &F_, &Rt_, &U_acc_, &V_acc_, &A_acc_}) m->setZero(n_, 3);
     R_J_ = state.R_WN;
     for (const Node& nd : model.nodes) has_free_ = has_free_ || nd.kind == NodeKind::Free;
@@ -163,6 +167,7 @@ class RadauStepper final : public detail::Stepper {
   const int n_;
   const int nit_;
   double fnewt_ = 0.03;
+  double faccon_floor_ = 0.0;  // Newton's stop: the smallest theta / (1 - theta) it assumes
   bool has_drives_ = false;
   bool has_free_ = false;  // the model has Free nodes (the transport can change something)
   bool newton_ran_ = false;  // the last newton() reached its iterations
@@ -312,8 +317,8 @@ detail::StepResult RadauStepper::attempt(double h) {
   // iteration matrix fail keeps turning). Measured (2026-12-07): the fifth-order test on the flexible
   // 3-D pendulum (radau5_test.cpp) never needs it and is unchanged (slopes 4.769 / 4.814 / 4.894);
   // the spin-up beam (bench/study/spinup.yaml, largest step 50 ms) switches once and then at local
-  // error 1e-3 / 1e-4 / 1e-5 takes 402 / 409 / 653 steps with deflection errors 0.020 / 0.0022 /
-  // 0.00020 deg against Radau at 1e-8 (without the transport: 4,974 / 7,499 / 1,297 steps; with Hairer
+  // error 1e-3 / 1e-4 / 1e-5 takes 402 / 409 / 651 steps with deflection errors 0.020 / 0.0022 /
+  // 0.00012 deg against Radau at 1e-8 (without the transport: 4,974 / 7,499 / 1,297 steps; with Hairer
   // and Wanner's looser Newton stop, which main used: stops at t = 11.5 s / 5,482 steps, 0.043 deg /
   // 1,187 steps, 0.00098 deg). The fallback for the failing step alone, without keeping it, left
   // 1.39 / 0.029 / 0.0035 deg (640 / 504 / 553 steps, with their stop): plain Newton's fast but poor
@@ -477,7 +482,12 @@ detail::StepResult RadauStepper::newton(double h, bool transported) {
     // With the transport, converged only once this step's own contraction rate is known (two
     // iterations): the rate of the last step, which RADAU5 lets stop the first iteration, let through
     // unconverged stages on sync-3d at local error 1e-4 (lock times 3.6e-3 s off instead of 3e-4 s).
-    if ((faccon_ * dyno <= fnewt_ && (theta_measured_ || !transported)) || floor) break;
+    // The distance left is estimated with a rate no faster than the step control aims at
+    // (kThetaTarget): a first increment that removed a poor prediction's bulk makes the next one look
+    // like a contraction of 0.001-0.01 where the remainder contracts far slower (sync-3d at local error
+    // 3e-5: steps stopped at two iterations left up to 0.24 of the tolerance; lock times 7.0e-5 s,
+    // with the floor 1.5e-5 s, for 0.4 % more residuals).
+    if ((std::max(faccon_, faccon_floor_) * dyno <= fnewt_ && (theta_measured_ || !transported)) || floor) break;
   }
   form_stages(h);  // the stages of the converged increments (not evaluated: the next step starts there)
   out.converged = true;
