@@ -322,7 +322,7 @@ detail::StepResult RadauStepper::attempt(double h) {
   // and Wanner's looser Newton stop, which main used: stops at t = 11.5 s / 5,482 steps, 0.043 deg /
   // 1,187 steps, 0.00098 deg). The fallback for the failing step alone, without keeping it, left
   // 1.39 / 0.029 / 0.0035 deg (640 / 504 / 553 steps, with their stop): plain Newton's fast but poor
-  // convergence on the other steps. sync-3d switches at t = 1.1-1.3 s (before the first lock); with
+  // convergence on the other steps. sync-3d switches at t = 1.0-1.8 s (before the first lock); with
   // their stop the transport changed the Newton remainder that dominated its errors (lock times at
   // 1e-4: 1.65e-4 -> 3.6e-4 s), with a tenth of it every error is smaller than main's (kNewtonShare).
   if (transported_) return newton(h, true);
