@@ -254,21 +254,7 @@ TEST(Radau5, SpinupBeamAtLooseTolerance) {
   const int bodies = 1;
   auto fe = straight_beam(L / bodies, 10, spinup_section(1e-3));
   const se::Superelement seg = craig_bampton(fe, {0, 10}, 5, 6, "segment");
-  ModelBuilder mb;
-  const auto sei = mb.add_superelement(seg);
-  HingeOptions ho;
-  ho.drive = [](double t) { return spin_up_drive(6.0, 15.0, t); };
-  const auto h = mb.add_hinge("hub", mb.add_ground("hub axis", Pose{}), Vector3d::UnitZ(), ho);
-  NodeIndex prev = mb.hinge_child(h);
-  FlexibleBodyOptions fo;
-  fo.inertia = InertiaModel::Full;
-  for (int b = 0; b < bodies; ++b) {
-    const auto n = mb.add_node("n" + std::to_string(b + 1), Pose{Eigen::Matrix3d::Identity(), Vector3d((b + 1) * L / bodies, 0, 0)});
-    mb.add_flexible_body("segment" + std::to_string(b + 1), sei, {prev, n},
-                         Pose{Eigen::Matrix3d::Identity(), Vector3d((b + 0.5) * L / bodies, 0, 0)}, fo);
-    prev = n;
-  }
-  const Model model = mb.build();
+  const Model model = spinning_beam(seg, bodies, L, InertiaModel::Full, [](double t) { return spin_up_drive(6.0, 15.0, t); });
   auto run = [&](bool radau, double tol, RunStats& rs) {
     State s = initial_state(model);
     Data data(model);
