@@ -23,12 +23,12 @@ std::vector<std::pair<std::string, std::size_t>> element_counts(const Model& m) 
   for (const auto& b : m.bushes) ++n[bush_card(b)];
   n["CMASS1-4"] += m.scalar_masses.size();
   n["CONM1"] += m.conm1.size();
-  for (const auto& s : m.solids) ++n[s.shape == Solid::Shape::Hexa ? "CHEXA" : s.shape == Solid::Shape::Penta ? "CPENTA" : "CTETRA"];
+  for (const auto& s : m.solids) ++n[s.card()];
   n["GENEL"] += m.genels.size();
   static const char* order[] = {"CBAR",  "CBEAM",  "CROD",  "CONROD", "CTUBE",  "CBEND",  "CQUAD4", "CTRIA3", "CQUAD8", "CTRIA6",
                                 "CSHEAR", "CONM2", "CELAS1", "CELAS2", "RBE2",   "RBAR",   "RBE3",   "RBE1",
                                 "CRIGD1", "CRIGD2", "CRIGD3", "RROD",  "CRIGDR", "CBUSH", "CBUSH1D",  "CELAS3/CELAS4",
-                                "CMASS1-4", "CONM1", "CHEXA", "CPENTA", "CTETRA", "GENEL"};
+                                "CMASS1-4", "CONM1", "CHEXA", "CPENTA", "CTETRA", "CPYRAM", "GENEL"};
   std::vector<std::pair<std::string, std::size_t>> out;
   for (const char* name : order)
     if (const auto it = n.find(name); it != n.end() && it->second > 0) out.emplace_back(name, it->second);

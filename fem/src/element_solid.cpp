@@ -14,9 +14,7 @@ using detail::SolidPointData;
 
 namespace {
 
-bool quadratic(const SolidElement& e) {
-  return e.nnode > (e.shape == Solid::Shape::Hexa ? 8 : e.shape == Solid::Shape::Penta ? 6 : 4);
-}
+bool quadratic(const SolidElement& e) { return e.nnode > Solid::corners(e.shape); }
 
 /// T (6 x 6) with eps_M = T eps_B for Voigt strains with engineering shears (xx yy zz xy yz zx),
 /// frame M's axes the columns of R_BM: the strain tensor E_M = R_BM^T E_B R_BM, column by column.
@@ -213,6 +211,8 @@ SolidElement make_solid_element(const Model& model, const Solid& s, bool mass_on
                        " with reduced integration (IN = TWO or BUBBLE, or ISOP = REDUCED), which seflex does not model; "
                        "expected IN blank or THREE and ISOP blank or FULL (full Gauss integration)");
     e.points = 3;
+  } else if (s.shape == Solid::Shape::Pyram) {
+    e.points = 2;  // exact for a parallelogram base (solid_shapes.hpp); IN and ISOP change nothing
   } else if (s.shape == Solid::Shape::Hexa) {
     if (prop.in == In::Three) {
       e.points = 3;

@@ -88,7 +88,7 @@ void shell_face_forces(const Model& model, const Shell& sh, const FaceLoad& l, s
 
 void solid_face_forces(const Model& model, const Solid& so, const FaceLoad& l, std::vector<GridForce>& out) {
   const char* card = so.card();
-  const int corners = so.shape == Solid::Shape::Hexa ? 8 : so.shape == Solid::Shape::Penta ? 6 : 4;
+  const int corners = so.corners();
   auto corner_of = [&](int grid) {
     for (int k = 0; k < corners; ++k)
       if (so.g[static_cast<std::size_t>(k)] == grid) return k;
@@ -113,7 +113,16 @@ void solid_face_forces(const Model& model, const Solid& so, const FaceLoad& l, s
     }
   } else if (l.g34 == 0) {
     if (so.shape == Solid::Shape::Hexa) bad("G3", "G3 is blank; expected the corner diagonally opposite G1 on the face");
+    if (so.shape == Solid::Shape::Pyram)
+      bad("G3", "G3 is blank; expected the base corner diagonally opposite G1 (the base) or next to it (the triangle "
+                "through both and the apex)");
     face = c1 < 3 ? 0 : 1;  // CPENTA triangular face
+  } else if (so.shape == Solid::Shape::Pyram && corner_of(l.g34) >= 0 && corner_of(l.g34) < 4 && c1 < 4 &&
+             (c1 - corner_of(l.g34) + 4) % 2 == 1) {
+    // CPYRAM triangular face: G1 and G3 adjacent corners of the base (QRG PLOAD4), the face through
+    // them and the apex; faces 1..4 start at base corners 0..3 and run to the next one.
+    const int c3 = corner_of(l.g34);
+    face = 1 + ((c3 - c1 + 4) % 4 == 1 ? c1 : c3);
   } else {
     const int c3 = corner_of(l.g34);
     if (c3 < 0) bad("G3", "grid " + std::to_string(l.g34) + " is not a corner grid of the element");
@@ -128,7 +137,8 @@ void solid_face_forces(const Model& model, const Solid& so, const FaceLoad& l, s
     }
     if (face < 0)
       bad("G3", "grids " + std::to_string(l.g1) + " and " + std::to_string(l.g34) +
-                    " are not diagonally opposite corners of one quadrilateral face");
+                    " are not diagonally opposite corners of one quadrilateral face" +
+                    (so.shape == Solid::Shape::Pyram ? " nor adjacent corners of the base (a triangular face)" : ""));
   }
   const SolidFace& F = faces[static_cast<std::size_t>(face)];
   for (int k = 0; k < F.ncorner; ++k)

@@ -319,7 +319,7 @@ class LoadBuilder {
       const std::string kind = other_element(l.eid);
       detail::fail(m_, l.ref, "PLOAD4", l.sid, "EID",
                    "element " + std::to_string(l.eid) + (kind.empty() ? " is not defined" : " is a " + kind) +
-                       "; expected a CQUAD4, CTRIA3, CQUAD8, CTRIA6, CHEXA, CPENTA or CTETRA");
+                       "; expected a CQUAD4, CTRIA3, CQUAD8, CTRIA6, CHEXA, CPENTA, CTETRA or CPYRAM");
     }
     for (const auto& gf : forces) add_grid(gf.grid, 1, gf.f_basic, scale, p_);
   }

@@ -57,6 +57,12 @@ std::vector<QuadraturePoint> solid_rule(Solid::Shape shape, int n) {
             p.w = 0.125 * gw[i] * gw[j] * gw[k] * (1 - u) * (1 - u) * (1 - v);
             break;
           }
+          case Solid::Shape::Pyram: {  // ((1-z) g_i, (1-z) g_j, z), z = (1 + g_k) / 2, Jacobian (1-z)^2 / 2
+            const double z = 0.5 * (g[k] + 1);
+            p.xi = {(1 - z) * g[i], (1 - z) * g[j], z};
+            p.w = 0.5 * gw[i] * gw[j] * gw[k] * (1 - z) * (1 - z);
+            break;
+          }
         }
         q.push_back(p);
       }
@@ -91,9 +97,14 @@ const std::vector<SolidFace>& solid_faces(Solid::Shape shape) {
   static const std::vector<SolidFace> tetra = {
       face({0, 2, 1}, V(0, 0, 0), V(1, 0, 0), V(0, 1, 0)), face({0, 1, 3}, V(0, 0, 0), V(1, 0, 0), V(0, 0, 1)),
       face({0, 3, 2}, V(0, 0, 0), V(0, 1, 0), V(0, 0, 1)), face({1, 2, 3}, V(1, 0, 0), V(-1, 1, 0), V(-1, 0, 1))};
+  static const std::vector<SolidFace> pyram = {
+      face({0, 3, 2, 1}, V(0, 0, 0), V(1, 0, 0), V(0, 1, 0)),  face({0, 1, 4}, V(-1, -1, 0), V(2, 0, 0), V(1, 1, 1)),
+      face({1, 2, 4}, V(1, -1, 0), V(0, 2, 0), V(-1, 1, 1)), face({2, 3, 4}, V(1, 1, 0), V(-2, 0, 0), V(-1, -1, 1)),
+      face({3, 0, 4}, V(-1, 1, 0), V(0, -2, 0), V(1, -1, 1))};
   switch (shape) {
     case Solid::Shape::Hexa: return hexa;
     case Solid::Shape::Penta: return penta;
+    case Solid::Shape::Pyram: return pyram;
     default: return tetra;
   }
 }

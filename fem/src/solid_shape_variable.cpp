@@ -16,27 +16,29 @@ constexpr int kHexaEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {1, 5
                                    {2, 6}, {3, 7}, {4, 5}, {5, 6}, {6, 7}, {7, 4}};
 constexpr int kPentaEdges[9][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 4}, {2, 5}, {3, 4}, {4, 5}, {5, 3}};
 constexpr int kTetraEdges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
-
-int corner_count(Solid::Shape shape) { return shape == Solid::Shape::Hexa ? 8 : shape == Solid::Shape::Penta ? 6 : 4; }
-int edge_count(Solid::Shape shape) { return shape == Solid::Shape::Hexa ? 12 : shape == Solid::Shape::Penta ? 9 : 6; }
+constexpr int kPyramEdges[8][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {1, 4}, {2, 4}, {3, 4}};
 
 void base_shape(Solid::Shape shape, int nnode, const Eigen::Vector3d& xi, ShapeValues& s) {
   switch (shape) {
     case Solid::Shape::Hexa: hexa_shape(nnode, xi, s); return;
     case Solid::Shape::Penta: penta_shape(nnode, xi, s); return;
     case Solid::Shape::Tetra: tetra_shape(nnode, xi, s); return;
+    case Solid::Shape::Pyram: pyram_shape(nnode, xi, s); return;
   }
 }
 
 }  // namespace
 
 std::array<int, 2> solid_edge_ends(Solid::Shape shape, int k) {
-  const int(*e)[2] = shape == Solid::Shape::Hexa ? kHexaEdges : shape == Solid::Shape::Penta ? kPentaEdges : kTetraEdges;
+  const int(*e)[2] = shape == Solid::Shape::Hexa    ? kHexaEdges
+                     : shape == Solid::Shape::Penta ? kPentaEdges
+                     : shape == Solid::Shape::Pyram ? kPyramEdges
+                                                    : kTetraEdges;
   return {e[k][0], e[k][1]};
 }
 
 void solid_shape(Solid::Shape shape, int nnode, std::uint16_t missing_mid, const Eigen::Vector3d& xi, ShapeValues& s) {
-  const int corners = corner_count(shape), edges = edge_count(shape), full = corners + edges;
+  const int corners = Solid::corners(shape), edges = Solid::edges(shape), full = corners + edges;
   if (nnode == corners || (nnode == full && missing_mid == 0)) {
     base_shape(shape, nnode, xi, s);
     return;

@@ -198,7 +198,7 @@ class ThermalLoads {
     return !detail::shell_material(m_, p.mid4, p.ref, "PSHELL", p.id, "4 of continuation 1 (MID4)").alpha.isZero(0.0);
   }
 
-  /// A CHEXA/CPENTA/CTETRA: its grids' temperatures interpolated over the element.
+  /// A CHEXA/CPENTA/CTETRA/CPYRAM: its grids' temperatures interpolated over the element.
   void solid(const Solid& s) {
     const SolidElement e = make_solid_element(m_, s);
     if (e.alpha == 0.0) return;

@@ -1,4 +1,4 @@
-// Solid elements and face pressures: CHEXA, CPENTA, CTETRA, PSOLID, PLOAD4. Field layouts: MSC
+// Solid elements and face pressures: CHEXA, CPENTA, CTETRA, CPYRAM, PSOLID, PLOAD4. Field layouts: MSC
 // Nastran Quick Reference Guide (docs/nastran-support.md).
 #include <cstdint>
 #include <string>
@@ -13,7 +13,7 @@ const char* const kGridNames[20] = {"G1",  "G2",  "G3",  "G4",  "G5",  "G6",  "G
                                     "G11", "G12", "G13", "G14", "G15", "G16", "G17", "G18", "G19", "G20"};
 
 /// EID PID G1 ... : `corners` grids required, then any of the `total - corners` mid-edge grids (a
-/// blank or 0 one makes its edge straight, QRG CHEXA/CPENTA/CTETRA): stored as fem::Solid says.
+/// blank or 0 one makes its edge straight, QRG CHEXA/CPENTA/CTETRA/CPYRAM): stored as fem::Solid says.
 void parse_solid(const Card& card, ReaderState& st, fem::Solid::Shape shape, int corners, int total) {
   fem::Solid s;
   s.shape = shape;
@@ -56,6 +56,8 @@ void parse_chexa(const Card& card, ReaderState& st) { parse_solid(card, st, fem:
 void parse_cpenta(const Card& card, ReaderState& st) { parse_solid(card, st, fem::Solid::Shape::Penta, 6, 15); }
 // CTETRA EID PID G1 G2 G3 G4 G5 G6 / G7 ... G10
 void parse_ctetra(const Card& card, ReaderState& st) { parse_solid(card, st, fem::Solid::Shape::Tetra, 4, 10); }
+// CPYRAM EID PID G1 G2 G3 G4 G5 G6 / G7 ... G13 (G1-G4 the base, G5 the apex)
+void parse_cpyram(const Card& card, ReaderState& st) { parse_solid(card, st, fem::Solid::Shape::Pyram, 5, 13); }
 
 // PSOLID PID MID CORDM IN STRESS ISOP FCTN
 void parse_psolid(const Card& card, ReaderState& st) {

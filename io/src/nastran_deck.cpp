@@ -72,7 +72,7 @@ constexpr CardType kCardTypes[] = {
     {"MDLPRM", parse_mdlprm},   {"PSHEAR", parse_pshear},   {"CBEND", parse_cbend},     {"PBEND", parse_pbend},    {"CQUAD8", parse_shell8},
     {"CTRIA6", parse_shell8},   {"CQUADR", parse_cquad4},   {"CTRIAR", parse_ctria3},  {"SLOAD", parse_sload},
     {"PLOAD", parse_pload},     {"CBUSH1D", parse_cbush1d}, {"PBUSH1D", parse_pbush1d}, {"TABLEM1", parse_tablem},
-    {"TABLEM2", parse_tablem},  {"TABLEM3", parse_tablem},  {"TABLEM4", parse_tablem},
+    {"TABLEM2", parse_tablem},  {"TABLEM3", parse_tablem},  {"TABLEM4", parse_tablem},  {"CPYRAM", parse_cpyram},
 };
 constexpr std::size_t kNumCardTypes = sizeof(kCardTypes) / sizeof(kCardTypes[0]);
 

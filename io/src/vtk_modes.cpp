@@ -104,6 +104,7 @@ void write_mode_shapes_vtu(const std::filesystem::path& path, const fem::Model& 
   }
   for (const auto& s : model.solids) {
     // VTK's quadratic cells list the top-face edges before the vertical ones; Nastran the reverse.
+    // The pyramids' orders agree (base edges, then the edges to the apex).
     static const int hexa20[20] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 16, 17, 18, 19, 12, 13, 14, 15};
     static const int penta15[15] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 12, 13, 14, 9, 10, 11};
     // Some mid-edge grids blank: VTK has no such cell; drawn as the linear cell of its corners.
@@ -113,6 +114,7 @@ void write_mode_shapes_vtu(const std::filesystem::path& path, const fem::Model& 
     for (int k = 0; k < n; ++k) g[k] = s.g[static_cast<std::size_t>(order ? order[k] : k)];
     const CellType type = n == 8 ? vtk_plugin::kHexahedron : n == 20 ? vtk_plugin::kQuadraticHexahedron
                         : n == 6 ? vtk_plugin::kWedge : n == 15 ? vtk_plugin::kQuadraticWedge
+                        : n == 5 ? vtk_plugin::kPyramid : n == 13 ? vtk_plugin::kQuadraticPyramid
                         : n == 4 ? vtk_plugin::kTetra : vtk_plugin::kQuadraticTetra;
     cells.add(type, g, n, s.id, kSolid);
   }

@@ -27,7 +27,8 @@ constexpr bool same(CellType ours, VTKCellType vtk) { return static_cast<int>(ou
 static_assert(same(kVertex, VTK_VERTEX) && same(kLine, VTK_LINE) && same(kTriangle, VTK_TRIANGLE) && same(kQuad, VTK_QUAD) &&
               same(kTetra, VTK_TETRA) && same(kHexahedron, VTK_HEXAHEDRON) && same(kWedge, VTK_WEDGE) &&
               same(kQuadraticTetra, VTK_QUADRATIC_TETRA) && same(kQuadraticHexahedron, VTK_QUADRATIC_HEXAHEDRON) &&
-              same(kQuadraticWedge, VTK_QUADRATIC_WEDGE));
+              same(kQuadraticWedge, VTK_QUADRATIC_WEDGE) && same(kPyramid, VTK_PYRAMID) &&
+              same(kQuadraticPyramid, VTK_QUADRATIC_PYRAMID));
 
 struct Writer {
   vtkNew<vtkPoints> points;

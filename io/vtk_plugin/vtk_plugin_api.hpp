@@ -30,9 +30,11 @@ enum CellType : std::int32_t {
   kTetra = 10,
   kHexahedron = 12,
   kWedge = 13,
+  kPyramid = 14,
   kQuadraticTetra = 24,
   kQuadraticHexahedron = 25,
   kQuadraticWedge = 26,
+  kQuadraticPyramid = 27,
 };
 
 enum class ValueType : std::int32_t { kDouble = 1, kInt = 2 };

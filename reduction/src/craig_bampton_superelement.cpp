@@ -190,8 +190,8 @@ std::vector<se::MeshCell> mesh_cells(const fem::Model& model) {
   // Solids: their boundary faces (a face that two solids share is inside the body and not drawn).
   if (!model.solids.empty()) {
     std::map<std::array<std::int32_t, 4>, std::pair<se::MeshCell, int>> faces;
-    std::array<std::vector<std::vector<int>>, 3> corners;
-    for (const auto shape : {fem::Solid::Shape::Tetra, fem::Solid::Shape::Penta, fem::Solid::Shape::Hexa})
+    std::array<std::vector<std::vector<int>>, 4> corners;
+    for (const auto shape : {fem::Solid::Shape::Tetra, fem::Solid::Shape::Penta, fem::Solid::Shape::Hexa, fem::Solid::Shape::Pyram})
       corners[static_cast<std::size_t>(shape)] = fem::solid_face_corners(shape);
     for (const fem::Solid& s : model.solids)
       for (const auto& f : corners[static_cast<std::size_t>(s.shape)]) {

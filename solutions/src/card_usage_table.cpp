@@ -78,7 +78,7 @@ const CardRole kRows[] = {
     {"CMASS2", R::Structure, Y, nullptr}, {"CMASS3", R::Structure, Y, nullptr}, {"CMASS4", R::Structure, Y, nullptr},
     {"CONM1", R::Structure, Y, nullptr}, {"CBUSH", R::Structure, Y, nullptr}, {"CBUSH1D", R::Structure, Y, nullptr},
     {"CBUSH2D", R::Structure, N, nullptr}, {"CHEXA", R::Structure, Y, nullptr}, {"CPENTA", R::Structure, Y, nullptr},
-    {"CTETRA", R::Structure, Y, nullptr}, {"CPYRAM", R::Structure, N, nullptr}, {"CQUAD8", R::Structure, Y, nullptr},
+    {"CTETRA", R::Structure, Y, nullptr}, {"CPYRAM", R::Structure, Y, nullptr}, {"CQUAD8", R::Structure, Y, nullptr},
     {"CTRIA6", R::Structure, Y, nullptr}, {"CQUADR", R::Structure, Y, nullptr}, {"CTRIAR", R::Structure, Y, nullptr},
     {"CQUAD", R::Structure, N, nullptr}, {"CSHEAR", R::Structure, Y, nullptr}, {"CTUBE", R::Structure, Y, nullptr},
     {"CBEND", R::Structure, Y, nullptr}, {"CBEAM3", R::Structure, N, nullptr}, {"CGAP", R::Structure, N, nullptr},

@@ -1,4 +1,4 @@
-// CHEXA/CPENTA/CTETRA, PSOLID and PLOAD4: what the reader accepts, and the errors (file:line, card,
+// CHEXA/CPENTA/CTETRA/CPYRAM, PSOLID and PLOAD4: what the reader accepts, and the errors (file:line, card,
 // field, what was expected) for what it refuses or cannot use.
 #include <gtest/gtest.h>
 
@@ -78,7 +78,50 @@ TEST(SolidInput, ModelErrorsNameTheCard) {
   EXPECT_TRUE(mentions(load_error(cube("PLOAD4,3,10,1.,,,,1,7\n"), 3), {"PLOAD4 3", "G3", "not diagonally opposite"}));
   EXPECT_TRUE(mentions(load_error(cube("PLOAD4,3,10,1.,,,,1,2\n"), 3), {"not diagonally opposite"}));
   EXPECT_TRUE(mentions(load_error(cube("PLOAD4,3,10,1.,,,,99,7\n"), 3), {"G1", "grid 99 is not a corner grid"}));
-  EXPECT_TRUE(mentions(load_error(cube("PLOAD4,3,77,1.\n"), 3), {"PLOAD4 3", "element 77 is not defined", "CHEXA, CPENTA or CTETRA"}));
+  EXPECT_TRUE(mentions(load_error(cube("PLOAD4,3,77,1.\n"), 3), {"PLOAD4 3", "element 77 is not defined", "CHEXA, CPENTA, CTETRA or CPYRAM"}));
+}
+
+// CPYRAM on the cube's top face (apex grid 9 at z = 2): read, loaded, and refused with its card and
+// field when its grids are wrong or the element has no volume.
+TEST(SolidInput, PyramidIsReadAndItsErrorsNameTheField) {
+  const std::string apex = "GRID,9,,.5,.5,2.\n";
+  {
+    const fem::Model m = read_deck(cube(apex + "CPYRAM,11,2,5,6,7,8,9\nPLOAD4,5,11,3.,,,,5,6\nPLOAD4,6,11,3.,,,,5,7\n"));
+    ASSERT_EQ(m.solids.size(), 2u);
+    EXPECT_EQ(m.solids[1].shape, fem::Solid::Shape::Pyram);
+    EXPECT_EQ(m.solids[1].nnode, 5);
+    EXPECT_NO_THROW(fem::assemble(m, fem::assembly_options(m)));
+    const fem::DofMap dofs = fem::make_dof_map(m);
+    // Triangle 5 6 9 (G1, G3 adjacent base corners, QRG PLOAD4): area vector (0, -1/2, 1/4) outward,
+    // 3 pushes inward: (0, 1.5, -0.75). Base 5 6 7 8 (G1, G3 diagonal): area 1, normal -z outward.
+    for (const auto& [sid, F] : {std::pair{5, Eigen::Vector3d(0, 1.5, -0.75)}, std::pair{6, Eigen::Vector3d(0, 0, 3)}}) {
+      const Eigen::VectorXd f = fem::load_vector(m, dofs, sid);
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      for (Eigen::Index gi = 0; gi < 9; ++gi)
+        for (int c = 0; c < 3; ++c) sum[c] += f[dofs.grid_dof(gi, c + 1)];
+      EXPECT_LT((sum - F).norm(), 1e-12) << "PLOAD4 " << sid << ": " << sum.transpose();
+    }
+  }
+  {  // 13 grids with some mid-edge grids blank
+    const fem::Model m = read_deck(cube(apex + "GRID,10,,.5,0.,1.\nGRID,11,,.25,.25,1.5\nCPYRAM,11,2,5,6,7,8,9,10\n,,,,11\n"));
+    EXPECT_EQ(m.solids[1].nnode, 7);
+    EXPECT_EQ(m.solids[1].missing_mid, 0xFE & ~0x10);
+    EXPECT_NO_THROW(fem::assemble(m, fem::assembly_options(m)));
+  }
+  EXPECT_TRUE(mentions(read_error(cube(apex + "CPYRAM,11,2,5,6,7,8\n")), {"deck.bdf:14: CPYRAM 11", "G5"}));
+  EXPECT_TRUE(mentions(read_error(cube(apex + "CPYRAM,11,2,5,6,7,8,9,1\n,2,3,4,1,2,3,4,9\n")),
+                       {"deck.bdf:15: CPYRAM 11, field 9 (G)", "expected at most 13 grids"}));
+  EXPECT_TRUE(mentions(read_error(cube(apex + "CPYRAM,11,2,5,6,7,7,9\n")), {"CPYRAM 11", "G4", "grid 7 repeats G3; expected distinct grids"}));
+  // The apex in the plane of the base: no volume.
+  {
+    const fem::Model m = read_deck(cube("GRID,9,,.5,.5,1.\nCPYRAM,11,2,5,6,7,8,9\n"));
+    EXPECT_TRUE(mentions(test::input_error([&] { fem::assemble(m, fem::assembly_options(m)); }),
+                         {"deck.bdf:14: CPYRAM 11", "degenerate or distorted"}));
+  }
+  EXPECT_TRUE(mentions(load_error(cube(apex + "CPYRAM,11,2,5,6,7,8,9\nPLOAD4,3,11,1.,,,,5\n"), 3),
+                       {"PLOAD4 3", "element 11 (CPYRAM)", "G3 is blank"}));
+  EXPECT_TRUE(mentions(load_error(cube(apex + "CPYRAM,11,2,5,6,7,8,9\nPLOAD4,3,11,1.,,,,9,5\n"), 3),
+                       {"PLOAD4 3", "nor adjacent corners of the base"}));
 }
 
 }  // namespace

@@ -89,18 +89,9 @@ TEST(SolidElement, PatchTestReproducesConstantStrainOnDistortedMeshes) {
     BoxMesh box;
     box.nx = box.ny = box.nz = 2;
     const auto lattice = add_box_solids(m, box, type, 1.0e5, 0.3, 1.0);
-    // Move the interior grids (doubled-lattice coordinates strictly inside) by up to 0.15 of a cell.
-    int k = 0;
-    std::set<int> interior;
-    for (Grid& g : m.grids) {
-      const auto& l = lattice.at(g.id);
-      ++k;
-      if (l[0] > 0 && l[0] < 4 && l[1] > 0 && l[1] < 4 && l[2] > 0 && l[2] < 4) {
-        interior.insert(g.id);  // up to 15 % of a cell (linear), 6 % (quadratic: mid-edge grids move too)
-        const double amplitude = (quadratic(type) ? 0.06 : 0.15) * 0.5;
-        g.x += amplitude * Eigen::Vector3d(std::sin(1.7 * k), std::cos(2.3 * k), std::sin(3.1 * k + 0.4));
-      }
-    }
+    // Move the interior grids (doubled-lattice coordinates strictly inside) by up to 15 % of a cell
+    // (linear), 6 % (quadratic: mid-edge grids move too).
+    const std::set<int> interior = distort_interior(m, lattice, 4, (quadratic(type) ? 0.06 : 0.15) * 0.5);
     const double worst = patch_test_error(m, interior, A, c);
     EXPECT_LT(worst, 1e-12) << name(type) << ": interior grids off the linear field by " << worst;
   }
@@ -192,16 +183,7 @@ TEST(SolidElement, CantileverTipDeflectionMatchesBeamTheory) {
     double Fz = 0;
     for (Eigen::Index gi = 0; gi < static_cast<Eigen::Index>(m.grids.size()); ++gi) Fz += p[g.dofs.grid_dof(gi, 3)];
     EXPECT_NEAR(Fz, -P, 1e-12) << name(cs.type);
-    std::map<Eigen::Index, double> fixed;
-    for (const auto& [id, l] : lattice)
-      if (l[0] == 0)
-        for (int c = 1; c <= 3; ++c) fixed[g.dofs.grid_dof(m.grid_index.at(id), c)] = 0.0;
-    const Eigen::VectorXd u = solve_translations(m, g, p, fixed);
-    double w = 0;
-    int n = 0;
-    for (const auto& [id, l] : lattice)
-      if (l[0] == 2 * cs.nx) w += translation(m, g, u, id).z(), ++n;
-    w = -w / n;
+    const double w = mean_tip_deflection(m, g, p, lattice, 2 * cs.nx);
     EXPECT_NEAR(w / reference, 1.0, cs.tolerance) << name(cs.type) << ": tip " << w << ", beam theory " << reference;
   }
 }
@@ -224,14 +206,7 @@ TEST(SolidElement, Hexa8BubbleModesAvoidShearLocking) {
     pload4_on_plane(m, lattice, 0, 2 * box.nx, 1, P, Eigen::Vector3d(0, 0, -1));
     finalize_for_test(m);
     const GlobalMatrices g = assemble(m, assembly_options(m));
-    std::map<Eigen::Index, double> fixed;
-    for (const auto& [id, l] : lattice)
-      if (l[0] == 0)
-        for (int c = 1; c <= 3; ++c) fixed[g.dofs.grid_dof(m.grid_index.at(id), c)] = 0.0;
-    const Eigen::VectorXd u = solve_translations(m, g, load_vector(m, g.dofs, 1), fixed);
-    double w = 0;
-    for (const auto& [id, l] : lattice)
-      if (l[0] == 2 * box.nx) w -= translation(m, g, u, id).z() / 4;
+    const double w = mean_tip_deflection(m, g, load_vector(m, g.dofs, 1), lattice, 2 * box.nx);
     if (bubbles)
       EXPECT_NEAR(w / reference, 1.0, 0.006);  // measured 3.5e-3 (2026-11-28)
     else
@@ -321,11 +296,7 @@ TEST(SolidElement, Pload4OnSolidFacesGivesPressureTimesAreaInward) {
         const auto lattice = add_box_solids(m, box, type, 1e3, 0.3, 1.0);
         pload4_on_plane(m, lattice, axis, side * 4, 3, 5.0);
         finalize_for_test(m);
-        const DofMap dofs = make_dof_map(m);
-        const Eigen::VectorXd f = load_vector(m, dofs, 3);
-        Eigen::Vector3d F = Eigen::Vector3d::Zero();
-        for (Eigen::Index gi = 0; gi < static_cast<Eigen::Index>(m.grids.size()); ++gi)
-          for (int c = 0; c < 3; ++c) F[c] += f[dofs.grid_dof(gi, c + 1)];
+        const Eigen::Vector3d F = load_resultant(m, 3);
         const double area = 2.0 * 3.0 * 4.0 / (axis == 0 ? 2.0 : axis == 1 ? 3.0 : 4.0);
         Eigen::Vector3d expected = Eigen::Vector3d::Zero();
         expected[axis] = (side == 0 ? 1.0 : -1.0) * 5.0 * area;  // inward

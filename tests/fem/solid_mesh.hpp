@@ -5,6 +5,7 @@
 // diagonal: conforming). Quadratic elements take their mid-edge grids from a lattice twice as fine.
 // Only grids that an element uses are created. Grid id = 1 + lattice index.
 #include <array>
+#include <cmath>
 #include <functional>
 #include <map>
 #include <set>
@@ -16,6 +17,7 @@
 
 #include "fem_test_util.hpp"
 #include "seflex/fem/assembly.hpp"
+#include "seflex/fem/loads.hpp"
 
 namespace seflex::fem::test {
 
@@ -36,6 +38,33 @@ struct BoxMesh {
   }
 };
 
+using LatticePoint = std::array<int, 3>;
+
+/// Append solid `eid` (PSOLID 1) on lattice points: its corners, then, if quadratic, the midpoints of
+/// its `edges` (pairs of corners, QRG order); grid ids from id_of(i, j, k), each recorded in `used`.
+template <class IdOf>
+inline void add_lattice_solid(Model& m, int eid, Solid::Shape shape, const std::vector<LatticePoint>& corners,
+                              const std::vector<std::array<int, 2>>& edges, bool quadratic, const IdOf& id_of,
+                              std::map<int, LatticePoint>& used) {
+  Solid s;
+  s.id = eid;
+  s.pid = 1;
+  s.shape = shape;
+  std::vector<LatticePoint> pts = corners;
+  if (quadratic)
+    for (const auto& e : edges) {
+      const LatticePoint& a = corners[static_cast<std::size_t>(e[0])];
+      const LatticePoint& b = corners[static_cast<std::size_t>(e[1])];
+      pts.push_back({(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2});
+    }
+  s.nnode = static_cast<std::uint8_t>(pts.size());
+  for (std::size_t k = 0; k < pts.size(); ++k) {
+    s.g[k] = id_of(pts[k][0], pts[k][1], pts[k][2]);
+    used[s.g[k]] = pts[k];
+  }
+  m.solids.push_back(s);
+}
+
 /// Add PSOLID 1 / MAT1 1 and the elements and grids of `box` to m. `map` (optional) moves the
 /// lattice points (e.g. to a cylinder). Returns the lattice coordinates of every grid by id.
 inline std::map<int, std::array<int, 3>> add_box_solids(Model& m, const BoxMesh& box, SolidType type, double E,
@@ -47,23 +76,10 @@ inline std::map<int, std::array<int, 3>> add_box_solids(Model& m, const BoxMesh&
   p.mid = 1;
   m.solid_props.push_back(p);
   std::map<int, std::array<int, 3>> used;
-  using P = std::array<int, 3>;
+  using P = LatticePoint;
   int eid = 1;
-  auto mid = [](const P& a, const P& b) { return P{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2}; };
   auto add = [&](Solid::Shape shape, const std::vector<P>& corners, const std::vector<std::array<int, 2>>& edges) {
-    Solid s;
-    s.id = eid++;
-    s.pid = 1;
-    s.shape = shape;
-    std::vector<P> pts = corners;
-    if (quadratic(type))
-      for (const auto& e : edges) pts.push_back(mid(corners[static_cast<std::size_t>(e[0])], corners[static_cast<std::size_t>(e[1])]));
-    s.nnode = static_cast<std::uint8_t>(pts.size());
-    for (std::size_t k = 0; k < pts.size(); ++k) {
-      s.g[k] = box.id(pts[k][0], pts[k][1], pts[k][2]);
-      used[s.g[k]] = pts[k];
-    }
-    m.solids.push_back(s);
+    add_lattice_solid(m, eid++, shape, corners, edges, quadratic(type), [&](int i, int j, int k) { return box.id(i, j, k); }, used);
   };
   static const std::vector<std::array<int, 2>> hexa_edges = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {1, 5},
                                                             {2, 6}, {3, 7}, {4, 5}, {5, 6}, {6, 7}, {7, 4}};
@@ -137,6 +153,48 @@ inline Eigen::VectorXd solve_translations(const Model& m, const GlobalMatrices& 
 inline Eigen::Vector3d translation(const Model& m, const GlobalMatrices& g, const Eigen::VectorXd& u, int grid) {
   const Eigen::Index gi = m.grid_index.at(grid);
   return {u[g.dofs.grid_dof(gi, 1)], u[g.dofs.grid_dof(gi, 2)], u[g.dofs.grid_dof(gi, 3)]};
+}
+
+/// Resultant force (basic) of the grid loads of load set sid of a finalized model.
+inline Eigen::Vector3d load_resultant(const Model& m, int sid) {
+  const DofMap dofs = make_dof_map(m);
+  const Eigen::VectorXd f = load_vector(m, dofs, sid);
+  Eigen::Vector3d F = Eigen::Vector3d::Zero();
+  for (Eigen::Index gi = 0; gi < static_cast<Eigen::Index>(m.grids.size()); ++gi)
+    for (int c = 0; c < 3; ++c) F[c] += f[dofs.grid_dof(gi, c + 1)];
+  return F;
+}
+
+/// Cantilever along x clamped at lattice x = 0 (every translation) under the loads p: the mean
+/// deflection -u_z of the grids at lattice x = x_end.
+inline double mean_tip_deflection(const Model& m, const GlobalMatrices& g, const Eigen::VectorXd& p,
+                                  const std::map<int, std::array<int, 3>>& lattice, int x_end) {
+  std::map<Eigen::Index, double> fixed;
+  for (const auto& [id, l] : lattice)
+    if (l[0] == 0)
+      for (int c = 1; c <= 3; ++c) fixed[g.dofs.grid_dof(m.grid_index.at(id), c)] = 0.0;
+  const Eigen::VectorXd u = solve_translations(m, g, p, fixed);
+  double w = 0;
+  int n = 0;
+  for (const auto& [id, l] : lattice)
+    if (l[0] == x_end) w -= translation(m, g, u, id).z(), ++n;
+  return w / n;
+}
+
+/// The grids strictly inside the lattice box (0, hi)^3, each moved by `amplitude` times a fixed
+/// pseudo-random unit-ish vector; returns their ids.
+inline std::set<int> distort_interior(Model& m, const std::map<int, std::array<int, 3>>& lattice, int hi, double amplitude) {
+  int k = 0;
+  std::set<int> interior;
+  for (Grid& g : m.grids) {
+    const auto& l = lattice.at(g.id);
+    ++k;
+    if (l[0] > 0 && l[0] < hi && l[1] > 0 && l[1] < hi && l[2] > 0 && l[2] < hi) {
+      interior.insert(g.id);
+      g.x += amplitude * Eigen::Vector3d(std::sin(1.7 * k), std::cos(2.3 * k), std::sin(3.1 * k + 0.4));
+    }
+  }
+  return interior;
 }
 
 /// Patch test: the boundary grids (all but `interior`) moved by the linear field u = A x + c, no

@@ -72,16 +72,7 @@ TEST(SolidPartial, PatchTestWithSomeMidEdgeGridsMissing) {
     ASSERT_GT(partial, 0) << name(type);
     std::erase_if(m.grids, [&](const Grid& g) { return dropped.count(g.id) > 0; });
     // Move the interior grids by up to 3 % of a cell.
-    int k = 0;
-    std::set<int> interior;
-    for (Grid& g : m.grids) {
-      const auto& l = lattice.at(g.id);
-      ++k;
-      if (l[0] > 0 && l[0] < 4 && l[1] > 0 && l[1] < 4 && l[2] > 0 && l[2] < 4) {
-        interior.insert(g.id);
-        g.x += 0.03 * Eigen::Vector3d(std::sin(1.7 * k), std::cos(2.3 * k), std::sin(3.1 * k + 0.4));
-      }
-    }
+    const std::set<int> interior = distort_interior(m, lattice, 4, 0.03);
     const double worst = patch_test_error(m, interior, A, c);
     EXPECT_LT(worst, 1e-12) << name(type) << " (" << partial << " partial, " << full << " full elements): interior grids off "
                             << "the linear field by " << worst;

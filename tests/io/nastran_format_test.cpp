@@ -199,13 +199,13 @@ TEST(NastranFormat, DeckWithoutBeginBulkIsBulkData) {
 }
 
 TEST(NastranFormat, UnsupportedCardsAreListedOnceWithCountAndFirstLine) {
-  const std::string deck = base_deck() + "PLOADX1,1,1,1.\nCPYRAM,5,1,1,2,3,4\n,7,8\nPLOADX1,2,1,1.\nDEBUG,1\n";
+  const std::string deck = base_deck() + "PLOADX1,1,1,1.\nCQUAD,5,1,1,2,3,4\n,7,8\nPLOADX1,2,1,1.\nDEBUG,1\n";
   const fem::Model m = read_deck(deck);
   ASSERT_EQ(m.unsupported.size(), 3u);
   EXPECT_EQ(m.unsupported[0].name, "PLOADX1");
   EXPECT_EQ(m.unsupported[0].count, 2u);
   EXPECT_EQ(m.unsupported[0].first.line, 7u);
-  EXPECT_EQ(m.unsupported[1].name, "CPYRAM");
+  EXPECT_EQ(m.unsupported[1].name, "CQUAD");
   EXPECT_EQ(m.unsupported[1].first.line, 8u);
   EXPECT_EQ(m.unsupported[2].name, "DEBUG");
   EXPECT_EQ(m.card_counts.at("GRID"), 4u);

@@ -1,4 +1,4 @@
-// Solids with some mid-edge grids blank and MAT9 through the reader and `seflex convert`'s writer:
+// Solids (CHEXA/CPENTA/CTETRA/CPYRAM) with some mid-edge grids blank and MAT9 through the reader and `seflex convert`'s writer:
 // what is read (numbers), written back (blank fields where the grids are missing), and the errors
 // for a MAT9 where it cannot be used (shells, bars, rods). The numerics of both are tested in
 // tests/fem/solid_partial_test.cpp and tests/fem/solid_mat9_test.cpp.
@@ -63,6 +63,17 @@ TEST(SolidCards, SomeMidEdgeGridsAreReadAndWrittenBack) {
   EXPECT_EQ(p.solids[0].missing_mid, 0b111011111);  // only G12 (edge 3-6) present
   EXPECT_EQ(p.solids[1].nnode, 6);
   EXPECT_EQ(p.solids[1].missing_mid, 0b111100);  // G5 (edge 1-2) and G6 (2-3) present
+  // A CPYRAM 7 on the bottom face, apex grid 5: G6 (edge 1-2) and G7 (2-3) present; written back.
+  const fem::Model y = read_deck(cube(kMat1 + "PSOLID,2,1\nCPYRAM,13,2,1,2,3,4,5,9\n,10\n"));
+  ASSERT_EQ(y.solids.size(), 1u);
+  EXPECT_STREQ(y.solids[0].card(), "CPYRAM");
+  EXPECT_EQ(y.solids[0].nnode, 7);
+  EXPECT_EQ(y.solids[0].missing_mid, 0b11111100);
+  const fem::Model yb = written_and_read(y);
+  ASSERT_EQ(yb.solids.size(), 1u);
+  EXPECT_EQ(yb.solids[0].shape, fem::Solid::Shape::Pyram);
+  EXPECT_EQ(yb.solids[0].missing_mid, y.solids[0].missing_mid);
+  EXPECT_EQ(yb.solids[0].g, y.solids[0].g);
 }
 
 TEST(SolidCards, Mat9IsReadWrittenBackAndGivesTheMat1Element) {

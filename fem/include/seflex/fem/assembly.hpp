@@ -12,7 +12,7 @@
 // exactly zero are removed afterwards (e.g. membrane-bending coupling of a flat plate in a basic
 // plane, the rotational diagonal of a lumped mass, a dof no element stiffens).
 //
-// Elements: CBAR/CBEAM, CROD/CONROD, CQUAD4, CTRIA3, CONM2, CELAS1/2, CHEXA/CPENTA/CTETRA. RBE2 and SPCs are
+// Elements: CBAR/CBEAM, CROD/CONROD, CQUAD4, CTRIA3, CONM2, CELAS1/2, CHEXA/CPENTA/CTETRA/CPYRAM. RBE2 and SPCs are
 // constraints (constraints.hpp). Cards in Model::unsupported are ignored here. DMIG matrices the
 // case control selects (K2GG, M2GG) are added afterwards (dmig.hpp).
 #include <Eigen/SparseCore>

@@ -22,7 +22,7 @@
 //   plane 1 and 2, axial force (tension positive), torque, in element axes; plane 1 is x-y (moment
 //   about z), plane 2 x-z; dM/dx = -V in both planes (the CBAR force output of the QRG).
 // - Rod (CROD, CONROD, CTUBE): axial force (tension positive), torque, axial stress F / A.
-// - Solid (CHEXA, CPENTA, CTETRA): stresses sx sy sz txy tyz tzx at the centroid, basic axes
+// - Solid (CHEXA, CPENTA, CTETRA, CPYRAM): stresses sx sy sz txy tyz tzx at the centroid, basic axes
 //   (PSOLID CORDM blank: the basic system).
 // - Spring (CELAS1-4): force k (u1 - u2) on its two dofs.
 // - Bush (CBUSH): forces Fx Fy Fz and moments Mx My Mz in element axes, K (u_B - u_A) at the spring

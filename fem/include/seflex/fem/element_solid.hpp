@@ -1,15 +1,15 @@
 #pragma once
-// CHEXA (8-20 grids), CPENTA (6-15), CTETRA (4-10): isoparametric linear-elastic solids with PSOLID
-// and an isotropic MAT1 or an anisotropic MAT9. Matrices are 3N x 3N on the translations T1 T2 T3
-// of the N grids (grid after grid, BASIC components); solids give no rotational stiffness or mass
-// (assembly puts these blocks into the 6-dof grid blocks; AUTOSPC removes rotations nothing else
-// stiffens).
+// CHEXA (8-20 grids), CPENTA (6-15), CTETRA (4-10), CPYRAM (5-13): isoparametric linear-elastic
+// solids with PSOLID and an isotropic MAT1 or an anisotropic MAT9. Matrices are 3N x 3N on the
+// translations T1 T2 T3 of the N grids (grid after grid, BASIC components); solids give no rotational
+// stiffness or mass (assembly puts these blocks into the 6-dof grid blocks; AUTOSPC removes
+// rotations nothing else stiffens).
 //
 // Stiffness K = int B^T D B dV, D the elasticity matrix in basic axes (Voigt xx yy zz xy yz zx,
 // engineering shear strains): MAT1 isotropic (lambda = E nu / ((1 + nu)(1 - 2 nu)), mu =
 // E / (2 (1 + nu)), nu < 0.5); MAT9 its G matrix in the PSOLID CORDM axes, rotated to basic
 // (D = T^T G T, eps_CORDM = T eps_basic), positive definite.
-// Some mid-edge grids blank (CHEXA 9-19, CPENTA 7-14, CTETRA 5-9 grids): that edge is straight and
+// Some mid-edge grids blank (CHEXA 9-19, CPENTA 7-14, CTETRA 5-9, CPYRAM 6-12 grids): that edge is straight and
 // its displacement linear (QRG). The shape functions are the full quadratic element's with the
 // missing mid-edge functions removed and half of each added to the two corners of its edge, which
 // is the corner correction of the variable-number-of-nodes elements (Bathe, Finite Element
@@ -29,6 +29,10 @@
 //   selective substitution of MYSTRAN's HEXA8, Source/EMG/EMG5/HEXA.f90; solid_kinematics.hpp):
 //   exact in pure bending on a rectangular brick, no spurious zero-energy mode.
 // - CPENTA 6, CTETRA 4: full integration (exact for the straight-sided element), no bubbles.
+// - CPYRAM 5 and 13: Bedrosian's rational pyramids (solid_shape_pyram.cpp) on the collapsed-cube
+//   Gauss rule (solid_shapes.hpp), 2 and 3 points per direction, exact for a parallelogram base;
+//   PSOLID IN/ISOP change nothing on the 5-grid one, and the 13-grid one refuses reduced
+//   integration as the other quadratic solids do.
 // - CHEXA 20 (3 x 3 x 3 Gauss), CPENTA 15 and CTETRA 10 (collapsed Gauss rules, 3 points per
 //   direction, exact for straight sides): full integration; reduced integration of the quadratic
 //   solids (IN = TWO) is refused by the reader.
@@ -84,10 +88,11 @@ Eigen::VectorXd solid_thermal_load(const SolidElement& e, double alpha, const Ei
 
 /// Corner grids (0-based positions in the element's grid list) of each face of a shape, ordered so
 /// that the right-hand rule gives the outward normal of an element numbered as the QRG figures show:
-/// CHEXA 6 quadrilaterals; CPENTA 2 triangles then 3 quadrilaterals; CTETRA 4 triangles.
+/// CHEXA 6 quadrilaterals; CPENTA 2 triangles then 3 quadrilaterals; CTETRA 4 triangles; CPYRAM the
+/// base then 4 triangles.
 std::vector<std::vector<int>> solid_face_corners(Solid::Shape shape);
 
-/// Resolve a CHEXA/CPENTA/CTETRA of a finalized model: grids, PSOLID, MAT1 or MAT9, integration
+/// Resolve a CHEXA/CPENTA/CTETRA/CPYRAM of a finalized model: grids, PSOLID, MAT1 or MAT9, integration
 /// scheme. Throws InputError for undefined references, a material that is not a MAT1 or MAT9, a MAT1
 /// with nu >= 0.5 or E <= 0, a MAT9 that is not positive definite or whose CORDM is not 0 or a
 /// rectangular system, a distorted element (Jacobian determinant zero or changing sign inside the

@@ -11,7 +11,7 @@
 //                               G3 G4: along the unit vector of (G1 -> G2) x (G3 -> G4); directions
 //                               at the grids' undeformed positions (linear Nastran, QRG FORCE1/2).
 // PLOAD4 (face_pressure.hpp):   corner pressures P1..P4 on a CQUAD4/CTRIA3 or on the face of a CHEXA/
-//                               CPENTA/CTETRA (G1, G3/G4), work-equivalent grid forces f_a = int N_a p d dA
+//                               CPENTA/CTETRA/CPYRAM (G1, G3/G4), work-equivalent grid forces f_a = int N_a p d dA
 //                               with d the shell normal, the inward normal of a solid face, or N/|N| in CID;
 //                               the THRU form loads the shells of the range and skips other ids.
 // PLOAD2 SID P EID...:          uniform pressure P on CQUAD4/CTRIA3, along the element normal
@@ -60,7 +60,7 @@
 //               the stiffness times the free thermal deformation (element_shell_thermal.hpp). A
 //               PSHELL whose MID4 has thermal expansion is refused (its thermal moment is not
 //               computed);
-//   CHEXA/CPENTA/CTETRA: grid temperatures interpolated by the shape functions, f = int B^T D
+//   CHEXA/CPENTA/CTETRA/CPYRAM: grid temperatures interpolated by the shape functions, f = int B^T D
 //               eps_T dV (element_solid.hpp: solid_thermal_load).
 // Grid temperatures give a bar/rod T = mean of its two grids and no gradient. A new element type
 // with a thermal expansion coefficient must either get its thermal load here or be refused
@@ -82,7 +82,7 @@ Eigen::VectorXd load_vector(const Model& model, const DofMap& dofs, int sid,
                             const Eigen::SparseMatrix<double>* M_gg = nullptr);
 
 /// Equivalent nodal loads (size dofs.size()) of thermal load set `sid` (TEMP, TEMPD, TEMPRB) on the
-/// CBAR/CBEAM/CROD/CONROD, CQUAD4/CTRIA3 and CHEXA/CPENTA/CTETRA elements. Throws InputError if no
+/// CBAR/CBEAM/CROD/CONROD, CQUAD4/CTRIA3 and CHEXA/CPENTA/CTETRA/CPYRAM elements. Throws InputError if no
 /// temperature card has this SID, if a TEMPRB names an element that is not a bar or rod, if an
 /// element with thermal expansion (a bar/rod without TEMPRB) has a grid with no temperature in the
 /// set (no TEMP for it and no TEMPD), or for a heated PSHELL whose MID4 has thermal expansion.

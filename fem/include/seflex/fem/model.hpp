@@ -82,7 +82,7 @@ struct Model {
   std::vector<Bend> bends;                  ///< CBEND
   std::vector<QuadraticShell> shells8;      ///< CTRIA6, CQUAD8
   std::vector<SolidProperty> solid_props;   ///< PSOLID
-  std::vector<Solid> solids;                ///< CHEXA, CPENTA, CTETRA
+  std::vector<Solid> solids;                ///< CHEXA, CPENTA, CTETRA, CPYRAM
   std::vector<Rbe2> rbe2;
   std::vector<Rbar> rbars;
   std::vector<RigidBody> rigid_bodies;      ///< RBE1, CRIGD1, CRIGD2, CRIGD3

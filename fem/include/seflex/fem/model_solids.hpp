@@ -1,6 +1,6 @@
 #pragma once
 // Model cards of solid elements and face pressure loads (part of model.hpp, kept apart to keep that
-// header short): PSOLID, MAT9, CHEXA/CPENTA/CTETRA, PLOAD4. Field layouts: MSC Nastran Quick Reference
+// header short): PSOLID, MAT9, CHEXA/CPENTA/CTETRA/CPYRAM, PLOAD4. Field layouts: MSC Nastran Quick Reference
 // Guide (docs/nastran-support.md). No parsing and no numerics here.
 #include <Eigen/Core>
 #include <array>
@@ -40,23 +40,28 @@ struct Mat9 {
   CardRef ref;
 };
 
-/// CHEXA (8 to 20 grids), CPENTA (6 to 15), CTETRA (4 to 10): the corners, then the mid-edge grids
-/// present, in Nastran's order (QRG CHEXA/CPENTA/CTETRA figures). A blank mid-edge grid makes that
+/// CHEXA (8 to 20 grids), CPENTA (6 to 15), CTETRA (4 to 10), CPYRAM (5 to 13): the corners, then
+/// the mid-edge grids present, in Nastran's order (QRG CHEXA/CPENTA/CTETRA/CPYRAM figures). A blank mid-edge grid makes that
 /// edge straight (QRG): bit k of missing_mid is set when mid-edge grid k (QRG grid corners + 1 + k)
 /// is blank, and g[] holds only the grids present (nnode of them), so that g[0..nnode) is always the
 /// element's grid list. nnode = corners: the linear element (missing_mid ignored); all mid-edge
 /// grids present: the full quadratic one (missing_mid = 0).
 struct Solid {
-  enum class Shape : std::uint8_t { Tetra, Penta, Hexa };
+  enum class Shape : std::uint8_t { Tetra, Penta, Hexa, Pyram };
   int id = 0, pid = 0;
   Shape shape = Shape::Hexa;
   std::uint8_t nnode = 8;
   std::uint16_t missing_mid = 0;
   std::array<int, 20> g{};
   CardRef ref;
-  const char* card() const { return shape == Shape::Hexa ? "CHEXA" : shape == Shape::Penta ? "CPENTA" : "CTETRA"; }
-  int corners() const { return shape == Shape::Hexa ? 8 : shape == Shape::Penta ? 6 : 4; }
-  int edges() const { return shape == Shape::Hexa ? 12 : shape == Shape::Penta ? 9 : 6; }
+  const char* card() const { return card(shape); }
+  int corners() const { return corners(shape); }
+  int edges() const { return edges(shape); }
+  static const char* card(Shape s) {
+    return s == Shape::Hexa ? "CHEXA" : s == Shape::Penta ? "CPENTA" : s == Shape::Pyram ? "CPYRAM" : "CTETRA";
+  }
+  static int corners(Shape s) { return s == Shape::Hexa ? 8 : s == Shape::Penta ? 6 : s == Shape::Pyram ? 5 : 4; }
+  static int edges(Shape s) { return s == Shape::Hexa ? 12 : s == Shape::Penta ? 9 : s == Shape::Pyram ? 8 : 6; }
   bool quadratic() const { return nnode > corners(); }
   /// The QRG grid number (1-based: G1, G2, ...) of g[k], for messages.
   int grid_number(int k) const {
@@ -76,7 +81,7 @@ struct FaceLoad {
   int sid = 0;
   int eid = 0, eid_last = 0;         ///< eid_last > 0: the THRU form, elements eid..eid_last
   std::array<double, 4> p{};
-  int g1 = 0, g34 = 0;               ///< solids: face corner G1 and G3 (HEXA/PENTA) or G4 (TETRA)
+  int g1 = 0, g34 = 0;               ///< solids: face corner G1 and G3 (HEXA/PENTA/PYRAM) or G4 (TETRA)
   int cid = 0;
   Eigen::Vector3d n = Eigen::Vector3d::Zero();
   CardRef ref;

@@ -77,6 +77,7 @@ void parse_shell8(const Card&, ReaderState&);  ///< CQUAD8, CTRIA6
 void parse_chexa(const Card&, ReaderState&);
 void parse_cpenta(const Card&, ReaderState&);
 void parse_ctetra(const Card&, ReaderState&);
+void parse_cpyram(const Card&, ReaderState&);
 void parse_psolid(const Card&, ReaderState&);
 void parse_pload4(const Card&, ReaderState&);
 // Materials and properties (nastran_cards_properties.cpp)
