@@ -63,7 +63,20 @@ std::string describe_singular(const Model& model, const Eigen::SparseMatrix<doub
       s += (s.empty() ? "" : ", ") + model.dof_labels[static_cast<std::size_t>(c)];
       if (s.size() > 200) break;
     }
-  return s.empty() ? "" : "no mass or stiffness on " + s;
+  return s.empty() ? "no dof without mass or stiffness: a combination of dofs, singular to round-off" : "no mass or stiffness on " + s;
+}
+
+std::string SawtoothWatch::describe(const Model& model, double rho_inf) const {
+  if (seen_dof_ < 0 || since_ > kRecent) return "";
+  std::ostringstream os;
+  os.precision(3);
+  os << "; before this failure the local error of " << led_ << " accepted steps was led by "
+     << model.dof_labels[static_cast<std::size_t>(seen_dof_)] << ", whose acceleration changed sign at every step for "
+     << alternated_ << " of them (its change per step grew from " << seen_first_ << " to " << seen_last_
+     << "): an oscillation with a period of two steps that rho_inf = " << rho_inf
+     << " does not damp enough and that cut the steps down, the mark of a direction without mass "
+        "(docs/stability.md, \"Directions without mass\"); a smaller rho_inf damps it";
+  return os.str();
 }
 
 }  // namespace seflex::mbd::detail

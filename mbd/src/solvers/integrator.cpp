@@ -203,7 +203,13 @@ class AicStepper final : public detail::Stepper {
   }
   double error_estimate(double h) const override {
     dvdot_ = trial_.vdot - state_.vdot;
-    return detail::wrms_error(dvdot_, error_weights_, h, c_);
+    const double err = detail::wrms_error(dvdot_, error_weights_, h, c_);
+    if (dvdot_.size() > 0) {  // its largest term, for the diagnosis of a failure (describe_residual)
+      Eigen::Index i = 0;
+      dvdot_.cwiseAbs().cwiseProduct(error_weights_).maxCoeff(&i);
+      trial_error_ = {static_cast<int>(i), dvdot_[i]};
+    }
+    return err;
   }
   double hinge_angle(int hinge, bool trial) const override { return (trial ? trial_ : state_).phi[hinge]; }
   double hinge_rate(int hinge, bool trial) const override {
@@ -212,6 +218,7 @@ class AicStepper final : public detail::Stepper {
   }
   std::vector<LockState>& locks() override { return state_.locks; }
   void accept() override {
+    sawtooth_.accepted(trial_error_);
     vdot_prev_ = state_.vdot;
     h_prev_ = trial_.t - state_.t;
     state_ = trial_;
@@ -238,7 +245,9 @@ class AicStepper final : public detail::Stepper {
   void prepare_failure_sample() override {
     evaluate_current();  // the failed attempt left data_ at a trial state (attempt: Evaluated::None)
   }
-  std::string describe_residual() const override { return detail::describe_residual(model_, data_); }
+  std::string describe_residual() const override {
+    return detail::describe_residual(model_, data_) + sawtooth_.describe(model_, st_.rho_inf);
+  }
 
  private:
   const Model& model_;
@@ -252,6 +261,8 @@ class AicStepper final : public detail::Stepper {
   VectorXd vdot_prev_;       // vdot of the accepted state before the current one
   VectorXd vdot_predicted_;
   mutable VectorXd dvdot_;
+  mutable detail::ErrorTerm trial_error_;  // the largest term of the last attempt's error estimate
+  detail::SawtoothWatch sawtooth_;         // ... and whether it alternates in sign over the accepted steps
   NewtonScratch newton_;
   double h_prev_ = 0.0;      // the last accepted step (0: none yet)
   // What data_ holds at state_: nothing (a trial's evaluation), a sample's energies_only evaluation,
