@@ -6,6 +6,8 @@
 #include <Eigen/Sparse>
 #include <cmath>
 #include <functional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "beam_superelement.hpp"
@@ -43,6 +45,29 @@ inline BeamSection spinup_section(double area) {
   sec.J = 2 * sec.Iz;
   sec.rho = rhoA / sec.A;
   return sec;
+}
+
+/// A beam of length L along x cut into `bodies` AIC superelements `segment` (interfaces at its ends)
+/// on a hub hinge about z with the prescribed motion `drive` (the spin-up tests).
+inline mbd::Model spinning_beam(const se::Superelement& segment, int bodies, double L, mbd::InertiaModel inertia,
+                                mbd::Drive drive) {
+  using Eigen::Matrix3d;
+  using Eigen::Vector3d;
+  mbd::ModelBuilder mb;
+  const auto sei = mb.add_superelement(segment);
+  mbd::HingeOptions ho;
+  ho.drive = std::move(drive);
+  const auto h = mb.add_hinge("hub", mb.add_ground("hub axis", mbd::Pose{}), Vector3d::UnitZ(), ho);
+  mbd::NodeIndex prev = mb.hinge_child(h);
+  mbd::FlexibleBodyOptions fo;
+  fo.inertia = inertia;
+  for (int b = 0; b < bodies; ++b) {
+    const auto n = mb.add_node("n" + std::to_string(b + 1), mbd::Pose{Matrix3d::Identity(), Vector3d((b + 1) * L / bodies, 0, 0)});
+    mb.add_flexible_body("segment" + std::to_string(b + 1), sei, {prev, n},
+                         mbd::Pose{Matrix3d::Identity(), Vector3d((b + 0.5) * L / bodies, 0, 0)}, fo);
+    prev = n;
+  }
+  return mb.build();
 }
 
 /// Keeps every sample.

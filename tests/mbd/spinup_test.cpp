@@ -29,22 +29,7 @@ SpinupHistory spinup(int bodies, InertiaModel inertia, bool velocity_tangent = t
   const test::BeamSection sec = test::spinup_section(1e-3);
   auto fe = test::straight_beam(L / bodies, 2, sec);
   const se::Superelement s = test::craig_bampton(fe, {0, 2}, 1, 0, "segment");
-  ModelBuilder mb;
-  const auto sei = mb.add_superelement(s);
-  const auto g = mb.add_ground("hub axis", Pose{});
-  HingeOptions ho;
-  ho.drive = hub;
-  const auto h = mb.add_hinge("hub", g, Vector3d::UnitZ(), ho);
-  NodeIndex prev = mb.hinge_child(h);
-  FlexibleBodyOptions fo;
-  fo.inertia = inertia;
-  for (int b = 0; b < bodies; ++b) {
-    const auto n = mb.add_node("n" + std::to_string(b + 1), Pose{Matrix3d::Identity(), Vector3d((b + 1) * L / bodies, 0, 0)});
-    mb.add_flexible_body("segment" + std::to_string(b + 1), sei, {prev, n},
-                         Pose{Matrix3d::Identity(), Vector3d((b + 0.5) * L / bodies, 0, 0)}, fo);
-    prev = n;
-  }
-  const Model model = mb.build();
+  const Model model = test::spinning_beam(s, bodies, L, inertia, hub);
   State st = initial_state(model);
   Data data(model);
   IntegratorSettings is;

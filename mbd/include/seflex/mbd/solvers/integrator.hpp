@@ -52,8 +52,9 @@ struct IntegratorSettings {
   struct Radau {
     int newton_max_iterations = 7;  ///< per step (Hairer and Wanner's NIT)
     /// Newton stops when its estimated distance to the solution, theta/(1 - theta) |dW| (weighted
-    /// like the error estimate), is below this fraction of the local error tolerance. 0: their rule,
-    /// min(0.03, sqrt(tol)) with tol the smaller of tol_position and tol_angle.
+    /// like the error estimate), is below this fraction of the local error tolerance. 0: a tenth of
+    /// their rule, 0.1 min(0.03, sqrt(tol)) with tol the smaller of tol_position and tol_angle (their
+    /// rule's remainder accumulated over the steps into most of the global error: radau5.cpp).
     double newton_fraction = 0.0;
     /// The Jacobian (K, C, M) is kept for the next step while Newton's contraction rate theta stays
     /// at most this (their THET; 0.001 re-forms it almost every step, 0.1 suits Jacobians that cost
