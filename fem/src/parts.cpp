@@ -348,10 +348,11 @@ class Assembler {
       ++size[r];
       if (best[r] == n || rank(a) < rank(best[r])) best[r] = a;
     }
-    for (std::size_t a = 0; a < n; ++a) lead_[a] = best[uf.find(a)];
+    std::vector<std::size_t> root(n);
+    for (std::size_t a = 0; a < n; ++a) root[a] = uf.find(a), lead_[a] = best[root[a]];
     std::unordered_map<std::size_t, std::size_t> seen;  // (root, superelement) -> node
     for (std::size_t a = 0; a < n; ++a) {
-      if (size[lead_[a]] < 2) continue;
+      if (size[root[a]] < 2) continue;
       boundary_[a] = 1;
       const std::size_t key = lead_[a] * ses_.size() + node_se_[a];
       const auto [it, inserted] = seen.emplace(key, a);
