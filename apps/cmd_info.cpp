@@ -48,6 +48,18 @@ void print_model(const seflex::fem::Model& m) {
     row("temperature cards", n);
   row("eigenvalue methods", m.eigen_methods.size());
   row("DMIG matrices", m.dmigs.size());
+  if (!m.parts.empty()) {
+    std::printf("\npart superelements (BEGIN SUPER), merged into the model above and solved in full\n");
+    for (const auto& p : m.parts) {
+      std::printf("  part %-6d %s: %zu grids (%zu joined to other superelements), %zu elements%s", p.seid,
+                  seflex::fem::where(m, p.begin).str().c_str(), p.grids, p.boundary_grids, p.elements,
+                  p.moved ? ", moved by SELOC" : "");
+      if (p.grid_offset || p.element_offset || p.property_offset || p.material_offset)
+        std::printf("; ids + %lld (grids), + %lld (elements), + %lld (properties), + %lld (materials)", p.grid_offset,
+                    p.element_offset, p.property_offset, p.material_offset);
+      std::printf("\n");
+    }
+  }
 
   std::printf("\ncards read, by type\n");
   for (const auto& [name, n] : m.card_counts) row(name, n);

@@ -72,7 +72,8 @@ family() {
       MATT8 | MATT9 | MATT11 | TABLEM[1-5] | PBUSH1D | USET | USET1 | DMI | DTI | \
       "PBUSH1D SHOCKA (nonlinear: linear solutions use K and C)" | "PBUSH1D SPRING (nonlinear: linear solutions use K and C)" | \
       "PBUSH1D DAMPER (nonlinear: linear solutions use K and C)" | "PBUSH1D GENER (nonlinear: linear solutions use K and C)" | \
-      "PARAM in the bulk data overridden by the case control") echo other ;;
+      "PARAM in the bulk data overridden by the case control" | \
+      "PARAM of a part superelement other than the residual's (the residual's value or the default used)") echo other ;;
     *) echo structural ;;
   esac
 }

@@ -8,6 +8,7 @@
 
 #include "seflex/common/error.hpp"
 #include "seflex/fem/finalize.hpp"
+#include "seflex/fem/parts.hpp"
 #include "seflex/io/nastran.hpp"
 #include "seflex/io/nastran_card.hpp"
 #include "seflex/io/nastran_cards.hpp"
@@ -73,6 +74,8 @@ constexpr CardType kCardTypes[] = {
     {"CTRIA6", parse_shell8},   {"CQUADR", parse_cquad4},   {"CTRIAR", parse_ctria3},  {"SLOAD", parse_sload},
     {"PLOAD", parse_pload},     {"CBUSH1D", parse_cbush1d}, {"PBUSH1D", parse_pbush1d}, {"TABLEM1", parse_tablem},
     {"TABLEM2", parse_tablem},  {"TABLEM3", parse_tablem},  {"TABLEM4", parse_tablem},  {"CPYRAM", parse_cpyram},
+    {"POINT", parse_point},     {"SELOC", parse_seloc},     {"SEBULK", parse_sebulk},   {"SECONCT", parse_seconct},
+    {"SELABEL", parse_selabel},
 };
 constexpr std::size_t kNumCardTypes = sizeof(kCardTypes) / sizeof(kCardTypes[0]);
 
@@ -194,15 +197,28 @@ class DeckReader {
                        (section_ == Section::Executive ? std::string(" (and no CEND)") : std::string()) +
                        "; expected the bulk data after BEGIN BULK");
     std::size_t cards = 0;
-    for (const std::size_t c : counts_) cards += c;
+    for (const std::size_t c : residual_counts_) cards += c;
     for (const auto& u : model_.unsupported) cards += u.count;
+    for (const auto& p : parts_) {
+      for (const std::size_t c : p->counts) cards += c;
+      for (const auto& u : p->part.model.unsupported) cards += u.count;
+    }
     if (cards == 0)
       throw InputError(name + ": no bulk data cards" + (model_.files.size() > 1 ? " in it or its includes" : "") +
                        "; expected GRID, element and property cards (is this a Nastran deck?)");
     case_control_.finish();
-    apply_defaults();
-    for (std::size_t i = 0; i < kNumCardTypes; ++i)
-      if (counts_[i] > 0) model_.card_counts[std::string(kCardTypes[i].name)] += counts_[i];
+    apply_defaults(model_, state_);
+    add_counts(model_, residual_counts_);
+    if (parts_.empty() && model_.part_locations.empty() && model_.part_bulks.empty() && model_.part_connections.empty()) return;
+    std::vector<fem::Part> parts;
+    for (auto& p : parts_) {
+      apply_defaults(p->part.model, p->state);
+      add_counts(p->part.model, p->counts);
+      parts.push_back(std::move(p->part));
+    }
+    parts_.clear();
+    st_ = &state_;
+    fem::assemble_parts(model_, parts);
   }
 
   /// The main file's text (moved out: call once, after read_main).
@@ -233,7 +249,7 @@ class DeckReader {
     Line line;
     while (!done_ && cursor.next(line)) {
       if (line.blank()) continue;
-      if (in_part_ && section_ == Section::Bulk) {
+      if (skipping_ && section_ == Section::Bulk) {
         part_line(src, line);
         continue;
       }
@@ -321,18 +337,50 @@ class DeckReader {
     stack.pop_back();
   }
 
-  /// A line of a part superelement's bulk data (BEGIN [BULK] SUPER = n up to the next BEGIN SUPER,
-  /// BEGIN BULK (the residual's, when the parts come first) or ENDDATA): skipped, INCLUDE lines too. Each part is listed as "BEGIN SUPER" (first at its BEGIN
-  /// line); check_card_usage refuses it in every solution, as seflex reads the residual structure only.
+  /// A BEGIN SUPER = n line (or BEGIN BULK SUPER = n): the cards after it, up to the next BEGIN
+  /// SUPER, BEGIN BULK (the residual's bulk data, when the parts come first) or ENDDATA, are part n's,
+  /// read into a model of their own (fem::assemble_parts merges them). A mass section (BEGIN SUPER = n
+  /// MASSID = m, for MASSSET) is skipped and listed. While skipping_, every line comes here.
   void part_line(const Source& src, const Line& line) {
     const std::string_view t = trim(line.text);
+    if (!is_begin_super(t) && !is_begin_bulk(t) && !starts_with_word(t, "ENDDATA")) return;  // a line of a skipped section
+    have_previous_ = have_pattern_ = false;
+    skipping_ = false;
     if (is_begin_super(t)) {
+      std::string_view rest = trim(t.substr(5));
+      if (starts_with_word(rest, "BULK")) rest = trim(rest.substr(4));
+      rest = trim(rest.substr(5));  // SUPER
+      if (!rest.empty() && rest[0] == '=') rest = trim(rest.substr(1));
+      std::size_t digits = 0;
+      while (digits < rest.size() && rest[digits] >= '0' && rest[digits] <= '9') ++digits;
+      int seid = 0;
+      if (digits == 0 || digits > 9 || (seid = std::stoi(std::string(rest.substr(0, digits)))) <= 0)
+        throw InputError(location(src.name, line.number) + ": " + quote_field(t) +
+                         ": expected BEGIN SUPER = n with a part id n > 0");
+      rest = trim(rest.substr(digits));
+      if (!rest.empty()) {
+        if (starts_with_word(rest, "MASSID")) {
+          skipping_ = true;
+          state_.note_unsupported(kPartMassSection, {src.index, line.number});
+          return;
+        }
+        throw InputError(location(src.name, line.number) + ": " + quote_field(t) + ": text " + quote_field(rest) +
+                         " after the part id; expected BEGIN SUPER = n (or BEGIN SUPER = n MASSID = m)");
+      }
       in_part_ = true;
-      have_previous_ = have_pattern_ = false;
-      state_.note_unsupported(kPartSuperelement, {src.index, line.number});
+      PartReading* part = nullptr;
+      for (auto& p : parts_)
+        if (p->part.seid == seid) part = p.get();
+      if (!part) {
+        parts_.push_back(std::make_unique<PartReading>(seid, fem::CardRef{src.index, line.number}));
+        part = parts_.back().get();
+      }
+      st_ = &part->state;
+      counts_ = &part->counts;
     } else if (is_begin_bulk(t)) {  // the residual's bulk data after the parts
       in_part_ = false;
-      have_previous_ = have_pattern_ = false;
+      st_ = &state_;
+      counts_ = &residual_counts_;
     } else if (starts_with_word(t, "ENDDATA")) {
       done_ = true;
     }
@@ -406,7 +454,7 @@ class DeckReader {
   /// DEQATN: its equations are not fields (commas, '=' and blanks anywhere): the card and its
   /// continuation lines (field 1 blank, '+' or '*') are skipped and listed as unsupported.
   void skip_equation_card(const Source& src, LineCursor& cursor, const Line& line) {
-    state_.note_unsupported("DEQATN", {src.index, line.number});
+    st_->note_unsupported("DEQATN", {src.index, line.number});
     Line next;
     while (cursor.next(next)) {
       if (next.blank()) continue;
@@ -435,7 +483,7 @@ class DeckReader {
       have_previous_ = have_pattern_ = false;
       return;
     }
-    if (is_begin_super(line.text)) {
+    if (is_begin_super(line.text) || (in_part_ && is_begin_bulk(line.text))) {
       part_line(src, line);
       return;
     }
@@ -462,7 +510,7 @@ class DeckReader {
     }
     if (stray_mark(field1) && trim(line.text.substr(std::min(line.text.size(), field1.size() + line.text.find_first_not_of(' ')))).empty()) {
       // A line holding only a mark such as '&' (MYSTRAN's decks have some): listed, not a card.
-      state_.note_unsupported(std::string("'") + std::string(field1) + "'", {src.index, line.number});
+      st_->note_unsupported(std::string("'") + std::string(field1) + "'", {src.index, line.number});
       have_previous_ = have_pattern_ = false;
       return;
     }
@@ -473,7 +521,7 @@ class DeckReader {
     if (!valid_card_name(uname) || name.size() > 8) {
       if (starts_with_word(trim(line.text), "BEGIN"))
         throw InputError(location(src.name, line.number) + ": " + quote_field(trim(line.text)) +
-                         " inside the bulk data; expected one BEGIN BULK (BEGIN SUPER parts are read as unsupported; other sections are not)");
+                         " inside the bulk data; expected one BEGIN BULK (and BEGIN SUPER = n sections for parts)");
       throw InputError(location(src.name, line.number) + ": got " + quote_field(field1) +
                        " where a card name belongs; expected a name of up to 8 letters and digits in columns 1-8"
                        " (or before the first comma)");
@@ -557,15 +605,22 @@ class DeckReader {
       last_type_ = type;
     }
     if (type < 0) {
-      state_.note_unsupported_card(card_);
+      st_->note_unsupported_card(card_);
       return;
     }
-    kCardTypes[type].parse(card_, state_);
-    ++counts_[type];
+    kCardTypes[type].parse(card_, *st_);
+    ++(*counts_)[type];
+  }
+
+  using Counts = std::array<std::size_t, kNumCardTypes>;
+
+  static void add_counts(fem::Model& model, const Counts& counts) {
+    for (std::size_t i = 0; i < kNumCardTypes; ++i)
+      if (counts[i] > 0) model.card_counts[std::string(kCardTypes[i].name)] += counts[i];
   }
 
   /// GRDSET for blank GRID fields; BAROR/BEAMOR for blank CBAR/CBEAM fields; PID = EID last.
-  void apply_defaults() {
+  static void apply_defaults(fem::Model& model_, const nastran::ReaderState& state_) {
     const auto& gs = model_.grdset;
     if (gs.present) {
       for (std::size_t i = 0; i < model_.grids.size(); ++i) {
@@ -596,7 +651,22 @@ class DeckReader {
   std::vector<std::unique_ptr<Source>> sources_;
   Section section_ = Section::Bulk;
   bool done_ = false;
-  bool in_part_ = false;  ///< inside BEGIN SUPER: lines skipped
+  /// One BEGIN SUPER = n part as read (its cards may come in several sections).
+  struct PartReading {
+    PartReading(int seid, fem::CardRef begin) : state(part.model) {
+      part.seid = seid;
+      part.begin = begin;
+    }
+    fem::Part part;
+    nastran::ReaderState state;
+    Counts counts{};
+  };
+  std::vector<std::unique_ptr<PartReading>> parts_;
+  nastran::ReaderState* st_ = &state_;  ///< the residual's state_ or the part's being read
+  Counts residual_counts_{};
+  Counts* counts_ = &residual_counts_;           ///< cards read of each type, of the residual or the part being read
+  bool in_part_ = false;       ///< inside BEGIN SUPER = n
+  bool skipping_ = false;      ///< inside BEGIN SUPER = n MASSID = m: lines skipped
   bool executive_statements_ = false;
   Card card_;
   Card pattern_;                                ///< the last '=' replication line (and its continuations)
@@ -608,7 +678,6 @@ class DeckReader {
   static constexpr std::size_t kMaxFreeFields = 1 + 8 * 32;  ///< field 1 and 32 card lines of data
   std::vector<std::string_view> overflow_;                  ///< data beyond one card line of a long free-field line
   std::vector<std::string_view> long_line_;                 ///< fields of a free-field line longer than 12
-  std::array<std::size_t, kNumCardTypes> counts_{};
   std::string last_name_;
   int last_type_ = -1;
 };

@@ -26,6 +26,14 @@ using detail::Role;
 using Kind = CardUse::Kind;
 using Member = fem::UnsupportedCard::Member;
 
+/// A case-control value without blanks around it, in upper case ("all " -> "ALL").
+std::string upper_trimmed(const std::string& v) {
+  std::string out;
+  for (const char c : v)
+    if (c != ' ') out += static_cast<char>(c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c);
+  return out;
+}
+
 bool runs(Solution s) {
   return s == Solution::Statics || s == Solution::NormalModes || s == Solution::Buckling || s == Solution::CraigBampton;
 }
@@ -331,6 +339,10 @@ class Classifier {
       if (n == "P2G")
         return report_.add(Kind::Refused, card, cmd.ref, what + " selects direct load matrices (P2G), which seflex does not apply");
     }
+    if ((n == "SUPER" || n == "SEALL") && upper_trimmed(cmd.value) == "ALL")
+      return report_.add(Kind::Unused, card, cmd.ref,
+                         what + ": every part superelement is merged into one model and solved in full (exact, where "
+                                "Nastran reduces each part to its boundary)");
     if (n == "BC" || n == "AXISYMMETRIC" || n == "HARMONICS" || n == "SUPER" || n == "SEALL")
       return report_.add(runs(s_) ? Kind::Refused : Kind::Unused, card, cmd.ref,
                          what + ": seflex does not model " + n + " (multiple boundary conditions, axisymmetric or superelement runs)");
@@ -560,8 +572,10 @@ class Classifier {
   static const CardRole* role_of(const std::string& name) {
     static const CardRole kLeftOut{"", Role::Structure, false, nullptr};
     static const std::string kSuffix = " (left out)";
+    static const std::string kPart = "part superelement: ";  // a part's card fem::assemble_parts does not merge
     if (name.size() > kSuffix.size() && name.compare(name.size() - kSuffix.size(), kSuffix.size(), kSuffix) == 0)
       return &kLeftOut;
+    if (name.compare(0, kPart.size(), kPart) == 0) return &kLeftOut;
     return detail::find_card_role(name);
   }
 

@@ -1,5 +1,5 @@
 // What pyNastran's public decks (models/, issue 14) write and seflex reads: bulk data replication
-// ('=', '==', '*x', '=n'), part superelements (BEGIN SUPER: skipped, listed, refused by solutions),
+// ('=', '==', '*x', '=n'), part superelements (BEGIN SUPER: read as parts and assembled, fem/parts.hpp),
 // SUBCASE = n, continuation markers matched on columns 2-8, PARAM in the case control over the bulk
 // data, TFLAG as a real, COSMIC's CBAR flag F, MAT1 NU above 0.5, fluid grids and PFLUID solids,
 // rigid elements numbered apart, elements on properties or materials seflex does not model (left
@@ -104,30 +104,35 @@ TEST(PublicDecks, ReplicationErrorsNameTheLineAndTheField) {
 // ---------------------------------------------------------------------------------------------
 // Part superelements (see101*, flyswatter, elafor_4)
 
-TEST(PublicDecks, PartSuperelementsAreSkippedListedAndRefusedBySolutions) {
-  const std::string part = "BEGIN SUPER = 1\nGRID,1,,5.,5.,5.\nCBAR,99,1,1,2,0.,1.,0.\nGRID,77,,0.,0.,0.\n"
-                           "begin bulk super=2\nINCLUDE 'not_there.bdf'\nGRID,78,,0.,0.,0.\n";
+TEST(PublicDecks, PartSuperelementsAreReadAsPartsAndAssembled) {
+  // part 1 continues the bar (its grid 2 is the residual's, by location; its CBAR 1, MAT1 1 and PBAR 1
+  // clash with the residual's: renumbered 11); part 2 holds a grid of its own
+  const std::string part = "BEGIN SUPER = 1\nGRID,2,,1.,0.,0.\nGRID,3,,2.,0.,0.\nMAT1,1,7.e10,,0.3,2700.\n"
+                           "PBAR,1,1,1.e-4,2.e-8,2.e-8,4.e-8\nCBAR,1,1,2,3,0.,1.,0.\n"
+                           "begin bulk super=2\nGRID,78,,0.,0.,9.\n";
   const fem::Model m = read_deck(statics_deck(part));
-  ASSERT_EQ(m.grids.size(), 2u);  // the residual's grids only: the parts' ids are not seen
-  EXPECT_EQ(m.grids[0].x.x(), 0.0);
-  EXPECT_EQ(m.bars.size(), 1u);
-  const auto* u = listed(m, "BEGIN SUPER");
-  ASSERT_NE(u, nullptr);
-  EXPECT_EQ(u->count, 2u);
-  EXPECT_EQ(u->first.line, 13u);
-  EXPECT_TRUE(mentions(statics_refusal(m), {"deck.bdf:13: BEGIN SUPER", "superelement partitioning of the bulk data is not supported"}));
-  // without parts the same deck runs
-  EXPECT_EQ(statics_refusal(read_deck(statics_deck(""))), "");
+  ASSERT_EQ(m.grids.size(), 4u);  // 1 and 2, part 1's 3, part 2's 78 (part 1's 2 is the residual's)
+  ASSERT_EQ(m.bars.size(), 2u);
+  EXPECT_EQ(m.bars[1].id, 11);
+  EXPECT_EQ(m.bars[1].ga, 2);
+  EXPECT_EQ(m.bars[1].pid, 11);
+  ASSERT_EQ(m.parts.size(), 2u);
+  EXPECT_EQ(m.parts[0].boundary_grids, 1u);
+  EXPECT_EQ(m.parts[0].begin.line, 13u);
+  EXPECT_EQ(listed(m, "BEGIN SUPER"), nullptr);
+  EXPECT_EQ(statics_refusal(m), "");
   // parts before BEGIN BULK (flyswatter_renumber.bdf, as pyNastran writes them): they end the case
-  // control, are listed, and the residual's bulk data after BEGIN BULK is read (it was taken for
-  // case control, the parts lost unsaid)
+  // control, and the residual's bulk data after BEGIN BULK is read (it was taken for case control,
+  // the parts lost unsaid); a part's PARAM is not the residual's (listed)
   const fem::Model first = read_deck(statics_deck("", "BEGIN SUPER=1\nPARAM,WTMASS,.5\nGRID,1,,5.,5.,5.\n"));
-  const auto* f = listed(first, "BEGIN SUPER");
-  ASSERT_NE(f, nullptr);
-  EXPECT_EQ(f->first.line, 5u);
-  EXPECT_EQ(first.grids.size(), 2u);
+  ASSERT_EQ(first.parts.size(), 1u);
+  EXPECT_EQ(first.parts[0].begin.line, 5u);
+  ASSERT_EQ(first.grids.size(), 3u);
   EXPECT_EQ(first.grids[0].x.x(), 0.0);
-  EXPECT_EQ(fem::param_number(first, "WTMASS", 1.0), 1.0);  // the part's PARAM is not the residual's
+  EXPECT_EQ(first.grids[2].id, 11);  // part 1's grid 1, renumbered
+  EXPECT_EQ(first.grids[2].x_basic.z(), 5.0);
+  EXPECT_EQ(fem::param_number(first, "WTMASS", 1.0), 1.0);
+  EXPECT_NE(listed(first, "PARAM of a part superelement other than the residual's (the residual's value or the default used)"), nullptr);
 }
 
 // ---------------------------------------------------------------------------------------------

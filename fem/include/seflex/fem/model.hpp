@@ -23,6 +23,7 @@
 #include "seflex/fem/model_elements.hpp"
 #include "seflex/fem/model_geometry.hpp"
 #include "seflex/fem/model_loads.hpp"
+#include "seflex/fem/model_parts.hpp"
 #include "seflex/fem/model_properties.hpp"
 #include "seflex/fem/model_solids.hpp"
 
@@ -111,6 +112,14 @@ struct Model {
   std::vector<EigenMethod> eigen_methods;
   std::vector<Dmig> dmigs;
   std::vector<Param> params;
+
+  // Part superelements (BEGIN SUPER = n): the residual's cards that place and connect them, and what
+  // fem::assemble_parts (parts.hpp) made of each part merged into this model.
+  std::vector<GeometricPoint> points;          ///< POINT
+  std::vector<PartLocation> part_locations;    ///< SELOC
+  std::vector<PartBulk> part_bulks;            ///< SEBULK
+  std::vector<PartConnection> part_connections;  ///< SECONCT
+  std::vector<PartSummary> parts;              ///< filled by assemble_parts
 
   std::vector<UnsupportedCard> unsupported;  ///< in order of first appearance
   /// What the reader chose where a deck could be read two ways, one sentence each starting with

@@ -45,7 +45,7 @@ inline constexpr const char* kShellTflagFraction = "CQUAD4/CTRIA3 TFLAG a fracti
 inline constexpr const char* kFluidGrid = "GRID CD = -1 (fluid)";
 inline constexpr const char* kFluidSolid = "PSOLID FCTN = PFLUID";
 inline constexpr const char* kPlaneStrainShell = "PSHELL MID2 = -1 (plane strain)";
-inline constexpr const char* kPartSuperelement = "BEGIN SUPER";
+inline constexpr const char* kPartMassSection = "part superelement: BEGIN SUPER MASSID (a mass section, skipped)";
 inline constexpr const char* kMdlprmHdf5 = "MDLPRM HDF5 (output format)";
 
 /// The parser of a bulk-data card name (upper case), or nullptr if seflex does not support it.
@@ -156,6 +156,12 @@ void parse_eigr(const Card&, ReaderState&);
 void parse_param(const Card&, ReaderState&);
 void parse_dmig(const Card&, ReaderState&);
 void parse_mdlprm(const Card&, ReaderState&);
+// Part superelements: placing and connecting them (nastran_cards_parts.cpp)
+void parse_point(const Card&, ReaderState&);
+void parse_seloc(const Card&, ReaderState&);
+void parse_sebulk(const Card&, ReaderState&);
+void parse_seconct(const Card&, ReaderState&);
+void parse_selabel(const Card&, ReaderState&);
 
 /// A PARAM value as stored in fem::Param::values: text upper-cased; numbers rewritten in a form
 /// std::from_chars reads (Nastran's "2.59-3" becomes "0.00259"), reals always with '.' or an exponent.
