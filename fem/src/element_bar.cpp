@@ -44,9 +44,14 @@ constexpr double kGauss8X[8] = {-0.96028985649753618, -0.79666647741362673, -0.5
 constexpr double kGauss8W[8] = {0.10122853629037669, 0.22238103445337434, 0.31370664587788705, 0.36268378337836177,
                                 0.36268378337836177, 0.31370664587788705, 0.22238103445337434, 0.10122853629037669};
 
-/// A tapered bar's section (and NSI) at x in [0, 1]: linear between its stations.
-BarStation station_at(const BarElement& e, double x) {
-  const std::vector<BarStation>& t = e.taper;
+/// The stations of a bar: its taper, or its section at both ends (prismatic).
+std::vector<BarStation> stations_of(const BarElement& e) {
+  if (!e.taper.empty()) return e.taper;
+  return {{0.0, e.section, e.nsi}, {1.0, e.section, e.nsi}};
+}
+
+/// A bar's section (and NSI) at x in [0, 1]: linear between its stations t.
+BarStation station_at(const std::vector<BarStation>& t, double x) {
   std::size_t k = 1;
   while (k + 1 < t.size() && t[k].x < x) ++k;
   const BarStation &a = t[k - 1], &b = t[k];
@@ -65,26 +70,32 @@ BarStation station_at(const BarElement& e, double x) {
 /// relative error below 1e-14 for an area tapering 4 to 1, tests/solutions/tapered_beam_test.cpp).
 template <class F>
 void along_taper(const BarElement& e, double L, F f) {
-  for (std::size_t k = 1; k < e.taper.size(); ++k)
+  const std::vector<BarStation> t = stations_of(e);
+  for (std::size_t k = 1; k < t.size(); ++k)
     for (int part = 0; part < 4; ++part) {
-      const double x0 = e.taper[k - 1].x + part * 0.25 * (e.taper[k].x - e.taper[k - 1].x);
-      const double x1 = x0 + 0.25 * (e.taper[k].x - e.taper[k - 1].x);
+      const double x0 = t[k - 1].x + part * 0.25 * (t[k].x - t[k - 1].x);
+      const double x1 = x0 + 0.25 * (t[k].x - t[k - 1].x);
       if (!(x1 > x0)) continue;
       for (int i = 0; i < 8; ++i) {
         const double x = x0 + 0.5 * (x1 - x0) * (1.0 + kGauss8X[i]);
-        f(x * L, 0.5 * (x1 - x0) * L * kGauss8W[i], station_at(e, x));
+        f(x * L, 0.5 * (x1 - x0) * L * kGauss8W[i], station_at(t, x));
       }
     }
 }
 
-/// Stiffness of a tapered bar in element axes: the flexibility of end B (end A clamped) integrated
-/// along the bar, section resultants (N, Vy, Vz, T, My, Mz) = B(s) (Fx, Fy, Fz, Mx, My, Mz) at B.
+/// The neutral axis (n) or the non-structural mass (m) at x in [0, 1], element (y, z): linear between the ends.
+Eigen::Vector2d between_ends(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double x) { return (1.0 - x) * a + x * b; }
+
+/// Stiffness of a tapered bar, or of one whose neutral axis is offset, in element axes: the
+/// flexibility of end B (end A clamped) integrated along the bar, section resultants about the
+/// reference axis (N, Vy, Vz, T, My, Mz) = B(s) (Fx, Fy, Fz, Mx, My, Mz) at B, the section compliance
+/// Q^T S^-1 Q with Q the moments about the neutral axis (My - n2 N, Mz + n1 N).
 /// A block whose property is zero anywhere along the bar (A, J, I1/I2) carries no stiffness, as
 /// for the prismatic bar.
-Matrix12 tapered_stiffness(const BarElement& e, double L) {
+Matrix12 integrated_stiffness(const BarElement& e, double L) {
   const double E = e.material.E, G = e.material.G;
   bool axial = E > 0.0, torsion = G > 0.0, plane1 = E > 0.0, plane2 = E > 0.0, coupled = false;
-  for (const BarStation& t : e.taper) {
+  for (const BarStation& t : stations_of(e)) {
     axial = axial && t.section.A > 0.0;
     torsion = torsion && t.section.J > 0.0;
     plane1 = plane1 && t.section.I1 > 0.0;
@@ -122,6 +133,9 @@ Matrix12 tapered_stiffness(const BarElement& e, double L) {
     Eigen::Matrix<double, 6, 6> B = Eigen::Matrix<double, 6, 6>::Identity();
     B(4, 2) = -(L - s);  // My(s) = My - (L - s) Fz
     B(5, 1) = L - s;     // Mz(s) = Mz + (L - s) Fy
+    const Eigen::Vector2d n = between_ends(e.n_A, e.n_B, s / L);
+    B.row(4) -= n(1) * B.row(0);  // about the neutral axis: My - n2 N
+    B.row(5) += n(0) * B.row(0);  //                         Mz + n1 N
     C += ds * B.transpose() * S * B;
   });
   const auto n = static_cast<Eigen::Index>(comp.size());
@@ -153,10 +167,12 @@ Eigen::Matrix3d bar_axes(const BarElement& e) {
 
 double bar_length(const BarElement& e) { return ((e.x_B + e.w_B) - (e.x_A + e.w_A)).norm(); }
 
+bool bar_has_neutral_axis_offset(const BarElement& e) { return !e.n_A.isZero(0.0) || !e.n_B.isZero(0.0); }
+
 NodeMatrix<2> bar_stiffness_element_axes(const BarElement& e) {
   const double L = bar_length(e);
   SEFLEX_DEMAND(L > 0.0, "bar of zero length");
-  if (!e.taper.empty()) return tapered_stiffness(e, L);
+  if (!e.taper.empty() || bar_has_neutral_axis_offset(e)) return integrated_stiffness(e, L);
   const BarSection& s = e.section;
   const double E = e.material.E, G = e.material.G;
   Matrix12 K = Matrix12::Zero();
@@ -282,7 +298,10 @@ Eigen::Matrix<double, 12, 1> bar_thermal_load(const BarElement& e, double alpha,
   };
   const Eigen::Vector2d kA = curvature(t.tp1a, t.tp2a), kB = curvature(t.tp1b, t.tp2b);
   Eigen::Matrix<double, 12, 1> u = Eigen::Matrix<double, 12, 1>::Zero();  // end B clamped
-  u(kU) = -alpha * L * t.dT;
+  // The free strain of a fibre at (y, z) from the neutral axis is alpha (dT + k1 y + k2 z): the
+  // reference axis, at -n, strains alpha (dT - k . n), integrated along the bar (k and n linear).
+  const double kn = kA.dot(e.n_A) / 3.0 + (kA.dot(e.n_B) + kB.dot(e.n_A)) / 6.0 + kB.dot(e.n_B) / 3.0;
+  u(kU) = -alpha * L * (t.dT - kn);
   u(kV) = -alpha * L * L * (kA(0) / 6.0 + kB(0) / 3.0);
   u(kW) = -alpha * L * L * (kA(1) / 6.0 + kB(1) / 3.0);
   u(kRz) = alpha * L * 0.5 * (kA(0) + kB(0));
@@ -302,39 +321,66 @@ Eigen::Matrix<double, 12, 1> bar_thermal_load(const BarElement& e, double alpha,
 
 namespace {
 
-/// The mass of a tapered bar (element axes before offsets): lumped, each end the mass and polar
-/// inertia weighted by the linear function of its end ((1 - s/L) at A, s/L at B: the total and the
-/// first moment kept); coupled, the prismatic bar's shape functions (linear axial and torsion, cubic
-/// Hermite transverse) integrated with the varying mass per length.
-Matrix12 tapered_mass(const BarElement& e, double L, MassKind kind) {
+/// Rigid-body mass (6 x 6, element axes, about the reference axis) of a slice of mass m whose centre
+/// is at r = (0, y, z) and whose polar inertia about its own line (parallel to x) is j.
+/// The cross-product matrix of r = (0, y, z).
+Eigen::Matrix3d cross_matrix(const Eigen::Vector2d& yz) {
+  Eigen::Matrix3d X;
+  X << 0, -yz(1), yz(0), yz(1), 0, 0, -yz(0), 0, 0;
+  return X;
+}
+
+Eigen::Matrix<double, 6, 6> slice_mass(double m, const Eigen::Vector2d& yz, double j) {
+  const Eigen::Matrix3d X = cross_matrix(yz);
+  Eigen::Matrix<double, 6, 6> M;
+  M << m * Eigen::Matrix3d::Identity(), -m * X, m * X, -m * X * X;
+  M(3, 3) += j;
+  return M;
+}
+
+/// The mass of a tapered bar, or one with neutral-axis or non-structural-mass offsets (element axes
+/// before offsets; see element_bar.hpp): lumped, each end the rigid-body mass of the slices weighted by
+/// the linear function of its end ((1 - s/L) at A, s/L at B: the total and the first moment kept);
+/// coupled, the prismatic bar's shape functions (linear axial and torsion, cubic Hermite transverse)
+/// integrated with the varying mass per length, each line mass moving with u + theta x r.
+Matrix12 integrated_mass(const BarElement& e, double L, MassKind kind) {
   Matrix12 M = Matrix12::Zero();
   const double rho = e.material.rho;
   along_taper(e, L, [&](double s, double ds, const BarStation& st) {
-    const double m = (rho * st.section.A + st.section.nsm) * ds;
-    const double polar = (rho * (st.section.I1 + st.section.I2) + st.nsi) * ds;
     const double x = s / L, N[2] = {1 - x, x};
-    if (kind == MassKind::Lumped) {
-      for (int n = 0; n < 2; ++n) {
-        for (int c : {kU, kV, kW}) M(6 * n + c, 6 * n + c) += N[n] * m;
-        if (e.is_beam) M(6 * n + kRx, 6 * n + kRx) += N[n] * polar;
-      }
+    struct Line {
+      double m, j;
+      Eigen::Vector2d yz;
+    };
+    // the structure at the neutral axis (the centroid), the non-structural mass at M1/M2
+    const Line lines[2] = {{rho * st.section.A * ds, rho * (st.section.I1 + st.section.I2) * ds, between_ends(e.n_A, e.n_B, x)},
+                           {st.section.nsm * ds, st.nsi * ds, between_ends(e.m_A, e.m_B, x)}};
+    if (kind == MassKind::Lumped) {  // a CBAR's lumped mass has no polar inertia
+      for (const Line& l : lines)
+        for (int n = 0; n < 2; ++n) M.block<6, 6>(6 * n, 6 * n) += N[n] * slice_mass(l.m, l.yz, e.is_beam ? l.j : 0.0);
       return;
     }
     const double H[4] = {1 - 3 * x * x + 2 * x * x * x, L * (x - 2 * x * x + x * x * x), 3 * x * x - 2 * x * x * x,
                          L * (-x * x + x * x * x)};
+    const double dH[4] = {(-6 * x + 6 * x * x) / L, 1 - 4 * x + 3 * x * x, (6 * x - 6 * x * x) / L, -2 * x + 3 * x * x};
     const int p1[4] = {kV, kRz, 6 + kV, 6 + kRz};
     const int p2[4] = {kW, kRy, 6 + kW, 6 + kRy};
     const double sgn[4] = {1, -1, 1, -1};  // theta_y = -w'
-    for (int i = 0; i < 2; ++i)
-      for (int j = 0; j < 2; ++j) {
-        M(6 * i + kU, 6 * j + kU) += N[i] * N[j] * m;
-        M(6 * i + kRx, 6 * j + kRx) += N[i] * N[j] * polar;
-      }
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) {
-        M(p1[i], p1[j]) += H[i] * H[j] * m;
-        M(p2[i], p2[j]) += sgn[i] * sgn[j] * H[i] * H[j] * m;
-      }
+    Eigen::Matrix<double, 6, 12> phi = Eigen::Matrix<double, 6, 12>::Zero();  // (u v w theta) at s
+    for (int n = 0; n < 2; ++n) {
+      phi(kU, 6 * n + kU) = N[n];
+      phi(kRx, 6 * n + kRx) = N[n];
+    }
+    for (int i = 0; i < 4; ++i) {
+      phi(kV, p1[i]) = H[i];
+      phi(kRz, p1[i]) = dH[i];  // theta_z = v'
+      phi(kW, p2[i]) = sgn[i] * H[i];
+      phi(kRy, p2[i]) = -sgn[i] * dH[i];  // theta_y = -w'
+    }
+    for (const Line& l : lines) {
+      const Eigen::Matrix<double, 3, 12> P = phi.topRows<3>() - cross_matrix(l.yz) * phi.bottomRows<3>();  // u + theta x r
+      M += l.m * P.transpose() * P + l.j * phi.row(kRx).transpose() * phi.row(kRx);
+    }
   });
   return M;
 }
@@ -343,8 +389,8 @@ Matrix12 tapered_mass(const BarElement& e, double L, MassKind kind) {
 
 NodeMatrix<2> bar_mass(const BarElement& e, MassKind kind) {
   const double L = bar_length(e);
-  if (!e.taper.empty()) {
-    Matrix12 M = tapered_mass(e, L, kind);
+  if (!e.taper.empty() || bar_has_neutral_axis_offset(e) || !e.m_A.isZero(0.0) || !e.m_B.isZero(0.0)) {
+    Matrix12 M = integrated_mass(e, L, kind);
     to_grids(e, bar_axes(e), M);
     return M;
   }
@@ -407,6 +453,12 @@ BarElement make_bar_element(const Model& model, const Bar& bar) {
   e.material = detail::material(model, p.mid, p.ref, pcard, p.id, "3 (MID)");
   e.is_beam = bar.is_beam;
   e.nsi = bar.is_beam ? p.nsi : 0.0;
+  if (bar.is_beam) {
+    e.n_A = {p.n_A[0], p.n_A[1]};
+    e.n_B = {p.n_B[0], p.n_B[1]};
+    e.m_A = {p.m_A[0], p.m_A[1]};
+    e.m_B = {p.m_B[0], p.m_B[1]};
+  }
   for (std::size_t k = 0; k < p.stations.size(); ++k) {  // tapered PBEAM / PBEAML
     const BarProperty::Station& s = p.stations[k];
     if (p.source != BarProperty::Source::PBEAML || k == 0) {

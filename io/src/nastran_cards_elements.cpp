@@ -82,7 +82,7 @@ void parse_bar_like(const Card& card, ReaderState& st, bool beam) {
   b.wa = {card.real_or(10, "W1A", 0.0), card.real_or(11, "W2A", 0.0), card.real_or(12, "W3A", 0.0)};
   b.wb = {card.real_or(13, "W1B", 0.0), card.real_or(14, "W2B", 0.0), card.real_or(15, "W3B", 0.0)};
   if (beam && (card.integer_or(16, "SA", 0) != 0 || card.integer_or(17, "SB", 0) != 0))
-    st.note_unsupported("CBEAM SA/SB (warping scalar points ignored)", card.ref());
+    st.note_unsupported("CBEAM SA/SB (warping scalar points and PBEAM CW ignored)", card.ref());
   b.ref = card.ref();
   st.model.bars.push_back(b);
 }

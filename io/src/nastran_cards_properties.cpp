@@ -146,7 +146,7 @@ void parse_pbarl(const Card& card, ReaderState& st) {
 //   C1 .. F2]... / K1 K2 S1 S2 NSI(A) NSI(B) CW(A) CW(B) / M1(A) M2(A) M1(B) M2(B) N1(A) N2(A) N1(B) N2(B)
 // A taper (stations or end B differing from end A, NSI(B) differing from NSI(A)) keeps every station
 // (BarProperty::stations); NSI, the non-structural mass moment of inertia per length, goes into the
-// beam's polar inertia.
+// beam's polar inertia; M1/M2 (NSM centre of gravity) and N1/N2 (neutral axis) are kept for the CBEAM.
 void parse_pbeam(const Card& card, ReaderState& st) {
   fem::BarProperty p;
   p.source = fem::BarProperty::Source::PBEAM;
@@ -197,17 +197,26 @@ void parse_pbeam(const Card& card, ReaderState& st) {
     const double nsi_b = card.real_or(b + 5, "NSI(B)", p.nsi);
     if (std::abs(nsi_b - p.nsi) > 1e-9 * std::max(std::abs(p.nsi), std::abs(nsi_b))) tapered = true;
     for (auto& s : stations) s.nsi = p.nsi + s.x * (nsi_b - p.nsi);
-    for (std::size_t k : {2, 3, 6, 7})
-      if (!card.blank(b + k) && card.real(b + k, "S1/S2/CW") != 0.0)
-        st.note_unsupported("PBEAM S1/S2/CW (shear relief and warping ignored)", card.ref());
+    // S1/S2, the shear relief of a tapered beam's flanges (QRG: "shear relief coefficient due to
+    // taper"), are not modelled. CW(A)/CW(B), the warping coefficient, acts only through the warping
+    // degrees of freedom SA/SB of a CBEAM (MSC Nastran QRG, CBEAM remarks 5 and 6: without them
+    // "torsional stiffness due to warping of the cross section will not be considered"; MSC Nastran
+    // 2014.1 runs pyNastran's cantilever_2014.1.bdf, CW = 10.9761 and no SA/SB, with warping torque 0
+    // and the twist TL/GJ), so it is read and has no effect; a CBEAM with SA/SB is listed by its reader.
+    if (card.real_or(b + 2, "S1", 0.0) != 0.0 || card.real_or(b + 3, "S2", 0.0) != 0.0)
+      st.note_unsupported("PBEAM S1/S2 (shear relief of a tapered beam ignored)", card.ref());
+    const double cw_a = card.real_or(b + 6, "CW(A)", 0.0);
+    card.real_or(b + 7, "CW(B)", cw_a);
     ++line;
   } else {
     p.K1 = p.K2 = 1.0;  // QRG PBEAM: K1, K2 default to 1.0
   }
-  if (line < nlines) {  // M1(A) .. N2(B): offsets of the NSM CG and the neutral axis
-    for (std::size_t k = 0; k < 8; ++k)
-      if (!card.blank(8 * line + k) && card.real(8 * line + k, "M/N") != 0.0)
-        st.note_unsupported("PBEAM M/N (NSM and neutral-axis offsets ignored)", card.ref());
+  if (line < nlines) {  // M1(A) M2(A) M1(B) M2(B) N1(A) N2(A) N1(B) N2(B); end B defaults to end A (QRG)
+    const std::size_t b = 8 * line;
+    p.m_A = {card.real_or(b, "M1(A)", 0.0), card.real_or(b + 1, "M2(A)", 0.0)};
+    p.m_B = {card.real_or(b + 2, "M1(B)", p.m_A[0]), card.real_or(b + 3, "M2(B)", p.m_A[1])};
+    p.n_A = {card.real_or(b + 4, "N1(A)", 0.0), card.real_or(b + 5, "N2(A)", 0.0)};
+    p.n_B = {card.real_or(b + 6, "N1(B)", p.n_A[0]), card.real_or(b + 7, "N2(B)", p.n_A[1])};
     ++line;
   }
   if (line < nlines)

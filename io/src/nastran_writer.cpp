@@ -165,6 +165,10 @@ void write_bar_property(CardWriter& w, const fem::BarProperty& p) {
         w.t("NO").r(s.x).r(s.A).r(s.I1).r(s.I2).r(s.I12).r(s.J).r(s.nsm);
       }
       w.r(p.K1).r(p.K2).blank(2).r(p.nsi).r(p.stations.empty() ? p.nsi : p.stations.back().nsi);
+      if (p.m_A != p.m_B || p.n_A != p.n_B || p.m_A != std::array<double, 2>{} || p.n_A != std::array<double, 2>{}) {
+        w.blank(2);  // CW(A), CW(B): no effect without a CBEAM's SA/SB (see parse_pbeam)
+        for (const auto& yz : {p.m_A, p.m_B, p.n_A, p.n_B}) w.r(yz[0]).r(yz[1]);
+      }
       break;
     case Source::PBARL:
     case Source::PBEAML:

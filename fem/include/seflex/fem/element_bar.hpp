@@ -13,6 +13,13 @@
 //
 // Element axes (Nastran): x from offset end A to offset end B; y in the plane of x and the
 // orientation vector v; z = x X y. Offsets WA/WB are rigid links from the grid to the bar end.
+//
+// Neutral-axis offset (PBEAM N1/N2, MSC's CBEAM): the reference axis joining the offset ends is the
+// shear centre, where torsion and transverse shear act; axial force and bending act at the neutral
+// axis n(s) = (n1, n2) in element y, z. With the section resultants (N, Vy, Vz, T, My, Mz) taken about
+// the reference axis, the moments about the neutral axis are My - n2 N and Mz + n1 N, so the section
+// compliance about the reference axis is Q^T S^-1 Q (Q that map) and the flexibility is integrated
+// along the bar as for a taper; an axial force at the reference axis bends the beam with P n / (E I).
 // Pin flags release element-axis dofs at an end by static condensation (their rows/columns of the
 // end stiffness become zero); mass is not affected by pin flags.
 //
@@ -24,6 +31,13 @@
 // inertia of bending) and torsional inertia (rho (I1 + I2) + NSI) L/6 [2 1; 1 2] so that the rigid
 // spin about the bar axis has the section's exact polar inertia. With offsets the end masses sit
 // at the bar ends and reach the grids through the rigid links.
+// A CBEAM whose neutral axis (N1/N2) or non-structural mass (M1/M2) is off the reference axis carries
+// two line masses: rho A with polar inertia rho (I1 + I2) at the neutral axis (the centroid of a
+// homogeneous section) and NSM with NSI at (M1, M2), each a rigid part of the section: lumped, the
+// rigid-body mass (6 x 6) of each Gauss point's slice shared between the ends by the linear functions
+// (total mass, centre of gravity in y, z and inertia about the axis kept); coupled, the velocity of the
+// offset line u + theta x r with the shape functions above (theta_y = -w', theta_z = v' from the
+// Hermite functions), integrated along the bar.
 #include <Eigen/Core>
 #include <vector>
 
@@ -53,7 +67,15 @@ struct BarElement {
   /// Tapered CBEAM (PBEAM/PBEAML stations): sections at x = 0 .. 1 along the bar, linear between
   /// them; `section` and `nsi` are end A's. Empty: prismatic.
   std::vector<BarStation> taper;
+  /// PBEAM N1/N2: the neutral axis (element y, z) from the reference axis, which is the shear centre
+  /// (the line between the offset ends), at end A and end B, linear between; M1/M2 likewise the
+  /// centre of gravity of the non-structural mass.
+  Eigen::Vector2d n_A = Eigen::Vector2d::Zero(), n_B = Eigen::Vector2d::Zero();
+  Eigen::Vector2d m_A = Eigen::Vector2d::Zero(), m_B = Eigen::Vector2d::Zero();
 };
+
+/// True when the neutral axis of `e` is off its reference axis (N1/N2 not all 0).
+bool bar_has_neutral_axis_offset(const BarElement& e);
 
 /// Element axes as columns in basic (R_BE: x, y, z) and the length between the offset ends.
 /// Precondition: non-zero length and v not parallel to the axis (SEFLEX_DEMAND).

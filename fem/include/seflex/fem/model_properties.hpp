@@ -73,6 +73,10 @@ struct BarProperty {
   double A = 0, I1 = 0, I2 = 0, I12 = 0, J = 0, nsm = 0;
   double nsi = 0;                   ///< PBEAM NSI(A): non-structural mass moment of inertia per length
   double K1 = 0, K2 = 0;            ///< shear factors; 0 (blank) = no transverse shear flexibility
+  /// PBEAM M1/M2 and N1/N2 (element y, z from the shear centre, the beam's reference axis): the centre
+  /// of gravity of the non-structural mass and the neutral axis at end A and end B (QRG defaults: 0 at
+  /// end A, end B as end A); linear between the ends.
+  std::array<double, 2> m_A{}, m_B{}, n_A{}, n_B{};
   std::string section_type;         ///< PBARL/PBEAML TYPE (ROD, TUBE, BAR, BOX, I, ...)
   std::vector<double> dims;         ///< PBARL/PBEAML DIMi
   /// PBEAM/PBEAML taper: the sections at the stations x = X/XB (0 end A, 1 end B), end A first and
