@@ -19,8 +19,6 @@ usage: /usr/bin/python3 bench/demo_speed_accuracy.py [--repeat R] [--grid [METHO
                                                      [--reference [METHOD@]TOL] [--quick] SEFLEX [SEFLEX ...]
   --grid   default 1e-5:2.5e-3,1e-4:2.5e-3,1e-5:5e-3,1e-4:5e-3,1e-3:5e-3 (the scene's own point first);
            METHOD: the integrator (`seflex run --method`: generalized-alpha, the scene's, or radau5);
-           radau5/coupled or radau5/simplified also sets the scene's integrator.radau.newton (such
-           points run on the last SEFLEX only: older builds may not know the key);
            MODES: keep the first MODES fixed-interface modes of every body (default: all 10)
   --reference  the reference run (default generalized-alpha@1e-7; its largest step that of the first grid
            point); a second one, e.g. radau5@1e-8, is compared with it and the difference printed, so
@@ -49,16 +47,6 @@ def run(binary, scene, folder, method=None):
     with open(os.path.join(folder, "summary.json")) as f:
         s = json.load(f)
     return s, (ru1.ru_utime + ru1.ru_stime) - (ru0.ru_utime + ru0.ru_stime)
-
-
-def method_of(spec):
-    """`seflex run --method` of a grid point's METHOD[/NEWTON]."""
-    return spec.partition("/")[0] if spec else None
-
-
-def newton_of(spec):
-    """integrator.radau.newton of a grid point's METHOD[/NEWTON] (None: the scene's)."""
-    return (spec.partition("/")[2] or None) if spec else None
 
 
 def main():
@@ -101,8 +89,8 @@ def main():
         if a.quick:
             base = runs.edit_scene(base, t_end=0.5)
 
-        def scene(tol, max_step, name, modes=None, method=None):
-            text = runs.edit_scene(base, tol=tol, max_step=max_step, radau_newton=newton_of(method))
+        def scene(tol, max_step, name, modes=None):
+            text = runs.edit_scene(base, tol=tol, max_step=max_step)
             if modes is not None:
                 text, k = re.subn(r"(\n    inertia: full\n)", rf"\1    internal_modes: {modes}\n", text)
                 if k != 3:
@@ -116,24 +104,24 @@ def main():
             refs = [(None, 1e-6 if a.quick else 1e-7)]
         ref_method, ref_tol = refs[0]
         ref_folder = os.path.join(work, "reference")
-        ref_summary, _ = run(bins[-1], scene(ref_tol, grid[0][1], "reference", None, ref_method), ref_folder, method_of(ref_method))
+        ref_summary, _ = run(bins[-1], scene(ref_tol, grid[0][1], "reference"), ref_folder, ref_method)
         print(f"reference: {bins[-1]}, {ref_method or 'the scene method'}, local error {ref_tol:g}, max_step {grid[0][1]:g}: "
               f"{ref_summary['steps']} steps", flush=True)
         for k, (m2, t2) in enumerate(refs[1:]):
             f2 = os.path.join(work, f"reference-{k + 2}")
-            s2, _ = run(bins[-1], scene(t2, grid[0][1], f"reference-{k + 2}", None, m2), f2, method_of(m2))
+            s2, _ = run(bins[-1], scene(t2, grid[0][1], f"reference-{k + 2}"), f2, m2)
             e2 = measures.errors_hinges(f2, s2, ref_folder, ref_summary)
             print(f"second reference: {m2 or 'the scene method'}, local error {t2:g}: {s2['steps']} steps; against the reference: "
                   f"lock time {e2.get('lock_time_err_s', float('nan')):.2g} s, peak torque {e2.get('lock_torque_rel_err', float('nan')):.2%}, "
                   f"angle to last lock {e2.get('angle_err_deg', float('nan')):.3g} deg, whole run {e2['angle_run_deg']:.3g} deg", flush=True)
 
-        configs = [(b, *p) for b in bins for p in grid if b == bins[-1] or not newton_of(p[3])]
+        configs = [(b, *p) for b in bins for p in grid]
         cpu = {c: [] for c in configs}
         last = {}
         for _ in range(a.repeat):
             for k, c in enumerate(configs):
                 folder = os.path.join(work, f"run-{k}")
-                s, t = run(c[0], scene(c[1], c[2], f"scene-{k}", c[3], c[4]), folder, method_of(c[4]))
+                s, t = run(c[0], scene(c[1], c[2], f"scene-{k}", c[3]), folder, c[4])
                 cpu[c].append(t)
                 last[c] = (folder, s)
 
@@ -143,7 +131,7 @@ def main():
             folder, s = last[c]
             e = measures.errors_hinges(folder, s, ref_folder, ref_summary)
             t = sorted(cpu[c])
-            rows.append(dict(bin=b, method=s.get("method", method or "?") + ("/" + newton_of(method) if newton_of(method) else ""), tol=tol, max_step=ms, modes=modes, dofs=s["dofs"], steps=s["steps"], rejected=s["rejected_steps"],
+            rows.append(dict(bin=b, method=s.get("method", method or "?"), tol=tol, max_step=ms, modes=modes, dofs=s["dofs"], steps=s["steps"], rejected=s["rejected_steps"],
                              newton=s["newton_iterations"], simulated=s["final_t"], best=t[0], median=t[len(t) // 2], **e))
         def g(x, spec):
             return "-" if x is None or (isinstance(x, float) and not np.isfinite(x)) else format(x, spec)

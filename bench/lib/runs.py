@@ -25,7 +25,7 @@ def read_history(path):
     return {n: data[:, i] for i, n in enumerate(names)}
 
 
-def edit_scene(text, tol=None, method=None, step=None, stop=None, t_end=None, max_step=None, radau_newton=None):
+def edit_scene(text, tol=None, method=None, step=None, stop=None, t_end=None, max_step=None):
     if tol is not None:
         text = re.sub(r"tolerance: \{position: [^,]+, angle: [^}]+\}", f"tolerance: {{position: {tol:g}, angle: {tol:g}}}", text)
     if stop is not None:
@@ -34,12 +34,6 @@ def edit_scene(text, tol=None, method=None, step=None, stop=None, t_end=None, ma
         text = re.sub(r"method: generalized-alpha\n", "", text)
         text = re.sub(r"integrator: \{", "integrator: {method: rk4, ", text) if "integrator: {" in text else text.replace("integrator:\n", "integrator:\n  method: rk4\n")
         text = re.sub(r"step: [0-9.eE+-]+", f"step: {step:g}", text, count=1)
-    if radau_newton is not None:  # integrator.radau.newton (simplified or coupled)
-        text, k = re.subn(r"(\n  tolerance: \{position: [^}]+\}\n)", rf"\1  radau: {{newton: {radau_newton}}}\n", text, count=1)
-        if not k:
-            text, k = re.subn(r"integrator: \{", f"integrator: {{radau: {{newton: {radau_newton}}}, ", text, count=1)
-        if not k:
-            raise SystemExit("edit_scene: the scene has no integrator section to give radau.newton")
     if t_end is not None:
         text = re.sub(r"t_end: [0-9.eE+-]+", f"t_end: {t_end:g}", text, count=1)
     if max_step is not None:

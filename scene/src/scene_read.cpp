@@ -316,12 +316,7 @@ struct Reader {
     }
     if (f.has("radau")) {  // method radau5's simplified Newton (mbd::IntegratorSettings::Radau)
       const YamlField r = f["radau"];
-      r.check_keys({"max_iterations", "newton_fraction", "jacobian_theta", "newton"});
-      if (r.has("newton")) {
-        const std::string nw = r["newton"].text();
-        if (nw != "simplified" && nw != "coupled") r["newton"].fail("expected simplified or coupled, got '" + nw + "'");
-        s.radau.newton = nw == "coupled" ? mbd::IntegratorSettings::Radau::Newton::coupled : mbd::IntegratorSettings::Radau::Newton::simplified;
-      }
+      r.check_keys({"max_iterations", "newton_fraction", "jacobian_theta"});
       if (r.has("max_iterations")) {
         s.radau.newton_max_iterations = r["max_iterations"].integer();
         if (s.radau.newton_max_iterations < 2) r["max_iterations"].fail("expected a number >= 2");

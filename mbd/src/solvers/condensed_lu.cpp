@@ -23,17 +23,17 @@ bool regular(const Eigen::PartialPivLU<Matrix>& lu, double scale2) {
 }  // namespace
 
 template <class Scalar>
-void CondensedLuT<Scalar>::setup(const Model& model, const Sparse& S, int copies) {
+void CondensedLuT<Scalar>::setup(const Model& model, const Sparse& S) {
   const int n = static_cast<int>(S.rows());
   pos_.assign(static_cast<std::size_t>(n), 0);
   blocks_.clear();
   for (const auto& b : model.flexible_bodies) {
-    const int m = copies * model.superelement(b.se).m;
+    const int m = model.superelement(b.se).m;
     if (m <= 0 || b.eta_dof < 0) continue;
     Block blk;
-    blk.first = copies * b.eta_dof;
+    blk.first = b.eta_dof;
     blk.m = m;
-    for (int k = 0; k < m; ++k) pos_[static_cast<std::size_t>(blk.first + k)] = -1 - static_cast<int>(blocks_.size());
+    for (int k = 0; k < m; ++k) pos_[static_cast<std::size_t>(b.eta_dof + k)] = -1 - static_cast<int>(blocks_.size());
     blocks_.push_back(std::move(blk));
   }
   kept_.clear();
@@ -105,8 +105,8 @@ void CondensedLuT<Scalar>::setup(const Model& model, const Sparse& S, int copies
 }
 
 template <class Scalar>
-bool CondensedLuT<Scalar>::factorize(const Model& model, const Sparse& S, int copies) {
-  if (!ready_ || static_cast<Eigen::Index>(pos_.size()) != S.rows()) setup(model, S, copies);
+bool CondensedLuT<Scalar>::factorize(const Model& model, const Sparse& S) {
+  if (!ready_ || static_cast<Eigen::Index>(pos_.size()) != S.rows()) setup(model, S);
   SEFLEX_DEMAND(static_cast<std::size_t>(S.nonZeros()) == dest_.size(), "the iteration matrix keeps its pattern");
   Srr_.setZero();
   for (Block& blk : blocks_) {

@@ -12,9 +12,7 @@
 // is pivoted within its block. Where the pattern is not an arrowhead (e.g. a force element on a
 // modal dof) the whole matrix is factorised densely. No allocation after the first factorisation.
 // Real (the generalized-alpha and Radau IIA real systems) or complex (Radau IIA's complex system,
-// radau5.cpp): CondensedLuT<double>, CondensedLuT<std::complex<double>>. Radau IIA's coupled stage
-// system (3n x 3n, every dof d's three stage copies at 3d, 3d + 1, 3d + 2: `copies` = 3) condenses
-// the same way, each body's modes of all stages as one block.
+// radau5.cpp): CondensedLuT<double>, CondensedLuT<std::complex<double>>.
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <complex>
@@ -32,16 +30,14 @@ class CondensedLuT {
   using Sparse = Eigen::SparseMatrix<Scalar>;
 
   /// Whether S (its pattern; analysed at the first call) condenses to at most `max_dense` retained
-  /// dofs: above that the caller's sparse LU is the better choice. S's rows and columns are the
-  /// model's dofs, each repeated `copies` times in a row (dof d at copies d .. copies d + copies - 1).
-  bool applicable(const Model& model, const Sparse& S, int max_dense, int copies = 1) {
-    if (!ready_ || static_cast<Eigen::Index>(pos_.size()) != S.rows()) setup(model, S, copies);
+  /// dofs: above that the caller's sparse LU is the better choice.
+  bool applicable(const Model& model, const Sparse& S, int max_dense) {
+    if (!ready_ || static_cast<Eigen::Index>(pos_.size()) != S.rows()) setup(model, S);
     return dense_size() <= max_dense;
   }
-  /// Factorise S (on the model's dof numbering, `copies` as applicable(); pattern fixed after the
-  /// first call). False when S is singular (a zero or non-finite pivot relative to the largest
-  /// entry, as Data::factorize).
-  bool factorize(const Model& model, const Sparse& S, int copies = 1);
+  /// Factorise S (on the model's dof numbering; pattern fixed after the first call). False when S
+  /// is singular (a zero or non-finite pivot relative to the largest entry, as Data::factorize).
+  bool factorize(const Model& model, const Sparse& S);
   /// x = -S^-1 r with the last factorisation.
   void solve_negated(const Vector& r, Vector& x);
   /// Size of the dense factorisation (retained dofs, or all of them without condensation).
@@ -55,7 +51,7 @@ class CondensedLuT {
     Eigen::PartialPivLU<Matrix> lu;
     Vector y;               ///< See^-1 r_e of a solve
   };
-  void setup(const Model& model, const Sparse& S, int copies);
+  void setup(const Model& model, const Sparse& S);
 
   bool ready_ = false;
   std::vector<int> pos_;    ///< per dof: position among the retained dofs, or -1 - block index

@@ -47,17 +47,16 @@ constexpr double kThetaTarget = 0.05;
 // against 2.1e-5 s, 0.018 %, 0.0081 and 0.017 deg for 18 % more.
 constexpr double kNewtonShare = 0.1;
 
-/// One of the two transformed Newton systems (or the coupled 3n x 3n one: `copies` = 3, as
-/// condensed_lu.hpp): the modal dofs condensed while the retained dofs fit a dense LU
-/// (condensed_lu.hpp), else a sparse LU.
+/// One of the two transformed Newton systems: the modal dofs condensed while the retained dofs fit
+/// a dense LU (condensed_lu.hpp), else a sparse LU.
 template <class Scalar>
 class StageSystem {
  public:
   using Vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
   using Sparse = Eigen::SparseMatrix<Scalar>;
-  bool factorize(const Model& model, const Sparse& S, int copies = 1) {
-    condensed_ = condensed_lu_.applicable(model, S, copies * Data::kDenseDofs, copies);
-    if (condensed_) return condensed_lu_.factorize(model, S, copies);
+  bool factorize(const Model& model, const Sparse& S) {
+    condensed_ = condensed_lu_.applicable(model, S, Data::kDenseDofs);
+    if (condensed_) return condensed_lu_.factorize(model, S);
     if (!analyzed_) {
       sparse_lu_.analyzePattern(S);
       analyzed_ = true;
@@ -86,8 +85,7 @@ class RadauStepper final : public detail::Stepper {
  public:
   RadauStepper(const Model& model, State& state, Data& data, const IntegratorSettings& st)
       : model_(model), state_(state), data_(data), st_(st), rk_(detail::radau_iia5()), w_(detail::error_weights(model, st)),
-        n_(model.num_dofs), nit_(st.radau.newton_max_iterations),
-        coupled_(st.radau.newton == IntegratorSettings::Radau::Newton::coupled) {
+        n_(model.num_dofs), nit_(st.radau.newton_max_iterations) {
     for (const Hinge& h : model.hinges) has_drives_ = has_drives_ || static_cast<bool>(h.drive);
     const double tol = std::min(st.tol_position, st.tol_angle);
     fnewt_ = st.radau.newton_fraction > 0.0 ? st.radau.newton_fraction
@@ -97,9 +95,7 @@ class RadauStepper final : public detail::Stepper {
     // rotation slope 4.81 -> 4.59).
     faccon_floor_ = fnewt_ > 10.0 * kRoundoff / tol ? kThetaTarget / (1.0 - kThetaTarget) : 0.0;
     for (MatrixXd* m : {&U_, &Up_, &V_, &A_, &R_, &F_, &Rt_, &U_acc_, &V_acc_, &A_acc_}) m->setZero(n_, 3);
-    for (auto& r : R_J_) r = state.R_WN;
-    rb_.setZero(3 * n_);
-    xb_.setZero(3 * n_);
+    R_J_ = state.R_WN;
     for (const Node& nd : model.nodes) has_free_ = has_free_ || nd.kind == NodeKind::Free;
     for (VectorXd* v : {&r1_, &dw1_, &u_, &cu_, &cv_, &rhs_, &eu_, &ev_, &tmp_}) v->setZero(n_);
     rc_.setZero(n_);
@@ -134,11 +130,7 @@ class RadauStepper final : public detail::Stepper {
   long evaluations() const { return evaluations_; }
 
  private:
-  /// K, C, M at the stages' present configuration: the second stage's (simplified Newton) or each
-  /// stage's (coupled).
-  void evaluate_jacobian();
-  /// The coupled stage system's matrix Sb_ from the three stages' K, C, M.
-  void form_coupled(double h);
+  void evaluate_jacobian(const State& at);
   /// Simplified Newton on the stages of a step of size h; `transported`: on each stage's residuals
   /// and increments with the Free nodes' blocks turned to the Jacobian's axes (transport).
   detail::StepResult newton(double h, bool transported);
@@ -174,7 +166,6 @@ class RadauStepper final : public detail::Stepper {
   VectorXd w_;  // per dof: weight / tolerance
   const int n_;
   const int nit_;
-  const bool coupled_;  // Newton on the coupled stage system (per-stage Jacobians)
   double fnewt_ = 0.03;
   double faccon_floor_ = 0.0;  // Newton's stop: the smallest theta / (1 - theta) it assumes
   bool has_drives_ = false;
@@ -183,14 +174,11 @@ class RadauStepper final : public detail::Stepper {
   bool transported_ = false; // the transport rescued a step: every later step uses it
   AssemblyOptions opt_residual_;
 
-  // Jacobians and the factorised systems. Index 1 (the second stage) is the simplified Newton's
-  // Jacobian and the error estimate's (real_); the coupled system uses all three.
-  Eigen::SparseMatrix<double> K_[3], C_[3], M_[3], S_, Sb_;
+  // Jacobian and the two factorised systems.
+  Eigen::SparseMatrix<double> K_, C_, M_, S_;
   Eigen::SparseMatrix<Complex> Sc_;
   mutable StageSystem<double> real_;
   StageSystem<Complex> complex_;
-  StageSystem<double> coupled_lu_;
-  VectorXd rb_, xb_;  // 3n: the coupled system's residual and increment (dof-major: 3 d + stage)
   double h_factored_ = 0.0;     // step of the factorisations (0: none valid)
   bool need_jacobian_ = true;   // evaluate K, C, M at the next attempt's start
   bool caljac_ = false;         // the Jacobian was evaluated for the current step
@@ -198,7 +186,7 @@ class RadauStepper final : public detail::Stepper {
   // Newton and controller state.
   MatrixXd U_, Up_, V_, A_, R_, F_;  // n x 3: stage increments, their rates, velocities, accelerations, residuals
   MatrixXd Rt_;                      // n x 3: the residuals with each Free node's rows turned back (transport)
-  std::vector<Eigen::Matrix3d> R_J_[3]; // per stage and node: its rotation at the Jacobian's configuration
+  std::vector<Eigen::Matrix3d> R_J_; // per node: its rotation at the Jacobian's configuration
   VectorXd r1_, dw1_, u_;
   VectorXcd rc_, dwc_;
   State stage_[3];
@@ -223,83 +211,37 @@ class RadauStepper final : public detail::Stepper {
   long jacobians_ = 0;
 };
 
-void RadauStepper::evaluate_jacobian() {
+void RadauStepper::evaluate_jacobian(const State& at) {
   AssemblyOptions opt;
   opt.inertia_velocity_tangent = st_.inertia_velocity_tangent;
-  for (int i = coupled_ ? 0 : 1; i < (coupled_ ? 3 : 2); ++i) {
-    assemble(model_, stage_[i], data_, opt);
-    ++jacobians_;
-    combine_matrices(model_, data_, 1.0, 0.0, 0.0, nullptr, K_[i]);
-    combine_matrices(model_, data_, 0.0, 1.0, 0.0, nullptr, C_[i]);
-    combine_matrices(model_, data_, 0.0, 0.0, 1.0, nullptr, M_[i]);
-    R_J_[i] = stage_[i].R_WN;
-  }
+  assemble(model_, at, data_, opt);
+  ++jacobians_;
+  combine_matrices(model_, data_, 1.0, 0.0, 0.0, nullptr, K_);
+  combine_matrices(model_, data_, 0.0, 1.0, 0.0, nullptr, C_);
+  combine_matrices(model_, data_, 0.0, 0.0, 1.0, nullptr, M_);
+  R_J_ = at.R_WN;
   need_jacobian_ = false;
   caljac_ = true;
   h_factored_ = 0.0;
 }
 
 bool RadauStepper::factorize(double h) {
-  const Eigen::SparseMatrix<double>& K = K_[1];
-  if (S_.nonZeros() != K.nonZeros()) {
-    S_ = K;
-    Sc_ = K.cast<Complex>();
+  if (S_.nonZeros() != K_.nonZeros()) {
+    S_ = K_;
+    Sc_ = K_.cast<Complex>();
   }
   const double g = rk_.gamma / h;
   const Complex mu(rk_.alpha / h, rk_.beta / h), mu2 = mu * mu;
-  const double *k = K.valuePtr(), *c = C_[1].valuePtr(), *m = M_[1].valuePtr();
+  const double *k = K_.valuePtr(), *c = C_.valuePtr(), *m = M_.valuePtr();
   double* s = S_.valuePtr();
   Complex* sc = Sc_.valuePtr();
-  for (Eigen::Index i = 0; i < K.nonZeros(); ++i) s[i] = k[i] + g * c[i] + g * g * m[i];
-  // The real system serves the error estimate in both modes; the complex one simplified Newton only.
-  if (!real_.factorize(model_, S_)) return false;
-  if (coupled_) {
-    form_coupled(h);
-    if (!coupled_lu_.factorize(model_, Sb_, 3)) return false;
-  } else {
-    for (Eigen::Index i = 0; i < K.nonZeros(); ++i) sc[i] = k[i] + mu * c[i] + mu2 * m[i];
-    if (!complex_.factorize(model_, Sc_)) return false;
+  for (Eigen::Index i = 0; i < K_.nonZeros(); ++i) {
+    s[i] = k[i] + g * c[i] + g * g * m[i];
+    sc[i] = k[i] + mu * c[i] + mu2 * m[i];
   }
+  if (!real_.factorize(model_, S_) || !complex_.factorize(model_, Sc_)) return false;
   h_factored_ = h;
   return true;
-}
-
-void RadauStepper::form_coupled(double h) {
-  // The stage residuals r_i depend on U_j through V_i = (1/h) sum_j (A^-1)_ij U_j (J_l(U_i) ~ I, as
-  // simplified Newton) and A_i = (1/h) sum_j (A^-1)_ij V_j: block (i, j) = delta_ij K_i + a1_ij C_i +
-  // a2_ij M_i with a1 = A^-1 / h, a2 = a1^2. K_i, C_i, M_i share one pattern (combine_matrices); the
-  // coupled matrix has every entry of it as a dense 3 x 3 block, rows and columns dof-major (3 d + i).
-  const Eigen::SparseMatrix<double>& P = K_[1];
-  const Eigen::Index nnz = P.nonZeros();
-  for (int i = 0; i < 3; ++i)
-    SEFLEX_DEMAND(K_[i].nonZeros() == nnz && C_[i].nonZeros() == nnz && M_[i].nonZeros() == nnz, "the stages' Jacobians share one pattern");
-  if (Sb_.nonZeros() != 9 * nnz) {  // the pattern, once
-    std::vector<Eigen::Triplet<double>> t;
-    t.reserve(static_cast<std::size_t>(9 * nnz));
-    for (int c = 0; c < P.outerSize(); ++c)
-      for (Eigen::SparseMatrix<double>::InnerIterator it(P, c); it; ++it)
-        for (int j = 0; j < 3; ++j)
-          for (int i = 0; i < 3; ++i) t.emplace_back(3 * static_cast<int>(it.row()) + i, 3 * c + j, 0.0);
-    Sb_.resize(3 * n_, 3 * n_);
-    Sb_.setFromTriplets(t.begin(), t.end());
-    Sb_.makeCompressed();
-    SEFLEX_DEMAND(Sb_.nonZeros() == 9 * nnz, "the coupled stage matrix has 3 x 3 blocks on the Jacobian's pattern");
-  }
-  const Eigen::Matrix3d a1 = rk_.Ainv / h, a2 = a1 * a1;
-  const auto* outer = P.outerIndexPtr();
-  const auto* outer_b = Sb_.outerIndexPtr();
-  double* sb = Sb_.valuePtr();
-  for (int c = 0; c < P.outerSize(); ++c) {
-    const auto first = outer[c], count = outer[c + 1] - first;
-    for (int j = 0; j < 3; ++j) {
-      double* col = sb + outer_b[3 * c + j];  // rows 3 r + i in the order of P's rows r (sorted), then i
-      for (Eigen::Index q = 0; q < count; ++q)
-        for (int i = 0; i < 3; ++i) {
-          const Eigen::Index e = first + q;
-          col[3 * q + i] = (i == j ? K_[i].valuePtr()[e] : 0.0) + a1(i, j) * C_[i].valuePtr()[e] + a2(i, j) * M_[i].valuePtr()[e];
-        }
-    }
-  }
 }
 
 void RadauStepper::transport(MatrixXd& X, bool back) const {
@@ -307,7 +249,7 @@ void RadauStepper::transport(MatrixXd& X, bool back) const {
     const Node& nd = model_.nodes[k];
     if (nd.kind != NodeKind::Free) continue;
     for (int i = 0; i < 3; ++i) {
-      const Eigen::Matrix3d Q = stage_[i].R_WN[k] * R_J_[coupled_ ? i : 1][k].transpose();
+      const Eigen::Matrix3d Q = stage_[i].R_WN[k] * R_J_[k].transpose();
       for (const int d : {nd.dof, nd.dof + 3}) {
         const Eigen::Vector3d x = X.block<3, 1>(d, i);
         X.block<3, 1>(d, i) = back ? Eigen::Vector3d(Q.transpose() * x) : Eigen::Vector3d(Q * x);
@@ -420,7 +362,7 @@ detail::StepResult RadauStepper::newton(double h, bool transported) {
     // 848 -> 657 Jacobians).
     if (need_jacobian_) {
       form_stages(h);
-      evaluate_jacobian();
+      evaluate_jacobian(stage_[1]);
     }
   } catch (const ConvergenceError& e) {
     return failed(out, std::string("the Jacobian at the predicted second stage: ") + e.what(), 0.5);
@@ -448,7 +390,7 @@ detail::StepResult RadauStepper::newton(double h, bool transported) {
     if (refreshed) return false;
     refreshed = true;
     try {
-      evaluate_jacobian();
+      evaluate_jacobian(stage_[1]);
     } catch (const ConvergenceError&) {
       return false;
     }
@@ -483,21 +425,11 @@ detail::StepResult RadauStepper::newton(double h, bool transported) {
     // Transformed residuals: W = T^-1 U, one real and one complex system.
     Rt_ = R_;
     if (transported) transport(Rt_, true);
-    if (coupled_) {  // the increments F, and W = T^-1 F for Newton's norms (as simplified Newton's)
-      Eigen::Map<MatrixXd>(rb_.data(), 3, n_) = Rt_.transpose();
-      coupled_lu_.solve_negated(rb_, xb_);
-      F_ = Eigen::Map<const MatrixXd>(xb_.data(), 3, n_).transpose();
-      dw1_ = Ti(0, 0) * F_.col(0) + Ti(0, 1) * F_.col(1) + Ti(0, 2) * F_.col(2);
-      dwc_.real() = Ti(1, 0) * F_.col(0) + Ti(1, 1) * F_.col(1) + Ti(1, 2) * F_.col(2);
-      dwc_.imag() = Ti(2, 0) * F_.col(0) + Ti(2, 1) * F_.col(1) + Ti(2, 2) * F_.col(2);
-    } else {
-      r1_ = Ti(0, 0) * Rt_.col(0) + Ti(0, 1) * Rt_.col(1) + Ti(0, 2) * Rt_.col(2);
-      rc_.real() = Ti(1, 0) * Rt_.col(0) + Ti(1, 1) * Rt_.col(1) + Ti(1, 2) * Rt_.col(2);
-      rc_.imag() = Ti(2, 0) * Rt_.col(0) + Ti(2, 1) * Rt_.col(1) + Ti(2, 2) * Rt_.col(2);
-      real_.solve_negated(r1_, dw1_);
-      complex_.solve_negated(rc_, dwc_);
-      for (int i = 0; i < 3; ++i) F_.col(i) = T(i, 0) * dw1_ + T(i, 1) * dwc_.real() + T(i, 2) * dwc_.imag();
-    }
+    r1_ = Ti(0, 0) * Rt_.col(0) + Ti(0, 1) * Rt_.col(1) + Ti(0, 2) * Rt_.col(2);
+    rc_.real() = Ti(1, 0) * Rt_.col(0) + Ti(1, 1) * Rt_.col(1) + Ti(1, 2) * Rt_.col(2);
+    rc_.imag() = Ti(2, 0) * Rt_.col(0) + Ti(2, 1) * Rt_.col(1) + Ti(2, 2) * Rt_.col(2);
+    real_.solve_negated(r1_, dw1_);
+    complex_.solve_negated(rc_, dwc_);
     ++newt_;
     ++k;
     double sum = 0.0, largest = 0.0;
@@ -531,6 +463,7 @@ detail::StepResult RadauStepper::newton(double h, bool transported) {
       const double dyth = faccon_ * dyno * std::pow(theta_, nit_ - 1 - k) / fnewt_;
       if (dyth >= 1.0 && st_.adaptive) {
         if (refresh()) {
+          for (int i = 0; i < 3; ++i) F_.col(i) = T(i, 0) * dw1_ + T(i, 1) * dwc_.real() + T(i, 2) * dwc_.imag();
           if (transported) transport(F_, false);
           U_ += F_;
           continue;
@@ -543,6 +476,7 @@ detail::StepResult RadauStepper::newton(double h, bool transported) {
       }
     }
     dyno_old = std::max(dyno, kRoundoff);
+    for (int i = 0; i < 3; ++i) F_.col(i) = T(i, 0) * dw1_ + T(i, 1) * dwc_.real() + T(i, 2) * dwc_.imag();
     if (transported) transport(F_, false);
     U_ += F_;
     // With the transport, converged only once this step's own contraction rate is known (two
@@ -583,8 +517,8 @@ double RadauStepper::error_estimate(double h) const {
   cu_ = v0 + (dd[0] * U_.col(0) + dd[1] * U_.col(1) + dd[2] * U_.col(2)) / h;
   cv_ = state_.vdot + (dd[0] * V_.col(0) + dd[1] * V_.col(1) + dd[2] * V_.col(2) - dd.sum() * v0) / h;
   tmp_ = cv_ + mu * cu_;
-  rhs_.noalias() = M_[1] * tmp_;
-  rhs_.noalias() += C_[1] * cu_;
+  rhs_.noalias() = M_ * tmp_;
+  rhs_.noalias() += C_ * cu_;
   real_.solve_negated(rhs_, eu_);
   eu_ = -eu_;
   ev_ = mu * eu_ - cu_;
@@ -609,8 +543,8 @@ double RadauStepper::error_estimate(double h) const {
   for (const int r : model_.rotation_dof_starts) cu_.segment<3>(r) -= s.v.segment<3>(r) - so3::jl_inv(eu_.segment<3>(r)) * s.v.segment<3>(r);
   rhs_ = -data_.residual;
   tmp_ = mu * cu_;
-  rhs_.noalias() += M_[1] * tmp_;
-  rhs_.noalias() += C_[1] * cu_;
+  rhs_.noalias() += M_ * tmp_;
+  rhs_.noalias() += C_ * cu_;
   real_.solve_negated(rhs_, eu_);
   eu_ = -eu_;
   ev_ = mu * eu_ - cu_;

@@ -61,12 +61,6 @@ struct IntegratorSettings {
     /// as much as several residuals, as here); a faster rate also keeps the step when the controller
     /// asks for 1 to 1.2 times it (no new factorisation).
     double jacobian_theta = 0.1;
-    /// Newton on the stage system. `simplified`: one Jacobian (at the predicted second stage) for
-    /// the three stages, transformed into one real and one complex n x n system (RADAU5). `coupled`:
-    /// a Jacobian at each stage, the 3n x 3n system block (i, j) = delta_ij K_i + (A^-1/h)_ij C_i +
-    /// (A^-1/h)^2_ij M_i factorised as one (modes condensed), three matrix assemblies per Jacobian.
-    enum class Newton { simplified, coupled };
-    Newton newton = Newton::simplified;
   } radau;
 };
 
