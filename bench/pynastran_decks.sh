@@ -71,9 +71,7 @@ family() {
     NLPARM | NLPCI | NLCNTL | NLCNTLG | NLCNTL2 | NLSTEP | MATS1 | MATS3 | MATS8 | TABLES1 | MATT1 | MATT2 | MATT3 | \
       MATT8 | MATT9 | MATT11 | TABLEM[1-5] | PBUSH1D | USET | USET1 | DMI | DTI | \
       "PBUSH1D SHOCKA (nonlinear: linear solutions use K and C)" | "PBUSH1D SPRING (nonlinear: linear solutions use K and C)" | \
-      "PBUSH1D DAMPER (nonlinear: linear solutions use K and C)" | "PBUSH1D GENER (nonlinear: linear solutions use K and C)" | \
-      "PARAM in the bulk data overridden by the case control" | \
-      "PARAM of a part superelement other than the residual's (the residual's value or the default used)") echo other ;;
+      "PBUSH1D DAMPER (nonlinear: linear solutions use K and C)" | "PBUSH1D GENER (nonlinear: linear solutions use K and C)") echo other ;;
     *) echo structural ;;
   esac
 }

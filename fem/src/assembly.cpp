@@ -25,13 +25,13 @@ namespace seflex::fem {
 
 AssemblyOptions assembly_options(const Model& model) {
   AssemblyOptions o;
-  o.mass = param_number(model, "COUPMASS", -1.0) > 0.0 ? MassKind::Coupled : MassKind::Lumped;
-  o.wtmass = param_number(model, "WTMASS", 1.0);
-  o.k6rot = param_number(model, "K6ROT", 100.0);
+  o.mass = param_number(model, "COUPMASS") > 0.0 ? MassKind::Coupled : MassKind::Lumped;
+  o.wtmass = param_number(model, "WTMASS");
+  o.k6rot = param_number(model, "K6ROT");
   if (mystran_plate_elements(model)) {
     MystranPlate m;
-    m.cb_tria = param_number(model, "CBMIN3", 2.0);
-    m.cb_quad = param_number(model, "CBMIN4T", 3.6);
+    m.cb_tria = param_number(model, "CBMIN3");
+    m.cb_quad = param_number(model, "CBMIN4T");
     o.mystran_plate = m;
   }
   for (const Param& p : model.params) {

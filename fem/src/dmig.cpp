@@ -115,8 +115,8 @@ void add_direct_matrices(const Model& model, const DofMap& dofs, Eigen::SparseMa
     M = M + external_part_matrix(model, dofs, true);
   }
   const DirectMatrixSelection s = direct_matrix_selection(model);
-  if (!s.k2gg.empty()) K = K + dmig_matrix(model, dofs, s.k2gg, param_number(model, "CK2", 1.0));
-  if (!s.m2gg.empty()) M = M + dmig_matrix(model, dofs, s.m2gg, param_number(model, "CM2", 1.0));
+  if (!s.k2gg.empty()) K = K + dmig_matrix(model, dofs, s.k2gg, param_number(model, "CK2"));
+  if (!s.m2gg.empty()) M = M + dmig_matrix(model, dofs, s.m2gg, param_number(model, "CM2"));
 }
 
 }  // namespace seflex::fem

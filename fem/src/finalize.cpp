@@ -2,6 +2,7 @@
 #include "seflex/fem/finalize.hpp"
 
 #include "seflex/fem/components.hpp"
+#include "seflex/common/error.hpp"
 #include "finalize_unsupported.hpp"
 
 #include <algorithm>
@@ -723,6 +724,37 @@ double param_number(const Model& model, const std::string& name, double fallback
     return x;
   }
   return fallback;
+}
+
+namespace {
+/// The numeric parameters seflex reads and their defaults when absent (MSC Nastran QRG,
+/// "Parameters"; CBMIN3/CBMIN4T: MYSTRAN's user manual).
+const std::pair<const char*, double> kNumericParams[] = {
+    {"WTMASS", 1.0}, {"COUPMASS", -1.0}, {"K6ROT", 100.0}, {"GRDPNT", -1.0},
+    {"CK2", 1.0},    {"CM2", 1.0},       {"CBMIN3", 2.0},  {"CBMIN4T", 3.6},
+};
+
+const double* numeric_default(const std::string& name) {
+  for (const auto& [n, v] : kNumericParams)
+    if (name == n) return &v;
+  return nullptr;
+}
+}  // namespace
+
+double param_number(const Model& model, const std::string& name) {
+  const double* fallback = numeric_default(name);
+  SEFLEX_DEMAND(fallback != nullptr, "param_number: no default for this parameter");
+  return param_number(model, name, *fallback);
+}
+
+bool param_at_default(const Model& model, const Param& p) {
+  if (p.name == "AUTOSPC") return !p.values.empty() && p.values[0] == "YES";
+  const double* fallback = numeric_default(p.name);
+  if (!fallback) return false;
+  Model one;  // the parameter alone, read as the model reads it (errors name its card)
+  one.files = model.files;
+  one.params.push_back(p);
+  return param_number(one, p.name, *fallback) == *fallback;
 }
 
 bool mystran_plate_elements(const Model& model) {

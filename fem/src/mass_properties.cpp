@@ -49,7 +49,7 @@ MassProperties mass_properties(const Model& model, std::optional<int> reference_
   MassProperties mp;
   const AssemblyOptions opt = assembly_options(model);
   mp.wtmass = opt.wtmass;
-  const int grdpnt = reference_grid ? *reference_grid : static_cast<int>(param_number(model, "GRDPNT", -1.0));
+  const int grdpnt = reference_grid ? *reference_grid : static_cast<int>(param_number(model, "GRDPNT"));
   if (grdpnt > 0) {
     if (const auto it = model.grid_index.find(grdpnt); it != model.grid_index.end()) {
       mp.reference_grid = grdpnt;

@@ -842,7 +842,9 @@ class Assembler {
       res_.read_warnings.push_back(where(res_, se_->begin).str() + ": " + part + ": " + dropped +
                                    " not used: they set the part's own reduction, and seflex solves the assembled model in full");
     // Parameters: the residual's value holds for the assembled model (the first PARAM of a name: the
-    // case control's, if any); a part's PARAM that the residual lacks or sets otherwise is listed.
+    // case control's, if any). A part's PARAM that sets what the residual sets (its value, or the
+    // default when the residual has none: flyswatter's parts repeat AUTOSPC YES) changes nothing; one
+    // that the residual lacks or sets otherwise is listed.
     for (const auto& p : m.params) {
       const Param* r = nullptr;
       for (const auto& q : res_.params)
@@ -850,7 +852,8 @@ class Assembler {
           r = &q;
           break;
         }
-      if (!r || r->values != p.values)
+      const bool same = r ? r->values == p.values : param_at_default(m, p);
+      if (!same)
         note(res_, "PARAM of a part superelement other than the residual's (the residual's value or the default used)", 1, p.ref);
     }
     if (!se_->external()) note_kind(res_, m.spoints, "SPOINT");

@@ -4,6 +4,7 @@
 
 #include "seflex/io/nastran_cards.hpp"
 #include "seflex/io/nastran_lines.hpp"
+#include "seflex/fem/finalize.hpp"
 
 namespace seflex::io::nastran {
 namespace {
@@ -142,11 +143,21 @@ void parse_param(const Card& card, ReaderState& st) {
   }
   p.ref = card.ref();
   // A parameter the case control sets: its value takes precedence over the bulk data's (MSC Nastran
-  // QRG, "Parameter Applicability Tables"): the bulk data value is left out, and listed.
+  // QRG, "Parameter Applicability Tables"). seflex does as Nastran does: the bulk data value is left
+  // out, with a warning when it differs.
   for (std::size_t i = 0; i < st.case_control_params && i < st.model.params.size(); ++i)
-    if (st.model.params[i].name == p.name) {
-      if (st.model.params[i].values != p.values)
-        st.note_unsupported("PARAM in the bulk data overridden by the case control", p.ref);
+    if (const fem::Param& cc = st.model.params[i]; cc.name == p.name) {
+      if (cc.values != p.values) {
+        auto joined = [](const std::vector<std::string>& v) {
+          std::string out;
+          for (const auto& x : v) out += (out.empty() ? "" : " ") + x;
+          return out;
+        };
+        st.model.read_warnings.push_back(fem::where(st.model, p.ref).str() + ": PARAM " + p.name + " " + joined(p.values) +
+                                         " in the bulk data not used: the case control's PARAM " + p.name + " " +
+                                         joined(cc.values) + " (" + fem::where(st.model, cc.ref).str() +
+                                         ") takes precedence, as in Nastran");
+      }
       return;
     }
   st.model.params.push_back(std::move(p));

@@ -731,7 +731,7 @@ class Classifier {
   /// other modes unchanged: docs/fem.md, "Shell sections").
   void drilling() {
     if (s_ != Solution::NormalModes && s_ != Solution::CraigBampton && s_ != Solution::Info) return;
-    const double k6rot = fem::param_number(m_, "K6ROT", 100.0);
+    const double k6rot = fem::param_number(m_, "K6ROT");
     if (k6rot >= 1e4) return;
     const detail::DrillingInertia d = detail::drilling_inertia(m_);
     if (d.count == 0) return;

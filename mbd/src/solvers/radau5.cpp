@@ -592,7 +592,10 @@ double RadauStepper::step_after_accept(double h, double /*h_wanted*/, double err
   // + 4.6 Jacobians + 2 factorisations (their measured costs in residuals) at 1e-4 / 1e-5: target 0.05
   // 11,687 / 15,133, 0.1 11,968 / 15,883, 0.2 13,131 / 16,382, no limit 15,424 / 17,075). Without the
   // refresh, 94 % of the steps after the demo's last lock were set by this limit, not by the error (the
-  // error would allow 7-9 ms where Newton allowed 3.6-6.5 ms at 1e-5).
+  // error would allow 7-9 ms where Newton allowed 3.6-6.5 ms at 1e-5). Lifting the limit with Newton on
+  // the coupled stage system (a Jacobian per stage: rate 0.093 -> 0.019 after the demo's locks) let the
+  // error estimate set the steps and cost more for larger errors (docs/benchmarks.md, "Newton on the
+  // coupled stage system").
   if (theta_measured_ && theta_ > 0.0) h_new = std::min(h_new, std::max(h, h * std::cbrt(kThetaTarget / theta_)));
   if (theta_ <= st_.radau.jacobian_theta && h_new >= kKeepLow * h && h_new <= kKeepHigh * h) h_new = h;  // same matrices
   return h_new;

@@ -45,6 +45,15 @@ Eigen::Vector3d to_basic(const Model& model, int cid, const Eigen::Vector3d& x);
 /// name counts (finalize rejects two with different values). Throws InputError if not a number.
 double param_number(const Model& model, const std::string& name, double fallback);
 
+/// Value of a numeric PARAM seflex reads (WTMASS, COUPMASS, K6ROT, GRDPNT, CK2, CM2, CBMIN3, CBMIN4T),
+/// or its default if absent: the QRG's default (MYSTRAN's for CBMIN3/CBMIN4T). Demands a known name.
+double param_number(const Model& model, const std::string& name);
+
+/// Whether `p`, a parameter seflex reads, has the value seflex assumes when the parameter is absent
+/// (the numeric defaults above; AUTOSPC YES). False for a parameter seflex does not read.
+/// Throws InputError for a numeric parameter whose value is not a number.
+bool param_at_default(const Model& model, const Param& p);
+
 /// Whether PARAM QUAD4TYP MIN4T asks for MYSTRAN's plate elements (assembly.hpp: mystran_plate).
 /// Throws InputError naming the card for QUAD4TYP MIN4 (Tessler's MIN4 quad, not available) or any
 /// other value than MIN4T.
