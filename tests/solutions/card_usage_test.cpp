@@ -215,13 +215,16 @@ TEST(CardUsage, CaseControlSelections) {
 // Cards seflex does not know at all: refused.
 TEST(CardUsage, CardsNoSolutionUsesAreWarnings) {
   const fem::Model m = test::read_deck(deck("SPC = 1\nLOAD = 7\n",
-                                            "DESVAR,1,T,1.,0.,2.\nCAERO1,5,6\nPLOTEL,8,1,2\nDEBUG,1,2\n"
+                                            "DESVAR,1,T,1.,0.,2.\nCAERO1,5,6\nPLOTEL,8,1,2\nDEBUG,1,2\nECHOON\nECHOOFF\n"
                                             "MPC,4,2,3,1.,3,3,-1.\nPARAM,POST,-1\nPARAM,SOLLIB,SPARSE\n"));
   const auto u = usage(m, Solution::Statics);
   EXPECT_FALSE(u.refused());
   EXPECT_TRUE(mentions(find(u, "DESVAR")->reason, {"design optimisation"}));
   EXPECT_TRUE(mentions(find(u, "CAERO1")->reason, {"aeroelastic"}));
   EXPECT_TRUE(mentions(find(u, "PLOTEL")->reason, {"output"}));
+  // the echo of the bulk data on and off (flyswatter.bdf): output control, nothing to refuse
+  EXPECT_TRUE(mentions(find(u, "ECHOON")->reason, {"output"}));
+  EXPECT_TRUE(mentions(find(u, "ECHOOFF")->reason, {"output"}));
   EXPECT_TRUE(mentions(find(u, "DEBUG")->reason, {"another solver"}));
   EXPECT_TRUE(mentions(find(u, "MPC")->reason, {"MPC set 4 not selected"}));
   EXPECT_TRUE(mentions(find(u, "PARAM")->reason, {"parameters seflex does not use: POST, SOLLIB"}));
