@@ -20,7 +20,7 @@ cd "$(dirname "$0")/.."
 root="$(pwd)"
 seconds="${1:-60}"
 shift || true
-all=(nastran dmig gmsh scene superelement)
+all=(nastran dmig gmsh scene superelement op4)
 harnesses=("$@")
 [ ${#harnesses[@]} -eq 0 ] && harnesses=("${all[@]}")
 build="${SEFLEX_FUZZ_BUILD:-build-fuzz}"
@@ -58,6 +58,9 @@ make_seeds() {  # harness
       printf 'DMIG,MX,0,6,1,0\nDMIG,MX,10,0,,10,0,2.\nDMIG,MX,3,1,,3,1,0.5\nPARAM,CM2,2.\n' >"$s/mx"
       printf 'DMIG    KX      0       6       2       0\nDMIG*   KX              1               2\n*       1               2               3.0D4\n' >"$s/large"
       printf 'DMIG,KX,0,6,1,0\nDMIG,KX,1,1,,1,1,1.e3,,2,1,-1.e3\nDMIG,MX,0,6,1,0\nDMIG,MX,1,1,,1,1,1.\nPARAM,CK2,0.5\n' >"$s/both" ;;
+    op4)  # OUTPUT4 text: the .op4 files of tests/ under 64 kB and a dense double-precision matrix
+      copy_seeds op4 -iname '*.op4'
+      printf '       2       2       6       2KAA     1P,3E23.16\n       1       1       2\n 1.0000000000000000E+00-5.0000000000000000E-01\n       2       1       2\n-5.0000000000000000E-01 2.0000000000000000E+00\n       3       1       1\n 0.0000000000000000E+00\n' >"$s/dense" ;;
     gmsh)
       copy_seeds gmsh -iname '*.msh'
       for f in tests/data/gmsh/*.msh; do  # the panel with its own companion file

@@ -323,6 +323,19 @@ ConstrainedSystem apply_constraints(const Model& model, const GlobalMatrices& g,
         out.status[d] = DofStatus::AutoSpc;
   }
 
+  // Dofs an external superelement lists but gives no stiffness (zero rows of its KAA: the rotations of
+  // solid grids in its a-set) and nothing else holds: removed even with AUTOSPC off, as MSC does
+  // (its se_test_n11 run, AUTOSPC = NO, solves although five boundary grids' rotations have none).
+  if (!options.autospc)
+    for (const ExternalMatrices& x : model.external_parts)
+      for (std::size_t i = 0; i < x.dofs.size(); ++i) {
+        const auto ii = static_cast<Index>(i);
+        if (x.K.row(ii).cwiseAbs().maxCoeff() != 0.0) continue;
+        const auto d = find_dof(model, dofs, x.dofs[i].first, x.dofs[i].second);
+        if (d && out.status[*d] == DofStatus::Free && (!any_dependent || users[*d].empty()) && lookup(g.K, *d, *d) == 0.0)
+          out.status[*d] = DofStatus::AutoSpc;
+      }
+
   // f-set numbering.
   out.g_to_f.assign(static_cast<std::size_t>(n), -1);
   for (Index d = 0; d < n; ++d)

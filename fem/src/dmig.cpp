@@ -87,8 +87,33 @@ Eigen::SparseMatrix<double> dmig_matrix(const Model& model, const DofMap& dofs, 
   return A;
 }
 
+Eigen::SparseMatrix<double> external_part_matrix(const Model& model, const DofMap& dofs, bool mass) {
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (const ExternalMatrices& x : model.external_parts) {
+    std::vector<Eigen::Index> at;
+    for (const auto& [id, c] : x.dofs) {
+      const auto d = find_dof(model, dofs, id, c);
+      if (!d)
+        throw InputError(where(model, x.ref), "SEBULK " + std::to_string(x.seid) + ": the external superelement's dof " + point_name(id, c) +
+                                                  " is not a dof of the assembled model; expected a GRID component or SPOINT");
+      at.push_back(*d);
+    }
+    const Eigen::MatrixXd& A = mass ? x.M : x.K;
+    for (Eigen::Index j = 0; j < A.cols(); ++j)
+      for (Eigen::Index i = 0; i < A.rows(); ++i)
+        if (A(i, j) != 0.0) triplets.emplace_back(at[static_cast<std::size_t>(i)], at[static_cast<std::size_t>(j)], A(i, j));
+  }
+  Eigen::SparseMatrix<double> out(dofs.size(), dofs.size());
+  out.setFromTriplets(triplets.begin(), triplets.end());
+  return out;
+}
+
 void add_direct_matrices(const Model& model, const DofMap& dofs, Eigen::SparseMatrix<double>& K,
                          Eigen::SparseMatrix<double>& M) {
+  if (!model.external_parts.empty()) {
+    K = K + external_part_matrix(model, dofs, false);
+    M = M + external_part_matrix(model, dofs, true);
+  }
   const DirectMatrixSelection s = direct_matrix_selection(model);
   if (!s.k2gg.empty()) K = K + dmig_matrix(model, dofs, s.k2gg, param_number(model, "CK2"));
   if (!s.m2gg.empty()) M = M + dmig_matrix(model, dofs, s.m2gg, param_number(model, "CM2"));

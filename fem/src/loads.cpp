@@ -1,6 +1,8 @@
 // FORCE / MOMENT / PLOAD2 / GRAV / RFORCE / LOAD (see loads.hpp).
 #include "seflex/fem/loads.hpp"
 
+#include "seflex/fem/dmig.hpp"
+
 #include <cmath>
 #include <optional>
 #include <unordered_map>
@@ -10,6 +12,7 @@
 #include "seflex/common/error.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/bar_line_load.hpp"
+#include "seflex/fem/dmig.hpp"
 #include "seflex/fem/element_shell_quad4.hpp"
 #include "seflex/fem/element_shell_quadratic.hpp"
 #include "seflex/fem/element_shell_tria3.hpp"
@@ -55,6 +58,9 @@ class LoadBuilder {
     if (!acc_) return;
     SEFLEX_DEMAND(M != nullptr && M->rows() == dofs_.size(), "load_vector: GRAV/RFORCE need the assembled mass matrix");
     p_ += *M * *acc_;
+    // An external superelement's mass takes no GRAV or RFORCE of the bulk data: in Nastran a part's
+    // loads are its own (an external part's, its PA matrix), as MSC's se_test_n11 run shows.
+    if (!m_.external_parts.empty()) p_ -= external_part_matrix(m_, dofs_, true) * *acc_;
   }
 
  private:

@@ -38,7 +38,10 @@ struct Se {
   long long grid_off = 0, elem_off = 0, prop_off = 0, mat_off = 0, coord_off = 0;
   int basic_cid = 0;               ///< the moved part's basic system in the assembled model (0: not moved)
   std::unordered_set<int> props, mats, elems;
+  std::unordered_set<int> shared_coords;     ///< systems the residual defines alike (same id, same place): kept once
+  std::unordered_map<int, int> spoint_to;    ///< scalar points joined by SECONCT: the part's id -> the residual's
   double tol() const { return bulk ? bulk->tol : 1e-5; }
+  bool external() const { return bulk && bulk->type == "EXTOP4"; }
   bool manual() const { return bulk && bulk->manual; }
 };
 
@@ -161,6 +164,12 @@ void plan_offsets(const Model& res, std::vector<Se>& ses, const std::vector<std:
   }
 }
 
+/// SEBULK types assembled: PRIMARY (the part's elements), EXTOP4 (its matrices from an OP4 file), and
+/// MIRROR and REPEAT (made into parts of their own by expand_images before the assembly).
+bool assembled_type(const std::string& type) {
+  return type == "PRIMARY" || type == "EXTOP4" || type == "MIRROR" || type == "REPEAT";
+}
+
 /// Note a card of a part that seflex does not assemble (listed as unsupported in the residual).
 void note(Model& res, const std::string& name, std::size_t count, const CardRef& ref) {
   if (count == 0) return;
@@ -215,7 +224,7 @@ class Assembler {
     // Parts SEBULK makes something else than PRIMARY (a mirror or repeat of another part, external
     // matrices): listed, not assembled, and their SELOC and SECONCT cards not used.
     for (const auto& b : res_.part_bulks)
-      if (b.type != "PRIMARY") {
+      if (!assembled_type(b.type)) {
         excluded_.insert(b.seid);
         note(res_, "part superelement: SEBULK TYPE = " + b.type + " (the part is not assembled)", 1, b.ref);
       }
@@ -238,7 +247,7 @@ class Assembler {
       return ses_[it->second];
     };
     for (const auto& b : res_.part_bulks) {
-      if (b.type != "PRIMARY") continue;
+      if (!assembled_type(b.type)) continue;
       Se& se = part_of(b.seid, b.ref, "SEBULK " + std::to_string(b.seid), false);
       if (se.bulk) fail(b.ref, "SEBULK " + std::to_string(b.seid) + ": a second SEBULK for the part (the first at " +
                                    where(res_, se.bulk->ref).str() + "); expected one");
@@ -323,6 +332,7 @@ class Assembler {
       const Se& sa = ses_[by_seid_.at(c.seid_a)];
       const Se& sb = ses_[by_seid_.at(c.seid_b)];
       for (const auto& [ga, gb] : c.pairs) {
+        if (!sa.model->grid_index.count(ga) && scalar_point_pair(c, ga, gb)) continue;
         const std::size_t a = node_of(sa, ga, c, "GIDA"), b = node_of(sb, gb, c, "GIDB");
         const double d = (node_x(a) - node_x(b)).norm();
         if (c.loc && d > c.tol)
@@ -371,11 +381,45 @@ class Assembler {
     }
   }
 
+  /// A SECONCT pair of scalar points (of an external part and the residual): recorded, true; false if
+  /// GIDA is no scalar point of its part either (node_of then says the grid is missing).
+  bool scalar_point_pair(const PartConnection& c, int ga, int gb) {
+    const auto has = [](const Model& m, int id) {
+      return std::any_of(m.spoints.begin(), m.spoints.end(), [&](const ScalarPoint& p) { return p.id == id; });
+    };
+    Se& sa = ses_[by_seid_.at(c.seid_a)];
+    Se& sb = ses_[by_seid_.at(c.seid_b)];
+    if (!has(*sa.model, ga)) return false;
+    const std::string card = "SECONCT " + std::to_string(c.seid_a) + " " + std::to_string(c.seid_b);
+    if (!has(*sb.model, gb))
+      fail(c.ref, card + ", GIDB: " + std::to_string(gb) + " is not an SPOINT of " + se_name(c.seid_b) + "; expected the scalar point that " +
+                      se_name(c.seid_a) + "'s SPOINT " + std::to_string(ga) + " joins");
+    if ((c.seid_a == 0) == (c.seid_b == 0))
+      fail(c.ref, card + ": scalar points " + std::to_string(ga) + " and " + std::to_string(gb) +
+                      " join two parts; expected a part's scalar point joined to one of the residual's");
+    Se& part = c.seid_a == 0 ? sb : sa;
+    const int from = c.seid_a == 0 ? gb : ga, to = c.seid_a == 0 ? ga : gb;
+    if (!part.spoint_to.emplace(from, to).second)
+      fail(c.ref, card + ": SPOINT " + std::to_string(from) + " of " + se_name(part.seid) + " is joined twice; expected once");
+    return true;
+  }
+
   /// Displacement axes of node a's grid in the assembled basic system.
   Eigen::Matrix3d axes(std::size_t a) const {
     const Se& se = ses_[node_se_[a]];
     const Grid& g = se.model->grids[node_grid_[a]];
     return se.move.R * displacement_axes(*se.model, g.cd, g.x_basic);
+  }
+
+  /// Does the residual define a system of this id at the same place (origin and axes to 1e-9), once
+  /// the part is moved? (External parts repeat the residual's systems, as Nastran writes them.)
+  bool same_as_residual(const Se& se, const CoordSys& c) const {
+    const auto it = res_.coord_index.find(c.id);
+    if (it == res_.coord_index.end()) return false;
+    const CoordSys& r = res_.coords[it->second];
+    const Eigen::Vector3d o = se.move.R * c.origin + se.move.t;
+    const double scale = 1.0 + r.origin.norm();
+    return r.type == c.type && (o - r.origin).norm() <= 1e-9 * scale && (se.move.R * c.axes - r.axes).cwiseAbs().maxCoeff() <= 1e-9;
   }
 
   void plan() {
@@ -386,7 +430,9 @@ class Assembler {
       const Model& m = *se.model;
       for (std::size_t i = 0; i < m.grids.size(); ++i)
         if (lead_[se.base + i] == se.base + i) grids[s].push_back(m.grids[i].id);
-      for (const auto& c : m.coords) coords[s].push_back(c.id);
+      for (const auto& c : m.coords)
+        if (s == 0 || !same_as_residual(se, c)) coords[s].push_back(c.id);
+        else se.shared_coords.insert(c.id);
       const auto add = [](std::vector<int>& out, std::unordered_set<int>* set, const auto& items) {
         for (const auto& it : items) {
           out.push_back(it.id);
@@ -465,6 +511,7 @@ class Assembler {
   int coord(int cid, const CardRef& ref, const char* card, int eid) const {
     if (cid == 0) return se_->basic_cid;
     if (cid < 0) return cid;
+    if (se_->shared_coords.count(cid)) return cid;
     if (!se_->model->coord_index.count(cid))
       undefined(ref, card, eid, "coordinate system", cid, "a CORD1x or CORD2x of the same part (or 0)");
     return static_cast<int>(cid + se_->coord_off);
@@ -508,12 +555,14 @@ class Assembler {
     merge_materials(m);
     merge_elements(m, sum);
     merge_loads(m);
+    if (se_->external()) merge_external(m);
     merge_rest(m);
     res_.parts.push_back(sum);
   }
 
   void merge_geometry(Model& m) {
     for (const auto& c0 : m.coords) {
+      if (se_->shared_coords.count(c0.id)) continue;
       CoordSys c = c0;
       c.id = coord(c0.id, c0.ref, "coordinate system", c0.id);
       if (c.by_grids)
@@ -729,6 +778,49 @@ class Assembler {
     }
   }
 
+  /// An external part: its scalar points (joined by SECONCT, else new ones) and its matrices on the
+  /// assembled dofs, turned into the displacement axes of the grids its boundary grids join.
+  void merge_external(Model& m) {
+    const std::string card = "SEBULK " + std::to_string(se_->seid);
+    for (const ScalarPoint& p : m.spoints) {
+      if (se_->spoint_to.count(p.id)) continue;
+      for (const ScalarPoint& q : res_.spoints)
+        if (q.id == p.id)
+          fail(p.ref, se_name(se_->seid) + ", SPOINT " + std::to_string(p.id) + ": the residual has a scalar point of that id, which "
+                      "SECONCT does not join to it; expected the pair on SECONCT, or another id");
+      res_.spoints.push_back({p.id, p.ref});
+    }
+    for (ExternalMatrices x : m.external_parts) {
+      const auto n = static_cast<Eigen::Index>(x.dofs.size());
+      Eigen::MatrixXd T = Eigen::MatrixXd::Identity(n, n);  // u_part = T u_assembled
+      for (Eigen::Index i = 0; i < n; ++i) {
+        auto& [id, c] = x.dofs[static_cast<std::size_t>(i)];
+        if (c == 0) {
+          const auto it = se_->spoint_to.find(id);
+          if (it != se_->spoint_to.end()) id = it->second;
+          continue;
+        }
+        const int part_id = id;
+        id = grid(part_id, x.ref, "SEBULK", se_->seid);
+        if (!directions_differ(part_id) || (c != 1 && c != 4)) continue;
+        // a triple of components whose axes differ from those of the grid it joins: rotated
+        const auto gi = se_->model->grid_index.at(part_id);
+        const std::size_t node = se_->base + gi;
+        const Eigen::Matrix3d Q = axes(node).transpose() * axes(lead_[node]);
+        if (i + 2 >= n || x.dofs[static_cast<std::size_t>(i + 2)] != std::pair<int, int>(part_id, c + 2))
+          fail(x.ref, card + ": grid " + std::to_string(part_id) + " of " + se_name(se_->seid) + " joins a grid whose displacement "
+                      "directions differ, but EXTRN gives it only some of components " + std::to_string(c) + "-" + std::to_string(c + 2) +
+                      "; expected all three (or the same directions)");
+        T.block(i, i, 3, 3) = Q;
+      }
+      if (!T.isIdentity(0.0)) {
+        x.K = T.transpose() * x.K * T;
+        x.M = T.transpose() * x.M * T;
+      }
+      res_.external_parts.push_back(std::move(x));
+    }
+  }
+
   void merge_rest(Model& m) {
     const std::string part = se_name(se_->seid);
     // Used by the part's own static reduction only: dropped, said once per part.
@@ -740,6 +832,12 @@ class Assembler {
     drop(m.omit.size(), "OMIT/OMIT1 entries");
     drop(m.bset.size(), "BSET/BSET1 entries");
     drop(m.eigen_methods.size(), "EIGR/EIGRL cards");
+    // An external part's q-set and data-recovery table describe its matrices, which are read already.
+    const auto external_only = [&](const std::string& name) {
+      return se_->external() && (name == "QSET" || name == "QSET1" || name == "DTI");
+    };
+    for (const auto& u : m.unsupported)
+      if (external_only(u.name)) drop(u.count, (u.name + " cards").c_str());
     if (!dropped.empty())
       res_.read_warnings.push_back(where(res_, se_->begin).str() + ": " + part + ": " + dropped +
                                    " not used: they set the part's own reduction, and seflex solves the assembled model in full");
@@ -758,7 +856,8 @@ class Assembler {
       if (!same)
         note(res_, "PARAM of a part superelement other than the residual's (the residual's value or the default used)", 1, p.ref);
     }
-    note_kind(res_, m.spoints, "SPOINT");
+    if (!se_->external()) note_kind(res_, m.spoints, "SPOINT");
+    if (!se_->external()) note_kind(res_, m.external_points, "EXTRN");
     note_kind(res_, m.mass_props, "PMASS");
     note_kind(res_, m.scalar_masses, "CMASSi");
     note_kind(res_, m.conm1, "CONM1");
@@ -784,6 +883,7 @@ class Assembler {
     note_kind(res_, m.part_locations, "SELOC");
     note_kind(res_, m.part_bulks, "SEBULK");
     note_kind(res_, m.part_connections, "SECONCT");
+    note_kind(res_, m.mirror_planes, "SEMPLN");
     std::size_t scalar_springs = 0;
     for (const auto& e : m.springs) scalar_springs += e.scalar_points;
     for (const auto& e : m.springs)
@@ -793,6 +893,7 @@ class Assembler {
       }
     if (!m.suport1.empty()) note(res_, "part superelement: SUPORT1 (not assembled)", m.suport1.size(), m.suport1.front().dofs.ref);
     for (const auto& u : m.unsupported) {
+      if (external_only(u.name)) continue;
       note(res_, u.name, u.count, u.first);
       for (auto& r : res_.unsupported)
         if (r.name == u.name) r.members.insert(r.members.end(), u.members.begin(), u.members.end());
@@ -802,10 +903,184 @@ class Assembler {
   }
 };
 
+// ----- SEBULK MIRROR and REPEAT: the copy as a part of its own -----
+
+/// Throw for a card of the primary that a mirror image cannot carry.
+[[noreturn]] void not_mirrored(const Model& res, const PartBulk& b, const CardRef& ref, const std::string& what) {
+  throw InputError(where(res, ref), "SEBULK " + std::to_string(b.seid) + " MIRROR of part " + std::to_string(b.rseid) + ": " + what +
+                                        " of part " + std::to_string(b.rseid) + " (" + where(res, ref).str() +
+                                        ") is not mirrored by seflex; expected grids in basic displacement axes (CD 0) and "
+                                        "CBAR/CBEAM, CROD, CQUAD4/CTRIA3, linear solids, CONM2 (CID 0 or -1), CELAS, CBUSH (no CID), RBE2, RBAR");
+}
+
+/// The mirror image through the plane with unit normal n through p: x -> H (x - p) + p, H = I - 2 n n^T.
+/// Shells and solids have their connectivity reversed so that each is the image of its primary
+/// element, normal included (with the order kept, a reflected element's normal points the other
+/// way); vectors (orientation, offsets) are reflected.
+void mirror(const Model& res, const PartBulk& b, Model& m, const Move& move, const Eigen::Vector3d& p, const Eigen::Vector3d& n) {
+  const Eigen::Matrix3d H = Eigen::Matrix3d::Identity() - 2.0 * n * n.transpose();
+  const Eigen::Matrix3d HR = H * move.R;
+  for (auto& g : m.grids) {
+    if (g.cd != 0) not_mirrored(res, b, g.ref, "GRID " + std::to_string(g.id) + " with CD " + std::to_string(g.cd));
+    g.x = H * (move.R * g.x_basic + move.t - p) + p;
+    g.x_basic = g.x;
+    g.cp = 0;
+  }
+  for (auto& e : m.bars) {
+    if (!e.has_g0) e.v = HR * e.v;
+    e.wa = HR * e.wa, e.wb = HR * e.wb;
+  }
+  const auto reverse = [&](Shell& e, const char* card) {
+    if (e.theta_is_mcid && e.mcid > 0) not_mirrored(res, b, e.ref, std::string(card) + " " + std::to_string(e.id) + " with MCID");
+    if (e.nnode == 4) std::swap(e.g[1], e.g[3]), std::swap(e.t[1], e.t[3]);
+    else std::swap(e.g[1], e.g[2]), std::swap(e.t[1], e.t[2]);
+  };
+  for (auto& e : m.shells) reverse(e, shell_card(e));
+  for (auto& q : m.shells8) {  // mid-side grid k on edge k - k+1: the reversed edges take them backwards
+    reverse(q.shell, quadratic_shell_card(q));
+    if (q.shell.nnode == 4) std::swap(q.mid[0], q.mid[3]), std::swap(q.mid[1], q.mid[2]);
+    else std::swap(q.mid[0], q.mid[2]);
+  }
+  for (auto& e : m.solids) {
+    if (e.nnode != e.corners()) not_mirrored(res, b, e.ref, std::string(e.card()) + " " + std::to_string(e.id) + " with mid-side grids");
+    auto& g = e.g;
+    switch (e.shape) {
+      case Solid::Shape::Hexa: std::swap(g[1], g[3]), std::swap(g[5], g[7]); break;
+      case Solid::Shape::Penta: std::swap(g[1], g[2]), std::swap(g[4], g[5]); break;
+      case Solid::Shape::Tetra: std::swap(g[1], g[2]); break;
+      case Solid::Shape::Pyram: std::swap(g[1], g[3]); break;
+    }
+  }
+  for (auto& c : m.conm2) {
+    if (c.cid > 0) not_mirrored(res, b, c.ref, "CONM2 " + std::to_string(c.id) + " with CID " + std::to_string(c.cid));
+    c.x = c.cid == -1 ? Eigen::Vector3d(H * (move.R * c.x + move.t - p) + p) : Eigen::Vector3d(HR * c.x);
+    Eigen::Matrix3d I;
+    I << c.I11, -c.I21, -c.I31, -c.I21, c.I22, -c.I32, -c.I31, -c.I32, c.I33;
+    I = HR * I * HR.transpose();
+    c.I11 = I(0, 0), c.I22 = I(1, 1), c.I33 = I(2, 2), c.I21 = -I(1, 0), c.I31 = -I(2, 0), c.I32 = -I(2, 1);
+  }
+  for (auto& e : m.bushes) {
+    if (e.cid >= 0 || e.ocid >= 0) not_mirrored(res, b, e.ref, std::string(bush_card(e)) + " " + std::to_string(e.id) + " with CID or OCID");
+    if (e.has_v) e.v = HR * e.v;
+  }
+  for (const auto& p2 : m.solid_props)
+    if (p2.cordm > 0) not_mirrored(res, b, p2.ref, "PSOLID " + std::to_string(p2.id) + " with CORDM " + std::to_string(p2.cordm));
+  if (!m.shear_panels.empty()) not_mirrored(res, b, m.shear_panels.front().ref, "CSHEAR");
+  if (!m.bends.empty()) not_mirrored(res, b, m.bends.front().ref, "CBEND");
+  if (!m.genels.empty()) not_mirrored(res, b, m.genels.front().ref, "GENEL");
+  if (!m.rbe3.empty()) not_mirrored(res, b, m.rbe3.front().ref, "RBE3");
+  for (auto& q : m.points) {
+    q.x = H * (move.R * to_basic(m, q.cp, q.x) + move.t - p) + p;
+    q.cp = 0;
+  }
+  m.coords.clear();  // every position is basic now, every displacement system basic
+}
+
+/// The loads, constraints and set cards of a model (a part's own: a copy does not inherit them).
+void clear_loads(Model& m) {
+  m.point_loads.clear(), m.pressure_loads.clear(), m.face_loads.clear(), m.grid_pressure_loads.clear();
+  m.gravity_loads.clear(), m.rotational_loads.clear(), m.bar_line_loads.clear(), m.scalar_loads.clear();
+  m.load_combinations.clear(), m.enforced_motions.clear(), m.spcs.clear(), m.spcadds.clear();
+  m.grid_temperatures.clear(), m.default_temperatures.clear(), m.bar_temperatures.clear();
+  m.aset.clear(), m.omit.clear(), m.bset.clear(), m.eigen_methods.clear(), m.params.clear();
+  m.unsupported.clear(), m.read_warnings.clear(), m.card_counts.clear();
+}
+
+template <class V>
+void append(V& to, const V& from) {
+  to.insert(to.end(), from.begin(), from.end());
+}
+
+/// Each SEBULK MIRROR / REPEAT part as a part of its own: the structure of its primary (RSEID: its
+/// grids, elements, properties and materials, with their ids), mirrored through the SEMPLN plane
+/// (where the primary sits, after its SELOC) or copied as the primary wrote it, plus the cards of
+/// its own BEGIN SUPER section (its loads and constraints: a copy has none of its primary's).
+/// Its own SELOC then moves it like any part.
+void expand_images(Model& res, std::vector<Part>& parts) {
+  bool any = false;
+  for (const auto& b : res.part_bulks) any = any || b.type == "MIRROR" || b.type == "REPEAT";
+  if (!any) return;
+  Se se0;
+  se0.model = &res;
+  locate(res, se0);
+  std::vector<Part> images;
+  for (const auto& b : res.part_bulks) {
+    if (b.type != "MIRROR" && b.type != "REPEAT") continue;
+    const std::string card = "SEBULK " + std::to_string(b.seid);
+    const auto primary = std::find_if(parts.begin(), parts.end(), [&](const Part& p) { return p.seid == b.rseid; });
+    if (primary == parts.end() || b.rseid == b.seid)
+      throw InputError(where(res, b.ref), card + ", field 4 (RSEID): no part " + std::to_string(b.rseid) +
+                                               " in the deck; expected the id of the BEGIN SUPER section that TYPE = " + b.type + " copies");
+    for (const auto& o : res.part_bulks)
+      if (o.seid == b.rseid && o.type != "PRIMARY")
+        throw InputError(where(res, b.ref), card + ", field 4 (RSEID): part " + std::to_string(b.rseid) + " is of TYPE " + o.type +
+                                                 "; expected a PRIMARY part to copy");
+    Part image;
+    image.seid = b.seid;
+    image.begin = b.ref;
+    image.model = primary->model;
+    Model& m = image.model;
+    m.files = res.files;
+    clear_loads(m);
+    if (b.type == "MIRROR") {
+      Se sp;
+      sp.seid = b.rseid;
+      sp.model = &m;
+      locate(m, sp);
+      for (const auto& l : res.part_locations)
+        if (l.seid == b.rseid) sp.move = seloc_move(res, sp, l);
+      const MirrorPlane* plane = nullptr;
+      for (const auto& q : res.mirror_planes)
+        if (q.seid == b.seid) plane = &q;
+      if (!plane)
+        throw InputError(where(res, b.ref), card + " MIRROR: no SEMPLN " + std::to_string(b.seid) +
+                                                 "; expected SEMPLN " + std::to_string(b.seid) + " PLANE P1 P2 P3 (GRIDs or POINTs of the residual)");
+      Eigen::Vector3d x[3];
+      for (int k = 0; k < 3; ++k) {
+        bool found = false;
+        x[k] = point_position(res, plane->p[static_cast<std::size_t>(k)], found);
+        if (!found)
+          throw InputError(where(res, plane->ref), "SEMPLN " + std::to_string(plane->seid) + ", field " + std::to_string(4 + k) + " (P" +
+                                                       std::to_string(k + 1) + "): " + std::to_string(plane->p[static_cast<std::size_t>(k)]) +
+                                                       " is no GRID or POINT of the residual; expected a point of the residual");
+      }
+      Eigen::Matrix3d F;
+      if (!frame(x, F))
+        throw InputError(where(res, plane->ref), "SEMPLN " + std::to_string(plane->seid) +
+                                                     ": its points are collinear; expected three points that define a plane");
+      mirror(res, b, m, sp.move, x[0], F.col(2));
+    }
+    // the part's own section: its loads and constraints
+    const auto own = std::find_if(parts.begin(), parts.end(), [&](const Part& p) { return p.seid == b.seid; });
+    if (own != parts.end()) {
+      const Model& o = own->model;
+      image.begin = own->begin;
+      if (!o.grids.empty() || !o.shells.empty() || !o.bars.empty() || !o.solids.empty() || !o.rods.empty())
+        throw InputError(where(res, own->begin), "BEGIN SUPER = " + std::to_string(b.seid) + ": the section of a " + b.type +
+                                                     " part holds grids or elements; expected its loads and constraints only (its "
+                                                     "structure is part " + std::to_string(b.rseid) + "'s)");
+      append(m.point_loads, o.point_loads), append(m.pressure_loads, o.pressure_loads), append(m.face_loads, o.face_loads);
+      append(m.grid_pressure_loads, o.grid_pressure_loads), append(m.gravity_loads, o.gravity_loads);
+      append(m.rotational_loads, o.rotational_loads), append(m.bar_line_loads, o.bar_line_loads);
+      append(m.scalar_loads, o.scalar_loads), append(m.load_combinations, o.load_combinations);
+      append(m.enforced_motions, o.enforced_motions), append(m.spcs, o.spcs), append(m.spcadds, o.spcadds);
+      append(m.grid_temperatures, o.grid_temperatures), append(m.default_temperatures, o.default_temperatures);
+      append(m.bar_temperatures, o.bar_temperatures), append(m.aset, o.aset), append(m.omit, o.omit), append(m.bset, o.bset);
+      append(m.eigen_methods, o.eigen_methods), append(m.params, o.params), append(m.unsupported, o.unsupported);
+      append(m.read_warnings, o.read_warnings), append(m.points, o.points);
+      for (const auto& [name, count] : o.card_counts) m.card_counts[name] += count;
+      parts.erase(own);
+    }
+    images.push_back(std::move(image));
+  }
+  for (auto& p : images) parts.push_back(std::move(p));
+}
+
 }  // namespace
 
 void assemble_parts(Model& residual, std::vector<Part>& parts) {
   if (parts.empty() && residual.part_locations.empty() && residual.part_bulks.empty() && residual.part_connections.empty()) return;
+  expand_images(residual, parts);
   Assembler(residual, parts).run();
 }
 

@@ -44,6 +44,32 @@ void parse_seloc(const Card& card, ReaderState& st) {
   st.model.part_locations.push_back(l);
 }
 
+// SEMPLN SEID PLANE P1 P2 P3
+void parse_sempln(const Card& card, ReaderState& st) {
+  fem::MirrorPlane p;
+  p.seid = card.id(0, "SEID");
+  if (upper(card.text_or(1, "PLANE", "")) != "PLANE") card.fail(1, "PLANE", card.got(1) + "; expected PLANE");
+  static const char* names[3] = {"P1", "P2", "P3"};
+  for (std::size_t k = 0; k < 3; ++k) p.p[k] = card.id(2 + k, names[k]);
+  p.ref = card.ref();
+  st.model.mirror_planes.push_back(p);
+}
+
+// EXTRN GID1 C1 GID2 C2 ... (C = 0: a scalar point)
+void parse_extrn(const Card& card, ReaderState& st) {
+  fem::ExternalBoundary b;
+  std::size_t last = card.size();
+  while (last > 0 && card.blank(last - 1)) --last;
+  if (last == 0) card.fail_card("no points; expected GID1 C1 GID2 C2 ...");
+  if (last % 2) card.fail(last, "Ci", "blank after " + card.got(last - 1) + "; expected grid or scalar point ids and components in pairs");
+  for (std::size_t i = 0; i < last; i += 2) {
+    const int id = card.id(i, "GIDi");
+    b.points.emplace_back(id, card.components(i + 1, "Ci", false, true));
+  }
+  b.ref = card.ref();
+  st.model.external_points.push_back(b);
+}
+
 // SEBULK SEID TYPE RSEID METHOD TOL LOC UNITNO
 void parse_sebulk(const Card& card, ReaderState& st) {
   fem::PartBulk b;
@@ -59,6 +85,11 @@ void parse_sebulk(const Card& card, ReaderState& st) {
   if (method != "AUTO" && method != "MANUAL") card.fail(3, "METHOD", card.got(3) + "; expected AUTO, MANUAL or blank");
   b.manual = method == "MANUAL";
   tolerance_and_location(card, 4, b.tol, b.loc);
+  b.unit = card.integer_or(6, "UNITNO", 0);
+  if (b.type == "EXTOP4" && b.unit <= 0)
+    card.fail(6, "UNITNO", card.got(6) + "; expected the Fortran unit (> 0) of an ASSIGN INPUTT4 holding the part's matrices");
+  if ((b.type == "MIRROR" || b.type == "REPEAT") && b.rseid <= 0)
+    card.fail(2, "RSEID", card.got(2) + "; expected the id of the part that TYPE = " + b.type + " copies");
   b.ref = card.ref();
   st.model.part_bulks.push_back(b);
 }

@@ -34,16 +34,62 @@ std::string_view first_word(std::string_view s) {
 
 }  // namespace
 
-bool CaseControlReader::executive_line(const Line& line, const std::string&, std::uint32_t) {
+bool CaseControlReader::executive_line(const Line& line, const std::string& file, std::uint32_t) {
   const std::string t = upper(trim(line.text));
   if (t == "CEND") return true;
   const std::string_view word = first_word(t);
+  if (word == "ASSIGN") assign(std::string(trim(line.text)), location(file, line.number));
   if (word == "SOL") {
     std::string_view rest = trim(std::string_view(t).substr(3));
     if (!rest.empty() && rest[0] == ',') rest = trim(rest.substr(1));
     model_.case_control.sol = std::string(first_word(rest));
   }
   return false;
+}
+
+// ASSIGN INPUTT4='path',UNIT=n[,FORM=FORMATTED|UNFORMATTED][,...]; other ASSIGNs (OUTPUT2, DBALL,
+// ...) are not kept. The path keeps its case; the keywords may be in any case and spacing.
+void CaseControlReader::assign(const std::string& text, const std::string& where) {
+  std::string_view rest = trim(std::string_view(text).substr(6));
+  const std::size_t eq = rest.find('=');
+  if (eq == std::string_view::npos || upper(trim(rest.substr(0, eq))) != "INPUTT4") return;
+  rest = trim(rest.substr(eq + 1));
+  AssignedUnit a;
+  a.where = where;
+  std::string_view options;
+  if (!rest.empty() && (rest[0] == '\'' || rest[0] == '"')) {
+    const std::size_t close = rest.find(rest[0], 1);
+    if (close == std::string_view::npos)
+      throw InputError(where + ": ASSIGN INPUTT4: the file name " + quote_field(rest) + " has no closing quote; expected INPUTT4='file',UNIT=n");
+    a.path = std::string(rest.substr(1, close - 1));
+    options = rest.substr(close + 1);
+  } else {
+    const std::size_t comma = rest.find(',');
+    a.path = std::string(trim(rest.substr(0, comma)));
+    options = comma == std::string_view::npos ? std::string_view() : rest.substr(comma);
+  }
+  if (a.path.empty()) throw InputError(where + ": ASSIGN INPUTT4: no file name; expected INPUTT4='file',UNIT=n");
+  while (!options.empty()) {
+    options = trim(options);
+    if (!options.empty() && options[0] == ',') options = trim(options.substr(1));
+    const std::size_t comma = options.find(',');
+    const std::string_view opt = trim(options.substr(0, comma));
+    options = comma == std::string_view::npos ? std::string_view() : options.substr(comma);
+    const std::size_t e = opt.find('=');
+    if (e == std::string_view::npos || upper(trim(opt.substr(0, e))) != "UNIT") continue;
+    const std::string_view v = trim(opt.substr(e + 1));
+    int unit = 0;
+    const auto [p, ec] = std::from_chars(v.data(), v.data() + v.size(), unit);
+    if (ec != std::errc() || p != v.data() + v.size() || unit <= 0)
+      throw InputError(where + ": ASSIGN INPUTT4, UNIT: got " + quote_field(v) + "; expected a Fortran unit number > 0");
+    a.unit = unit;
+  }
+  if (a.unit == 0) throw InputError(where + ": ASSIGN INPUTT4='" + a.path + "': no UNIT; expected INPUTT4='file',UNIT=n");
+  for (const auto& b : assigned_)
+    if (b.unit == a.unit)
+      throw InputError(where + ": ASSIGN INPUTT4: UNIT " + std::to_string(a.unit) + " is assigned already at " + b.where +
+                       "; expected one file per unit");
+  assigned_.push_back(a);
 }
 
 void CaseControlReader::case_line(const Line& line, const std::string& file, std::uint32_t file_index) {

@@ -9,6 +9,7 @@
 #include "seflex/common/error.hpp"
 #include "seflex/fem/finalize.hpp"
 #include "seflex/fem/parts.hpp"
+#include "nastran_external.hpp"
 #include "seflex/io/nastran.hpp"
 #include "seflex/io/nastran_card.hpp"
 #include "seflex/io/nastran_cards.hpp"
@@ -75,7 +76,7 @@ constexpr CardType kCardTypes[] = {
     {"PLOAD", parse_pload},     {"CBUSH1D", parse_cbush1d}, {"PBUSH1D", parse_pbush1d}, {"TABLEM1", parse_tablem},
     {"TABLEM2", parse_tablem},  {"TABLEM3", parse_tablem},  {"TABLEM4", parse_tablem},  {"CPYRAM", parse_cpyram},
     {"POINT", parse_point},     {"SELOC", parse_seloc},     {"SEBULK", parse_sebulk},   {"SECONCT", parse_seconct},
-    {"SELABEL", parse_selabel},
+    {"SELABEL", parse_selabel}, {"EXTRN", parse_extrn},     {"SEMPLN", parse_sempln},
 };
 constexpr std::size_t kNumCardTypes = sizeof(kCardTypes) / sizeof(kCardTypes[0]);
 
@@ -184,7 +185,7 @@ bool starts_with_keyword(std::string_view text, std::string_view word) {
 class DeckReader {
  public:
   DeckReader(fem::Model& model, const std::filesystem::path& main_dir, const std::vector<NastranSymbol>& symbols)
-      : model_(model), state_(model), case_control_(model), includes_(main_dir, symbols) {}
+      : model_(model), state_(model), case_control_(model), includes_(main_dir, symbols), main_dir_(main_dir) {}
 
   void read_main(std::string text, const std::string& name, const std::filesystem::path& dir,
                  const std::filesystem::path& canonical) {
@@ -218,6 +219,7 @@ class DeckReader {
     }
     parts_.clear();
     st_ = &state_;
+    read_external_matrices(model_, parts, case_control_.assigned_units(), main_dir_);
     fem::assemble_parts(model_, parts);
   }
 
@@ -668,6 +670,7 @@ class DeckReader {
   bool in_part_ = false;       ///< inside BEGIN SUPER = n
   bool skipping_ = false;      ///< inside BEGIN SUPER = n MASSID = m: lines skipped
   bool executive_statements_ = false;
+  std::filesystem::path main_dir_;  ///< relative ASSIGN file names start here
   Card card_;
   Card pattern_;                                ///< the last '=' replication line (and its continuations)
   std::array<std::vector<std::string>, 2> generated_;  ///< fields of the last two replicated cards

@@ -706,6 +706,10 @@ class Classifier {
     for (const auto& r : m_.rbars) alpha("RBAR", r.alpha, r.ref);
     for (const auto& r : m_.rigid_bodies) alpha(fem::rigid_body_card(r), r.alpha, r.ref);
     for (const auto& r : m_.rigid_rods) alpha(fem::rigid_rod_card(r), r.alpha, r.ref);
+    if (s_ == Solution::Convert)
+      for (const auto& x : m_.external_parts)
+        report_.add(Kind::Unused, "SEBULK EXTOP4", x.ref,
+                    "not written: the external superelement's matrices (" + x.source + ") stay in its OP4 file", 1);
     drilling();
   }
 

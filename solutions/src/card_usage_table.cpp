@@ -165,7 +165,7 @@ const CardRole kRows[] = {
     // output
     {"MONPNT1", R::Output, N, nullptr}, {"MONPNT2", R::Output, N, nullptr}, {"MONPNT3", R::Output, N, nullptr},
     {"MONSUM", R::Output, N, nullptr}, {"PARVEC", R::Output, N, nullptr}, {"MDLPRM HDF5 (output format)", R::Output, N, nullptr},
-    {"ECHOON", R::Output, N, nullptr}, {"ECHOOFF", R::Output, N, nullptr},
+    {"ECHOON", R::Output, N, nullptr}, {"ECHOOFF", R::Output, N, nullptr}, {"DTI", R::OtherMatrix, N, nullptr},
     // optimisation
     {"DESVAR", R::Optimization, N, nullptr}, {"DRESP1", R::Optimization, N, nullptr}, {"DRESP2", R::Optimization, N, nullptr},
     {"DRESP3", R::Optimization, N, nullptr}, {"DCONSTR", R::Optimization, N, nullptr}, {"DCONADD", R::Optimization, N, nullptr},

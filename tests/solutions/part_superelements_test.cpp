@@ -189,5 +189,81 @@ TEST(PartSuperelements, Errors) {
                              {"part 1, CQUAD4 2: references grid 1, which part 1 does not define"}));
 }
 
+
+// SEBULK MIRROR and REPEAT against the same structure written out: part 1 (two plates from x = 0 to 2,
+// a CBAR with an orientation vector, a CONM2 with an offset and products of inertia) joins the
+// clamped residual edge at x = 0; part 2 is its MIRROR through the plane x = 0 (SEMPLN on three
+// POINTs), part 3 its REPEAT moved up by one (SELOC). Written out: the mirrored grids, each shell's
+// connectivity reversed (the image's normal is the image of the normal), the CBAR's vector and the
+// CONM2's offset reflected (its inertia H I H), the repeat's grids shifted; each part's own loads
+// (a copy inherits none of its primary's) on the grids and elements of the copy.
+TEST(PartSuperelements, MirrorAndRepeatEqualTheModelWrittenOut) {
+  const std::string head = "SOL 101\nCEND\nSPC = 1\nLOAD = 2\nMETHOD = 3\nBEGIN BULK\nEIGRL,3,,,6\nPARAM,WTMASS,1.\n";
+  const std::string props = "MAT1,1,7.e10,,0.3,2700.\nPSHELL,1,1,0.01,1,,1\nPBAR,3,1,1.e-4,1.e-9,2.e-9,3.e-9\n";
+  const auto g = [](int id, double x, double y) { return grid(id, Eigen::Vector3d(x, y, 0.0)); };
+  // the part as its primary writes it: grids a..f at (0,0) (0,1) (1,0) (1,1) (2,0) (2,1)
+  const auto structure = [&](const int* n, const char* v, const char* offset, const char* inertia, bool reverse, int e0) {
+    std::string d;
+    const auto quad = [&](int id, int a, int b, int c, int dd) {
+      return reverse ? "CQUAD4," + std::to_string(id) + ",1," + std::to_string(a) + "," + std::to_string(dd) + "," + std::to_string(c) + "," + std::to_string(b) + "\n"
+                     : "CQUAD4," + std::to_string(id) + ",1," + std::to_string(a) + "," + std::to_string(b) + "," + std::to_string(c) + "," + std::to_string(dd) + "\n";
+    };
+    d += quad(e0 + 1, n[0], n[2], n[3], n[1]) + quad(e0 + 2, n[2], n[4], n[5], n[3]);
+    d += "CBAR," + std::to_string(e0 + 3) + ",3," + std::to_string(n[4]) + "," + std::to_string(n[5]) + "," + v + "\n";
+    d += "CONM2," + std::to_string(e0 + 4) + "," + std::to_string(n[5]) + ",,2.5," + offset + "\n," + inertia + "\n";
+    return d;
+  };
+  const char* inertia = "0.3,0.02,0.4,-0.03,0.05,0.5";     // I11 I21 I22 I31 I32 I33
+  const char* inertia_m = "0.3,-0.02,0.4,0.03,0.05,0.5";   // H I H, H = diag(-1, 1, 1)
+  // explicit model
+  std::string whole = head + props + g(1, 0, 0) + g(2, 0, 1) + "SPC1,1,123456,1,2\n";
+  for (int i = 1; i <= 2; ++i) whole += g(10 + 2 * i + 1, i, 0) + g(10 + 2 * i + 2, i, 1);    // part 1: 13-16
+  for (int i = 1; i <= 2; ++i) whole += g(20 + 2 * i + 1, -i, 0) + g(20 + 2 * i + 2, -i, 1);  // mirror: 23-26
+  whole += g(32, 0, 2) + g(34, 1, 2) + g(36, 2, 2);                                            // repeat's new grids
+  const int p1[6] = {1, 2, 13, 14, 15, 16}, p2[6] = {1, 2, 23, 24, 25, 26}, p3[6] = {2, 32, 14, 34, 16, 36};
+  whole += structure(p1, "1.,0.3,0.5", "0.1,0.2,0.3", inertia, false, 10);
+  whole += structure(p2, "-1.,0.3,0.5", "-0.1,0.2,0.3", inertia_m, true, 20);
+  whole += structure(p3, "1.,0.3,0.5", "0.1,0.2,0.3", inertia, false, 30);
+  const std::string loads1 = "FORCE,2,15,,1.,100.,-50.,30.\n", loads3 = "MOMENT,2,16,,1.,5.,6.,7.\n";
+  whole += loads1 + "FORCE,2,25,,1.,20.,40.,-60.\nPLOAD2,2,500.,21\n" + "MOMENT,2,36,,1.,5.,6.,7.\nENDDATA\n";
+  // with parts
+  const int q[6] = {11, 12, 13, 14, 15, 16};
+  std::string parts = head + props + g(1, 0, 0) + g(2, 0, 1) + "SPC1,1,123456,1,2\n";
+  parts += "POINT,901,,0.,0.,0.\nPOINT,902,,0.,1.,0.\nPOINT,903,,0.,0.,1.\nSEMPLN,2,PLANE,901,902,903\nSEBULK,2,MIRROR,1\n";
+  parts += "POINT,911,,0.,1.,0.\nPOINT,912,,2.,1.,0.\nPOINT,913,,2.,2.,0.\nSEBULK,3,REPEAT,1\nSELOC,3,11,15,16,911,912,913\n";
+  parts += "BEGIN SUPER = 1\n" + props;
+  for (int i = 0; i <= 2; ++i) parts += g(10 + 2 * i + 1, i, 0) + g(10 + 2 * i + 2, i, 1);
+  parts += structure(q, "1.,0.3,0.5", "0.1,0.2,0.3", inertia, false, 0) + loads1;
+  parts += "BEGIN SUPER = 2\nFORCE,2,15,,1.,20.,40.,-60.\nPLOAD2,2,500.,1\n";
+  parts += "BEGIN SUPER = 3\n" + loads3 + "ENDDATA\n";
+  const fem::Model mw = test::read_deck(whole, "whole.bdf");
+  const fem::Model mp = test::read_deck(parts, "parts.bdf");
+  EXPECT_TRUE(mp.unsupported.empty()) << mp.unsupported.front().name;
+  ASSERT_EQ(mp.grids.size(), mw.grids.size());
+  ASSERT_EQ(mp.shells.size(), 6u);
+  const auto sw = solutions::solve_static(mw);
+  const auto sp = solutions::solve_static(mp);
+  double scale = 0, worst = 0;
+  for (const auto& gw : mw.grids) {
+    const auto a = motion_at(mw, sw, gw.x_basic), b = motion_at(mp, sp, gw.x_basic);
+    scale = std::max(scale, a.cwiseAbs().maxCoeff());
+    worst = std::max(worst, (a - b).cwiseAbs().maxCoeff());
+  }
+  EXPECT_GT(scale, 1e-6);
+  EXPECT_LE(worst, 1e-12 * scale) << worst / scale;  // measured 0: the same sums in the same order
+  const auto fw = solutions::solve_normal_modes(mw);
+  const auto fp = solutions::solve_normal_modes(mp);
+  ASSERT_EQ(fw.eigenvalues.size(), 6);
+  ASSERT_EQ(fp.eigenvalues.size(), 6);
+  for (int k = 0; k < 6; ++k) EXPECT_NEAR(fp.eigenvalues[k], fw.eigenvalues[k], 1e-12 * fw.eigenvalues[k]) << "mode " << k + 1;  // measured 0
+  // errors: no SEMPLN for the mirror; a primary that does not exist
+  std::string d = parts;
+  d.replace(d.find("SEMPLN,2,"), 9, "SEMPLN,4,");
+  EXPECT_TRUE(test::mentions(test::read_error(d, "parts.bdf"), {"SEBULK 2 MIRROR: no SEMPLN 2; expected SEMPLN 2 PLANE P1 P2 P3"}));
+  d = parts;
+  d.replace(d.find("SEBULK,3,REPEAT,1"), 17, "SEBULK,3,REPEAT,7");
+  EXPECT_TRUE(test::mentions(test::read_error(d, "parts.bdf"), {"SEBULK 3, field 4 (RSEID): no part 7 in the deck"}));
+}
+
 }  // namespace
 }  // namespace seflex

@@ -31,8 +31,14 @@ DirectMatrixSelection direct_matrix_selection(const Model& model);
 Eigen::SparseMatrix<double> dmig_matrix(const Model& model, const DofMap& dofs, const std::vector<std::string>& names,
                                         double scale);
 
-/// Add the K2GG and M2GG selections to assembled K and M (both triangles stored). No-op when none
-/// is selected. Called by fem::assemble.
+/// The g-set stiffness (mass = false) or mass of the model's external superelements (SEBULK EXTOP4,
+/// Model::external_parts: their KAA or MAA at their assembled dofs; not scaled by CK2/CM2 or WTMASS:
+/// the matrices are physical, as Nastran wrote them). Throws InputError naming the SEBULK for a dof
+/// the model lacks.
+Eigen::SparseMatrix<double> external_part_matrix(const Model& model, const DofMap& dofs, bool mass);
+
+/// Add the K2GG and M2GG selections and the external superelements' matrices to assembled K and M
+/// (both triangles stored). No-op when there are none. Called by fem::assemble.
 void add_direct_matrices(const Model& model, const DofMap& dofs, Eigen::SparseMatrix<double>& K,
                          Eigen::SparseMatrix<double>& M);
 

@@ -119,6 +119,9 @@ struct Model {
   std::vector<PartLocation> part_locations;    ///< SELOC
   std::vector<PartBulk> part_bulks;            ///< SEBULK
   std::vector<PartConnection> part_connections;  ///< SECONCT
+  std::vector<MirrorPlane> mirror_planes;      ///< SEMPLN
+  std::vector<ExternalBoundary> external_points;  ///< EXTRN (in an external part's bulk data)
+  std::vector<ExternalMatrices> external_parts;   ///< SEBULK EXTOP4 matrices (io reads them; dmig.hpp adds them)
   std::vector<PartSummary> parts;              ///< filled by assemble_parts
 
   std::vector<UnsupportedCard> unsupported;  ///< in order of first appearance

@@ -36,6 +36,33 @@ struct PartBulk {
   bool manual = false;            ///< METHOD = MANUAL: boundary only from SECONCT
   double tol = 1e-5;              ///< location tolerance of the boundary search (QRG default 1.0E-5)
   bool loc = true;                ///< LOC = YES: SECONCT pairs checked for coincidence
+  int unit = 0;                   ///< UNITNO: the Fortran unit (ASSIGN INPUTT4) of EXTOP4 matrices
+  CardRef ref;
+};
+
+/// EXTRN GID1 C1 GID2 C2 ...: the boundary points of an external superelement, in a part's bulk data
+/// (components as a mask, bit c - 1 for component c; 0 for a scalar point).
+struct ExternalBoundary {
+  std::vector<std::pair<int, unsigned>> points;
+  CardRef ref;
+};
+
+/// The matrices of an external superelement (SEBULK EXTOP4: KAA, MAA of its OP4 file) on its a-set:
+/// dofs (grid id, component 1-6) or (scalar point id, 0), in the part's ids as read and in the
+/// assembled model's ids after assemble_parts; each grid dof in its grid's displacement system.
+struct ExternalMatrices {
+  int seid = 0;
+  std::vector<std::pair<int, int>> dofs;
+  Eigen::MatrixXd K, M;
+  std::string source;  ///< the OP4 file, for messages
+  CardRef ref;         ///< the SEBULK
+};
+
+/// SEMPLN SEID PLANE P1 P2 P3: the plane of GRIDs or POINTs of the residual that a SEBULK MIRROR part
+/// is the mirror image through.
+struct MirrorPlane {
+  int seid = 0;
+  std::array<int, 3> p{};
   CardRef ref;
 };
 

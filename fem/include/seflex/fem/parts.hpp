@@ -24,7 +24,14 @@
 //   warning; a part's PARAM holds if the residual sets the same value, else it is listed (the
 //   residual's value or the default used); cards of a part seflex does not assemble (GRAV, LOAD, SPOINT, ...) are listed as
 //   unsupported ("part superelement: GRAV (not assembled)": every solution refuses them), as are parts
-//   of SEBULK types other than PRIMARY (mirrors, repeats, external matrices), which are not assembled.
+//   of SEBULK types COLLCTR, EXTERNAL, EXTOP2 and FRFOP2, which are not assembled;
+// - SEBULK MIRROR / REPEAT (with SEMPLN): the part is made first, as a part of its own, from its
+//   primary's structure (mirrored through the plane, shells' and solids' connectivity reversed, vectors
+//   reflected; or copied) and its own section's loads and constraints (docs/nastran-support.md);
+// - SEBULK EXTOP4: the part's KAA and MAA (Part::model.external_parts, read by io from the OP4 file) on
+//   its EXTRN points go to Model::external_parts at the assembled dofs (its scalar points joined by
+//   SECONCT pairs, its boundary grids' rows turned into the joined grids' axes where they differ); a
+//   coordinate system of the part defined as the residual's of the same id is that one.
 // Errors (InputError, naming file:line, the card and the part): a SELOC, SEBULK or SECONCT naming a
 // part without a BEGIN SUPER section, SELOC points collinear or undefined, a SECONCT grid missing or
 // not coincident, two grids of one part meeting at one boundary point, a reference from a part's card

@@ -162,6 +162,8 @@ void parse_seloc(const Card&, ReaderState&);
 void parse_sebulk(const Card&, ReaderState&);
 void parse_seconct(const Card&, ReaderState&);
 void parse_selabel(const Card&, ReaderState&);
+void parse_extrn(const Card&, ReaderState&);
+void parse_sempln(const Card&, ReaderState&);
 
 /// A PARAM value as stored in fem::Param::values: text upper-cased; numbers rewritten in a form
 /// std::from_chars reads (Nastran's "2.59-3" becomes "0.00259"), reals always with '.' or an exponent.

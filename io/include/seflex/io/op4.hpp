@@ -41,6 +41,20 @@ struct Op4ExportOptions {
 /// each in body axes, then the modal coordinates) and optionally RECOVERY (form 2).
 std::vector<Op4Matrix> superelement_op4_matrices(const se::Superelement& body, bool recovery);
 
+/// Every matrix of OP4 text (any layout Nastran's OUTPUT4 writes as text, FORMATTED): the header
+/// NCOL NROW NF NTYPE (4 x I8, NROW < 0: "bigmat") NAME (A8) and a Fortran format such as 1P,3E23.16
+/// or 1P,5E16.9 (E or D; the values are read at that width, 3-digit exponents without E too); columns
+/// dense (ICOL IROW NW, IROW > 0: NW values from row IROW) or sparse (IROW = 0: strings, each headed
+/// by IS = (L + 1) * 65536 + IROW, or by "L + 1  IROW" in bigmat, L the words of the string), ended
+/// by column NCOL + 1. Real single (NTYPE 1) and double (2) precision; a double value is 2 words in a
+/// sparse string's L and NW. `file` names the text in errors. Throws InputError naming the file, the
+/// matrix, the line and what was expected for anything else (complex matrices, a binary file, a
+/// row outside the matrix, a value that is no number, text ending inside a matrix).
+std::vector<Op4Matrix> parse_op4(const std::string& text, const std::string& file);
+
+/// parse_op4 of a file's text. Throws InputError if it cannot be read.
+std::vector<Op4Matrix> read_op4(const std::filesystem::path& path);
+
 /// Write them (atomically). Throws InputError if the file exists and !overwrite, cannot be
 /// written, or RECOVERY is asked of a superelement stored without one.
 void write_op4(const se::Superelement& body, const std::filesystem::path& path, const Op4ExportOptions& options = {});
