@@ -1,8 +1,6 @@
 // FORCE / MOMENT / PLOAD2 / GRAV / RFORCE / LOAD (see loads.hpp).
 #include "seflex/fem/loads.hpp"
 
-#include "seflex/fem/dmig.hpp"
-
 #include <cmath>
 #include <optional>
 #include <unordered_map>
