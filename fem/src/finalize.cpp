@@ -711,18 +711,23 @@ SourceRef where(const Model& model, const CardRef& ref) {
   return s;
 }
 
+namespace {
+/// The first value of PARAM p as a number; throws InputError naming the card if it is not one.
+double param_value_number(const Model& model, const Param& p) {
+  if (p.values.empty() || p.values[0].empty())
+    throw InputError(where(model, p.ref), "PARAM " + p.name + ", field 3 (V1): blank; expected a number");
+  const std::string& v = p.values[0];
+  double x = 0;
+  const auto [ptr, ec] = std::from_chars(v.data(), v.data() + v.size(), x);
+  if (ec != std::errc() || ptr != v.data() + v.size())
+    throw InputError(where(model, p.ref), "PARAM " + p.name + ", field 3 (V1): got '" + v + "'; expected a number");
+  return x;
+}
+}  // namespace
+
 double param_number(const Model& model, const std::string& name, double fallback) {
-  for (const auto& p : model.params) {
-    if (p.name != name) continue;
-    if (p.values.empty() || p.values[0].empty())
-      throw InputError(where(model, p.ref), "PARAM " + name + ", field 3 (V1): blank; expected a number");
-    const std::string& v = p.values[0];
-    double x = 0;
-    const auto [ptr, ec] = std::from_chars(v.data(), v.data() + v.size(), x);
-    if (ec != std::errc() || ptr != v.data() + v.size())
-      throw InputError(where(model, p.ref), "PARAM " + name + ", field 3 (V1): got '" + v + "'; expected a number");
-    return x;
-  }
+  for (const auto& p : model.params)
+    if (p.name == name) return param_value_number(model, p);
   return fallback;
 }
 
@@ -750,11 +755,7 @@ double param_number(const Model& model, const std::string& name) {
 bool param_at_default(const Model& model, const Param& p) {
   if (p.name == "AUTOSPC") return !p.values.empty() && p.values[0] == "YES";
   const double* fallback = numeric_default(p.name);
-  if (!fallback) return false;
-  Model one;  // the parameter alone, read as the model reads it (errors name its card)
-  one.files = model.files;
-  one.params.push_back(p);
-  return param_number(one, p.name, *fallback) == *fallback;
+  return fallback && param_value_number(model, p) == *fallback;
 }
 
 bool mystran_plate_elements(const Model& model) {
