@@ -73,6 +73,18 @@ std::string external_deck(const std::string& assign, int modes = 12) {
   return d + "SPOINT,101,THRU," + last + "\nENDDATA\n";
 }
 
+// The reduction of the part: interface grids 5 and 6, `modes` fixed-interface modes, dynamics only.
+reduction::SuperelementOptions part_options(int modes) {
+  reduction::SuperelementOptions o;
+  o.interface_ids = {5, 6};
+  o.modes.modes = modes;
+  o.modes.extra_modes = 0;
+  o.modes.backend = linalg::EigenBackend::Dense;
+  o.full_mesh = false;
+  o.stiffening = false;
+  return o;
+}
+
 Eigen::Matrix<double, 6, 1> motion(const fem::Model& m, const solutions::StaticSolution& s, int id) {
   Eigen::Matrix<double, 6, 1> u;
   for (int c = 0; c < 6; ++c) u[c] = s.u_g[*fem::find_dof(m, s.dofs, id, c + 1)];
@@ -82,13 +94,7 @@ Eigen::Matrix<double, 6, 1> motion(const fem::Model& m, const solutions::StaticS
 TEST(ExternalSuperelement, RoundTripThroughOp4EqualsTheWholeModel) {
   const test::TempDir dir;
   const fem::Model part = test::read_deck(part_deck(), "part.bdf");
-  reduction::SuperelementOptions o;
-  o.interface_ids = {5, 6};
-  o.modes.modes = 0;
-  o.modes.extra_modes = 0;
-  o.modes.backend = linalg::EigenBackend::Dense;
-  o.full_mesh = false;
-  o.stiffening = false;
+  reduction::SuperelementOptions o = part_options(0);
   reduction::SuperelementInfo info;
   reduction::reduce_to_superelement(part, o, &info);
   const auto n_interior = static_cast<int>(info.stats.n_interior);
@@ -184,14 +190,7 @@ TEST(ExternalSuperelement, SeTestN11AgainstMscNastran) {
 TEST(ExternalSuperelement, GravLoadsTheResidualsMassOnly) {
   const test::TempDir dir;
   const fem::Model part = test::read_deck(part_deck(), "part.bdf");
-  reduction::SuperelementOptions o;
-  o.interface_ids = {5, 6};
-  o.modes.modes = 4;
-  o.modes.extra_modes = 0;
-  o.modes.backend = linalg::EigenBackend::Dense;
-  o.full_mesh = false;
-  o.stiffening = false;
-  const se::Superelement body = reduction::reduce_to_superelement(part, o);
+  const se::Superelement body = reduction::reduce_to_superelement(part, part_options(4));
   io::write_op4(body, dir / "part.op4", {false, true});
   std::string deck = external_deck("ASSIGN INPUTT4='part.op4',UNIT=31\n", body.num_modes);
   deck.replace(deck.find("LOAD = 2"), 8, "LOAD = 4");
