@@ -3,7 +3,8 @@
 // full inertia, and the elastic force with geometric stiffening when the file has its invariants, each
 // without and with its tangent matrices, on a superelement file, at a random
 // deformed and rotating state (the same state every repetition, so the figure is the arithmetic of
-// one Newton-iteration evaluation of one body).
+// one Newton-iteration evaluation of one body); last, the full inertia's stacked-invariant product for
+// three stages, as three matrix-vector products and as one three-column product.
 //
 // usage: aic_kernel_bench BODY.se [REPEATS]
 // prints one line per kernel: microseconds per call (best of 5 batches of REPEATS calls).
@@ -109,5 +110,13 @@ int main(int argc, char** argv) {
   line("inertia simplified (force)", [&] { mbd::inertia_force(e, kin, mbd::InertiaModel::Simplified, v, a, false, in, ws); });
   line("inertia simplified (force + matrices)",
        [&] { mbd::inertia_force(e, kin, mbd::InertiaModel::Simplified, v, a, true, in, ws); });
+  // The full inertia's stacked-invariant product (the largest single cost of a residual) for the three
+  // stages of a Radau IIA-5 step: three matrix-vector products, as today, or one three-column product
+  // (would batching the stages pay?).
+  Eigen::MatrixXd eta3 = Eigen::MatrixXd::Random(e.inv_by_xi.cols(), 3), t3(e.inv_by_xi.rows(), 3);
+  line("stacked invariants x xi, 3 stages: 3 x gemv", [&] {
+    for (int c = 0; c < 3; ++c) t3.col(c).noalias() = e.inv_by_xi * eta3.col(c);
+  });
+  line("stacked invariants x xi, 3 stages: 1 gemm", [&] { t3.noalias() = e.inv_by_xi * eta3; });
   return 0;
 }

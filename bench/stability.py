@@ -21,6 +21,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # bench/: the shared helpers in bench/lib/
 from lib.runs import edit_scene, save_figure  # noqa: E402
 from lib.measures import spinup_lag  # noqa: E402
+from lib.linear_test import amplitude_per_period  # noqa: E402  (the one-step maps of the linear test)
 
 
 def run(binary, text, folder, extra=()):
@@ -82,33 +83,6 @@ def final_angle(folder, hinge="H1"):
         for line in f:
             last = line
     return float(last.strip().split(",")[head.index(f"{hinge}.phi_deg")])
-
-
-def amplitude_per_period(method, w_h, rho=None):
-    """Amplitude ratio over one period 2 pi / w of the undamped oscillator x'' = -w^2 x integrated at
-    steps h (w_h = w h): |eigenvalue|^(2 pi / w_h) of the one-step map. Radau IIA-5: its stability
-    function R(z) = 1 + z b^T (I - z A)^-1 1 at z = i w h (Hairer and Wanner II, IV.3). Generalized-alpha
-    in Arnold and Bruls' form (mbd/src/solvers/integrator.cpp, coefficients of step_control.hpp): the
-    spectral radius of its map on (x, v, xddot, a)."""
-    if method == "radau5":
-        s6 = np.sqrt(6.0)
-        A = np.array([[(88 - 7 * s6) / 360, (296 - 169 * s6) / 1800, (-2 + 3 * s6) / 225],
-                      [(296 + 169 * s6) / 1800, (88 + 7 * s6) / 360, (-2 - 3 * s6) / 225],
-                      [(16 - s6) / 36, (16 + s6) / 36, 1.0 / 9]])
-        z = 1j * w_h
-        r = abs(1 + z * A[2] @ np.linalg.solve(np.eye(3) - z * A, np.ones(3)))
-    else:
-        am, af = (2 * rho - 1) / (rho + 1), rho / (rho + 1)
-        g = 0.5 + af - am
-        b = 0.25 * (g + 0.5) ** 2
-        h, w2 = 1.0, w_h * w_h  # h = 1: w = w_h
-        # Unknowns of a step (x1, v1, xdd1, a1) from (x0, v0, xdd0, a0):
-        #   x1 - b h^2 a1 = x0 + h v0 + (0.5 - b) h^2 a0;  v1 - g h a1 = v0 + (1 - g) h a0;
-        #   xdd1 + w^2 x1 = 0;  (1 - am) a1 - (1 - af) xdd1 = af xdd0 - am a0.
-        L = np.array([[1, 0, 0, -b * h * h], [0, 1, 0, -g * h], [w2, 0, 1, 0], [0, 0, -(1 - af), 1 - am]], dtype=float)
-        R = np.array([[1, h, 0, (0.5 - b) * h * h], [0, 1, 0, (1 - g) * h], [0, 0, 0, 0], [0, 0, af, -am]], dtype=float)
-        r = max(abs(np.linalg.eigvals(np.linalg.solve(L, R))))
-    return r ** (2 * np.pi / w_h)
 
 
 def radau_study(b, a, link, nolock, cmd):

@@ -236,6 +236,7 @@ class DeckReader {
     src->text = std::move(text);
     src->index = static_cast<std::uint32_t>(model_.files.size());
     model_.files.push_back(name);
+    for (auto& p : parts_) p->part.model.files.push_back(name);  // a part's cards name the files by the same index
     sources_.push_back(std::move(src));
     return *sources_.back();
   }
@@ -369,6 +370,7 @@ class DeckReader {
         if (p->part.seid == seid) part = p.get();
       if (!part) {
         parts_.push_back(std::make_unique<PartReading>(seid, fem::CardRef{src.index, line.number}));
+        parts_.back()->part.model.files = model_.files;
         part = parts_.back().get();
       }
       st_ = &part->state;

@@ -87,6 +87,16 @@ TEST(NastranBadInput, DuplicateIds) {
   EXPECT_TRUE(mentions(read_error(d + "GRDSET,,1\nGRDSET,,2\n"), {"deck.bdf:8: GRDSET", "a second GRDSET", "deck.bdf:7"}));
 }
 
+// The same inside a part (BEGIN SUPER): its cards name the first card's file from the part's own
+// model, which once held no file names (a fuzz finding: `seflex info` crashed with SIGSEGV).
+TEST(NastranBadInput, SecondBarDefaultsInAPart) {
+  const std::string d = base_deck() + "BEGIN SUPER = 2\nGRID,20,,1.,0.,0.\n";
+  EXPECT_TRUE(mentions(read_error(d + "BAROR,,,,,1.,0.,0.\nBAROR,,,,,1.,0.,0.\n"),
+                       {"deck.bdf:10: BAROR", "a second BAROR", "(the first is at deck.bdf:9)"}));
+  EXPECT_TRUE(mentions(read_error(d + "GRDSET,,1\nGRDSET,,2\n"), {"deck.bdf:10: GRDSET", "a second GRDSET", "deck.bdf:9"}));
+  expect_cli_input_error(d + "BEAMOR,,,,,1.,0.,0.\nBEAMOR,,,,,1.,0.,0.\n", {"a second BEAMOR"});
+}
+
 TEST(NastranBadInput, IncludeCycleAndMissingInclude) {
   test::TempDir dir;
   dir.write("a.bdf", "GRID,1,,0.,0.,0.\nINCLUDE 'b.bdf'\n");
