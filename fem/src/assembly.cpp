@@ -366,10 +366,11 @@ GlobalMatrices assemble(const Model& model, const AssemblyOptions& options) {
     g.M = (g.M + Ms).eval();
     g.M.makeCompressed();
   }
-  add_direct_matrices(model, g.dofs, g.K, g.M);  // K2GG / M2GG (dmig.hpp)
+  add_direct_matrices(model, g.dofs, g.K, g.M, &g.M_bulk);  // K2GG / M2GG, external superelements (dmig.hpp)
   if (options.prune_zeros) {
     g.K.prune(0.0, 0.0);
     g.M.prune(0.0, 0.0);
+    g.M_bulk.prune(0.0, 0.0);
   }
   return g;
 }

@@ -324,8 +324,19 @@ ConstrainedSystem apply_constraints(const Model& model, const GlobalMatrices& g,
   }
 
   // Dofs an external superelement lists but gives no stiffness (zero rows of its KAA: the rotations of
-  // solid grids in its a-set) and nothing else holds: removed even with AUTOSPC off, as MSC does
-  // (its se_test_n11 run, AUTOSPC = NO, solves although five boundary grids' rotations have none).
+  // solid grids in its a-set) and nothing else holds: removed even with AUTOSPC off. This matches one
+  // MSC run, not a documented rule. MSC Nastran 2017.1's se_test_n11 (case control AUTOSPC(NOPRINT) =
+  // NO and PARAM,AUTOSPC,NO; five boundary grids' rotations without stiffness) solves, and its f06
+  // (pyNastran models/superelements/se_test_static) prints no singularity message and decomposes KLL
+  // with a largest matrix-to-factor-diagonal ratio of 27.7 (SIM 4159): those null columns were not in
+  // its l-set. No manual we could read states why: the PARAM AUTOSPC text (NX Nastran QRG, quoted at
+  // eng-tips.com/threads/param-cards-in-nastran.348205) says AUTOSPC = NO leaves singularities
+  // unconstrained and "AUTOSPC provides the correct action for Superelements in all contexts"; nothing
+  // found on SEBULK EXTOP4, external-superelement a-sets or null columns says more (searched: MSC QRG,
+  // Superelements User's Guide, DMAP GPSP). OptiStruct documents a like rule for solids only (PARAM
+  // AUTOSPC remark 2: rotations of grids connected only to solid elements are removed even with AUTOSPC
+  // off). Whether MSC does the same for a K2GG DMIG's null columns is unknown; seflex does not (with
+  // AUTOSPC off they stay free).
   if (!options.autospc)
     for (const ExternalMatrices& x : model.external_parts)
       for (std::size_t i = 0; i < x.dofs.size(); ++i) {

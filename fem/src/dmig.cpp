@@ -109,14 +109,20 @@ Eigen::SparseMatrix<double> external_part_matrix(const Model& model, const DofMa
 }
 
 void add_direct_matrices(const Model& model, const DofMap& dofs, Eigen::SparseMatrix<double>& K,
-                         Eigen::SparseMatrix<double>& M) {
-  if (!model.external_parts.empty()) {
+                         Eigen::SparseMatrix<double>& M, Eigen::SparseMatrix<double>* M_bulk) {
+  const bool external = !model.external_parts.empty();
+  if (external) {
     K = K + external_part_matrix(model, dofs, false);
+    if (M_bulk) *M_bulk = M;
     M = M + external_part_matrix(model, dofs, true);
   }
   const DirectMatrixSelection s = direct_matrix_selection(model);
   if (!s.k2gg.empty()) K = K + dmig_matrix(model, dofs, s.k2gg, param_number(model, "CK2"));
-  if (!s.m2gg.empty()) M = M + dmig_matrix(model, dofs, s.m2gg, param_number(model, "CM2"));
+  if (!s.m2gg.empty()) {
+    const Eigen::SparseMatrix<double> M2 = dmig_matrix(model, dofs, s.m2gg, param_number(model, "CM2"));
+    M = M + M2;
+    if (external && M_bulk) *M_bulk = *M_bulk + M2;
+  }
 }
 
 }  // namespace seflex::fem

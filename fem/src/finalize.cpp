@@ -312,10 +312,9 @@ class Finalizer {
   /// A note of a feature read with an approximation (listed with the unsupported cards, as the
   /// reader's notes; card usage reports it as approximated). Replaces an earlier note of this name.
   void note(const std::string& name, const CardRef& first, std::size_t count) {
-    auto it = std::find_if(m_.unsupported.begin(), m_.unsupported.end(), [&](const UnsupportedCard& u) { return u.name == name; });
-    if (it == m_.unsupported.end()) it = m_.unsupported.insert(m_.unsupported.end(), UnsupportedCard{name, 0, first, {}});
-    it->count = count;
-    it->first = first;
+    UnsupportedCard& u = UnsupportedNotes(m_.unsupported).add(name, first, 0);  // at most twice per finalize
+    u.count = count;
+    u.first = first;
   }
 
   /// The elements share one id space (CBAR, CBEAM, CROD, CONROD, CQUAD4, CTRIA3, CONM2, CONM1,

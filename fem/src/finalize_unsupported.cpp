@@ -14,7 +14,7 @@ namespace {
 
 class LeaveOut {
  public:
-  explicit LeaveOut(Model& m) : m_(m) {}
+  explicit LeaveOut(Model& m) : m_(m), notes_(m.unsupported) {}
 
   void run() {
     for (const auto& u : m_.unsupported) {
@@ -174,11 +174,7 @@ class LeaveOut {
                   m_.rods.end());
   }
 
-  void note(const std::string& name, const CardRef& ref) {
-    const auto [it, inserted] = notes_.try_emplace(name, m_.unsupported.size());
-    if (inserted) m_.unsupported.push_back({name, 0, ref, {}});
-    ++m_.unsupported[it->second].count;
-  }
+  void note(const std::string& name, const CardRef& ref) { notes_.add(name, ref); }
 
   /// "deck.bdf:12: PBEAML 5 on MAT8: no element uses it; ..." (reason: "PBEAML on MAT8").
   void unused_property(const std::string& reason, int pid, const CardRef& ref) {
@@ -192,7 +188,7 @@ class LeaveOut {
   std::unordered_map<int, std::string> unsupported_mat_, unsupported_prop_, other_mat_;
   std::unordered_set<int> mat1_;
   std::unordered_map<std::string, std::unordered_map<int, std::string>> dropped_;  ///< kind -> pid -> reason
-  std::unordered_map<std::string, std::size_t> notes_;
+  UnsupportedNotes notes_;  ///< adds to m_.unsupported
 };
 
 }  // namespace

@@ -10,7 +10,6 @@
 #include "seflex/common/error.hpp"
 #include "seflex/fem/assembly.hpp"
 #include "seflex/fem/bar_line_load.hpp"
-#include "seflex/fem/dmig.hpp"
 #include "seflex/fem/element_shell_quad4.hpp"
 #include "seflex/fem/element_shell_quadratic.hpp"
 #include "seflex/fem/element_shell_tria3.hpp"
@@ -51,14 +50,14 @@ class LoadBuilder {
     return found || has_enforced_motion_set(m_, sid);
   }
 
-  /// p += M a for the accumulated grid accelerations of GRAV and RFORCE (one product for all).
+  /// p += M a for the accumulated grid accelerations of GRAV and RFORCE (one product for all). M is
+  /// the mass without the external superelements' (GlobalMatrices::load_mass): their mass takes no
+  /// GRAV or RFORCE of the bulk data, since in Nastran a part's loads are its own (an external part's,
+  /// its PA matrix), as MSC's se_test_n11 run shows.
   void finish(const Eigen::SparseMatrix<double>* M) {
     if (!acc_) return;
     SEFLEX_DEMAND(M != nullptr && M->rows() == dofs_.size(), "load_vector: GRAV/RFORCE need the assembled mass matrix");
     p_ += *M * *acc_;
-    // An external superelement's mass takes no GRAV or RFORCE of the bulk data: in Nastran a part's
-    // loads are its own (an external part's, its PA matrix), as MSC's se_test_n11 run shows.
-    if (!m_.external_parts.empty()) p_ -= external_part_matrix(m_, dofs_, true) * *acc_;
   }
 
  private:

@@ -170,25 +170,9 @@ bool assembled_type(const std::string& type) {
   return type == "PRIMARY" || type == "EXTOP4" || type == "MIRROR" || type == "REPEAT";
 }
 
-/// Note a card of a part that seflex does not assemble (listed as unsupported in the residual).
-void note(Model& res, const std::string& name, std::size_t count, const CardRef& ref) {
-  if (count == 0) return;
-  for (auto& u : res.unsupported)
-    if (u.name == name) {
-      u.count += count;
-      return;
-    }
-  res.unsupported.push_back({name, count, ref, {}});
-}
-
-template <class V>
-void note_kind(Model& res, const V& items, const std::string& card) {
-  if (!items.empty()) note(res, "part superelement: " + card + " (not assembled)", items.size(), items.front().ref);
-}
-
 class Assembler {
  public:
-  Assembler(Model& res, std::vector<Part>& parts) : res_(res), parts_(parts) {}
+  Assembler(Model& res, std::vector<Part>& parts) : res_(res), parts_(parts), notes_(res.unsupported) {}
 
   void run() {
     collect();
@@ -205,6 +189,7 @@ class Assembler {
  private:
   Model& res_;
   std::vector<Part>& parts_;
+  UnsupportedNotes notes_;  ///< adds to res_.unsupported
   std::vector<Se> ses_;
   std::unordered_map<int, std::size_t> by_seid_;
   std::vector<std::size_t> node_se_, node_grid_;
@@ -215,6 +200,15 @@ class Assembler {
   std::unordered_set<int> excluded_;   ///< parts not assembled (SEBULK TYPE other than PRIMARY)
 
   [[noreturn]] void fail(const CardRef& ref, const std::string& msg) const { throw InputError(where(res_, ref), msg); }
+
+  /// Note `count` cards of a part that seflex does not assemble (listed as unsupported in the residual).
+  void note(const std::string& name, std::size_t count, const CardRef& ref) {
+    if (count > 0) notes_.add(name, ref, count);
+  }
+  template <class V>
+  void note_kind(const V& items, const std::string& card) {
+    if (!items.empty()) note("part superelement: " + card + " (not assembled)", items.size(), items.front().ref);
+  }
   bool skipped(const PartConnection& c) const { return excluded_.count(c.seid_a) || excluded_.count(c.seid_b); }
 
   void collect() {
@@ -226,7 +220,7 @@ class Assembler {
     for (const auto& b : res_.part_bulks)
       if (!assembled_type(b.type)) {
         excluded_.insert(b.seid);
-        note(res_, "part superelement: SEBULK TYPE = " + b.type + " (the part is not assembled)", 1, b.ref);
+        note("part superelement: SEBULK TYPE = " + b.type + " (the part is not assembled)", 1, b.ref);
       }
     for (auto& p : parts_) {
       if (excluded_.count(p.seid)) continue;
@@ -854,49 +848,48 @@ class Assembler {
         }
       const bool same = r ? r->values == p.values : param_at_default(m, p);
       if (!same)
-        note(res_, "PARAM of a part superelement other than the residual's (the residual's value or the default used)", 1, p.ref);
+        note("PARAM of a part superelement other than the residual's (the residual's value or the default used)", 1, p.ref);
     }
-    if (!se_->external()) note_kind(res_, m.spoints, "SPOINT");
-    if (!se_->external()) note_kind(res_, m.external_points, "EXTRN");
-    note_kind(res_, m.mass_props, "PMASS");
-    note_kind(res_, m.scalar_masses, "CMASSi");
-    note_kind(res_, m.conm1, "CONM1");
-    note_kind(res_, m.genels, "GENEL");
-    note_kind(res_, m.bends, "CBEND");
-    note_kind(res_, m.bend_props, "PBEND");
-    note_kind(res_, m.rigid_bodies, "RBE1/CRIGDi");
-    note_kind(res_, m.rigid_rods, "RROD/CRIGDR");
-    note_kind(res_, m.spcadds, "SPCADD");
-    note_kind(res_, m.mpcs, "MPC");
-    note_kind(res_, m.mpcadds, "MPCADD");
-    note_kind(res_, m.scalar_loads, "SLOAD");
-    note_kind(res_, m.bar_line_loads, "PLOAD1");
-    note_kind(res_, m.gravity_loads, "GRAV");
-    note_kind(res_, m.rotational_loads, "RFORCE");
-    note_kind(res_, m.load_combinations, "LOAD");
-    note_kind(res_, m.grid_temperatures, "TEMP");
-    note_kind(res_, m.default_temperatures, "TEMPD");
-    note_kind(res_, m.bar_temperatures, "TEMPRB");
-    note_kind(res_, m.dmigs, "DMIG");
-    note_kind(res_, m.material_tables, "TABLEMi");
-    note_kind(res_, m.suport, "SUPORT");
-    note_kind(res_, m.part_locations, "SELOC");
-    note_kind(res_, m.part_bulks, "SEBULK");
-    note_kind(res_, m.part_connections, "SECONCT");
-    note_kind(res_, m.mirror_planes, "SEMPLN");
+    if (!se_->external()) note_kind(m.spoints, "SPOINT");
+    if (!se_->external()) note_kind(m.external_points, "EXTRN");
+    note_kind(m.mass_props, "PMASS");
+    note_kind(m.scalar_masses, "CMASSi");
+    note_kind(m.conm1, "CONM1");
+    note_kind(m.genels, "GENEL");
+    note_kind(m.bends, "CBEND");
+    note_kind(m.bend_props, "PBEND");
+    note_kind(m.rigid_bodies, "RBE1/CRIGDi");
+    note_kind(m.rigid_rods, "RROD/CRIGDR");
+    note_kind(m.spcadds, "SPCADD");
+    note_kind(m.mpcs, "MPC");
+    note_kind(m.mpcadds, "MPCADD");
+    note_kind(m.scalar_loads, "SLOAD");
+    note_kind(m.bar_line_loads, "PLOAD1");
+    note_kind(m.gravity_loads, "GRAV");
+    note_kind(m.rotational_loads, "RFORCE");
+    note_kind(m.load_combinations, "LOAD");
+    note_kind(m.grid_temperatures, "TEMP");
+    note_kind(m.default_temperatures, "TEMPD");
+    note_kind(m.bar_temperatures, "TEMPRB");
+    note_kind(m.dmigs, "DMIG");
+    note_kind(m.material_tables, "TABLEMi");
+    note_kind(m.suport, "SUPORT");
+    note_kind(m.part_locations, "SELOC");
+    note_kind(m.part_bulks, "SEBULK");
+    note_kind(m.part_connections, "SECONCT");
+    note_kind(m.mirror_planes, "SEMPLN");
     std::size_t scalar_springs = 0;
     for (const auto& e : m.springs) scalar_springs += e.scalar_points;
     for (const auto& e : m.springs)
       if (e.scalar_points) {
-        note(res_, "part superelement: CELAS3/CELAS4 (not assembled)", scalar_springs, e.ref);
+        note("part superelement: CELAS3/CELAS4 (not assembled)", scalar_springs, e.ref);
         break;
       }
-    if (!m.suport1.empty()) note(res_, "part superelement: SUPORT1 (not assembled)", m.suport1.size(), m.suport1.front().dofs.ref);
+    if (!m.suport1.empty()) note("part superelement: SUPORT1 (not assembled)", m.suport1.size(), m.suport1.front().dofs.ref);
     for (const auto& u : m.unsupported) {
       if (external_only(u.name)) continue;
-      note(res_, u.name, u.count, u.first);
-      for (auto& r : res_.unsupported)
-        if (r.name == u.name) r.members.insert(r.members.end(), u.members.begin(), u.members.end());
+      note(u.name, u.count, u.first);
+      if (UnsupportedCard* r = notes_.find(u.name)) r->members.insert(r->members.end(), u.members.begin(), u.members.end());
     }
     for (auto& w : m.read_warnings) res_.read_warnings.push_back(std::move(w));
     for (const auto& [name, n] : m.card_counts) res_.card_counts[name] += n;

@@ -22,22 +22,16 @@
 namespace seflex::io {
 namespace nastran {
 
-void ReaderState::note_unsupported(std::string_view name, const fem::CardRef& ref) {
-  auto [it, inserted] = unsupported_index.try_emplace(std::string(name), model.unsupported.size());
-  if (inserted) model.unsupported.push_back({std::string(name), 0, ref, {}});
-  ++model.unsupported[it->second].count;
-}
+void ReaderState::note_unsupported(std::string_view name, const fem::CardRef& ref) { unsupported.add(std::string(name), ref); }
 
 void ReaderState::note_unsupported_member(std::string_view name, int id, const fem::CardRef& ref) {
-  note_unsupported(name, ref);
-  model.unsupported[unsupported_index.at(std::string(name))].members.push_back({id, ref});
+  unsupported.add(std::string(name), ref).members.push_back({id, ref});
 }
 
 void ReaderState::note_unsupported_card(const Card& card) {
-  note_unsupported(card.name(), card.ref());
+  fem::UnsupportedCard& u = unsupported.add(std::string(card.name()), card.ref());
   int sid = 0;
-  if (parse_int(card.raw(0), sid))
-    model.unsupported[unsupported_index.at(std::string(card.name()))].members.push_back({sid, card.ref()});
+  if (parse_int(card.raw(0), sid)) u.members.push_back({sid, card.ref()});
 }
 
 namespace {

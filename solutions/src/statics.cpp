@@ -83,7 +83,7 @@ std::vector<StaticSolution> solve(const fem::Model& model, const std::vector<Cas
       s.selection = cases[k];
       s.dofs = g.dofs;
       s.n_free = c.n_free();
-      s.p_g = s.selection.load ? fem::load_vector(model, g.dofs, *s.selection.load, &g.M)
+      s.p_g = s.selection.load ? fem::load_vector(model, g.dofs, *s.selection.load, &g.load_mass())
                                : Eigen::VectorXd::Zero(g.dofs.size());
       if (s.selection.temperature) s.p_g += fem::thermal_load_vector(model, g.dofs, *s.selection.temperature);
       // SPCD of the LOAD set: enforced values on dofs of the SPC set (enforced_motion.hpp)

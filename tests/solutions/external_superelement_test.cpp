@@ -12,6 +12,7 @@
 //   against the same matrix, and its errors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -72,6 +73,18 @@ std::string external_deck(const std::string& assign, int modes = 12) {
   return d + "SPOINT,101,THRU," + last + "\nENDDATA\n";
 }
 
+// The reduction of the part: interface grids 5 and 6, `modes` fixed-interface modes, dynamics only.
+reduction::SuperelementOptions part_options(int modes) {
+  reduction::SuperelementOptions o;
+  o.interface_ids = {5, 6};
+  o.modes.modes = modes;
+  o.modes.extra_modes = 0;
+  o.modes.backend = linalg::EigenBackend::Dense;
+  o.full_mesh = false;
+  o.stiffening = false;
+  return o;
+}
+
 Eigen::Matrix<double, 6, 1> motion(const fem::Model& m, const solutions::StaticSolution& s, int id) {
   Eigen::Matrix<double, 6, 1> u;
   for (int c = 0; c < 6; ++c) u[c] = s.u_g[*fem::find_dof(m, s.dofs, id, c + 1)];
@@ -81,13 +94,7 @@ Eigen::Matrix<double, 6, 1> motion(const fem::Model& m, const solutions::StaticS
 TEST(ExternalSuperelement, RoundTripThroughOp4EqualsTheWholeModel) {
   const test::TempDir dir;
   const fem::Model part = test::read_deck(part_deck(), "part.bdf");
-  reduction::SuperelementOptions o;
-  o.interface_ids = {5, 6};
-  o.modes.modes = 0;
-  o.modes.extra_modes = 0;
-  o.modes.backend = linalg::EigenBackend::Dense;
-  o.full_mesh = false;
-  o.stiffening = false;
+  reduction::SuperelementOptions o = part_options(0);
   reduction::SuperelementInfo info;
   reduction::reduce_to_superelement(part, o, &info);
   const auto n_interior = static_cast<int>(info.stats.n_interior);
@@ -174,6 +181,35 @@ TEST(ExternalSuperelement, SeTestN11AgainstMscNastran) {
     const auto& s = sols[static_cast<std::size_t>(4 + k)];
     EXPECT_NEAR(0.5 * s.u_g.dot(s.p_g), work[k], 1e-7 * work[k]) << "subcase " << 105 + k;  // measured <= 1.5e-8 (8 digits printed)
   }
+}
+
+// GRAV of the bulk data loads the residual's mass only, not the external part's MAA (in Nastran a
+// part's loads are its own; se_test_n11 above shows MSC's): on the strip, plate 3 alone. Its total
+// mass rho t A = 4400 * 0.01 * 1 = 44 kg (the rigid-body acceleration's resultant is the total mass
+// whatever the mass matrix), against 44 + 171 kg if the part's plates 1-2 were loaded too.
+TEST(ExternalSuperelement, GravLoadsTheResidualsMassOnly) {
+  const test::TempDir dir;
+  const fem::Model part = test::read_deck(part_deck(), "part.bdf");
+  const se::Superelement body = reduction::reduce_to_superelement(part, part_options(4));
+  io::write_op4(body, dir / "part.op4", {false, true});
+  std::string deck = external_deck("ASSIGN INPUTT4='part.op4',UNIT=31\n", body.num_modes);
+  deck.replace(deck.find("LOAD = 2"), 8, "LOAD = 4");
+  deck.insert(deck.find("BEGIN BULK\n") + 11, "GRAV,4,,9.81,0.,0.,-1.\n");
+  dir.write("strip.bdf", deck);
+  const fem::Model ext = io::read_nastran(dir / "strip.bdf");
+  ASSERT_EQ(ext.external_parts.size(), 1u);
+  const auto s = solutions::solve_static(ext);
+  double fz = 0, other = 0;
+  for (const int g : {5, 6, 7, 8})
+    for (int c = 1; c <= 6; ++c) {
+      const double f = s.p_g[*fem::find_dof(ext, s.dofs, g, c)];
+      if (c == 3) fz += f;
+      else other = std::max(other, std::abs(f));
+    }
+  const double weight = 4400. * 0.01 * 1.0 * 9.81;
+  EXPECT_NEAR(fz, -weight, 1e-12 * weight);
+  EXPECT_LE(other, 1e-12 * weight);  // the plate's lumped mass: no moments, no in-plane force
+  for (int q = 101; q <= 100 + body.num_modes; ++q) EXPECT_EQ(s.p_g[*fem::find_dof(ext, s.dofs, q, 0)], 0.0) << "SPOINT " << q;
 }
 
 // One 5 x 4 matrix in the OP4 layouts Nastran writes: dense double (seflex's own), sparse single

@@ -146,7 +146,7 @@ TEST(RotationalLoad, PointMassLoadsAndSigns) {
   const fem::Model m = test::read_deck("SOL 101\nCEND\nSPC = 1\nLOAD = 5\nBEGIN BULK\n" + bulk +
                                        "RFORCE,5,1,,0.5,0.,0.,2.,,+R\n+R,0.25\nENDDATA\n");
   const fem::GlobalMatrices g = fem::assemble(m, fem::assembly_options(m));
-  const Eigen::VectorXd pv = fem::load_vector(m, g.dofs, 5, &g.M);
+  const Eigen::VectorXd pv = fem::load_vector(m, g.dofs, 5, &g.load_mass());
   const double w = 2 * kPi * 0.5 * 2.0, alpha = 2 * kPi * 0.25 * 2.0;
   const double mt = 3.0 + 0.5 * 2700 * 1e-4 * 2.0;  // CONM2 + half the rod
   // basic force: (mt w^2 2, -mt alpha 2, 0); moment of the CONM2's force about the grid: offset

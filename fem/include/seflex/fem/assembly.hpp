@@ -45,6 +45,12 @@ struct GlobalMatrices {
   DofMap dofs;
   Eigen::SparseMatrix<double> K;  ///< n x n, n = dofs.size()
   Eigen::SparseMatrix<double> M;  ///< n x n, WTMASS applied
+  /// M without the external superelements' MAA (SEBULK EXTOP4, Model::external_parts): the mass the
+  /// bulk data's GRAV and RFORCE act on (an external part's loads are its own). 0 x 0 when the model
+  /// has no external superelement (then that mass is M itself): use load_mass().
+  Eigen::SparseMatrix<double> M_bulk;
+  /// The g-set mass GRAV and RFORCE load (fem::load_vector): M_bulk, or M without external superelements.
+  const Eigen::SparseMatrix<double>& load_mass() const { return M_bulk.rows() > 0 ? M_bulk : M; }
 };
 
 /// Assemble K and M of a finalized model. Throws InputError (naming the card) for elements with

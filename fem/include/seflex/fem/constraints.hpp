@@ -25,7 +25,8 @@
 //   already taken) is removed, as Nastran's AUTOSPC does in the grid's CD system; scalar points
 //   when their diagonal is zero. Dofs in `no_autospc` are neither removed nor part of the blocks;
 //   with AUTOSPC off, the dofs an external superelement (Model::external_parts) lists with a zero
-//   row of KAA are still removed where nothing else gives them stiffness (MSC does so);
+//   row of KAA are still removed where nothing else gives them stiffness (as MSC did in its se_test_n11
+//   run; no documented rule found: constraints.cpp);
 // - f (Free): the rest, numbered in increasing g order (f_to_g).
 #include <Eigen/SparseCore>
 #include <cstdint>

@@ -38,8 +38,10 @@ Eigen::SparseMatrix<double> dmig_matrix(const Model& model, const DofMap& dofs, 
 Eigen::SparseMatrix<double> external_part_matrix(const Model& model, const DofMap& dofs, bool mass);
 
 /// Add the K2GG and M2GG selections and the external superelements' matrices to assembled K and M
-/// (both triangles stored). No-op when there are none. Called by fem::assemble.
+/// (both triangles stored). No-op when there are none. With external superelements, `M_bulk` (if not
+/// null) is set to M without their MAA: the elements' mass plus M2GG (GlobalMatrices::M_bulk). Called
+/// by fem::assemble.
 void add_direct_matrices(const Model& model, const DofMap& dofs, Eigen::SparseMatrix<double>& K,
-                         Eigen::SparseMatrix<double>& M);
+                         Eigen::SparseMatrix<double>& M, Eigen::SparseMatrix<double>* M_bulk = nullptr);
 
 }  // namespace seflex::fem

@@ -39,7 +39,8 @@
 // LOAD   SID S S1 L1 S2 L2 ...:  S * sum_i S_i * (load set L_i); a set is every FORCE, MOMENT,
 //                               PLOAD2, GRAV and RFORCE card with that SID.
 //
-// GRAV and RFORCE use the assembled mass matrix (WTMASS and M2GG included), once for all of them:
+// GRAV and RFORCE use the assembled mass matrix (WTMASS and M2GG included; an external superelement's
+// MAA not: GlobalMatrices::load_mass), once for all of them:
 // the grid accelerations of every inertia card of the set (scaled) are summed into one g-set vector
 // a and p += M a. With a lumped mass this is Nastran's per-grid 6 x 6 mass times the grid's rigid-
 // body acceleration (MYSTRAN GRAV_PROC, RFORCE_PROC); with COUPMASS the coupling terms are kept,
@@ -74,8 +75,9 @@
 namespace seflex::fem {
 
 /// Load vector (size dofs.size()) of load set `sid`: a LOAD combination if one has this SID,
-/// otherwise the load cards with this SID. `M_gg` is the assembled g-set mass matrix (assembly.hpp),
-/// needed when the set holds GRAV or RFORCE cards (InvariantError if it is then null).
+/// otherwise the load cards with this SID. `M_gg` is the g-set mass GRAV and RFORCE act on
+/// (GlobalMatrices::load_mass, assembly.hpp), needed when the set holds GRAV or RFORCE cards
+/// (InvariantError if it is then null).
 /// Throws InputError if nothing has this SID, if a LOAD references an undefined set, or a card
 /// references an undefined grid, element or coordinate system, or a PLOAD2 element is not a shell.
 Eigen::VectorXd load_vector(const Model& model, const DofMap& dofs, int sid,

@@ -43,6 +43,23 @@ struct UnsupportedCard {
   std::vector<Member> members;
 };
 
+/// Adds notes to a list of unsupported cards (Model::unsupported): one entry per name, in the order
+/// of the first note, counted, keeping the card reference of the first note. A name -> position index
+/// makes each note O(1). The index holds the entries the list had when the UnsupportedNotes was made
+/// plus those it added: code that adds or erases entries otherwise makes a new one afterwards.
+class UnsupportedNotes {
+ public:
+  explicit UnsupportedNotes(std::vector<UnsupportedCard>& list);
+  /// `count` more of `name`; a new entry (at the end) keeps `first`. The entry is valid until the next note.
+  UnsupportedCard& add(const std::string& name, const CardRef& first, std::size_t count = 1);
+  /// The entry of `name`, or nullptr.
+  UnsupportedCard* find(const std::string& name);
+
+ private:
+  std::vector<UnsupportedCard>* list_;
+  std::unordered_map<std::string, std::size_t> index_;
+};
+
 // ---------------------------------------------------------------------------------------------
 struct Model {
   std::vector<std::string> files;   ///< files[CardRef::file]; files[0] is the main deck
@@ -124,7 +141,7 @@ struct Model {
   std::vector<ExternalMatrices> external_parts;   ///< SEBULK EXTOP4 matrices (io reads them; dmig.hpp adds them)
   std::vector<PartSummary> parts;              ///< filled by assemble_parts
 
-  std::vector<UnsupportedCard> unsupported;  ///< in order of first appearance
+  std::vector<UnsupportedCard> unsupported;  ///< in order of first appearance (UnsupportedNotes adds to it)
   /// What the reader chose where a deck could be read two ways, one sentence each starting with
   /// file:line (an INCLUDE found relative to both the main deck's and the including file's folder,
   /// two different files: which one was read). Every command prints them as warnings.

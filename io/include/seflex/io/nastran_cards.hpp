@@ -15,7 +15,7 @@ namespace seflex::io::nastran {
 
 /// What the card parsers share while one deck is read.
 struct ReaderState {
-  explicit ReaderState(fem::Model& m) : model(m) {}
+  explicit ReaderState(fem::Model& m) : model(m), unsupported(m.unsupported) {}
   fem::Model& model;
   /// Per GRID (same order as model.grids): which of CP (1), CD (2), PS (4) were blank, for GRDSET.
   std::vector<std::uint8_t> grid_blank;
@@ -24,8 +24,8 @@ struct ReaderState {
   std::vector<bool> dmig_has_header;
   /// model.params[0, case_control_params) came from the case control (set at BEGIN BULK).
   std::size_t case_control_params = 0;
-  /// Name -> index in model.unsupported.
-  std::unordered_map<std::string, std::size_t> unsupported_index;
+  /// Adds to model.unsupported.
+  fem::UnsupportedNotes unsupported;
 
   /// Record a card (or a feature of a card) seflex reads but does not use: counted, first location kept.
   void note_unsupported(std::string_view name, const fem::CardRef& ref);
