@@ -321,8 +321,6 @@ Eigen::Matrix<double, 12, 1> bar_thermal_load(const BarElement& e, double alpha,
 
 namespace {
 
-/// Rigid-body mass (6 x 6, element axes, about the reference axis) of a slice of mass m whose centre
-/// is at r = (0, y, z) and whose polar inertia about its own line (parallel to x) is j.
 /// The cross-product matrix of r = (0, y, z).
 Eigen::Matrix3d cross_matrix(const Eigen::Vector2d& yz) {
   Eigen::Matrix3d X;
@@ -330,6 +328,8 @@ Eigen::Matrix3d cross_matrix(const Eigen::Vector2d& yz) {
   return X;
 }
 
+/// Rigid-body mass (6 x 6, element axes, about the reference axis) of a slice of mass m whose centre
+/// is at r = (0, y, z) and whose polar inertia about its own line (parallel to x) is j.
 Eigen::Matrix<double, 6, 6> slice_mass(double m, const Eigen::Vector2d& yz, double j) {
   const Eigen::Matrix3d X = cross_matrix(yz);
   Eigen::Matrix<double, 6, 6> M;
