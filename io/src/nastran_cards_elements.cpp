@@ -89,9 +89,7 @@ void parse_bar_like(const Card& card, ReaderState& st, bool beam) {
 
 void parse_bar_defaults(const Card& card, ReaderState& st, fem::BarDefaults& d) {
   if (d.present) {
-    const auto& first = st.model.files[d.ref.file];
-    card.fail_card("a second " + std::string(card.name()) + " (the first is at " + location(first, d.ref.line) +
-                   "); expected at most one");
+    card.fail_card("a second " + std::string(card.name()) + " (the first is at " + st.where(d.ref) + "); expected at most one");
   }
   d.present = true;
   d.ref = card.ref();

@@ -53,8 +53,7 @@ void parse_grid(const Card& card, ReaderState& st) {
 void parse_grdset(const Card& card, ReaderState& st) {
   auto& d = st.model.grdset;
   if (d.present) {
-    const auto& first = st.model.files[d.ref.file];
-    card.fail_card("a second GRDSET (the first is at " + location(first, d.ref.line) + "); expected at most one");
+    card.fail_card("a second GRDSET (the first is at " + st.where(d.ref) + "); expected at most one");
   }
   d.present = true;
   d.ref = card.ref();

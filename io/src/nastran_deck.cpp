@@ -28,6 +28,8 @@ void ReaderState::note_unsupported_member(std::string_view name, int id, const f
   unsupported.add(std::string(name), ref).members.push_back({id, ref});
 }
 
+std::string ReaderState::where(const fem::CardRef& ref) const { return location(files.at(ref.file), ref.line); }
+
 void ReaderState::note_unsupported_card(const Card& card) {
   fem::UnsupportedCard& u = unsupported.add(std::string(card.name()), card.ref());
   int sid = 0;
@@ -179,7 +181,7 @@ bool starts_with_keyword(std::string_view text, std::string_view word) {
 class DeckReader {
  public:
   DeckReader(fem::Model& model, const std::filesystem::path& main_dir, const std::vector<NastranSymbol>& symbols)
-      : model_(model), state_(model), case_control_(model), includes_(main_dir, symbols), main_dir_(main_dir) {}
+      : model_(model), state_(model, model.files), case_control_(model), includes_(main_dir, symbols), main_dir_(main_dir) {}
 
   void read_main(std::string text, const std::string& name, const std::filesystem::path& dir,
                  const std::filesystem::path& canonical) {
@@ -236,7 +238,6 @@ class DeckReader {
     src->text = std::move(text);
     src->index = static_cast<std::uint32_t>(model_.files.size());
     model_.files.push_back(name);
-    for (auto& p : parts_) p->part.model.files.push_back(name);  // a part's cards name the files by the same index
     sources_.push_back(std::move(src));
     return *sources_.back();
   }
@@ -369,8 +370,7 @@ class DeckReader {
       for (auto& p : parts_)
         if (p->part.seid == seid) part = p.get();
       if (!part) {
-        parts_.push_back(std::make_unique<PartReading>(seid, fem::CardRef{src.index, line.number}));
-        parts_.back()->part.model.files = model_.files;
+        parts_.push_back(std::make_unique<PartReading>(seid, fem::CardRef{src.index, line.number}, model_.files));
         part = parts_.back().get();
       }
       st_ = &part->state;
@@ -651,7 +651,7 @@ class DeckReader {
   bool done_ = false;
   /// One BEGIN SUPER = n part as read (its cards may come in several sections).
   struct PartReading {
-    PartReading(int seid, fem::CardRef begin) : state(part.model) {
+    PartReading(int seid, fem::CardRef begin, const std::vector<std::string>& files) : state(part.model, files) {
       part.seid = seid;
       part.begin = begin;
     }

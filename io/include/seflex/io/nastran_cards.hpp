@@ -15,8 +15,11 @@ namespace seflex::io::nastran {
 
 /// What the card parsers share while one deck is read.
 struct ReaderState {
-  explicit ReaderState(fem::Model& m) : model(m), unsupported(m.unsupported) {}
+  /// `files`: the deck's file names (the residual model's Model::files, which a part's model gets only
+  /// when the parts are assembled), indexed by fem::CardRef::file.
+  ReaderState(fem::Model& m, const std::vector<std::string>& files) : model(m), files(files), unsupported(m.unsupported) {}
   fem::Model& model;
+  const std::vector<std::string>& files;
   /// Per GRID (same order as model.grids): which of CP (1), CD (2), PS (4) were blank, for GRDSET.
   std::vector<std::uint8_t> grid_blank;
   /// DMIG name -> index in model.dmigs; whether its header card has been read.
@@ -35,6 +38,8 @@ struct ReaderState {
   /// As note_unsupported, with `id` kept as a member (an element on a property of that id is left
   /// out by fem::finalize, as on an unsupported property card).
   void note_unsupported_member(std::string_view name, int id, const fem::CardRef& ref);
+  /// "file:line" of a card read earlier (of this model or, in a part, of the deck).
+  std::string where(const fem::CardRef& ref) const;
 };
 
 using CardParser = void (*)(const Card&, ReaderState&);
