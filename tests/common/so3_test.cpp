@@ -1,5 +1,5 @@
-// SO(3) helpers: exp/log round trip, the near-pi branch of log, and the left Jacobian and its
-// inverse against central finite differences.
+// SO(3) helpers: exp/log round trip, the near-pi branch of log, the left Jacobian and its
+// inverse against central finite differences, and the projection onto SO(3) (orthonormalize).
 #include <gtest/gtest.h>
 
 #include <random>
@@ -37,4 +37,19 @@ TEST(So3, LeftJacobianMatchesFiniteDifferences) {
   }
   EXPECT_LT((so3::jl(th) - J_fd).norm(), 1e-9);
   EXPECT_LT((so3::jl_inv(th) * so3::jl(th) - Eigen::Matrix3d::Identity()).norm(), 1e-12);
+}
+
+// orthonormalize returns the orthogonal polar factor of R = Q (I + S), S symmetric, which is Q: on
+// both of its branches (a near-rotation's Newton-Schulz step, the SVD beyond 1e-6), a rotation.
+TEST(So3, OrthonormalizeReturnsThePolarFactor) {
+  const Eigen::Matrix3d Q = so3::exp(Eigen::Vector3d(0.4, -1.1, 0.7));
+  Eigen::Matrix3d S;
+  S << 0.3, -0.2, 0.5, -0.2, 0.1, 0.4, 0.5, 0.4, -0.6;
+  for (double size : {1e-12, 1e-9, 1e-7, 1e-5, 1e-2, 0.3}) {
+    const Eigen::Matrix3d R = Q * (Eigen::Matrix3d::Identity() + size * S);
+    const Eigen::Matrix3d P = so3::orthonormalize(R);
+    EXPECT_LT((P.transpose() * P - Eigen::Matrix3d::Identity()).norm(), 1e-14) << "size " << size;
+    EXPECT_NEAR(P.determinant(), 1.0, 1e-14) << "size " << size;
+    EXPECT_LT((P - Q).norm(), 1e-14) << "size " << size;
+  }
 }

@@ -53,10 +53,14 @@ SpinupHistory spinup(int bodies, InertiaModel inertia, bool velocity_tangent = t
 // The seed's simplified mass gives the same answer here (within 1 %): the AIC kinematics rotate the
 // elastic forces with every body, so the centrifugal stiffening of the chain is present; the linear
 // floating-frame failure of this benchmark (unbounded deflection) does not occur.
+// At local error 1e-6: the largest tip lag after 15 s, 5 mm converged (4 bodies: 5.4 mm at 1e-6,
+// 5.0 mm at 1e-7), was integration error at 1e-5, where round-off-level changes of the code (a
+// different 6 x 6 inverse or polar factor in the frame recovery) moved it between 5.6 and 10.6 mm,
+// across the 1 cm bound.
 TEST(Spinup, SimoVuQocBeam) {
-  const SpinupHistory full4 = spinup(4, InertiaModel::Full);
-  const SpinupHistory full8 = spinup(8, InertiaModel::Full);
-  const SpinupHistory simp4 = spinup(4, InertiaModel::Simplified);
+  const SpinupHistory full4 = spinup(4, InertiaModel::Full, true, 1e-6);
+  const SpinupHistory full8 = spinup(8, InertiaModel::Full, true, 1e-6);
+  const SpinupHistory simp4 = spinup(4, InertiaModel::Simplified, true, 1e-6);
   auto peak = [](const SpinupHistory& h, double* t_peak) {
     double m = 0;
     for (std::size_t k = 0; k < h.v.size(); ++k)

@@ -14,10 +14,21 @@ namespace {
 /// The pivot test of Data::factorize: every pivot finite and above 1e-14 of the largest entry
 /// (`scale2`: the square of that entry). Squared moduli throughout: a complex modulus by hypot cost
 /// 4 % of a Radau IIA-5 run of sync-3d (perf), for the same comparisons.
-template <class Matrix>
-bool regular(const Eigen::PartialPivLU<Matrix>& lu, double scale2) {
+template <class Lu>
+bool regular(const Lu& lu, double scale2) {
   const auto pivots2 = lu.matrixLU().diagonal().cwiseAbs2();
   return pivots2.size() == 0 || (std::isfinite(pivots2.sum()) && pivots2.minCoeff() > 1e-28 * scale2);
+}
+
+/// x = A^-1 b with either factorisation (no allocation once x is sized).
+template <class Matrix, class Rhs, class X>
+void solve_into(const Eigen::PartialPivLU<Matrix>& lu, const Rhs& b, X& x) {
+  x = lu.solve(b);
+}
+template <class Scalar, class Rhs, class X>
+void solve_into(const SquaredModulusLu<Scalar>& lu, const Rhs& b, X& x) {
+  x = b;
+  lu.solve_in_place(x);
 }
 
 }  // namespace
@@ -71,11 +82,11 @@ void CondensedLuT<Scalar>::setup(const Model& model, const Sparse& S) {
     blk.X.setZero(blk.m, nc);
     blk.T.setZero(nc, nc);
     blk.y.setZero(blk.m);
-    blk.lu = Eigen::PartialPivLU<Matrix>(blk.m);
+    blk.lu = Lu(blk.m);
   }
   const auto nr = static_cast<Eigen::Index>(kept_.size());
   Srr_.setZero(nr, nr);
-  lu_ = Eigen::PartialPivLU<Matrix>(nr);
+  lu_ = Lu(nr);
   rr_.setZero(nr);
   xr_.setZero(nr);
   // Destination of every stored entry (the matrices are sized for good: the pointers stay valid).
@@ -122,7 +133,7 @@ bool CondensedLuT<Scalar>::factorize(const Model& model, const Sparse& S) {
   for (Block& blk : blocks_) {
     blk.lu.compute(blk.See);
     if (!regular(blk.lu, scale2)) return false;
-    blk.X = blk.lu.solve(blk.Sec);
+    solve_into(blk.lu, blk.Sec, blk.X);
     blk.T.noalias() = blk.Sce * blk.X;
     const auto nc = static_cast<Eigen::Index>(blk.c.size());
     for (Eigen::Index b = 0; b < nc; ++b)
@@ -137,11 +148,11 @@ void CondensedLuT<Scalar>::solve_negated(const Vector& r, Vector& x) {
   if (x.size() != r.size()) x.resize(r.size());
   for (std::size_t p = 0; p < kept_.size(); ++p) rr_[static_cast<Eigen::Index>(p)] = r[kept_[p]];
   for (Block& blk : blocks_) {
-    blk.y = blk.lu.solve(r.segment(blk.first, blk.m));
+    solve_into(blk.lu, r.segment(blk.first, blk.m), blk.y);
     // (a plain product: dot() would conjugate the row of a complex matrix)
     for (std::size_t a = 0; a < blk.c.size(); ++a) rr_[blk.c[a]] -= blk.Sce.row(static_cast<Eigen::Index>(a)).transpose().cwiseProduct(blk.y).sum();
   }
-  xr_ = lu_.solve(rr_);
+  solve_into(lu_, rr_, xr_);
   for (std::size_t p = 0; p < kept_.size(); ++p) x[kept_[p]] = -xr_[static_cast<Eigen::Index>(p)];
   for (Block& blk : blocks_) {
     for (std::size_t a = 0; a < blk.c.size(); ++a) blk.y.noalias() -= blk.X.col(static_cast<Eigen::Index>(a)) * xr_[blk.c[a]];
