@@ -46,6 +46,9 @@ constexpr double kThetaTarget = 0.05;
 // more residual evaluations (8,577 against 6,978); at 1e-5, 1.0e-5 s, 0.002 %, 0.0045 and 0.010 deg
 // against 2.1e-5 s, 0.018 %, 0.0081 and 0.017 deg for 18 % more.
 constexpr double kNewtonShare = 0.1;
+// Newton's too-slow test waits for a second ratio of increments while the iteration's later ratios
+// have been this fast (newton): twice the rate the step control aims at.
+constexpr double kSecondRatio = 2.0 * kThetaTarget;
 
 /// One of the two transformed Newton systems: the modal dofs condensed while the retained dofs fit
 /// a dense LU (condensed_lu.hpp), else a sparse LU.
@@ -192,6 +195,7 @@ class RadauStepper final : public detail::Stepper {
   State stage_[3];
   int newt_ = 0;                // Newton iterations of the last attempt
   double faccon_ = 1.0;         // theta / (1 - theta) of the last contraction measured
+  double later_rate_ = 1.0;     // the last ratio of increments after the first that an attempt measured (newton)
   double theta_ = 0.0;          // Newton's contraction rate of the last attempt
   bool theta_measured_ = false; // ... measured (at least two iterations)
   bool first_ = true;           // no step accepted yet
@@ -446,6 +450,7 @@ detail::StepResult RadauStepper::newton(double h, bool transported) {
       const double thq = dyno / dyno_old;
       theta_ = k == 2 ? thq : std::sqrt(thq * thq_old);
       theta_measured_ = true;
+      if (k >= 3) later_rate_ = thq;
       thq_old = thq;
       if (!(theta_ < 0.99)) {
         if (refresh()) {  // from the present iterate, without its increment: its residuals again
@@ -459,9 +464,22 @@ detail::StepResult RadauStepper::newton(double h, bool transported) {
       }
       faccon_ = theta_ / (1.0 - theta_);
       // Distance to the solution after the remaining iterations, predicted from the rate: too far,
-      // and a smaller step (theta ~ h) is the remedy.
+      // and a new Jacobian or a smaller step (theta ~ h) is the remedy. At the second iteration the
+      // rate is the first ratio of increments alone, which can carry a transient the later ratios do
+      // not: while the last later ratio measured (an earlier attempt's) was fast, below kSecondRatio,
+      // the test waits for the third iteration. On sync-3d (local error 3e-4, largest step 50 ms,
+      // 2026-12-07) the second increment is a median 0.36 of the first (10th-90th percentile
+      // 0.06-0.87) and the third 0.04 of the second (0.02-0.19), also with a new Jacobian at every
+      // step (0.37 and 0.033). Its cause, measured by central differences of the stacked stage
+      // residuals at three steps: the stiffness K differs between the stages (one matrix for the
+      // three leaves 1.2-16 % of the first increment wrong; each stage's own K, 0.2-1.3 %; its own C
+      // or M, 1.2-16 %), so the first ratio measures how the stages differ more than how the
+      // iteration contracts; judged on it, 307 of 682 attempts took a new Jacobian. On the spinning
+      // beam (bench/study/spinup.yaml) the later ratios are often as slow as the first (0.24), and
+      // waiting for them in every step cost 13 % more CPU there. Counts, CPU and errors of both:
+      // docs/benchmarks.md, "Newton's first ratio is not its rate".
       const double dyth = faccon_ * dyno * std::pow(theta_, nit_ - 1 - k) / fnewt_;
-      if (dyth >= 1.0 && st_.adaptive) {
+      if (dyth >= 1.0 && st_.adaptive && !(k == 2 && later_rate_ < kSecondRatio)) {
         if (refresh()) {
           for (int i = 0; i < 3; ++i) F_.col(i) = T(i, 0) * dw1_ + T(i, 1) * dwc_.real() + T(i, 2) * dwc_.imag();
           if (transported) transport(F_, false);
