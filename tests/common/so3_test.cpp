@@ -40,7 +40,8 @@ TEST(So3, LeftJacobianMatchesFiniteDifferences) {
 }
 
 // orthonormalize returns the orthogonal polar factor of R = Q (I + S), S symmetric, which is Q: on
-// both of its branches (a near-rotation's Newton-Schulz step, the SVD beyond 1e-6), a rotation.
+// both of its branches (a near-rotation's Newton-Schulz step within 1e-8 of orthonormal, the SVD
+// beyond: sizes 1e-7 and up), a rotation.
 TEST(So3, OrthonormalizeReturnsThePolarFactor) {
   const Eigen::Matrix3d Q = so3::exp(Eigen::Vector3d(0.4, -1.1, 0.7));
   Eigen::Matrix3d S;
