@@ -545,7 +545,15 @@ void RunOutput::finish(const RunEnd& end) {
      << ",\n  \"event_retries\": " << (end.stats ? end.stats->event_retries : -1)
      << ",\n  \"factorizations\": " << (end.stats ? end.stats->factorizations : -1)
      << ",\n  \"jacobians\": " << (end.stats ? end.stats->jacobians : -1)
-     << ",\n  \"residual_evaluations\": " << (end.stats ? end.stats->evaluations : -1)
+     << ",\n  \"residual_evaluations\": " << (end.stats ? end.stats->evaluations : -1);
+  if (end.stats) {  // what set each accepted step's size (mbd::StepLimit)
+    js << ",\n  \"steps_set_by\": {";
+    for (int k = 0; k < mbd::kStepLimits; ++k)
+      js << (k ? ", " : "") << json_string(mbd::step_limit_name(static_cast<mbd::StepLimit>(k))) << ": "
+         << end.stats->steps_set_by[static_cast<std::size_t>(k)];
+    js << "}";
+  }
+  js
      << ",\n  \"dofs\": " << (end.coordinates >= 0 ? end.coordinates : m.num_dofs) << ",\n  \"multipliers\": " << end.multipliers
      << ",\n  \"locks\": {";
   for (std::size_t k = 0; k < lock_elements_.size(); ++k) {
@@ -610,7 +618,12 @@ void RunOutput::finish(const RunEnd& end) {
   tx << "formulation     " << end.formulation << " (" << end.method << ")";
   if (end.coordinates >= 0) tx << ": " << end.coordinates << " coordinates, " << end.multipliers << " multipliers";
   tx << "\nsteps           " << steps;
-  if (end.stats) tx << " accepted, " << rej_err << " rejected (error), " << rej_newton << " retried (Newton)";
+  if (end.stats) {
+    tx << " accepted, " << rej_err << " rejected (error), " << rej_newton << " retried (Newton)\nstep sizes set by";
+    for (int k = 0; k < mbd::kStepLimits; ++k)
+      if (const long c = end.stats->steps_set_by[static_cast<std::size_t>(k)]; c > 0)
+        tx << " " << mbd::step_limit_name(static_cast<mbd::StepLimit>(k)) << " " << c;
+  }
   tx << "\nNewton          " << newton << " iterations";
   if (steps > 0) tx << " (" << static_cast<double>(newton) / static_cast<double>(steps) << " per step)";
   tx << "\n";

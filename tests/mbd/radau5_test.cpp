@@ -219,6 +219,12 @@ TEST(Radau5, LockCrossingIsLocatedToEventTol) {
     std::printf("radau5 %s: latch at %.10f s, analytic %.10f s (error %.2e s), %ld steps, %ld event retries\n",
                 adaptive ? "adaptive" : "fixed 10 ms", s.locks[1].t_latch, t_star, err_t, rs.steps, rs.event_retries);
     EXPECT_GT(rs.event_retries, 0);
+    // One accepted step ends at the crossing (summary.json "steps_set_by": lock_crossing); with
+    // adaptive: false every other step is the constant step, bar those cut to end on an output time.
+    EXPECT_EQ(rs.steps_set_by[static_cast<std::size_t>(StepLimit::Event)], 1);
+    if (!adaptive)
+      EXPECT_EQ(rs.steps_set_by[static_cast<std::size_t>(StepLimit::Fixed)] + rs.steps_set_by[static_cast<std::size_t>(StepLimit::Output)],
+                rs.steps - 1);
     // |phi - phi_lock| <= event_tol (1e-9 rad) at the latch and phi' = 9.9 rad/s there: the time to
     // 1.0e-10 s from the angle (measured: 2.1e-13 s adaptive, 2.3e-11 s with 10 ms steps).
     EXPECT_LT(err_t, st.event_tol / exact.phidot_star);

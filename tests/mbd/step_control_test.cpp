@@ -78,3 +78,50 @@ TEST(StepControl, TheToleranceStillSetsTheStepAndTheError) {
   EXPECT_LT(loose.steps, tight.steps / 2);
   EXPECT_GT(tight.steps, 400);  // far more than the 200 steps of h_max: the error limits them
 }
+
+// RunStats::steps_set_by names what set each accepted step's size (summary.json "steps_set_by"); the
+// counts add up to the accepted steps. On the double pendulum, max_step 10 ms, outputs every 10 ms:
+// - tolerance 1e3 (the error never limits, as in StepsReachTheLargestAllowedWhenTheErrorAllows):
+//   after a start-up ramp of a few steps (the first step, growth by at most 1.5 per step, steps
+//   shortened to land on the first outputs) every step is max_step;
+// - tolerance 1e-6 with a sample at every step (no output schedule): the error estimate sets nearly
+//   all (TheToleranceStillSetsTheStepAndTheError: 400+ steps where max_step would take 200), a few
+//   are max_step, and only the last two are cut to end at t_end;
+// - adaptive: false, 2 ms: the constant step sets them all (it divides the output interval).
+TEST(StepControl, StepsSetByNameWhatSetTheStep) {
+  const Model model = test::double_pendulum();
+  auto run_with = [&](double tol, bool adaptive, double output_interval) {
+    IntegratorSettings st;
+    st.t_end = 2.0;
+    st.h_initial = adaptive ? 1e-3 : 2e-3;
+    st.h_max = 0.01;
+    st.output_interval = output_interval;
+    st.tol_angle = st.tol_position = tol;
+    st.rho_inf = 0.9;
+    st.adaptive = adaptive;
+    return run(model, st);
+  };
+  auto count = [](const RunStats& s, StepLimit l) { return s.steps_set_by[static_cast<std::size_t>(l)]; };
+  auto total = [](const RunStats& s) {
+    long n = 0;
+    for (const long c : s.steps_set_by) n += c;
+    return n;
+  };
+  const RunStats loose = run_with(1e3, true, 0.01), tight = run_with(1e-6, true, 0.0), fixed = run_with(1e-6, false, 0.01);
+  for (const RunStats* s : {&loose, &tight, &fixed}) EXPECT_EQ(total(*s), s->steps);
+  std::printf("steps set by (loose / tight / fixed):");
+  for (int k = 0; k < kStepLimits; ++k)
+    std::printf(" %s %ld/%ld/%ld", step_limit_name(static_cast<StepLimit>(k)), loose.steps_set_by[static_cast<std::size_t>(k)],
+                tight.steps_set_by[static_cast<std::size_t>(k)], fixed.steps_set_by[static_cast<std::size_t>(k)]);
+  std::printf("\n");
+  EXPECT_EQ(count(loose, StepLimit::Initial), 1);
+  EXPECT_EQ(count(loose, StepLimit::Error), 0);
+  EXPECT_GE(count(loose, StepLimit::Growth), 1);
+  EXPECT_GE(count(loose, StepLimit::Largest), loose.steps - 10);
+  EXPECT_GT(tight.steps, 400);
+  EXPECT_GT(count(tight, StepLimit::Error), tight.steps * 9 / 10);
+  EXPECT_LE(count(tight, StepLimit::Largest), 10);
+  EXPECT_LE(count(tight, StepLimit::Output), 2);
+  EXPECT_EQ(fixed.steps, 1000);
+  EXPECT_EQ(count(fixed, StepLimit::Fixed), fixed.steps);
+}

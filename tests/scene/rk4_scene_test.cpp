@@ -49,6 +49,18 @@ std::pair<double, double> rigid_link_lock_time(const std::string& method) {
   EXPECT_NE(at, std::string::npos) << events;
   if (at == std::string::npos) return {0.0, 1.0};
   const double t_lock = std::stod(events.substr(events.rfind('\n', at) + 1));
+  // What set the steps (summary.json "steps_set_by"): the lock's crossing cut one accepted step
+  // (radau5: its root on the collocation polynomial) or two (rk4: the first cut, by a straight line
+  // through the angles, ends just short of it).
+  const std::string summary = read_file(dir / "out" / "summary.json");
+  const auto key = summary.find("\"lock_crossing\": ");
+  EXPECT_NE(summary.find("\"steps_set_by\": {"), std::string::npos) << summary;
+  EXPECT_NE(key, std::string::npos) << summary;
+  if (key != std::string::npos) {
+    const int cut = std::stoi(summary.substr(key + 17));
+    EXPECT_EQ(cut, method == "radau5" ? 1 : 2) << summary;
+    EXPECT_NE(read_file(dir / "out" / "summary.txt").find("lock_crossing " + std::to_string(cut)), std::string::npos);
+  }
   const int n = 2000;
   const double theta = std::numbers::pi / 3, b = std::sqrt(theta), h = b / n, g = 9.81, L = 1.0;
   auto f = [&](double u) { return u == 0.0 ? 2.0 / std::sqrt(3.0 * g / L) : 2.0 * u / std::sqrt(3.0 * g * std::sin(u * u) / L); };

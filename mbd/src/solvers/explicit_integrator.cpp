@@ -110,9 +110,11 @@ RunStats simulate_rk4(const Model& model, State& state, Data& data, const Integr
   int event_retries = 0;
   while (state.t < st.t_end - eps) {
     double h = h_event > 0.0 ? h_event : st.h_initial;
+    StepLimit limit = h_event > 0.0 ? StepLimit::Event : StepLimit::Fixed;
     bool hits_output = false;
     const double to_out = std::min(next_out, st.t_end) - state.t;
     if (h >= to_out * (1.0 - 1e-9)) {
+      if (h > to_out) limit = StepLimit::Output;
       h = to_out;
       hits_output = true;
     }
@@ -175,6 +177,7 @@ RunStats simulate_rk4(const Model& model, State& state, Data& data, const Integr
     event_retries = 0;
     state = trial;
     ++stats.steps;
+    ++stats.steps_set_by[static_cast<std::size_t>(limit)];
     stats.h_last = h;
     bool latched_now = false;
     for (std::size_t i = 0; i < model.force_elements.size(); ++i) {

@@ -294,6 +294,23 @@ void initial_accelerations(const Model& model, State& s, Data& data) {
   store_derived(model, data, s);
 }
 
+const char* step_limit_name(StepLimit limit) {
+  switch (limit) {
+    case StepLimit::Initial: return "initial";
+    case StepLimit::Error: return "error";
+    case StepLimit::Growth: return "growth";
+    case StepLimit::Newton: return "newton";
+    case StepLimit::Kept: return "kept";
+    case StepLimit::Largest: return "max_step";
+    case StepLimit::Output: return "output";
+    case StepLimit::Event: return "lock_crossing";
+    case StepLimit::Retry: return "retry";
+    case StepLimit::Fixed: return "fixed";
+    case StepLimit::Count: break;
+  }
+  return "?";
+}
+
 RunStats simulate(const Model& model, State& state, Data& data, const IntegratorSettings& st, Observer* observer) {
   detail::validate_settings(st, state.t);
   initial_accelerations(model, state, data);

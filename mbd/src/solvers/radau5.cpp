@@ -592,16 +592,21 @@ void RadauStepper::accept() {
 
 double RadauStepper::step_after_accept(double h, double /*h_wanted*/, double err, bool after_rejection) {
   double q = ratio(err);
+  accepted_limit_ = q >= kMaxRatio ? StepLimit::Growth : StepLimit::Error;
   if (naccpt_ > 0) {
     // Gustafsson's predictive controller: the error's trend over the last two accepted steps.
     const double g = std::clamp(kSafe / ((h_accepted_ctrl_ / h) * std::pow(err * err / err_accepted_, 0.25)), kMinRatio, kMaxRatio);
     q = std::min(q, g);
+    accepted_limit_ = q >= kMaxRatio ? StepLimit::Growth : StepLimit::Error;
   }
   ++naccpt_;
   h_accepted_ctrl_ = h;
   err_accepted_ = std::max(1e-2, err);
   double h_new = h * q;
-  if (after_rejection) h_new = std::min(h_new, h);
+  if (after_rejection && h_new > h) {
+    h_new = h;
+    accepted_limit_ = StepLimit::Growth;
+  }
   // Newton's limit: with one Jacobian for all stages, a stiff element that turns with its body makes
   // the contraction rate grow like h^3 (its stiffness, turned by ~ omega h, against the soft
   // directions' (gamma/h)^2 M). Growing the step beyond h (kThetaTarget / theta)^(1/3) made simplified
@@ -615,8 +620,17 @@ double RadauStepper::step_after_accept(double h, double /*h_wanted*/, double err
   // the coupled stage system (a Jacobian per stage: rate 0.093 -> 0.019 after the demo's locks) let the
   // error estimate set the steps and cost more for larger errors (docs/benchmarks.md, "Newton on the
   // coupled stage system").
-  if (theta_measured_ && theta_ > 0.0) h_new = std::min(h_new, std::max(h, h * std::cbrt(kThetaTarget / theta_)));
-  if (theta_ <= st_.radau.jacobian_theta && h_new >= kKeepLow * h && h_new <= kKeepHigh * h) h_new = h;  // same matrices
+  if (theta_measured_ && theta_ > 0.0) {
+    const double h_newton = std::max(h, h * std::cbrt(kThetaTarget / theta_));
+    if (h_newton < h_new) {
+      h_new = h_newton;
+      accepted_limit_ = StepLimit::Newton;
+    }
+  }
+  if (theta_ <= st_.radau.jacobian_theta && h_new >= kKeepLow * h && h_new <= kKeepHigh * h && h_new != h) {  // same matrices
+    h_new = h;
+    accepted_limit_ = StepLimit::Kept;
+  }
   return h_new;
 }
 

@@ -29,7 +29,9 @@ double Stepper::step_after_accept(double h, double h_wanted, double err, bool af
   // whatever the tolerance (sync-3d: 2.5 ms at a local error of 1e-2 as at 1e-5).
   const double f = err > 0.0 ? 0.9 * std::pow(err, -1.0 / 3.0) : 2.0;
   const double base = std::max(h, h_wanted);
-  return std::clamp(h * f, 0.2 * h, (after_rejection ? 1.0 : 1.5) * base);
+  const double most = (after_rejection ? 1.0 : 1.5) * base;
+  accepted_limit_ = h * f >= most ? StepLimit::Growth : StepLimit::Error;
+  return std::clamp(h * f, 0.2 * h, most);
 }
 
 double Stepper::step_after_rejection(double h, double err) { return h * std::clamp(0.9 * std::pow(err, -1.0 / 3.0), 0.2, 0.9); }
@@ -93,21 +95,30 @@ RunStats drive_steps(const Model& model, const IntegratorSettings& st, Stepper& 
   const bool dense = stepper.dense_output() && st.output_interval > 0.0;
   double next_out = st.output_interval > 0.0 ? t0 + st.output_interval : st.t_end;
   double h_nat = st.h_initial;
+  StepLimit nat_limit = st.adaptive ? StepLimit::Initial : StepLimit::Fixed;  // what set h_nat
   int event_retries = 0;
   bool just_rejected = false;  // the last attempt failed the error test: no growth on the next success
   double h_event = 0.0;        // > 0: the next attempt is an event retry with this step
   while (stepper.time() < st.t_end - eps) {
     const double t = stepper.time();
     double h = h_event > 0.0 ? h_event : h_nat;
-    if (st.h_max > 0.0) h = std::min(h, st.h_max);
+    StepLimit limit = h_event > 0.0 ? StepLimit::Event : nat_limit;
+    if (st.h_max > 0.0 && h > st.h_max) {
+      h = st.h_max;
+      limit = StepLimit::Largest;
+    }
     const double h_wanted = h;  // before landing on the next output time
     bool hits_output = false;
     const double to_out = (dense ? st.t_end : std::min(next_out, st.t_end)) - t;
     const bool lands = h >= to_out / 1.05;
+    // (The output schedule counts as what set the step only where it shortened it by more than
+    // round-off: a 2.5 ms max_step landing on 5 ms outputs stays a max_step.)
     if (lands) {  // stretch a little rather than leave a sliver
+      if (h > to_out * (1.0 + 1e-9)) limit = StepLimit::Output;
       h = to_out;
       hits_output = true;
     } else if (h > 0.5 * to_out) {
+      if (h > 0.5 * to_out * (1.0 + 1e-9)) limit = StepLimit::Output;
       h = 0.5 * to_out;
     }
     const StepResult r = stepper.attempt(h);
@@ -115,6 +126,7 @@ RunStats drive_steps(const Model& model, const IntegratorSettings& st, Stepper& 
       ++stats.rejected_newton;
       h_event = 0.0;
       h_nat = h * r.retry_factor;
+      nat_limit = StepLimit::Retry;
       if (h_nat < st.h_min) {
         std::ostringstream os;
         os.precision(6);
@@ -142,6 +154,7 @@ RunStats drive_steps(const Model& model, const IntegratorSettings& st, Stepper& 
       just_rejected = true;
       h_event = 0.0;
       h_nat = std::max(st.h_min, stepper.step_after_rejection(h, err));
+      nat_limit = StepLimit::Retry;
       continue;
     }
     // Lock events: a lock whose angle reaches phi_lock in the step (at its end, or inside it where the
@@ -208,6 +221,7 @@ RunStats drive_steps(const Model& model, const IntegratorSettings& st, Stepper& 
     stepper.accept();
     ++step;
     ++stats.steps;
+    ++stats.steps_set_by[static_cast<std::size_t>(limit)];
     stats.newton_iterations += r.iterations;
     stats.factorizations += r.factorizations;
     stats.max_newton_iterations = std::max(stats.max_newton_iterations, r.iterations);
@@ -249,10 +263,14 @@ RunStats drive_steps(const Model& model, const IntegratorSettings& st, Stepper& 
     }
     if (st.adaptive) {
       // A step cut to an event or landed on an output time keeps the controller's step.
-      if (!was_event_retry && !lands) h_nat = stepper.step_after_accept(h, h_wanted, err, after_rejection);
+      if (!was_event_retry && !lands) {
+        h_nat = stepper.step_after_accept(h, h_wanted, err, after_rejection);
+        nat_limit = stepper.accepted_limit();
+      }
       h_nat = std::max(h_nat, st.h_min);
     } else {
       h_nat = st.h_initial;
+      nat_limit = StepLimit::Fixed;
     }
   }
   return stats;

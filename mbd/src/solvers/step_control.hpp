@@ -66,6 +66,8 @@ class Stepper {
   /// landed on an output time, but may have been halved before one; h_wanted: the step the
   /// controller had asked for).
   virtual double step_after_accept(double h, double h_wanted, double err, bool after_rejection);
+  /// What set the step the last step_after_accept returned (Error, Growth; radau5 also Newton, Kept).
+  StepLimit accepted_limit() const { return accepted_limit_; }
   /// The next step after the error test rejected a step of size h with error err > 1.
   virtual double step_after_rejection(double h, double err);
   /// True when sample_at can sample any time of the last accepted step: steps then do not land on
@@ -80,6 +82,9 @@ class Stepper {
   virtual double crossing_fraction(int hinge, double target, double side, double h) const;
   /// A lock has just latched at the current state (its stiffness now acts).
   virtual void on_latch() {}
+
+ protected:
+  StepLimit accepted_limit_ = StepLimit::Error;
 };
 
 /// Root in [lo, hi] of a function g with g(lo) < 0 <= g(hi), by bisection to round-off (returns lo

@@ -15,6 +15,8 @@
 // kept over the iterations of a step while the residual falls by 10 per iteration.
 // Step-size control from the local error estimate h^2 |beta - 1/6| |vdot_{n+1} - vdot_n|; lock
 // crossings located by Hermite interpolation of the hinge angle and the step redone to end there.
+#include <array>
+
 #include "seflex/mbd/data.hpp"
 #include "seflex/mbd/output.hpp"
 
@@ -64,8 +66,28 @@ struct IntegratorSettings {
   } radau;
 };
 
+/// What set the size of an accepted step (RunStats::steps_set_by): the answer to "would a looser
+/// tolerance make this run cheaper?" (only for the steps the error estimate set).
+enum class StepLimit : int {
+  Initial,  ///< the first step (`step`)
+  Error,    ///< the error estimate (the step-size controller)
+  Growth,   ///< the controller's largest growth per step (or none after a rejection)
+  Newton,   ///< radau5: the step may grow only while simplified Newton contracts fast enough
+  Kept,     ///< radau5: kept at the last step's size to reuse its factorised iteration matrices
+  Largest,  ///< `max_step`
+  Output,   ///< landing on (or halved before) an output time or the end of the run
+  Event,    ///< cut to end at a lock crossing
+  Retry,    ///< cut after Newton failed or the error estimate rejected the step
+  Fixed,    ///< the constant step of a run that is not adaptive
+  Count
+};
+inline constexpr int kStepLimits = static_cast<int>(StepLimit::Count);
+/// "error", "newton", ...: the key of each StepLimit in summary.json and summary.txt.
+const char* step_limit_name(StepLimit limit);
+
 struct RunStats {
   long steps = 0;              ///< accepted steps
+  std::array<long, kStepLimits> steps_set_by{};  ///< accepted steps by what set their size
   long rejected_error = 0;     ///< steps rejected by the error estimate
   long rejected_newton = 0;    ///< steps retried because Newton failed
   long event_retries = 0;      ///< steps redone to land on a lock crossing
