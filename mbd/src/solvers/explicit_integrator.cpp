@@ -114,7 +114,7 @@ RunStats simulate_rk4(const Model& model, State& state, Data& data, const Integr
     bool hits_output = false;
     const double to_out = std::min(next_out, st.t_end) - state.t;
     if (h >= to_out * (1.0 - 1e-9)) {
-      if (h > to_out) limit = StepLimit::Output;
+      if (h > to_out * (1.0 + 1e-9)) limit = StepLimit::Output;  // shortened by more than round-off
       h = to_out;
       hits_output = true;
     }

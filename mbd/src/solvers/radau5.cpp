@@ -323,9 +323,9 @@ detail::StepResult RadauStepper::attempt(double h) {
   // the spin-up beam (bench/study/spinup.yaml, largest step 50 ms) switches once and then at local
   // error 1e-3 / 1e-4 / 1e-5 took 402 / 409 / 651 steps with deflection errors 0.020 / 0.0022 /
   // 0.00012 deg against Radau at 1e-8 (402 / 452 / 648 steps since the too-slow test in newton()
-  // waits for a second ratio; docs/benchmarks.md has today's errors) (without the transport: 4,974 / 7,499 / 1,297 steps; with Hairer
-  // and Wanner's looser Newton stop, which main used: stops at t = 11.5 s / 5,482 steps, 0.043 deg /
-  // 1,187 steps, 0.00098 deg). The fallback for the failing step alone, without keeping it, left
+  // waits for a second ratio; docs/benchmarks.md has today's errors). Without the transport:
+  // 4,974 / 7,499 / 1,297 steps; with Hairer and Wanner's looser Newton stop, which main used: stops
+  // at t = 11.5 s / 5,482 steps, 0.043 deg / 1,187 steps, 0.00098 deg. The fallback for the failing step alone, without keeping it, left
   // 1.39 / 0.029 / 0.0035 deg (640 / 504 / 553 steps, with their stop): plain Newton's fast but poor
   // convergence on the other steps. sync-3d switches at t = 1.0-1.8 s (before the first lock); with
   // their stop the transport changed the Newton remainder that dominated its errors (lock times at
