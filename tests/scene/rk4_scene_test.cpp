@@ -53,11 +53,12 @@ std::pair<double, double> rigid_link_lock_time(const std::string& method) {
   // (radau5: its root on the collocation polynomial) or two (rk4: the first cut, by a straight line
   // through the angles, ends just short of it).
   const std::string summary = read_file(dir / "out" / "summary.json");
-  const auto key = summary.find("\"lock_crossing\": ");
+  const std::string key = "\"lock_crossing\": ";
+  const auto at_key = summary.find(key);
   EXPECT_NE(summary.find("\"steps_set_by\": {"), std::string::npos) << summary;
-  EXPECT_NE(key, std::string::npos) << summary;
-  if (key != std::string::npos) {
-    const int cut = std::stoi(summary.substr(key + 17));
+  EXPECT_NE(at_key, std::string::npos) << summary;
+  if (at_key != std::string::npos) {
+    const int cut = std::stoi(summary.substr(at_key + key.size()));
     EXPECT_EQ(cut, method == "radau5" ? 1 : 2) << summary;
     EXPECT_NE(read_file(dir / "out" / "summary.txt").find("lock_crossing " + std::to_string(cut)), std::string::npos);
   }

@@ -325,11 +325,12 @@ detail::StepResult RadauStepper::attempt(double h) {
   // 0.00012 deg against Radau at 1e-8 (402 / 452 / 648 steps since the too-slow test in newton()
   // waits for a second ratio; docs/benchmarks.md has today's errors). Without the transport:
   // 4,974 / 7,499 / 1,297 steps; with Hairer and Wanner's looser Newton stop, which main used: stops
-  // at t = 11.5 s / 5,482 steps, 0.043 deg / 1,187 steps, 0.00098 deg. The fallback for the failing step alone, without keeping it, left
-  // 1.39 / 0.029 / 0.0035 deg (640 / 504 / 553 steps, with their stop): plain Newton's fast but poor
-  // convergence on the other steps. sync-3d switches at t = 1.0-1.8 s (before the first lock); with
-  // their stop the transport changed the Newton remainder that dominated its errors (lock times at
-  // 1e-4: 1.65e-4 -> 3.6e-4 s), with a tenth of it every error is smaller than main's (kNewtonShare).
+  // at t = 11.5 s / 5,482 steps, 0.043 deg / 1,187 steps, 0.00098 deg. The fallback for the failing
+  // step alone, without keeping it, left 1.39 / 0.029 / 0.0035 deg (640 / 504 / 553 steps, with their
+  // stop): plain Newton's fast but poor convergence on the other steps. sync-3d switches at t =
+  // 1.0-1.8 s (before the first lock); with their stop the transport changed the Newton remainder
+  // that dominated its errors (lock times at 1e-4: 1.65e-4 -> 3.6e-4 s), with a tenth of it every
+  // error is smaller than main's (kNewtonShare).
   if (transported_) return newton(h, true);
   const bool reject = reject_;
   detail::StepResult out = newton(h, false);
@@ -592,13 +593,12 @@ void RadauStepper::accept() {
 
 double RadauStepper::step_after_accept(double h, double /*h_wanted*/, double err, bool after_rejection) {
   double q = ratio(err);
-  accepted_limit_ = q >= kMaxRatio ? StepLimit::Growth : StepLimit::Error;
   if (naccpt_ > 0) {
     // Gustafsson's predictive controller: the error's trend over the last two accepted steps.
     const double g = std::clamp(kSafe / ((h_accepted_ctrl_ / h) * std::pow(err * err / err_accepted_, 0.25)), kMinRatio, kMaxRatio);
     q = std::min(q, g);
-    accepted_limit_ = q >= kMaxRatio ? StepLimit::Growth : StepLimit::Error;
   }
+  accepted_limit_ = q >= kMaxRatio ? StepLimit::Growth : StepLimit::Error;
   ++naccpt_;
   h_accepted_ctrl_ = h;
   err_accepted_ = std::max(1e-2, err);
